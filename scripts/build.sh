@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Builds the release wasm and assembles the static site in dist/:
+#   dist/index.html, embed.html, *.js, style.css   (from www/)
+#   dist/pkg/                                      (wasm-bindgen --target web)
+#   dist/vendor/katex/                             (KaTeX from its npm package)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+[ "${SKIP_SETUP:-0}" = 1 ] || bash scripts/setup.sh
+
+echo "build: cargo build --release --target wasm32-unknown-unknown"
+cargo build --release --target wasm32-unknown-unknown --lib
+
+rm -rf dist
+mkdir -p dist/pkg dist/vendor/katex
+wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/pkg \
+  target/wasm32-unknown-unknown/release/photogrammetry_playground.wasm
+cp -R www/. dist/
+katex=node_modules/katex/dist
+cp "$katex/katex.min.js" "$katex/katex.mjs" "$katex/katex.min.css" dist/vendor/katex/
+mkdir -p dist/vendor/katex/fonts
+cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
+echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm $(wc -c < dist/pkg/photogrammetry_playground_bg.wasm) bytes)"

@@ -1,0 +1,84 @@
+// Serves a folder of static files on 127.0.0.1 with the right MIME types
+// (application/wasm for .wasm). No dependencies.
+//   node scripts/serve.mjs [--dir dist] [--port 8080]   (PORT env also works)
+// Also importable: const { url, close } = await startServer({ dir, port: 0 }).
+import http from "node:http";
+import fs from "node:fs";
+import path from "node:path";
+import { fileURLToPath } from "node:url";
+
+const TYPES = {
+  ".html": "text/html; charset=utf-8",
+  ".js": "text/javascript; charset=utf-8",
+  ".mjs": "text/javascript; charset=utf-8",
+  ".css": "text/css; charset=utf-8",
+  ".json": "application/json; charset=utf-8",
+  ".wasm": "application/wasm",
+  ".svg": "image/svg+xml",
+  ".png": "image/png",
+  ".ico": "image/x-icon",
+  ".woff2": "font/woff2",
+  ".woff": "font/woff",
+  ".ttf": "font/ttf",
+  ".txt": "text/plain; charset=utf-8",
+};
+
+export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = {}) {
+  const root = path.resolve(dir);
+  const server = http.createServer((req, res) => {
+    let pathname;
+    try {
+      pathname = decodeURIComponent(new URL(req.url, "http://x").pathname);
+    } catch {
+      res.writeHead(400).end("bad request");
+      return;
+    }
+    if (pathname.endsWith("/")) pathname += "index.html";
+    const file = path.join(root, pathname);
+    if (file !== root && !file.startsWith(root + path.sep)) {
+      res.writeHead(403).end("forbidden");
+      return;
+    }
+    fs.readFile(file, (err, data) => {
+      if (err) {
+        res.writeHead(404, { "content-type": "text/plain; charset=utf-8" }).end("not found");
+        return;
+      }
+      const type = TYPES[path.extname(file).toLowerCase()] || "application/octet-stream";
+      res.writeHead(200, { "content-type": type, "cache-control": "no-cache" });
+      res.end(data);
+    });
+  });
+  return new Promise((resolve, reject) => {
+    server.once("error", reject);
+    server.listen(port, host, () => {
+      const { port: p } = server.address();
+      resolve({
+        url: `http://${host}:${p}/`,
+        port: p,
+        close: () => new Promise((r) => server.close(() => r())),
+      });
+    });
+  });
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.argv[1])) {
+  const args = process.argv.slice(2);
+  const arg = (name) => {
+    const i = args.indexOf(name);
+    return i >= 0 ? args[i + 1] : undefined;
+  };
+  const dir = arg("--dir") || "dist";
+  const port = Number(arg("--port") || process.env.PORT || 8080);
+  if (!fs.existsSync(path.join(dir, "index.html"))) {
+    console.error(`serve: ${dir}/index.html is missing; run "npm run build" first`);
+    process.exit(1);
+  }
+  startServer({ dir, port }).then(
+    ({ url }) => console.log(`Photogrammetry Playground: ${url}  (Ctrl+C to stop)`),
+    (e) => {
+      console.error(`serve: cannot listen on port ${port}: ${e.message} (set PORT or --port)`);
+      process.exit(1);
+    },
+  );
+}

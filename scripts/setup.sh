@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Installs whatever the project needs and the machine is missing; quick when
+# everything is there already.
+#   scripts/setup.sh            build tools: wasm32 target, wasm-bindgen-cli
+#                               (the version of the wasm-bindgen crate in
+#                               Cargo.lock), npm dependencies
+#   scripts/setup.sh --test     also rustfmt, clippy, Chromium + chromedriver
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+for_tests=0
+[ "${1:-}" = "--test" ] && for_tests=1
+say() { echo "setup: $*"; }
+
+command -v cargo >/dev/null || { say "cargo is missing: install Rust with rustup (https://rustup.rs) first" >&2; exit 1; }
+command -v npm >/dev/null || { say "npm is missing: install Node.js 20 or newer first" >&2; exit 1; }
+
+if ! rustup target list --installed | grep -qx wasm32-unknown-unknown; then
+  say "adding the wasm32-unknown-unknown target"
+  rustup target add wasm32-unknown-unknown
+fi
+
+if [ "$for_tests" = 1 ]; then
+  for c in rustfmt clippy; do
+    if ! rustup component list --installed | grep -q "^$c"; then
+      say "adding $c"
+      rustup component add "$c"
+    fi
+  done
+fi
+
+# wasm-bindgen-cli must match the wasm-bindgen crate exactly.
+want=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
+[ -n "$want" ] || { say "cannot read the wasm-bindgen version from Cargo.lock" >&2; exit 1; }
+have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}' || true)
+if [ "$have" != "$want" ] || ! command -v wasm-bindgen-test-runner >/dev/null; then
+  say "installing wasm-bindgen-cli $want (have: ${have:-none}); this compiles for a few minutes, once"
+  cargo install wasm-bindgen-cli --version "$want"
+fi
+
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  say "installing npm dependencies"
+  npm ci --no-audit --no-fund
+fi
+
+if [ "$for_tests" = 1 ] && { [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; }; then
+  say "installing Debian's chromium and chromium-driver"
+  sudo=""
+  [ "$(id -u)" = 0 ] || sudo="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update
+  $sudo apt-get install -y chromium chromium-driver
+fi

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# npm test: set up what is missing, then every test, stopping at the first
+# failure: format, lints (host and wasm), native tests, wasm tests in headless
+# Chromium, and the built page end to end in Chromium.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+bash scripts/setup.sh --test
+export CHROMEDRIVER=/usr/bin/chromedriver
+
+step() { printf '\n== %s\n' "$*"; }
+step "cargo fmt --check"
+cargo fmt --all -- --check
+step "cargo clippy (host and wasm32) -D warnings"
+cargo clippy --all-targets -- -D warnings
+cargo clippy --all-targets --target wasm32-unknown-unknown -- -D warnings
+step "cargo test (native)"
+cargo test
+step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
+cargo test --target wasm32-unknown-unknown --test web
+step "build the page"
+SKIP_SETUP=1 bash scripts/build.sh
+step "end-to-end tests of the page in Chromium"
+node --test --test-concurrency=1 tests/e2e/

@@ -1,0 +1,702 @@
+//! Input fields of the worked examples: their kinds, limits and seed
+//! defaults, the checks every input passes before any arithmetic, and the
+//! text form the page and the URL use. One place decides what is valid, for
+//! `solve` (typed values) and `parse_inputs` (texts) alike.
+
+use crate::error::{Error, Result};
+use crate::solution::{fmt_sig, Record, Value};
+use serde::Serialize;
+
+/// Largest number of elements a vector or point list may have.
+pub const MAX_LEN: usize = 4096;
+/// Largest number of rows or columns of a matrix.
+pub const MAX_DIM: usize = 512;
+
+/// The kind of an input field and its limits.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Kind {
+    /// A real number, with a unit and optional bounds.
+    Number {
+        unit: Option<&'static str>,
+        min: Option<f64>,
+        max: Option<f64>,
+        /// `min` itself is not allowed (a dpi of 0 is not a resolution).
+        min_exclusive: bool,
+    },
+    /// A whole number with optional bounds.
+    Integer { min: Option<f64>, max: Option<f64> },
+    /// A list of numbers.
+    Vector { min_len: usize, max_len: usize },
+    /// A matrix; `None` means any size up to [`MAX_DIM`].
+    Matrix {
+        rows: Option<usize>,
+        cols: Option<usize>,
+    },
+    /// A list of points, each `point_len` numbers.
+    Points {
+        point_len: usize,
+        min_len: usize,
+        max_len: usize,
+    },
+    /// One of a fixed set of option values.
+    Choice {
+        options: &'static [(&'static str, &'static str)],
+    },
+    /// True or false.
+    Flag,
+}
+
+/// One input of a worked example.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Field {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub help: &'static str,
+    pub kind: Kind,
+    /// The seed's value.
+    pub default: Value,
+}
+
+impl Field {
+    /// A number field with the seed's default.
+    pub fn number(key: &'static str, label: &'static str, default: f64) -> Self {
+        Field {
+            key,
+            label,
+            help: "",
+            kind: Kind::Number {
+                unit: None,
+                min: None,
+                max: None,
+                min_exclusive: false,
+            },
+            default: Value::Number(default),
+        }
+    }
+
+    /// Sets the help text.
+    pub fn help(mut self, help: &'static str) -> Self {
+        self.help = help;
+        self
+    }
+
+    /// Sets the unit of a number field.
+    pub fn unit(mut self, u: &'static str) -> Self {
+        if let Kind::Number { unit, .. } = &mut self.kind {
+            *unit = Some(u);
+        }
+        self
+    }
+
+    /// Bounds a number field to `(0, max]`.
+    pub fn positive(mut self, upper: f64) -> Self {
+        if let Kind::Number {
+            min,
+            max,
+            min_exclusive,
+            ..
+        } = &mut self.kind
+        {
+            *min = Some(0.0);
+            *min_exclusive = true;
+            *max = Some(upper);
+        }
+        self
+    }
+
+    /// An integer field with the seed's default.
+    pub fn integer(key: &'static str, label: &'static str, default: f64) -> Self {
+        Field {
+            kind: Kind::Integer {
+                min: None,
+                max: None,
+            },
+            ..Field::number(key, label, default)
+        }
+    }
+
+    /// Bounds a number or integer field to `[lo, hi]`.
+    pub fn range(mut self, lo: f64, hi: f64) -> Self {
+        match &mut self.kind {
+            Kind::Number {
+                min,
+                max,
+                min_exclusive,
+                ..
+            } => {
+                *min = Some(lo);
+                *max = Some(hi);
+                *min_exclusive = false;
+            }
+            Kind::Integer { min, max } => {
+                *min = Some(lo);
+                *max = Some(hi);
+            }
+            _ => {}
+        }
+        self
+    }
+
+    /// Checks a typed value against the field's kind and limits; returns it
+    /// normalised (integers as whole numbers).
+    pub fn check(&self, v: &Value) -> Result<Value> {
+        let key = self.key;
+        match &self.kind {
+            Kind::Number {
+                min,
+                max,
+                min_exclusive,
+                unit,
+            } => {
+                let x = finite_number(key, v)?;
+                let u = unit.map(|u| format!(" {u}")).unwrap_or_default();
+                if let Some(lo) = min {
+                    if *min_exclusive && x <= *lo {
+                        return Err(Error::input(
+                            key,
+                            format!(
+                                "must be greater than {}{u} (got {})",
+                                fmt_sig(*lo, 12),
+                                fmt_sig(x, 12)
+                            ),
+                        ));
+                    }
+                    if !*min_exclusive && x < *lo {
+                        return Err(Error::input(
+                            key,
+                            format!(
+                                "must be at least {}{u} (got {})",
+                                fmt_sig(*lo, 12),
+                                fmt_sig(x, 12)
+                            ),
+                        ));
+                    }
+                }
+                if let Some(hi) = max {
+                    if x > *hi {
+                        return Err(Error::input(
+                            key,
+                            format!(
+                                "must be at most {}{u} (got {})",
+                                fmt_sig(*hi, 12),
+                                fmt_sig(x, 12)
+                            ),
+                        ));
+                    }
+                }
+                Ok(Value::Number(x))
+            }
+            Kind::Integer { min, max } => {
+                let x = finite_number(key, v)?;
+                if x.fract() != 0.0 {
+                    return Err(Error::input(
+                        key,
+                        format!("must be a whole number (got {})", fmt_sig(x, 12)),
+                    ));
+                }
+                if let Some(lo) = min {
+                    if x < *lo {
+                        return Err(Error::input(
+                            key,
+                            format!("must be at least {lo} (got {x})"),
+                        ));
+                    }
+                }
+                if let Some(hi) = max {
+                    if x > *hi {
+                        return Err(Error::input(key, format!("must be at most {hi} (got {x})")));
+                    }
+                }
+                Ok(Value::Number(x))
+            }
+            Kind::Vector { min_len, max_len } => {
+                let xs = number_list(key, v)?;
+                check_len(key, xs.len(), *min_len, *max_len, "numbers")?;
+                Ok(Value::numbers(&xs))
+            }
+            Kind::Matrix { rows, cols } => {
+                let m = number_rows(key, v)?;
+                if m.is_empty() {
+                    return Err(Error::input(key, "is empty: give at least one row"));
+                }
+                let width = m[0].len();
+                if width == 0 {
+                    return Err(Error::input(key, "row 1 is empty"));
+                }
+                for (i, row) in m.iter().enumerate() {
+                    if row.len() != width {
+                        return Err(Error::input(
+                            key,
+                            format!(
+                                "rows must all have the same length: row 1 has {width} numbers, row {} has {}",
+                                i + 1,
+                                row.len()
+                            ),
+                        ));
+                    }
+                }
+                if let Some(r) = rows {
+                    if m.len() != *r {
+                        return Err(Error::input(
+                            key,
+                            format!("must have {r} rows (got {})", m.len()),
+                        ));
+                    }
+                }
+                if let Some(c) = cols {
+                    if width != *c {
+                        return Err(Error::input(
+                            key,
+                            format!("must have {c} columns (got {width})"),
+                        ));
+                    }
+                }
+                if m.len() > MAX_DIM || width > MAX_DIM {
+                    return Err(Error::input(
+                        key,
+                        format!(
+                            "is {}×{width}; at most {MAX_DIM}×{MAX_DIM} is allowed",
+                            m.len()
+                        ),
+                    ));
+                }
+                Ok(Value::matrix(&m))
+            }
+            Kind::Points {
+                point_len,
+                min_len,
+                max_len,
+            } => {
+                let m = number_rows(key, v)?;
+                check_len(key, m.len(), *min_len, *max_len, "points")?;
+                for (i, row) in m.iter().enumerate() {
+                    if row.len() != *point_len {
+                        return Err(Error::input(
+                            key,
+                            format!(
+                                "point {} has {} numbers; each point needs {point_len}",
+                                i + 1,
+                                row.len()
+                            ),
+                        ));
+                    }
+                }
+                Ok(Value::matrix(&m))
+            }
+            Kind::Choice { options } => match v {
+                Value::Text(s) if options.iter().any(|(o, _)| o == s) => Ok(v.clone()),
+                Value::Text(s) => Err(Error::input(
+                    key,
+                    format!(
+                        "\"{s}\" is not one of the choices ({})",
+                        options
+                            .iter()
+                            .map(|(o, _)| *o)
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                )),
+                other => Err(Error::input(
+                    key,
+                    format!("must be one of the choices, got {}", other.type_name()),
+                )),
+            },
+            Kind::Flag => match v {
+                Value::Bool(_) => Ok(v.clone()),
+                other => Err(Error::input(
+                    key,
+                    format!("must be true or false, got {}", other.type_name()),
+                )),
+            },
+        }
+    }
+
+    /// Parses the text a user typed (or a URL carried) and checks it.
+    pub fn parse_text(&self, text: &str) -> Result<Value> {
+        let key = self.key;
+        let t = text.trim();
+        let v = match &self.kind {
+            Kind::Number { .. } | Kind::Integer { .. } => Value::Number(parse_number(key, t)?),
+            Kind::Vector { .. } => {
+                let cleaned = t.replace(['[', ']'], " ");
+                Value::numbers(&parse_numbers(key, &cleaned)?)
+            }
+            Kind::Matrix { .. } | Kind::Points { .. } => {
+                let rows = split_rows(t)
+                    .map(|row| parse_numbers(key, row))
+                    .collect::<Result<Vec<_>>>()?;
+                Value::matrix(&rows)
+            }
+            Kind::Choice { .. } => Value::Text(t.to_string()),
+            Kind::Flag => match t {
+                "true" | "1" | "yes" | "on" => Value::Bool(true),
+                "false" | "0" | "no" | "off" | "" => Value::Bool(false),
+                _ => return Err(Error::input(key, format!("\"{t}\" is not true or false"))),
+            },
+        };
+        self.check(&v)
+    }
+
+    /// The text form of a value, as [`Field::parse_text`] reads it back.
+    pub fn format(&self, v: &Value) -> String {
+        match v {
+            Value::Number(x) => fmt_sig(*x, 15),
+            Value::Bool(b) => b.to_string(),
+            Value::Text(s) => s.clone(),
+            Value::List(items) => {
+                let nested = items.iter().any(|i| matches!(i, Value::List(_)));
+                if nested {
+                    items
+                        .iter()
+                        .map(|r| self.format(r))
+                        .collect::<Vec<_>>()
+                        .join("; ")
+                } else {
+                    items
+                        .iter()
+                        .map(|x| self.format(x))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                }
+            }
+            Value::Null | Value::Object(_) => String::new(),
+        }
+    }
+}
+
+fn check_len(key: &str, n: usize, min: usize, max: usize, what: &str) -> Result<()> {
+    if n == 0 {
+        return Err(Error::input(
+            key,
+            format!("is empty: give at least {} {what}", min.max(1)),
+        ));
+    }
+    if n < min {
+        return Err(Error::input(
+            key,
+            format!("needs at least {min} {what} (got {n})"),
+        ));
+    }
+    if n > max {
+        return Err(Error::input(
+            key,
+            format!("has {n} {what}; at most {max} are allowed"),
+        ));
+    }
+    Ok(())
+}
+
+fn finite_number(key: &str, v: &Value) -> Result<f64> {
+    match v {
+        Value::Number(x) if x.is_nan() => Err(Error::input(key, "is NaN; give a number")),
+        Value::Number(x) if x.is_infinite() => {
+            Err(Error::input(key, "is infinite; give a finite number"))
+        }
+        Value::Number(x) => Ok(*x),
+        Value::Text(s) => Err(Error::input(
+            key,
+            format!("must be a number, got the string \"{}\"", short(s)),
+        )),
+        other => Err(Error::input(
+            key,
+            format!("must be a number, got {}", other.type_name()),
+        )),
+    }
+}
+
+fn number_list(key: &str, v: &Value) -> Result<Vec<f64>> {
+    match v {
+        Value::List(items) => items
+            .iter()
+            .enumerate()
+            .map(|(i, x)| finite_number(&format!("{key}[{}]", i + 1), x))
+            .collect(),
+        other => Err(Error::input(
+            key,
+            format!("must be a list of numbers, got {}", other.type_name()),
+        )),
+    }
+}
+
+fn number_rows(key: &str, v: &Value) -> Result<Vec<Vec<f64>>> {
+    match v {
+        Value::List(rows) => rows
+            .iter()
+            .enumerate()
+            .map(|(i, row)| match row {
+                Value::List(items) => items
+                    .iter()
+                    .enumerate()
+                    .map(|(j, x)| finite_number(&format!("{key}[{}][{}]", i + 1, j + 1), x))
+                    .collect(),
+                other => Err(Error::input(
+                    key,
+                    format!(
+                        "row {} must be a list of numbers, got {}",
+                        i + 1,
+                        other.type_name()
+                    ),
+                )),
+            })
+            .collect(),
+        other => Err(Error::input(
+            key,
+            format!("must be a list of rows, got {}", other.type_name()),
+        )),
+    }
+}
+
+fn short(s: &str) -> String {
+    let mut out: String = s.chars().take(24).collect();
+    if s.chars().count() > 24 {
+        out.push('…');
+    }
+    out
+}
+
+fn parse_number(key: &str, t: &str) -> Result<f64> {
+    if t.is_empty() {
+        return Err(Error::input(key, "is empty; enter a number"));
+    }
+    // Rust also reads "NaN" and "inf"; a user means neither.
+    let plain = t
+        .chars()
+        .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
+    match t.parse::<f64>() {
+        Ok(x) if plain && x.is_finite() => Ok(x),
+        Ok(_) if plain => Err(Error::input(key, format!("\"{}\" is too large", short(t)))),
+        _ if t.contains(',') && t.replace(',', ".").parse::<f64>().is_ok() => Err(Error::input(
+            key,
+            format!(
+                "\"{}\" is not a number: use a point as the decimal separator",
+                short(t)
+            ),
+        )),
+        _ => Err(Error::input(
+            key,
+            format!("\"{}\" is not a number", short(t)),
+        )),
+    }
+}
+
+fn parse_numbers(key: &str, t: &str) -> Result<Vec<f64>> {
+    t.split(|c: char| c == ',' || c.is_whitespace())
+        .filter(|s| !s.is_empty())
+        .map(|s| parse_number(key, s))
+        .collect()
+}
+
+fn split_rows(t: &str) -> impl Iterator<Item = &str> {
+    t.split([';', '\n'])
+        .map(|r| r.trim().trim_matches(['[', ']']).trim())
+        .filter(|r| !r.is_empty())
+}
+
+/// Checks a whole input object against an example's fields: unknown keys are
+/// errors, missing keys take the seed's default. Returns the inputs as used.
+pub fn validate(fields: &[Field], raw: &Record) -> Result<Record> {
+    for key in raw.keys() {
+        if !fields.iter().any(|f| f.key == key) {
+            return Err(Error::UnknownField {
+                field: key.to_string(),
+                known: fields.iter().map(|f| f.key.to_string()).collect(),
+            });
+        }
+    }
+    let mut out = Record::new();
+    for f in fields {
+        let v = match raw.get(f.key) {
+            Some(v) => f.check(v)?,
+            None => f.default.clone(),
+        };
+        out.set(f.key, v);
+    }
+    Ok(out)
+}
+
+/// Typed access to validated inputs (see [`validate`]).
+pub struct Inputs<'a>(pub &'a Record);
+
+impl Inputs<'_> {
+    pub fn number(&self, key: &str) -> Result<f64> {
+        self.0
+            .number(key)
+            .ok_or_else(|| Error::Internal(format!("validated input \"{key}\" is not a number")))
+    }
+}
+
+/// True when every input equals the field's seed default.
+pub fn is_seed(fields: &[Field], inputs: &Record) -> bool {
+    fields.iter().all(|f| inputs.get(f.key) == Some(&f.default))
+}
+
+/// The JSON shape of a field in `catalog()`.
+#[derive(Serialize)]
+pub struct FieldInfo {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub help: &'static str,
+    pub kind: &'static str,
+    pub unit: Option<&'static str>,
+    pub min: Option<f64>,
+    pub max: Option<f64>,
+    pub min_exclusive: bool,
+    pub rows: Option<usize>,
+    pub cols: Option<usize>,
+    pub point_len: Option<usize>,
+    pub max_len: Option<usize>,
+    pub options: Option<Vec<ChoiceInfo>>,
+    pub default: Value,
+    pub default_text: String,
+}
+
+#[derive(Serialize)]
+pub struct ChoiceInfo {
+    pub value: &'static str,
+    pub label: &'static str,
+}
+
+impl From<&Field> for FieldInfo {
+    fn from(f: &Field) -> Self {
+        let mut info = FieldInfo {
+            key: f.key,
+            label: f.label,
+            help: f.help,
+            kind: "",
+            unit: None,
+            min: None,
+            max: None,
+            min_exclusive: false,
+            rows: None,
+            cols: None,
+            point_len: None,
+            max_len: None,
+            options: None,
+            default: f.default.clone(),
+            default_text: f.format(&f.default),
+        };
+        match &f.kind {
+            Kind::Number {
+                unit,
+                min,
+                max,
+                min_exclusive,
+            } => {
+                info.kind = "number";
+                info.unit = *unit;
+                info.min = *min;
+                info.max = *max;
+                info.min_exclusive = *min_exclusive;
+            }
+            Kind::Integer { min, max } => {
+                info.kind = "integer";
+                info.min = *min;
+                info.max = *max;
+            }
+            Kind::Vector { max_len, .. } => {
+                info.kind = "vector";
+                info.max_len = Some(*max_len);
+            }
+            Kind::Matrix { rows, cols } => {
+                info.kind = "matrix";
+                info.rows = *rows;
+                info.cols = *cols;
+            }
+            Kind::Points {
+                point_len, max_len, ..
+            } => {
+                info.kind = "points";
+                info.point_len = Some(*point_len);
+                info.max_len = Some(*max_len);
+            }
+            Kind::Choice { options } => {
+                info.kind = "choice";
+                info.options = Some(
+                    options
+                        .iter()
+                        .map(|&(value, label)| ChoiceInfo { value, label })
+                        .collect(),
+                );
+            }
+            Kind::Flag => info.kind = "flag",
+        }
+        info
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dpi() -> Field {
+        Field::number("dpi", "Scan resolution", 600.0)
+            .unit("dpi")
+            .positive(1e5)
+    }
+
+    #[test]
+    fn number_limits_name_the_field() {
+        let f = dpi();
+        assert_eq!(f.check(&Value::Number(900.0)), Ok(Value::Number(900.0)));
+        let e = f.check(&Value::Number(0.0)).unwrap_err().to_string();
+        assert_eq!(e, "dpi: must be greater than 0 dpi (got 0)");
+        let e = f.check(&Value::Number(f64::NAN)).unwrap_err().to_string();
+        assert_eq!(e, "dpi: is NaN; give a number");
+        let e = f
+            .check(&Value::Number(f64::INFINITY))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("infinite"), "{e}");
+        let e = f.check(&Value::Text("900".into())).unwrap_err().to_string();
+        assert_eq!(e, "dpi: must be a number, got the string \"900\"");
+    }
+
+    #[test]
+    fn number_text_parsing() {
+        let f = dpi();
+        assert_eq!(f.parse_text(" 1e3 "), Ok(Value::Number(1000.0)));
+        for bad in ["", "abc", "NaN", "inf", "1e999", "9,5", "<img>"] {
+            let e = f.parse_text(bad).unwrap_err();
+            assert_eq!(e.field(), Some("dpi"), "{bad}: {e}");
+        }
+        assert!(f
+            .parse_text("9,5")
+            .unwrap_err()
+            .to_string()
+            .contains("decimal separator"));
+    }
+
+    #[test]
+    fn matrix_text_round_trip_and_ragged_rows() {
+        let f = Field {
+            key: "a",
+            label: "A",
+            help: "",
+            kind: Kind::Matrix {
+                rows: None,
+                cols: None,
+            },
+            default: Value::matrix(&[vec![1.0, 2.0], vec![3.0, 4.5]]),
+        };
+        let text = f.format(&f.default);
+        assert_eq!(text, "1, 2; 3, 4.5");
+        assert_eq!(f.parse_text(&text), Ok(f.default.clone()));
+        assert_eq!(f.parse_text("[1 2]\n[3 4.5]"), Ok(f.default.clone()));
+        let e = f.parse_text("1 2; 3").unwrap_err().to_string();
+        assert!(e.contains("same length"), "{e}");
+        assert!(f.parse_text("").is_err());
+    }
+
+    #[test]
+    fn validate_fills_defaults_and_rejects_unknown() {
+        let fields = [dpi()];
+        let used = validate(&fields, &Record::new()).unwrap();
+        assert_eq!(used.number("dpi"), Some(600.0));
+        assert!(is_seed(&fields, &used));
+        let e = validate(&fields, &Record::new().with("dpu", 3.0)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "dpu: unknown field (this example takes: dpi)"
+        );
+    }
+}

@@ -1,0 +1,286 @@
+//! The worked-example catalog: every entry of `shared/CATALOG.md`, the
+//! registry behind `catalog()`, `solve()` and `parse_inputs()`.
+//!
+//! Each topic file (`coordinates.rs`, …) lists its entries with their input
+//! fields and a solver that calls the core modules and turns their results
+//! into a [`Solution`]. Entries not built yet are listed in [`coming`].
+//!
+//! To add an example: write `fn fields() -> Vec<Field>` and
+//! `fn solve(inputs: &Record) -> Result<Solution>` in its topic file, list it
+//! in that file's `entries()`, and remove it from [`coming`].
+
+pub mod coordinates;
+pub mod fields;
+
+use crate::error::{Error, Result};
+use crate::solution::{Record, Solution, Value};
+use fields::{Field, FieldInfo};
+use serde::Serialize;
+
+/// The topics in the order the page shows them.
+pub const TOPICS: [&str; 9] = [
+    "Coordinates",
+    "Transformations",
+    "Correlation",
+    "Least-squares matching",
+    "Resampling",
+    "Filters and edges",
+    "Interest operators",
+    "Chain codes and boundaries",
+    "Map projection",
+];
+
+/// A solver: validated inputs (defaults filled in) to a solution.
+pub type Solver = fn(&Record) -> Result<Solution>;
+
+/// One catalog entry.
+pub struct Entry {
+    pub id: &'static str,
+    pub title: &'static str,
+    pub topic: &'static str,
+    pub source: &'static str,
+    pub summary: &'static str,
+    /// The input fields with the seed's defaults.
+    pub fields: fn() -> Vec<Field>,
+    /// `None` while the example is not built yet.
+    pub solve: Option<Solver>,
+}
+
+impl Entry {
+    /// An entry that is listed but not built yet.
+    const fn coming(
+        id: &'static str,
+        title: &'static str,
+        topic: &'static str,
+        source: &'static str,
+    ) -> Self {
+        Entry {
+            id,
+            title,
+            topic,
+            source,
+            summary: "",
+            fields: Vec::new,
+            solve: None,
+        }
+    }
+}
+
+/// Entries of the catalog that are not built yet.
+fn coming() -> Vec<Entry> {
+    const T: &str = "Transformations";
+    const C: &str = "Correlation";
+    const L: &str = "Least-squares matching";
+    const F: &str = "Filters and edges";
+    const I: &str = "Interest operators";
+    const B: &str = "Chain codes and boundaries";
+    vec![
+        Entry::coming(
+            "fiducial-similarity",
+            "Fiducials: similarity transformation",
+            T,
+            "Seed 000, Example 4a",
+        ),
+        Entry::coming(
+            "fiducial-affine",
+            "Fiducials: affine transformation",
+            T,
+            "Seed 000, Example 4b",
+        ),
+        Entry::coming(
+            "transform-fit",
+            "2-D transformations by least squares",
+            T,
+            "Seed 004, Table 9.5.1",
+        ),
+        Entry::coming(
+            "ncc-1d",
+            "1-D correlation matching",
+            C,
+            "Seed 000, Example 5",
+        ),
+        Entry::coming(
+            "ncc-2d",
+            "2-D correlation coefficient",
+            C,
+            "Seed 000, Example 6",
+        ),
+        Entry::coming(
+            "ncc-surface",
+            "Correlation surface",
+            C,
+            "Seed 000, Example 7",
+        ),
+        Entry::coming(
+            "subpixel-1d",
+            "Subpixel peak in 1-D",
+            C,
+            "Seed 000, Example 8",
+        ),
+        Entry::coming(
+            "subpixel-2d",
+            "Subpixel peak in 2-D",
+            C,
+            "Seed 000, Example 9",
+        ),
+        Entry::coming(
+            "lsm-1d",
+            "1-D least-squares matching",
+            L,
+            "Seed 000, Example 10",
+        ),
+        Entry::coming(
+            "lsm-2d",
+            "2-D least-squares matching",
+            L,
+            "Seed 000, Example 11",
+        ),
+        Entry::coming(
+            "lsm-affine",
+            "Affine + radiometric least-squares matching",
+            L,
+            "Seed 003",
+        ),
+        Entry::coming(
+            "resample",
+            "Resampling: nearest, bilinear, bicubic",
+            "Resampling",
+            "Seed 000, Example 12; seed 004",
+        ),
+        Entry::coming(
+            "filter-window",
+            "Filtering a window",
+            F,
+            "Seed 000, Examples 15–16; seed 004",
+        ),
+        Entry::coming(
+            "edge-window",
+            "Prewitt and Sobel edges",
+            F,
+            "Seed 000, Example 15",
+        ),
+        Entry::coming(
+            "forstner-window",
+            "Förstner operator",
+            I,
+            "Seed 000, Example 13; seed 003",
+        ),
+        Entry::coming(
+            "moravec-window",
+            "Moravec operator",
+            I,
+            "Seed 000, Example 14",
+        ),
+        Entry::coming(
+            "chain-code",
+            "Freeman chain code",
+            B,
+            "Seed 000, Example 17",
+        ),
+        Entry::coming(
+            "boundary-length",
+            "Boundary length",
+            B,
+            "Seed 000, Example 18",
+        ),
+        Entry::coming("boundary-shape", "Boundary descriptors", B, "Seed 000"),
+        Entry::coming("utm", "UTM coordinates", "Map projection", "Seed 004"),
+    ]
+}
+
+/// Every entry, grouped by topic in [`TOPICS`] order.
+pub fn entries() -> Vec<Entry> {
+    let mut all = coordinates::entries();
+    all.extend(coming());
+    all.sort_by_key(|e| {
+        TOPICS
+            .iter()
+            .position(|t| *t == e.topic)
+            .unwrap_or(TOPICS.len())
+    });
+    all
+}
+
+fn find(id: &str) -> Result<Entry> {
+    entries()
+        .into_iter()
+        .find(|e| e.id == id)
+        .ok_or_else(|| Error::UnknownExample { id: id.to_string() })
+}
+
+/// The JSON shape of a catalog entry.
+#[derive(Serialize)]
+pub struct EntryInfo {
+    pub id: &'static str,
+    pub title: &'static str,
+    pub topic: &'static str,
+    pub source: &'static str,
+    pub summary: &'static str,
+    pub status: &'static str,
+    pub inputs: Vec<FieldInfo>,
+}
+
+/// The catalog: every entry with its status and input fields.
+pub fn catalog() -> Vec<EntryInfo> {
+    entries()
+        .iter()
+        .map(|e| EntryInfo {
+            id: e.id,
+            title: e.title,
+            topic: e.topic,
+            source: e.source,
+            summary: e.summary,
+            status: if e.solve.is_some() { "ready" } else { "coming" },
+            inputs: (e.fields)().iter().map(FieldInfo::from).collect(),
+        })
+        .collect()
+}
+
+/// Solves example `id` with `inputs` (a missing field takes the seed's
+/// default). Inputs are checked before any arithmetic.
+pub fn solve(id: &str, inputs: &Record) -> Result<Solution> {
+    let entry = find(id)?;
+    let solver = entry
+        .solve
+        .ok_or_else(|| Error::NotBuilt { id: id.to_string() })?;
+    let used = fields::validate(&(entry.fields)(), inputs)?;
+    solver(&used)?.checked()
+}
+
+/// Texts parsed into typed inputs, and a message for each field that failed.
+#[derive(Debug, Serialize, PartialEq)]
+pub struct Parsed {
+    pub inputs: Record,
+    pub errors: Record,
+}
+
+/// Parses the texts of a form or URL (`{key: text}`) into typed inputs with
+/// the same checks as [`solve`]; every failing field gets its own message.
+pub fn parse_inputs(id: &str, texts: &Record) -> Result<Parsed> {
+    let entry = find(id)?;
+    let fields = (entry.fields)();
+    let mut out = Parsed {
+        inputs: Record::new(),
+        errors: Record::new(),
+    };
+    for (key, v) in texts.iter() {
+        let Some(field) = fields.iter().find(|f| f.key == key) else {
+            let known: Vec<_> = fields.iter().map(|f| f.key.to_string()).collect();
+            let e = Error::UnknownField {
+                field: key.to_string(),
+                known,
+            };
+            out.errors.set(key, Value::Text(e.to_string()));
+            continue;
+        };
+        let parsed = match v {
+            Value::Text(t) => field.parse_text(t),
+            other => field.check(other),
+        };
+        match parsed {
+            Ok(value) => out.inputs.set(key, value),
+            Err(e) => out.errors.set(key, Value::Text(e.to_string())),
+        }
+    }
+    Ok(out)
+}
