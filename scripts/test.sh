@@ -17,7 +17,7 @@ cargo clippy --all-targets --target wasm32-unknown-unknown -- -D warnings
 step "cargo test (native)"
 cargo test
 step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
-cargo test --target wasm32-unknown-unknown --test web
+cargo test --target wasm32-unknown-unknown --test 'web*'
 step "build the page"
 SKIP_SETUP=1 bash scripts/build.sh
 step "end-to-end tests of the page in Chromium"

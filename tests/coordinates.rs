@@ -1,4 +1,5 @@
 //! Seed 000, Examples 1–3, reproduced natively with their numbers.
+#![cfg(not(target_arch = "wasm32"))]
 
 use photogrammetry_playground::examples::{catalog, parse_inputs, solve};
 use photogrammetry_playground::solution::{NoteKind, Record, Solution, Value};
