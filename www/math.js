@@ -2,7 +2,9 @@
 // katex.render builds the formula's DOM itself and escapes its input; when it
 // fails (bad LaTeX, or KaTeX did not load) the raw LaTeX is shown as text.
 
-const KATEX_URL = "./vendor/katex/katex.mjs";
+// The minified UMD build (76 KB gzipped) rather than katex.mjs (146 KB
+// gzipped, not minified): loaded by a script element, it sets window.katex.
+const KATEX_URL = "./vendor/katex/katex.min.js";
 const KATEX_OPTIONS = Object.freeze({
   displayMode: true,
   throwOnError: true,
@@ -20,8 +22,15 @@ let loadError = null;
 export async function loadMath() {
   if (katex || loadError) return;
   try {
-    const mod = await import(KATEX_URL);
-    katex = mod.default ?? mod;
+    await new Promise((resolve, reject) => {
+      const script = document.createElement("script");
+      script.src = KATEX_URL;
+      script.onload = resolve;
+      script.onerror = () => reject(new Error(`${KATEX_URL} did not load`));
+      document.head.append(script);
+    });
+    if (!window.katex) throw new Error("katex.min.js loaded but defined no katex");
+    katex = window.katex;
   } catch (e) {
     loadError = e;
     console.warn("KaTeX did not load; formulas are shown as LaTeX source.", e);

@@ -71,7 +71,12 @@ export function renderResult(solution) {
   if (textbook) head.push(el("th", { scope: "col" }, "Seed prints"), el("th", { scope: "col" }, "Difference"));
   const body = el("tbody");
   for (const row of rows) {
-    const name = el("th", { scope: "row" }, el("code", {}, row.key));
+    const label = solution.labels && Object.hasOwn(solution.labels, row.key) ? solution.labels[row.key] : null;
+    const name = el("th", { scope: "row" });
+    if (label && label.label) {
+      name.append(el("span", { class: "quantity-label" }, label.label + (label.unit ? ` (${label.unit})` : "")), el("br"));
+    }
+    name.append(el("code", {}, row.key));
     if (row.intermediate) name.append(el("span", { class: "intermediate" }, " (intermediate)"));
     const tr = el("tr", { "data-key": row.key }, name, valueCell("exact", row.exact));
     if (textbook) {

@@ -104,7 +104,7 @@ describe("network", () => {
       assert.deepEqual(outside, []);
       // the wasm, KaTeX and its fonts came from here
       assert.ok(log.requests.some((u) => u.endsWith("_bg.wasm")));
-      assert.ok(log.requests.some((u) => u.includes("/vendor/katex/katex.mjs")));
+      assert.ok(log.requests.some((u) => u.includes("/vendor/katex/katex.min.js")));
       assert.ok(log.requests.some((u) => u.includes("/vendor/katex/fonts/")));
       assert.deepEqual(log.consoleErrors, []);
     } finally {
