@@ -10,6 +10,10 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`resample`]: nearest, bilinear and bicubic (cubic convolution) values
+//!   at fractional positions, with their intermediates.
+//! - [`filter`]: kernels (smoothing, Laplacian, sharpening, edges), median,
+//!   gradients and magnitude, with a border policy.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -18,8 +22,10 @@
 pub mod coords;
 pub mod error;
 pub mod examples;
+pub mod filter;
 pub mod lsq;
 pub mod raster;
+pub mod resample;
 pub mod solution;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -11,6 +11,8 @@
 
 pub mod coordinates;
 pub mod fields;
+pub mod filters;
+pub mod resampling;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -71,7 +73,6 @@ fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
     const C: &str = "Correlation";
     const L: &str = "Least-squares matching";
-    const F: &str = "Filters and edges";
     const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
     vec![
@@ -142,24 +143,6 @@ fn coming() -> Vec<Entry> {
             "Seed 003",
         ),
         Entry::coming(
-            "resample",
-            "Resampling: nearest, bilinear, bicubic",
-            "Resampling",
-            "Seed 000, Example 12; seed 004",
-        ),
-        Entry::coming(
-            "filter-window",
-            "Filtering a window",
-            F,
-            "Seed 000, Examples 15–16; seed 004",
-        ),
-        Entry::coming(
-            "edge-window",
-            "Prewitt and Sobel edges",
-            F,
-            "Seed 000, Example 15",
-        ),
-        Entry::coming(
             "forstner-window",
             "Förstner operator",
             I,
@@ -191,6 +174,8 @@ fn coming() -> Vec<Entry> {
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
+    all.extend(resampling::entries());
+    all.extend(filters::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
