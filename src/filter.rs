@@ -31,7 +31,7 @@ impl Kernel {
     pub fn new(field: &str, rows: &[Vec<f64>], divisor: f64) -> Result<Self> {
         let numerators = Grid::from_rows(field, rows)?;
         let (w, h) = (numerators.width(), numerators.height());
-        if w % 2 == 0 || h % 2 == 0 {
+        if w.is_multiple_of(2) || h.is_multiple_of(2) {
             return Err(Error::input(
                 field,
                 format!("is {h}×{w}; a kernel needs an odd number of rows and of columns, so that it has a centre pixel"),
@@ -430,14 +430,14 @@ pub fn median_of(values: &[f64]) -> Option<f64> {
     let n = v.len();
     match n {
         0 => None,
-        _ if n % 2 == 1 => v.get(n / 2).copied(),
+        _ if !n.is_multiple_of(2) => v.get(n / 2).copied(),
         _ => Some((v.get(n / 2 - 1)? + v.get(n / 2)?) / 2.0),
     }
 }
 
 /// The median filter over a `w × h` neighbourhood (odd sizes).
 pub fn median(img: &Grid, w: usize, h: usize, border: Border) -> Result<Filtered> {
-    if w % 2 == 0 || h % 2 == 0 {
+    if w.is_multiple_of(2) || h.is_multiple_of(2) {
         return Err(Error::input(
             "median",
             format!("window is {h}×{w}; it needs an odd number of rows and of columns"),

@@ -407,7 +407,7 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                 num(sum)
             ),
         ),
-        Some(e) if e == 1.0 => s.note(
+        Some(1.0) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 1, as a smoothing (or sharpening) kernel's must: a flat area keeps its grey value.",
         ),
@@ -721,7 +721,7 @@ fn seed_filter_cases(
         s.textbook = Some(textbook(&EX15_GAUSS_GRID, Some(&EX15_GAUSS_PIXELS)));
         s.note(
             NoteKind::Rounding,
-            "Every Gaussian sum of the seed is right. The output grid prints 164/16 = 10.25 at (r2, c3) as 10.2, where rounding half up gives 10.3; 145/16 = 9.0625 at (r2, c4) is printed with one decimal (9.1) where the others have two.",
+            "Every Gaussian sum of the seed is right. Four of its per-pixel values are printed with one decimal where the others have two: 145/16 = 9.0625 as 9.1, 229/16 = 14.3125 as 14.3 (twice) and 230/16 = 14.375 as 14.4. The output grid prints 164/16 = 10.25 at (r2, c3) as 10.2, where rounding half up gives 10.3.",
         );
         s.note(
             NoteKind::Erratum,
@@ -751,7 +751,10 @@ fn seed_filter_cases(
 // ---------------------------------------------------------------------------
 // edge-window
 
-const EX15_PREWITT: ([[f64; 3]; 3], [[f64; 3]; 3], [[f64; 3]; 3]) = (
+/// Printed Gx, Gy and magnitude.
+type Printed3 = ([[f64; 3]; 3], [[f64; 3]; 3], [[f64; 3]; 3]);
+
+const EX15_PREWITT: Printed3 = (
     [
         [-14.0, -12.0, 2.0],
         [-1.0, -8.0, -14.0],
@@ -760,7 +763,7 @@ const EX15_PREWITT: ([[f64; 3]; 3], [[f64; 3]; 3], [[f64; 3]; 3]) = (
     [[-10.0, -24.0, 12.0], [1.0, -20.0, 1.0], [6.0, -13.0, 6.0]],
     [[17.2, 26.8, 12.2], [1.4, 21.54, 14.0], [10.0, 19.85, 32.6]],
 );
-const EX15_SOBEL: ([[f64; 3]; 3], [[f64; 3]; 3], [[f64; 3]; 3]) = (
+const EX15_SOBEL: Printed3 = (
     [
         [-25.0, -16.0, 5.0],
         [1.0, -12.0, -20.0],
