@@ -10,6 +10,8 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`interest`]: the Förstner and Moravec interest operators, on a window
+//!   and as whole-image maps with thresholding and suppression.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -18,6 +20,7 @@
 pub mod coords;
 pub mod error;
 pub mod examples;
+pub mod interest;
 pub mod lsq;
 pub mod raster;
 pub mod solution;

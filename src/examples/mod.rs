@@ -11,6 +11,7 @@
 
 pub mod coordinates;
 pub mod fields;
+pub mod interest;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -72,7 +73,6 @@ fn coming() -> Vec<Entry> {
     const C: &str = "Correlation";
     const L: &str = "Least-squares matching";
     const F: &str = "Filters and edges";
-    const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
     vec![
         Entry::coming(
@@ -160,18 +160,6 @@ fn coming() -> Vec<Entry> {
             "Seed 000, Example 15",
         ),
         Entry::coming(
-            "forstner-window",
-            "Förstner operator",
-            I,
-            "Seed 000, Example 13; seed 003",
-        ),
-        Entry::coming(
-            "moravec-window",
-            "Moravec operator",
-            I,
-            "Seed 000, Example 14",
-        ),
-        Entry::coming(
             "chain-code",
             "Freeman chain code",
             B,
@@ -191,6 +179,7 @@ fn coming() -> Vec<Entry> {
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
+    all.extend(interest::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
