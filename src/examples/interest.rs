@@ -526,11 +526,15 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
     s.note(
         NoteKind::Rounding,
         format!(
-            "The seed gives trace N⁻¹ = {printed_tr}: the exact value is 196.75/{} = {}, and even its own determinant gives 196.75/{} = {}. Rounded to one significant digit, both slips disappear (a 10 % rounding).",
+            "The seed gives trace N⁻¹ = {printed_tr}: the exact value is 196.75/{} = {}, and even its own determinant gives 196.75/{} = {}. Rounded to one significant digit, both slips disappear in a rounding of {} %.",
             num(m.det),
             opt_num(m.trace_inverse),
             num(printed_det),
-            num(196.75 / printed_det)
+            num(196.75 / printed_det),
+            crate::solution::fmt_sig(
+                m.trace_inverse.map_or(0.0, |t| (t - printed_tr) / t * 100.0),
+                2
+            )
         ),
     );
     s.note(
