@@ -550,10 +550,11 @@ fn test_pattern_image_mode_finds_the_corners_and_the_three_cases() {
     );
     assert_eq!(s.result.get("case"), Some(&Value::from("corner")));
     assert_eq!(s.result.get("accepted"), Some(&Value::Bool(true)));
-    let image = matrix(s.result.get("image").unwrap());
+    let values = &s.steps[0].values;
+    let image = matrix(values.get("image").unwrap());
     assert_eq!((image.len(), image[0].len()), (64, 64));
     // the window shown is the map's window: w equals the map at (c, r)
-    let w_map = match s.result.get("w_map").unwrap() {
+    let w_map = match values.get("w_map").unwrap() {
         Value::List(rows) => rows.clone(),
         _ => panic!(),
     };
@@ -593,6 +594,9 @@ fn test_pattern_image_mode_finds_the_corners_and_the_three_cases() {
     // seed 003 alone (q_min = 0) also accepts some noisy edge windows
     let alone = solve("forstner-image", &Record::new().with("q_min", 0.0)).unwrap();
     assert!(matrix(alone.result.get("points").unwrap()).len() > points.len());
+    assert!(num(&alone, "candidates") > num(&s, "candidates"));
+    let listed = matrix(s.steps[s.steps.len() - 2].values.get("candidates").unwrap());
+    assert_eq!(listed.len() as f64, num(&s, "candidates"));
     // a 7×7 window works too, and the window follows the input
     let seven = solve(
         "forstner-image",

@@ -114,7 +114,10 @@ fn the_image_mode_across_the_boundary() {
     assert_eq!(get(&r, "case").as_string().as_deref(), Some("edge"));
     assert_eq!(matrix(&get(&r, "window")).len(), 5);
     assert_eq!(matrix(&get(&r, "points")).len(), 14);
-    let w_map: Array = get(&r, "w_map").dyn_into().unwrap();
+    let steps: Array = get(&s, "steps").dyn_into().unwrap();
+    let w_map: Array = get(&get(&steps.get(0), "values"), "w_map")
+        .dyn_into()
+        .unwrap();
     let row: Array = w_map.get(0).dyn_into().unwrap();
     assert!(row.get(0).is_null());
     let row: Array = w_map.get(8).dyn_into().unwrap();

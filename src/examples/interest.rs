@@ -451,6 +451,47 @@ fn forstner_result(f: &Forstner, p: &Precision) -> Record {
         .with("case", p.case.name())
 }
 
+/// What each result key is, for the page's result table.
+fn label_results(s: &mut Solution) {
+    for (key, label, unit) in [
+        ("gx", "Gradients g′x (interior)", "grey values/px"),
+        ("gy", "Gradients g′y (interior)", "grey values/px"),
+        ("n", "Matrix N", ""),
+        ("det_n", "det N", ""),
+        ("n_inverse", "N⁻¹", ""),
+        ("trace_n_inverse", "trace N⁻¹", ""),
+        ("w", "Weight w = det N / trace N", ""),
+        ("q", "Roundness q = 4 det N / trace² N", ""),
+        ("lambda_min", "Smaller eigenvalue λmin(N)", ""),
+        ("lambda_max_shift", "λmax(Σuv) = σn² / λmin(N)", "px²"),
+        ("accepted", "Accepted: λmax(Σuv) ≤ T²", ""),
+        ("lambda_max", "Larger eigenvalue λmax(N)", ""),
+        ("trace_n", "trace N", ""),
+        ("sigma_max_px", "Error ellipse, major semi-axis", "px"),
+        ("sigma_min_px", "Error ellipse, minor semi-axis", "px"),
+        (
+            "weak_angle_deg",
+            "Direction of the major axis (from +c toward +r)",
+            "°",
+        ),
+        ("case", "Seed 003's case", ""),
+        ("window", "The window", "grey values"),
+        ("candidates", "Pixels that pass the threshold", ""),
+        ("points", "Interest points [c, r, λmax(Σuv)]", ""),
+        ("sums", "Sums of squared differences", "grey values²"),
+        ("mean", "Measure of distinctness (mean)", "grey values²"),
+        (
+            "differences",
+            "[c, r, g, row, column, main diag., other diag., sum]",
+            "",
+        ),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, unit);
+        }
+    }
+}
+
 fn singular_notes(s: &mut Solution, m: &Measures) {
     if m.trace == 0.0 {
         s.note(
@@ -474,6 +515,7 @@ fn forstner_window(inputs: &Record) -> Result<Solution> {
     let mut s = Solution::new("forstner-window", "Förstner operator", inputs.clone());
     forstner_steps(&mut s, &f, &p, sigma_n, t);
     s.result = forstner_result(&f, &p);
+    label_results(&mut s);
     singular_notes(&mut s, &f.measures);
     s.note(
         NoteKind::Convention,
@@ -609,6 +651,7 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
         .with("sums", Value::matrix(&mv.sums.rows()))
         .with("mean", mv.mean)
         .with("differences", Value::matrix(&table));
+    label_results(&mut s);
     s.note(
         NoteKind::Convention,
         "This is the Moravec operator as seed 000 defines it: differences across the pixel (c+1 against c−1), all four directions summed, averaged over the window. Moravec's original operator sums squared differences of neighbouring pixels along each direction and keeps the MINIMUM over the four directions, so that an edge (strong in one direction only) scores low; the seed's average responds to edges as strongly as to corners.",
@@ -754,13 +797,15 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
             })
             .collect(),
     );
+    if let Some(step) = s.steps.first_mut() {
+        step.values.set("w_map", w_map);
+    }
     let mut result = forstner_result(&f, &p);
     result.set("window", Value::matrix(&window.rows()));
-    result.set("candidates", one_based(&det.candidates));
+    result.set("candidates", det.candidates.len());
     result.set("points", one_based(&det.points));
-    result.set("image", Value::matrix(&image.rows()));
-    result.set("w_map", w_map);
     s.result = result;
+    label_results(&mut s);
     singular_notes(&mut s, &f.measures);
     s.note(
         NoteKind::Convention,
