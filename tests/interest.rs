@@ -204,11 +204,12 @@ fn example_13_solution_exact_values_printed_values_and_notes() {
     assert!(has_note(&s, NoteKind::Convention, "no noise level"));
     // the table step lays out the seed's rows
     let table = &s.steps[0].substituted;
-    assert!(table.contains(
-        r"P(c_{2}, r_{2}) = 15 & (10 - 11)/2 = -0.5 & (24 - 13)/2 = 5.5 & -2.75 & 0.25 & 30.25"
-    ));
-    assert!(table.contains(r"\text{sum} & -9 & 17.5 & -22.25 & 82 & 114.75"));
-    assert!(s.steps[2].substituted.contains("8914.438"));
+    assert!(table.contains(r"P(c_{2}, r_{2}) = 15 & (10 - 11)/2 = -0.5 & (24 - 13)/2 = 5.5 \\"));
+    assert!(table.contains(r"P(c_{3}, r_{3}) = 7 & (8 - 24)/2 = -8 & (14 - 10)/2 = 2 \\"));
+    let products = &s.steps[1].substituted;
+    assert!(products.contains(r"P(c_{2}, r_{2}) & -0.5 & 5.5 & -2.75 & 0.25 & 30.25 \\"));
+    assert!(products.contains(r"\text{sum} & -9 & 17.5 & -22.25 & 82 & 114.75"));
+    assert!(s.steps[3].substituted.contains("8914.438"));
     for step in &s.steps {
         assert!(!step.formula.is_empty(), "{}", step.title);
         assert!(!step.substituted.is_empty(), "{}", step.title);

@@ -197,13 +197,17 @@ fn opt_num(x: Option<f64>) -> String {
 /// example and the image mode).
 fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t: f64) {
     let m = &f.measures;
-    let mut lines = vec![
-        r"\begin{array}{l|l|l|r|r|r}".to_string(),
+    let mut diffs = vec![
+        r"\footnotesize\begin{array}{l|l|l}".to_string(),
+        r"\text{Pixel} & g'_x & g'_y \\ \hline".to_string(),
+    ];
+    let mut products = vec![
+        r"\small\begin{array}{l|r|r|r|r|r}".to_string(),
         r"\text{Pixel} & g'_x & g'_y & g'_x g'_y & (g'_x)^2 & (g'_y)^2 \\ \hline".to_string(),
     ];
     for t in &f.rows {
-        lines.push(format!(
-            r"{} = {} & ({} - {})/2 = {} & ({} - {})/2 = {} & {} & {} & {} \\",
+        diffs.push(format!(
+            r"{} = {} & ({} - {})/2 = {} & ({} - {})/2 = {} \\",
             pos(t.c, t.r),
             num(t.g),
             num(t.right),
@@ -212,13 +216,20 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
             num(t.down),
             tex(t.up),
             num(t.gy),
+        ));
+        products.push(format!(
+            r"{} & {} & {} & {} & {} & {} \\",
+            pos(t.c, t.r),
+            num(t.gx),
+            num(t.gy),
             num(t.gxgy),
             num(t.gx2),
             num(t.gy2)
         ));
     }
+    diffs.push(r"\end{array}".to_string());
     let sm = &f.sums;
-    lines.push(format!(
+    products.push(format!(
         r"\hline \text{{sum}} & {} & {} & {} & {} & {}",
         num(sm.gx),
         num(sm.gy),
@@ -226,7 +237,7 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
         num(sm.gx2),
         num(sm.gy2)
     ));
-    lines.push(r"\end{array}".to_string());
+    products.push(r"\end{array}".to_string());
     let table: Vec<Vec<f64>> = f
         .rows
         .iter()
@@ -245,16 +256,26 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
         .collect();
     s.step(
         Step::new(
-            "Gradient table",
-            "At every interior pixel of the window, row by row as the seed lays it out: the central differences g′x = (g(c+1, r) − g(c−1, r))/2 across the columns and g′y = (g(c, r+1) − g(c, r−1))/2 down the rows, their product and their squares, then the column sums. Table rows are [c, r, g, g′x, g′y, g′x·g′y, (g′x)², (g′y)²], positions from 1.",
+            "Gradient table: central differences",
+            "At every interior pixel of the window, row by row as the seed lays it out: g′x = (g(c+1, r) − g(c−1, r))/2 across the columns and g′y = (g(c, r+1) − g(c, r−1))/2 down the rows. Table rows are [c, r, g, g′x, g′y, g′x·g′y, (g′x)², (g′y)²], positions from 1.",
         )
         .formula(
             r"g'_x = \frac{g(c+1,r) - g(c-1,r)}{2},\quad g'_y = \frac{g(c,r+1) - g(c,r-1)}{2}",
-            lines.join("\n"),
+            diffs.join("\n"),
         )
         .value("table", Value::matrix(&table))
         .value("gx", Value::matrix(&f.gx.rows()))
-        .value("gy", Value::matrix(&f.gy.rows()))
+        .value("gy", Value::matrix(&f.gy.rows())),
+    );
+    s.step(
+        Step::new(
+            "Gradient table: products, squares and sums",
+            "The rest of the seed's table: the product and the squares at each pixel, then the column sums.",
+        )
+        .formula(
+            r"\sum g'_x,\ \sum g'_y,\ \sum g'_x g'_y,\ \sum (g'_x)^2,\ \sum (g'_y)^2",
+            products.join("\n"),
+        )
         .value("sum_gx", sm.gx)
         .value("sum_gy", sm.gy)
         .value("sum_gxgy", sm.gxgy)
@@ -596,7 +617,7 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
     let window = grid(inputs, "window")?;
     let mv = interest::moravec(&window)?;
     let mut s = Solution::new("moravec-window", "Moravec operator", inputs.clone());
-    let mut lines = vec![r"\begin{aligned}".to_string()];
+    let mut lines = vec![r"\footnotesize\begin{aligned}".to_string()];
     let mut table = Vec::new();
     for p in &mv.pixels {
         let terms: Vec<String> = p
@@ -623,7 +644,7 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
             "Across each interior pixel, in the row direction g(c+1, r) − g(c−1, r), the column direction g(c, r+1) − g(c, r−1), the main diagonal g(c+1, r+1) − g(c−1, r−1) and the other diagonal g(c−1, r+1) − g(c+1, r−1); squared and summed. Table rows are [c, r, g, row, column, main diagonal, other diagonal, sum], positions from 1.",
         )
         .formula(
-            r"S(c,r) = (g_{c+1,r} - g_{c-1,r})^2 + (g_{c,r+1} - g_{c,r-1})^2 + (g_{c+1,r+1} - g_{c-1,r-1})^2 + (g_{c-1,r+1} - g_{c+1,r-1})^2",
+            r"S(c,r) = d_1^2 + d_2^2 + d_3^2 + d_4^2,\quad d_1 = g_{c+1,r} - g_{c-1,r},\quad d_2 = g_{c,r+1} - g_{c,r-1},\quad d_3 = g_{c+1,r+1} - g_{c-1,r-1},\quad d_4 = g_{c-1,r+1} - g_{c+1,r-1}",
             lines.join("\n"),
         )
         .value("table", Value::matrix(&table))
