@@ -625,11 +625,13 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
             .iter()
             .map(|(a, b)| format!("({} - {})^2", num(*a), tex(*b)))
             .collect();
+        let (first, second) = terms.split_at(2);
         lines.push(format!(
-            r"{} = {}:&\quad {} = {} \\",
+            r"{} = {}:&\quad {} \\ &\quad + {} = {} \\",
             pos(p.c, p.r),
             num(p.g),
-            terms.join(" + "),
+            first.join(" + "),
+            second.join(" + "),
             num(p.sum)
         ));
         let mut row = vec![(p.c + 1) as f64, (p.r + 1) as f64, p.g];
