@@ -14,6 +14,8 @@
 //!   at fractional positions, with their intermediates.
 //! - [`filter`]: kernels (smoothing, Laplacian, sharpening, edges), median,
 //!   gradients and magnitude, with a border policy.
+//! - [`interest`]: the Förstner and Moravec interest operators, on a window
+//!   and as whole-image maps with thresholding and suppression.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -23,6 +25,7 @@ pub mod coords;
 pub mod error;
 pub mod examples;
 pub mod filter;
+pub mod interest;
 pub mod lsq;
 pub mod raster;
 pub mod resample;

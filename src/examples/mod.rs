@@ -12,6 +12,7 @@
 pub mod coordinates;
 pub mod fields;
 pub mod filters;
+pub mod interest;
 pub mod resampling;
 
 use crate::error::{Error, Result};
@@ -73,7 +74,6 @@ fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
     const C: &str = "Correlation";
     const L: &str = "Least-squares matching";
-    const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
     vec![
         Entry::coming(
@@ -143,18 +143,6 @@ fn coming() -> Vec<Entry> {
             "Seed 003",
         ),
         Entry::coming(
-            "forstner-window",
-            "Förstner operator",
-            I,
-            "Seed 000, Example 13; seed 003",
-        ),
-        Entry::coming(
-            "moravec-window",
-            "Moravec operator",
-            I,
-            "Seed 000, Example 14",
-        ),
-        Entry::coming(
             "chain-code",
             "Freeman chain code",
             B,
@@ -176,6 +164,7 @@ pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
     all.extend(resampling::entries());
     all.extend(filters::entries());
+    all.extend(interest::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS

@@ -17,10 +17,12 @@
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { figures as coordinates } from "./coordinates.js";
+import { figures as interest } from "./interest.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
+  ...interest,
 });
 
 /** Heights are kept within these bounds (CSS px). */
