@@ -385,6 +385,8 @@ pub struct PixelSum {
     /// The input pixel (zero-based).
     pub c: usize,
     pub r: usize,
+    /// The kernel's width (the rows of `values` and `numerators`).
+    pub width: usize,
     /// The neighbourhood, row-major, same shape as the kernel.
     pub values: Vec<f64>,
     /// The kernel's numerators, row-major.
@@ -415,6 +417,7 @@ pub fn pixel_sum(img: &Grid, k: &Kernel, c: usize, r: usize, border: Border) -> 
         c,
         r,
         value: apply(k, &values),
+        width: k.width(),
         numerators: k.numerators.data().to_vec(),
         values,
         numerator_sum,

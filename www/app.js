@@ -176,7 +176,13 @@ function buildView(entry) {
   children.push(el("header", { class: "example-head" }, heading, meta, summary), urlNotice, errorBox, staleBanner, solutionArea);
   const article = el("article", { class: "example", "data-id": id }, children);
   root.replaceChildren(article);
-  if (figureSection) v.figure = mountFigures(figureHost, id);
+  if (figureSection) {
+    const onInputs = (changes) => {
+      v.form.setAll({ ...v.form.texts(), ...changes });
+      recompute();
+    };
+    v.figure = mountFigures(figureHost, id, { onInputs });
+  }
 
   v.parts = { heading, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
   document.title = `${entry.title} — ${SITE_TITLE}`;

@@ -337,38 +337,59 @@ fn term(n: f64, f: f64, first: bool) -> Option<String> {
 }
 
 /// The sum `Σ n·f` written out as the seed writes it.
-fn written_terms(ps: &PixelSum) -> String {
-    let mut out = String::new();
-    for (n, f) in ps.numerators.iter().zip(&ps.values) {
-        if let Some(t) = term(*n, *f, out.is_empty()) {
-            out.push_str(&t);
+/// The sum `Σ n·f` written out as the seed writes it, one line per kernel
+/// row (rows of zero weights left out).
+fn written_lines(ps: &PixelSum) -> Vec<String> {
+    let mut lines = Vec::new();
+    let w = ps.width.max(1);
+    for (nums, vals) in ps.numerators.chunks(w).zip(ps.values.chunks(w)) {
+        let mut line = String::new();
+        for (n, f) in nums.iter().zip(vals) {
+            if let Some(t) = term(*n, *f, lines.is_empty() && line.is_empty()) {
+                line.push_str(&t);
+            }
+        }
+        if !line.is_empty() {
+            lines.push(line);
         }
     }
-    if out.is_empty() {
-        "0".to_string()
-    } else {
-        out
+    if lines.is_empty() {
+        lines.push("0".to_string());
     }
+    lines
 }
 
-/// `g(r_2, c_2) = \frac{1}{9}(…) = \frac{102}{9} = 11.33333`.
+/// The selected pixel's sum, aligned one kernel row per line:
+/// `g(r_2, c_2) = 1/9 (10 + 13 + 3 ⏎ + 11 + 15 + 10 ⏎ + 9 + 24 + 7) = 102/9 = 11.33333`.
 fn written_sum(name: &str, ps: &PixelSum) -> String {
-    let terms = written_terms(ps);
-    if ps.divisor == 1.0 {
+    let lines = written_lines(ps);
+    let last = lines.len().saturating_sub(1);
+    let scaled = ps.divisor != 1.0;
+    let d = num(ps.divisor);
+    let mut body = String::new();
+    for (i, l) in lines.iter().enumerate() {
+        let open = if i == 0 && scaled {
+            format!(r"\tfrac{{1}}{{{d}}}\big(")
+        } else {
+            String::new()
+        };
+        let close = if i == last && scaled { r"\big)" } else { "" };
+        let lead = if i == 0 { "&= " } else { r"&\qquad " };
+        body.push_str(&format!(r"{lead}{open}{l}{close} \\ "));
+    }
+    let total = if scaled {
         format!(
-            "{name}{} = {terms} = {}",
-            pixel_name(ps.c, ps.r),
+            r"&= \frac{{{}}}{{{d}}} = {}",
+            num(ps.numerator_sum),
             num(ps.value)
         )
     } else {
-        format!(
-            r"{name}{} = \frac{{1}}{{{d}}}\left({terms}\right) = \frac{{{}}}{{{d}}} = {}",
-            pixel_name(ps.c, ps.r),
-            num(ps.numerator_sum),
-            num(ps.value),
-            d = num(ps.divisor)
-        )
-    }
+        format!("&= {}", num(ps.value))
+    };
+    format!(
+        r"\begin{{aligned}} {name}{} {body}{total} \end{{aligned}}",
+        pixel_name(ps.c, ps.r)
+    )
 }
 
 /// The kernel in LaTeX: `\frac{1}{16}\begin{bmatrix}…\end{bmatrix}`.

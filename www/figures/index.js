@@ -12,17 +12,33 @@
 //     },
 //   };
 //
-// and is registered with one line below. The page calls mountFigures(host, id)
+// and is registered with one line below.
+//
+// A spec may also be interactive (optional), to change inputs from the figure:
+//
+//   interact: {
+//     hint: "Click a pixel to select it; arrow keys move the selection.",
+//     pointer(x, y, width, height, solution) { return { select_c: "3" } | null; },
+//     key(key, solution) { return { select_c: "4" } | null; },   // KeyboardEvent.key
+//     drag: true,                                                  // also while the pointer moves pressed
+//   }
+//
+// The returned texts are put into the form (as if typed) and the example is
+// solved again; the canvas becomes focusable and the hint is shown below it. The page calls mountFigures(host, id)
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { figures as coordinates } from "./coordinates.js";
 import { figures as interest } from "./interest.js";
+import { figures as filters } from "./filters.js";
+import { figures as resampling } from "./resampling.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
   ...interest,
+  ...resampling,
+  ...filters,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -77,13 +93,80 @@ function paint(panel, solution) {
   panel.drawn = { width, dpr };
 }
 
+/** Wires a spec's optional `interact` hooks to its canvas (pointer and keyboard). */
+function interactive(spec, canvas, figure, current, onInputs) {
+  const { interact } = spec;
+  canvas.tabIndex = 0;
+  canvas.classList.add("figure-interactive");
+  if (interact.hint) {
+    const hint = document.createElement("p");
+    hint.className = "figure-hint";
+    hint.textContent = interact.hint;
+    figure.append(hint);
+  }
+  const apply = (changes) => {
+    if (changes && typeof changes === "object" && Object.keys(changes).length) onInputs(changes);
+  };
+  let pressed = false;
+  let queued = null;
+  const fromEvent = (e) => {
+    const solution = current();
+    if (!solution || typeof interact.pointer !== "function") return null;
+    const box = canvas.getBoundingClientRect();
+    try {
+      return interact.pointer(e.clientX - box.left, e.clientY - box.top, box.width, box.height, solution);
+    } catch (err) {
+      console.error("figure interaction failed", err);
+      return null;
+    }
+  };
+  canvas.addEventListener("pointerdown", (e) => {
+    pressed = true;
+    if (interact.drag) canvas.setPointerCapture(e.pointerId);
+    apply(fromEvent(e));
+  });
+  canvas.addEventListener("pointermove", (e) => {
+    if (!pressed || !interact.drag) return;
+    const first = queued === null;
+    queued = e;
+    if (first) {
+      requestAnimationFrame(() => {
+        const ev = queued;
+        queued = null;
+        if (ev) apply(fromEvent(ev));
+      });
+    }
+  });
+  const release = () => {
+    pressed = false;
+  };
+  canvas.addEventListener("pointerup", release);
+  canvas.addEventListener("pointercancel", release);
+  canvas.addEventListener("keydown", (e) => {
+    const solution = current();
+    if (!solution || typeof interact.key !== "function") return;
+    let changes = null;
+    try {
+      changes = interact.key(e.key, solution);
+    } catch (err) {
+      console.error("figure interaction failed", err);
+    }
+    if (changes) {
+      e.preventDefault();
+      apply(changes);
+    }
+  });
+}
+
 /**
- * Puts the example's canvases into `host`.
+ * Puts the example's canvases into `host`; `onInputs(texts)` (optional) takes
+ * input changes from interactive figures.
  * @returns {{ update(solution): void, redraw(): void, destroy(): void } | null}
  */
-export function mountFigures(host, id) {
+export function mountFigures(host, id, { onInputs = null } = {}) {
   const specs = specsFor(id);
   if (!specs.length) return null;
+  let solution = null;
   const panels = specs.map((spec) => {
     const canvas = document.createElement("canvas");
     canvas.className = "figure-canvas";
@@ -98,10 +181,10 @@ export function mountFigures(host, id) {
       figure.append(caption);
     }
     host.append(figure);
+    if (spec.interact && onInputs) interactive(spec, canvas, figure, () => solution, onInputs);
     return { spec, canvas, figure, drawn: null };
   });
 
-  let solution = null;
   const redraw = () => panels.forEach((p) => paint(p, solution));
   const onResize = () => {
     // repaint only when the width or the pixel ratio changed (the height follows the width)

@@ -1,0 +1,434 @@
+// Figures of the "Filters and edges" topic (seed 000, Examples 15–16; seed 004):
+//   filter-window: the window as a grid of numbers with the kernel laid over
+//     the selected pixel, the kernel, the output grid, and the multiply-and-sum
+//     of the selected pixel written row by row;
+//   edge-window: the same for the two Prewitt/Sobel kernels, with Gx, Gy and
+//     the magnitude as three output grids.
+// Signed outputs are shaded on a diverging scale (blue below 0, orange above).
+// Clicking a pixel of the window (or of an output grid) selects it; the arrow
+// keys move the selection.
+
+import { formatNumber } from "../format.js";
+import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, blockSize, line, text, textBlock } from "./draw.js";
+
+/** Layout constants (CSS px). */
+export const GRID = Object.freeze({
+  margin: 14,
+  gap: 22, // between panels
+  title: 22, // room for a panel title above a grid
+  axis: 16, // room for the column/row numbers
+  maxCell: 54,
+  minCell: 14,
+  numbersFrom: 20, // below this cell size the numbers are left out
+  weightFrom: 40, // below this the kernel weights in the window's cells are left out
+  sumGap: 12,
+});
+/** Significant digits in the grids. */
+const DIGITS = 4;
+/** Strongest shade of a grid cell (alpha). */
+const MAX_ALPHA = 0.5;
+/** Diverging scale colours: below and above zero. */
+const NEGATIVE = "29, 95, 191";
+const POSITIVE = "217, 119, 6";
+const GREY = "87, 96, 106";
+
+export const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
+
+/** The last step value named `key`. */
+export function stepValue(solution, key) {
+  let found;
+  for (const step of solution.steps ?? []) {
+    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
+  }
+  return found;
+}
+
+export function isMatrix(m) {
+  return Array.isArray(m) && m.length > 0 && Array.isArray(m[0]) && m[0].length > 0 && m.every((r) => Array.isArray(r) && r.length === m[0].length);
+}
+
+/**
+ * A shading function for a matrix: diverging (blue < 0 < orange) when it has
+ * values of both signs or only negative ones, a grey ramp otherwise.
+ */
+export function shader(m) {
+  const flat = m.flat().filter(Number.isFinite);
+  const lo = Math.min(...flat);
+  const hi = Math.max(...flat);
+  if (lo < 0) {
+    const max = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
+    return { signed: true, fill: (v) => `rgba(${v < 0 ? NEGATIVE : POSITIVE}, ${(MAX_ALPHA * Math.abs(v)) / max})` };
+  }
+  const span = hi - lo || 1;
+  return { signed: false, fill: (v) => `rgba(${GREY}, ${0.05 + (0.4 * (v - lo)) / span})` };
+}
+
+/**
+ * A grid of numbers with its top-left at (x0, y0): shaded cells, thin lines,
+ * optional column/row numbers (`first` = the number of the first column/row,
+ * null for none). Returns its geometry.
+ */
+export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, shade = shader(m), digits = DIGITS, muted = null, valueDy = 0 } = {}) {
+  const rows = m.length;
+  const cols = m[0].length;
+  if (title) text(ctx, title, x0, y0 - GRID.title / 2 - (first ? GRID.axis : 0), { weight: "bold", size: FONT_SIZE });
+  for (let r = 0; r < rows; r++) {
+    for (let c = 0; c < cols; c++) {
+      const v = m[r][c];
+      ctx.fillStyle = Number.isFinite(v) ? shade.fill(v) : COLORS.background;
+      ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
+      if (cell >= GRID.numbersFrom) {
+        const size = cell < 30 ? 9.5 : cell < 40 ? FONT_SIZE_SMALL : FONT_SIZE;
+        text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
+          align: "center",
+          size,
+          color: muted && muted(c, r) ? COLORS.muted : COLORS.ink,
+        });
+      }
+    }
+  }
+  for (let i = 0; i <= rows; i++) line(ctx, x0, y0 + i * cell, x0 + cols * cell, y0 + i * cell, { color: COLORS.grid });
+  for (let i = 0; i <= cols; i++) line(ctx, x0 + i * cell, y0, x0 + i * cell, y0 + rows * cell, { color: COLORS.grid });
+  if (first) {
+    const step = Math.max(1, Math.ceil(28 / cell));
+    for (let c = 0; c < cols; c += step) {
+      text(ctx, String(first.c + c), x0 + (c + 0.5) * cell, y0 - GRID.axis / 2, { align: "center", size: 10, color: COLORS.muted });
+    }
+    for (let r = 0; r < rows; r += step) {
+      text(ctx, String(first.r + r), x0 - 4, y0 + (r + 0.5) * cell, { align: "right", size: 10, color: COLORS.muted });
+    }
+  }
+  return { x0, y0, cell, rows, cols, w: cols * cell, h: rows * cell };
+}
+
+/** Outlines cells [c, c+w) × [r, r+h) of a grid. */
+export function outline(ctx, g, c, r, w, h, { color = COLORS.highlight, width = 2.5, dash = null, fill = null } = {}) {
+  ctx.save();
+  if (fill) {
+    ctx.fillStyle = fill;
+    ctx.fillRect(g.x0 + c * g.cell, g.y0 + r * g.cell, w * g.cell, h * g.cell);
+  }
+  ctx.strokeStyle = color;
+  ctx.lineWidth = width;
+  ctx.setLineDash(dash ? [...dash] : []);
+  ctx.strokeRect(g.x0 + c * g.cell, g.y0 + r * g.cell, w * g.cell, h * g.cell);
+  ctx.restore();
+}
+
+/** The cell of grid `g` under (x, y), or null. */
+export function cellAt(g, x, y) {
+  if (!g) return null;
+  const c = Math.floor((x - g.x0) / g.cell);
+  const r = Math.floor((y - g.y0) / g.cell);
+  return c >= 0 && r >= 0 && c < g.cols && r < g.rows ? { c, r } : null;
+}
+
+/** The colour legend of a diverging scale. */
+function legend(ctx, x, y, signed) {
+  if (!signed) return;
+  const sw = 12;
+  ctx.fillStyle = `rgba(${NEGATIVE}, ${MAX_ALPHA})`;
+  ctx.fillRect(x, y - sw / 2, sw, sw);
+  let b = text(ctx, "below 0", x + sw + 4, y, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+  const x2 = b.x + b.w + 12;
+  ctx.fillStyle = `rgba(${POSITIVE}, ${MAX_ALPHA})`;
+  ctx.fillRect(x2, y - sw / 2, sw, sw);
+  text(ctx, "above 0", x2 + sw + 4, y, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+}
+
+// ---------------------------------------------------------------------------
+// What the figures read from a solution
+
+function filterData(solution) {
+  const inp = solution.inputs ?? {};
+  const res = solution.result ?? {};
+  const window = inp.window;
+  const output = res.output;
+  if (!isMatrix(window) || !isMatrix(output)) return null;
+  const numerators = stepValue(solution, "numerators");
+  const divisor = stepValue(solution, "divisor");
+  return {
+    window,
+    output,
+    first: { c: res.output_first_c ?? 1, r: res.output_first_r ?? 1 },
+    sel: { c: inp.select_c ?? 1, r: inp.select_r ?? 1 },
+    kernels: isMatrix(numerators) ? [{ name: divisor && divisor !== 1 ? `Kernel: 1/${fmt(divisor)} ×` : "Kernel", m: numerators, divisor: divisor ?? 1 }] : [],
+    median: inp.kernel === "median",
+    neighbourhood: stepValue(solution, "neighbourhood"),
+    sorted: stepValue(solution, "sorted"),
+    selected: res.selected,
+    outputs: [{ name: "Output g", m: output, value: res.selected }],
+  };
+}
+
+function edgeData(solution) {
+  const inp = solution.inputs ?? {};
+  const res = solution.result ?? {};
+  const window = inp.window;
+  if (!isMatrix(window) || !isMatrix(res.gx) || !isMatrix(res.gy) || !isMatrix(res.magnitude)) return null;
+  const sobel = inp.operator === "sobel";
+  const kx = stepValue(solution, "kernel_x");
+  const ky = stepValue(solution, "kernel_y");
+  return {
+    window,
+    first: { c: res.output_first_c ?? 1, r: res.output_first_r ?? 1 },
+    sel: { c: inp.select_c ?? 1, r: inp.select_r ?? 1 },
+    kernels: isMatrix(kx) && isMatrix(ky)
+      ? [
+          { name: sobel ? "sk_x (→ Gx)" : "pk_x (→ Gx)", m: kx, divisor: 1, value: res.selected_gx, symbol: "Gx" },
+          { name: sobel ? "sk_y (→ Gy)" : "pk_y (→ Gy)", m: ky, divisor: 1, value: res.selected_gy, symbol: "Gy" },
+        ]
+      : [],
+    neighbourhood: stepValue(solution, "neighbourhood"),
+    outputs: [
+      { name: "Gx", m: res.gx, value: res.selected_gx },
+      { name: "Gy", m: res.gy, value: res.selected_gy },
+      { name: "|G| = √(Gx² + Gy²)", m: res.magnitude, value: res.selected_magnitude, unsigned: true },
+    ],
+    magnitude: res.selected_magnitude,
+  };
+}
+
+// ---------------------------------------------------------------------------
+// The multiply-and-sum lines of the selected pixel
+
+/** "1×10 + 2×13 + 1×3" for one kernel row over one neighbourhood row. */
+function rowTerms(nums, vals) {
+  const parts = [];
+  nums.forEach((n, i) => {
+    if (n === 0) return;
+    const v = vals[i];
+    const a = Math.abs(n);
+    const body = `${a === 1 ? "" : `${fmt(a)}×`}${v < 0 ? `(${fmt(v)})` : fmt(v)}`;
+    parts.push(parts.length === 0 ? (n < 0 ? `−${body}` : body) : `${n < 0 ? "− " : "+ "}${body}`);
+  });
+  return parts.length ? parts.join(" ") : "0";
+}
+
+function sumLines(d) {
+  const nb = d.neighbourhood;
+  const at = `row ${d.sel.r}, column ${d.sel.c}`;
+  if (!Array.isArray(nb)) {
+    return [{ text: `No output at ${at}: the kernel reaches outside the window.`, color: COLORS.muted }];
+  }
+  if (d.median) {
+    const sorted = Array.isArray(d.sorted) ? d.sorted : [];
+    const mid = Math.floor(sorted.length / 2);
+    return [
+      { text: `Median at ${at}: sort the ${sorted.length} values, take the middle one`, weight: "bold" },
+      { text: sorted.map((v, i) => (i === mid ? `[${fmt(v)}]` : fmt(v))).join("  ") },
+      { text: `g = ${fmt(d.selected)}`, weight: "bold", color: COLORS.highlight },
+    ];
+  }
+  const lines = [];
+  for (const k of d.kernels) {
+    const kw = k.m[0].length;
+    const sym = k.symbol ?? "g";
+    lines.push({ text: `${sym} at ${at}: weight × grey value, row by row`, weight: "bold" });
+    let total = 0;
+    k.m.forEach((row, j) => {
+      const vals = nb.slice(j * kw, (j + 1) * kw);
+      const s = row.reduce((acc, n, i) => acc + n * vals[i], 0);
+      total += s;
+      lines.push({ text: `  ${rowTerms(row, vals)}  = ${fmt(s, 6)}` });
+    });
+    const value = k.divisor !== 1 ? `${fmt(total, 6)} / ${fmt(k.divisor)} = ${fmt(k.value ?? d.selected, 6)}` : fmt(total, 6);
+    lines.push({ text: `${sym} = ${value}`, weight: "bold", color: COLORS.highlight });
+  }
+  if (d.magnitude !== undefined && d.kernels.length === 2) {
+    lines.push({ text: `|G| = √(${fmt(d.kernels[0].value)}² + ${fmt(d.kernels[1].value)}²) = ${fmt(d.magnitude, 6)}`, weight: "bold", color: COLORS.highlight });
+  }
+  return lines;
+}
+
+// ---------------------------------------------------------------------------
+// Layout: window and kernels in the first row, outputs in the second (or all
+// stacked on a narrow canvas), the sum below.
+
+function layout(width, d, ctxLike = null) {
+  const m = GRID.margin;
+  const cols1 = [d.window[0].length, ...d.kernels.map((k) => k.m[0].length)];
+  const kernelCols = d.median ? 3 : 0;
+  const row1 = cols1.reduce((a, b) => a + b, 0) + kernelCols;
+  const row2 = d.outputs.reduce((a, o) => a + o.m[0].length, 0);
+  const panels1 = cols1.length + (d.median ? 1 : 0);
+  const panels2 = d.outputs.length;
+  const singleRow = d.outputs.length === 1;
+  // one row for everything when there is one output and room for it
+  const allCols = singleRow ? row1 + row2 : Math.max(row1, row2);
+  const gaps = singleRow ? panels1 + panels2 - 1 : Math.max(panels1, panels2) - 1;
+  const avail = width - 2 * m - GRID.axis - gaps * GRID.gap;
+  let cell = Math.floor(avail / allCols);
+  let stacked = false;
+  if (cell < GRID.numbersFrom + 6) {
+    stacked = true;
+    const widest = Math.max(d.window[0].length, ...d.kernels.map((k) => k.m[0].length), ...d.outputs.map((o) => o.m[0].length));
+    cell = Math.floor((width - 2 * m - GRID.axis) / widest);
+  }
+  cell = Math.max(GRID.minCell, Math.min(GRID.maxCell, cell));
+  const top = GRID.title + GRID.axis;
+  const panels = [];
+  let x = m + GRID.axis;
+  let y = m + top;
+  const place = (kind, item, mat) => {
+    const w = mat[0].length * cell;
+    const h = mat.length * cell;
+    if (stacked) {
+      panels.push({ kind, item, mat, x: m + GRID.axis, y });
+      y += h + GRID.gap + top;
+    } else {
+      panels.push({ kind, item, mat, x, y });
+      x += w + GRID.gap;
+    }
+    return h;
+  };
+  let rowH = 0;
+  rowH = Math.max(rowH, place("window", null, d.window));
+  for (const k of d.kernels) rowH = Math.max(rowH, place("kernel", k, k.m));
+  if (d.median) rowH = Math.max(rowH, place("median", null, [[1, 1, 1], [1, 1, 1], [1, 1, 1]]));
+  if (!stacked && !singleRow) {
+    x = m + GRID.axis;
+    y += rowH + GRID.gap + top;
+    rowH = 0;
+  }
+  for (const o of d.outputs) rowH = Math.max(rowH, place("output", o, o.m));
+  const gridsBottom = stacked ? y - GRID.gap - top : y + rowH;
+  const lines = sumLines(d);
+  const sumSize = FONT_SIZE_SMALL;
+  const sumH = lines.length * sumSize * LINE_HEIGHT + 10;
+  const height = gridsBottom + GRID.sumGap + sumH + 24 + m;
+  return { cell, panels, gridsBottom, lines, sumSize, height, ctxLike };
+}
+
+function drawFigure(ctx, width, d) {
+  const L = layout(width, d);
+  const sel = { c: d.sel.c - 1, r: d.sel.r - 1 };
+  const geo = {};
+  const outShade = d.outputs.map((o) => (o.unsigned ? shader([[0, 1]]) : null));
+  let signed = false;
+  L.panels.forEach((p) => {
+    if (p.kind === "window") {
+      const kw = d.kernels[0]?.m[0].length ?? 3;
+      const kh = d.kernels[0]?.m.length ?? 3;
+      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: "Window f", first: { c: 1, r: 1 } });
+      geo.window = g;
+      const c0 = sel.c - Math.floor(kw / 2);
+      const r0 = sel.r - Math.floor(kh / 2);
+      outline(ctx, g, c0, r0, kw, kh, { fill: COLORS.highlightFill });
+      outline(ctx, g, sel.c, sel.r, 1, 1, { width: 1.5 });
+      if (d.kernels.length === 1 && L.cell >= GRID.weightFrom) {
+        d.kernels[0].m.forEach((row, j) =>
+          row.forEach((n, i) => {
+            const cc = c0 + i;
+            const rr = r0 + j;
+            if (cc < 0 || rr < 0 || cc >= g.cols || rr >= g.rows) return;
+            text(ctx, `×${fmt(n)}`, g.x0 + (cc + 1) * g.cell - 3, g.y0 + rr * g.cell + 7, { align: "right", size: 9.5, color: COLORS.highlight, weight: "bold" });
+          }),
+        );
+      }
+    } else if (p.kind === "kernel") {
+      drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: p.item.name });
+      signed = signed || p.mat.flat().some((v) => v < 0);
+    } else if (p.kind === "median") {
+      const blank = p.mat.map((r) => r.map(() => NaN));
+      const g = drawGrid(ctx, blank, p.x, p.y, L.cell, { title: "Median 3×3" });
+      text(ctx, "middle of 9", g.x0 + g.w / 2, g.y0 + g.h / 2, { align: "center", size: FONT_SIZE_SMALL, color: COLORS.muted, halo: true });
+    } else {
+      const i = d.outputs.indexOf(p.item);
+      const shade = outShade[i] ?? shader(p.mat);
+      if (shade.signed) signed = true;
+      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: p.item.name, first: d.first, shade: p.item.unsigned ? shader(p.mat) : shade });
+      geo[`output${i}`] = g;
+      const oc = sel.c - (d.first.c - 1);
+      const or = sel.r - (d.first.r - 1);
+      if (oc >= 0 && or >= 0 && oc < g.cols && or < g.rows) outline(ctx, g, oc, or, 1, 1);
+    }
+  });
+  const y = L.gridsBottom + GRID.sumGap;
+  const box = blockSize(ctx, L.lines, { size: L.sumSize });
+  if (box.w <= width - 2 * GRID.margin) {
+    textBlock(ctx, L.lines, GRID.margin, y, { size: L.sumSize });
+  } else {
+    // too long for the canvas: the lines without the box, cut at the edge
+    L.lines.forEach((l, i) => text(ctx, l.text, GRID.margin, y + 8 + i * L.sumSize * LINE_HEIGHT, { size: L.sumSize, color: l.color ?? COLORS.ink, weight: l.weight ?? "normal" }));
+  }
+  legend(ctx, GRID.margin, L.height - GRID.margin - 6, signed);
+  return { L, geo };
+}
+
+// ---------------------------------------------------------------------------
+// Interaction: click a pixel of the window or of an output; arrows move it.
+
+function selectionInteract(dataOf) {
+  return {
+    hint: "Click a pixel of the window (or of an output grid) to write out its sum; with the figure focused, the arrow keys move the selection.",
+    pointer(x, y, width, height, solution) {
+      const d = dataOf(solution);
+      if (!d) return null;
+      const L = layout(width, d);
+      for (const p of L.panels) {
+        if (p.kind !== "window" && p.kind !== "output") continue;
+        const g = { x0: p.x, y0: p.y, cell: L.cell, cols: p.mat[0].length, rows: p.mat.length };
+        const hit = cellAt(g, x, y);
+        if (!hit) continue;
+        const off = p.kind === "output" ? { c: d.first.c - 1, r: d.first.r - 1 } : { c: 0, r: 0 };
+        return { select_c: String(hit.c + 1 + off.c), select_r: String(hit.r + 1 + off.r) };
+      }
+      return null;
+    },
+    key(key, solution) {
+      const d = dataOf(solution);
+      if (!d) return null;
+      const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+      if (!Object.hasOwn(moves, key)) return null;
+      const [dc, dr] = moves[key];
+      const c = Math.min(Math.max(d.sel.c + dc, 1), d.window[0].length);
+      const r = Math.min(Math.max(d.sel.r + dr, 1), d.window.length);
+      return c === d.sel.c && r === d.sel.r ? null : { select_c: String(c), select_r: String(r) };
+    },
+  };
+}
+
+const filterSpec = {
+  caption:
+    "Left: the window, with the kernel laid over the selected pixel (orange frame; its weights in the corners). Middle: the kernel. Right: the output, shaded on a diverging scale when it has negative values. Below: the selected pixel's multiply-and-sum, row by row.",
+  height(width, solution) {
+    const d = filterData(solution);
+    return d ? layout(width, d).height : 120;
+  },
+  describe(solution) {
+    const d = filterData(solution);
+    if (!d) return "The window and its filtered output.";
+    const k = d.median ? "the 3×3 median" : `a ${d.kernels[0]?.m.length}×${d.kernels[0]?.m[0].length} kernel`;
+    return `A ${d.window.length}×${d.window[0].length} window filtered with ${k}; output ${d.output.length}×${d.output[0].length}. Selected pixel row ${d.sel.r}, column ${d.sel.c}: output ${fmt(d.selected, 6)}.`;
+  },
+  draw(ctx, width, height, solution) {
+    const d = filterData(solution);
+    if (d) drawFigure(ctx, width, d);
+  },
+  interact: selectionInteract(filterData),
+};
+
+const edgeSpec = {
+  caption:
+    "Top: the window with the 3×3 neighbourhood of the selected pixel framed, and the two kernels. Middle: Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude. Below: the selected pixel's sums and magnitude.",
+  height(width, solution) {
+    const d = edgeData(solution);
+    return d ? layout(width, d).height : 120;
+  },
+  describe(solution) {
+    const d = edgeData(solution);
+    if (!d) return "The window and its edge responses.";
+    return `A ${d.window.length}×${d.window[0].length} window with its edge responses Gx, Gy and magnitude. Selected pixel row ${d.sel.r}, column ${d.sel.c}: Gx = ${fmt(d.kernels[0]?.value)}, Gy = ${fmt(d.kernels[1]?.value)}, magnitude ${fmt(d.magnitude, 6)}.`;
+  },
+  draw(ctx, width, height, solution) {
+    const d = edgeData(solution);
+    if (d) drawFigure(ctx, width, d);
+  },
+  interact: selectionInteract(edgeData),
+};
+
+export const figures = {
+  "filter-window": filterSpec,
+  "edge-window": edgeSpec,
+};
