@@ -22,6 +22,10 @@ export const GRID = Object.freeze({
   numbersFrom: 20, // below this cell size the numbers are left out
   weightFrom: 40, // below this the kernel weights in the window's cells are left out
   sumGap: 12,
+  legendRoom: 24, // below the sum, for the colour legend
+  maxHeight: 900, // the figure registry's largest canvas height
+  comfortable: 44, // the first arrangement (fewest rows) whose cells are this large is taken,
+  readable: 34, // else the first with cells this large, else one panel per row
 });
 /** Significant digits in the grids. */
 const DIGITS = 4;
@@ -68,16 +72,16 @@ export function shader(m) {
  * optional column/row numbers (`first` = the number of the first column/row,
  * null for none). Returns its geometry.
  */
-export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, shade = shader(m), digits = DIGITS, muted = null, valueDy = 0 } = {}) {
+export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, shade = shader(m), digits = cell >= GRID.comfortable ? DIGITS : DIGITS - 1, muted = null, valueDy = 0 } = {}) {
   const rows = m.length;
   const cols = m[0].length;
-  if (title) text(ctx, title, x0, y0 - GRID.title / 2 - (first ? GRID.axis : 0), { weight: "bold", size: FONT_SIZE });
+  if (title) text(ctx, title, x0, y0 - GRID.title / 2 - GRID.axis, { weight: "bold", size: FONT_SIZE });
   for (let r = 0; r < rows; r++) {
     for (let c = 0; c < cols; c++) {
       const v = m[r][c];
       ctx.fillStyle = Number.isFinite(v) ? shade.fill(v) : COLORS.background;
       ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
-      if (cell >= GRID.numbersFrom) {
+      if (cell >= GRID.numbersFrom && Number.isFinite(v)) {
         const size = cell < 30 ? 9.5 : cell < 40 ? FONT_SIZE_SMALL : FONT_SIZE;
         text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
           align: "center",
@@ -215,7 +219,7 @@ function sumLines(d) {
     const sorted = Array.isArray(d.sorted) ? d.sorted : [];
     const mid = Math.floor(sorted.length / 2);
     return [
-      { text: `Median at ${at}: sort the ${sorted.length} values, take the middle one`, weight: "bold" },
+      { text: `Median at ${at}: the ${sorted.length} values sorted`, weight: "bold" },
       { text: sorted.map((v, i) => (i === mid ? `[${fmt(v)}]` : fmt(v))).join("  ") },
       { text: `g = ${fmt(d.selected)}`, weight: "bold", color: COLORS.highlight },
     ];
@@ -227,6 +231,7 @@ function sumLines(d) {
     lines.push({ text: `${sym} at ${at}: weight × grey value, row by row`, weight: "bold" });
     let total = 0;
     k.m.forEach((row, j) => {
+      if (row.every((n) => n === 0)) return; // as in the step: rows of zero weights left out
       const vals = nb.slice(j * kw, (j + 1) * kw);
       const s = row.reduce((acc, n, i) => acc + n * vals[i], 0);
       total += s;
@@ -236,7 +241,8 @@ function sumLines(d) {
     lines.push({ text: `${sym} = ${value}`, weight: "bold", color: COLORS.highlight });
   }
   if (d.magnitude !== undefined && d.kernels.length === 2) {
-    lines.push({ text: `|G| = √(${fmt(d.kernels[0].value)}² + ${fmt(d.kernels[1].value)}²) = ${fmt(d.magnitude, 6)}`, weight: "bold", color: COLORS.highlight });
+    const sq = (v) => (v < 0 ? `(${fmt(v)})²` : `${fmt(v)}²`);
+    lines.push({ text: `|G| = √(${sq(d.kernels[0].value)} + ${sq(d.kernels[1].value)}) = ${fmt(d.magnitude, 6)}`, weight: "bold", color: COLORS.highlight });
   }
   return lines;
 }
@@ -245,59 +251,53 @@ function sumLines(d) {
 // Layout: window and kernels in the first row, outputs in the second (or all
 // stacked on a narrow canvas), the sum below.
 
-function layout(width, d, ctxLike = null) {
+function layout(width, d) {
   const m = GRID.margin;
-  const cols1 = [d.window[0].length, ...d.kernels.map((k) => k.m[0].length)];
-  const kernelCols = d.median ? 3 : 0;
-  const row1 = cols1.reduce((a, b) => a + b, 0) + kernelCols;
-  const row2 = d.outputs.reduce((a, o) => a + o.m[0].length, 0);
-  const panels1 = cols1.length + (d.median ? 1 : 0);
-  const panels2 = d.outputs.length;
-  const singleRow = d.outputs.length === 1;
-  // one row for everything when there is one output and room for it
-  const allCols = singleRow ? row1 + row2 : Math.max(row1, row2);
-  const gaps = singleRow ? panels1 + panels2 - 1 : Math.max(panels1, panels2) - 1;
-  const avail = width - 2 * m - GRID.axis - gaps * GRID.gap;
-  let cell = Math.floor(avail / allCols);
-  let stacked = false;
-  if (cell < GRID.numbersFrom + 6) {
-    stacked = true;
-    const widest = Math.max(d.window[0].length, ...d.kernels.map((k) => k.m[0].length), ...d.outputs.map((o) => o.m[0].length));
-    cell = Math.floor((width - 2 * m - GRID.axis) / widest);
-  }
-  cell = Math.max(GRID.minCell, Math.min(GRID.maxCell, cell));
   const top = GRID.title + GRID.axis;
-  const panels = [];
-  let x = m + GRID.axis;
-  let y = m + top;
-  const place = (kind, item, mat) => {
-    const w = mat[0].length * cell;
-    const h = mat.length * cell;
-    if (stacked) {
-      panels.push({ kind, item, mat, x: m + GRID.axis, y });
-      y += h + GRID.gap + top;
-    } else {
-      panels.push({ kind, item, mat, x, y });
-      x += w + GRID.gap;
-    }
-    return h;
-  };
-  let rowH = 0;
-  rowH = Math.max(rowH, place("window", null, d.window));
-  for (const k of d.kernels) rowH = Math.max(rowH, place("kernel", k, k.m));
-  if (d.median) rowH = Math.max(rowH, place("median", null, [[1, 1, 1], [1, 1, 1], [1, 1, 1]]));
-  if (!stacked && !singleRow) {
-    x = m + GRID.axis;
-    y += rowH + GRID.gap + top;
-    rowH = 0;
-  }
-  for (const o of d.outputs) rowH = Math.max(rowH, place("output", o, o.m));
-  const gridsBottom = stacked ? y - GRID.gap - top : y + rowH;
+  const first = [{ kind: "window", item: null, mat: d.window }, ...d.kernels.map((k) => ({ kind: "kernel", item: k, mat: k.m }))];
+  if (d.median) first.push({ kind: "median", item: null, mat: [[1, 1, 1], [1, 1, 1], [1, 1, 1]] });
+  const second = d.outputs.map((o) => ({ kind: "output", item: o, mat: o.m }));
+  const colsOf = (row) => row.reduce((a, p) => a + p.mat[0].length, 0);
   const lines = sumLines(d);
   const sumSize = FONT_SIZE_SMALL;
   const sumH = lines.length * sumSize * LINE_HEIGHT + 10;
-  const height = gridsBottom + GRID.sumGap + sumH + 24 + m;
-  return { cell, panels, gridsBottom, lines, sumSize, height, ctxLike };
+  const fixed = 2 * m + GRID.sumGap + sumH + GRID.legendRoom;
+  // the largest cell that fits the width and keeps the figure within its height
+  const cellFor = (rows) => {
+    const byWidth = Math.min(...rows.map((row) => Math.floor((width - 2 * m - GRID.axis - (row.length - 1) * GRID.gap) / colsOf(row))));
+    const cellRows = rows.reduce((a, row) => a + Math.max(...row.map((p) => p.mat.length)), 0);
+    const byHeight = Math.floor((GRID.maxHeight - fixed - rows.length * (top + GRID.gap)) / cellRows);
+    return Math.min(byWidth, byHeight);
+  };
+  // the arrangement with the largest cells: all in one row, two rows, or one panel per row
+  const options = [[[...first, ...second]], [first, second]];
+  if (first.length > 1) options.push([first.slice(0, 1), first.slice(1), second]);
+  if (second.length > 1) {
+    options.push([first, ...second.map((p) => [p])]);
+    if (first.length > 1) options.push([first.slice(0, 1), first.slice(1), ...second.map((p) => [p])]);
+  }
+  if (second.length > 2) options.push([first, second.slice(0, 2), second.slice(2)]);
+  options.push([...first, ...second].map((p) => [p]));
+  const pick = (least) => options.find((o) => cellFor(o) >= least);
+  const best = () => options.reduce((a, o) => (cellFor(o) > cellFor(a) ? o : a));
+  const rows = pick(GRID.comfortable) ?? pick(GRID.readable) ?? best();
+  let cell = cellFor(rows);
+  cell = Math.max(GRID.minCell, Math.min(GRID.maxCell, cell));
+  const panels = [];
+  let y = m + top;
+  for (const row of rows) {
+    let x = m + GRID.axis;
+    let rowH = 0;
+    for (const p of row) {
+      panels.push({ ...p, x, y });
+      x += p.mat[0].length * cell + GRID.gap;
+      rowH = Math.max(rowH, p.mat.length * cell);
+    }
+    y += rowH + GRID.gap + top;
+  }
+  const gridsBottom = y - GRID.gap - top;
+  const height = gridsBottom + GRID.sumGap + sumH + GRID.legendRoom + m;
+  return { cell, panels, gridsBottom, lines, sumSize, height };
 }
 
 function drawFigure(ctx, width, d) {
@@ -314,7 +314,12 @@ function drawFigure(ctx, width, d) {
       geo.window = g;
       const c0 = sel.c - Math.floor(kw / 2);
       const r0 = sel.r - Math.floor(kh / 2);
-      outline(ctx, g, c0, r0, kw, kh, { fill: COLORS.highlightFill });
+      // the kernel's footprint, cut to the window (the border policy supplies the rest)
+      const fc0 = Math.max(c0, 0);
+      const fr0 = Math.max(r0, 0);
+      const fc1 = Math.min(c0 + kw, g.cols);
+      const fr1 = Math.min(r0 + kh, g.rows);
+      if (fc1 > fc0 && fr1 > fr0) outline(ctx, g, fc0, fr0, fc1 - fc0, fr1 - fr0, { fill: COLORS.highlightFill, dash: fc0 !== c0 || fr0 !== r0 || fc1 !== c0 + kw || fr1 !== r0 + kh ? [6, 3] : null });
       outline(ctx, g, sel.c, sel.r, 1, 1, { width: 1.5 });
       if (d.kernels.length === 1 && L.cell >= GRID.weightFrom) {
         d.kernels[0].m.forEach((row, j) =>
@@ -391,7 +396,7 @@ function selectionInteract(dataOf) {
 
 const filterSpec = {
   caption:
-    "Left: the window, with the kernel laid over the selected pixel (orange frame; its weights in the corners). Middle: the kernel. Right: the output, shaded on a diverging scale when it has negative values. Below: the selected pixel's multiply-and-sum, row by row.",
+    "The window with the kernel laid over the selected pixel (orange frame, the kernel's weights in the corners of its cells), the kernel, and the output grid (shaded on a diverging scale, blue below 0 and orange above, when it has negative values; otherwise darker = larger). Below: the selected pixel's multiply-and-sum, one line per kernel row.",
   height(width, solution) {
     const d = filterData(solution);
     return d ? layout(width, d).height : 120;
@@ -411,7 +416,7 @@ const filterSpec = {
 
 const edgeSpec = {
   caption:
-    "Top: the window with the 3×3 neighbourhood of the selected pixel framed, and the two kernels. Middle: Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude. Below: the selected pixel's sums and magnitude.",
+    "The window with the 3×3 neighbourhood of the selected pixel framed in orange, the two kernels, then Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude (darker = larger). Below: the selected pixel's sums, one line per kernel row, and its magnitude.",
   height(width, solution) {
     const d = edgeData(solution);
     return d ? layout(width, d).height : 120;
