@@ -10,6 +10,8 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`matching`]: least-squares matching (1-D, 2-D; shift, radiometric,
+//!   affine + radiometric) with the record of every iteration.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -19,6 +21,7 @@ pub mod coords;
 pub mod error;
 pub mod examples;
 pub mod lsq;
+pub mod matching;
 pub mod raster;
 pub mod solution;
 #[cfg(target_arch = "wasm32")]

@@ -11,6 +11,7 @@
 
 pub mod coordinates;
 pub mod fields;
+pub mod matching;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -70,7 +71,6 @@ impl Entry {
 fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
     const C: &str = "Correlation";
-    const L: &str = "Least-squares matching";
     const F: &str = "Filters and edges";
     const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
@@ -124,24 +124,6 @@ fn coming() -> Vec<Entry> {
             "Seed 000, Example 9",
         ),
         Entry::coming(
-            "lsm-1d",
-            "1-D least-squares matching",
-            L,
-            "Seed 000, Example 10",
-        ),
-        Entry::coming(
-            "lsm-2d",
-            "2-D least-squares matching",
-            L,
-            "Seed 000, Example 11",
-        ),
-        Entry::coming(
-            "lsm-affine",
-            "Affine + radiometric least-squares matching",
-            L,
-            "Seed 003",
-        ),
-        Entry::coming(
             "resample",
             "Resampling: nearest, bilinear, bicubic",
             "Resampling",
@@ -191,6 +173,7 @@ fn coming() -> Vec<Entry> {
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
+    all.extend(matching::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
