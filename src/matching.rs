@@ -255,25 +255,28 @@ fn sample(grid: &Grid, c: f64, r: f64) -> Option<f64> {
     pending_bilinear(grid, c.clamp(0.0, cmax), r.clamp(0.0, rmax))
 }
 
-/// TEMPORARY stand-in until `crate::resample::bilinear` lands (issue 6).
+/// TEMPORARY stand-in with the contract of `crate::resample::bilinear`
+/// (issue 6): `None` outside `[0, w−1] × [0, h−1]` or for a grid under 2×2.
 fn pending_bilinear(grid: &Grid, c: f64, r: f64) -> Option<f64> {
-    let c0 = c.floor();
-    let r0 = r.floor();
-    let (dc, dr) = (c - c0, r - r0);
-    let (ci, ri) = (c0 as usize, r0 as usize);
-    let g = |i: usize, j: usize| grid.get(i, j).or_else(|| grid.get(ci, ri));
-    let a = g(ci, ri)?;
-    let b = if dc > 0.0 { g(ci + 1, ri)? } else { a };
-    let cc = if dr > 0.0 { g(ci, ri + 1)? } else { a };
-    let d = if dc > 0.0 && dr > 0.0 {
-        g(ci + 1, ri + 1)?
-    } else if dc > 0.0 {
-        b
-    } else {
-        cc
-    };
-    let i1 = a + dc * (b - a);
-    let i2 = cc + dc * (d - cc);
+    let (w, h) = (grid.width(), grid.height());
+    if w < 2
+        || h < 2
+        || !(0.0..=(w - 1) as f64).contains(&c)
+        || !(0.0..=(h - 1) as f64).contains(&r)
+    {
+        return None;
+    }
+    let ci = (c.floor() as usize).min(w - 2);
+    let ri = (r.floor() as usize).min(h - 2);
+    let (dc, dr) = (c - ci as f64, r - ri as f64);
+    let p = [
+        grid.get(ci, ri)?,
+        grid.get(ci + 1, ri)?,
+        grid.get(ci, ri + 1)?,
+        grid.get(ci + 1, ri + 1)?,
+    ];
+    let i1 = p[0] + dc * (p[1] - p[0]);
+    let i2 = p[2] + dc * (p[3] - p[2]);
     Some(i1 + dr * (i2 - i1))
 }
 
@@ -299,7 +302,9 @@ pub fn match_1d(
     settings: Settings,
 ) -> Result<Matching> {
     let t = Grid::new("template", template.len(), 1, template.to_vec())?;
-    let s = Grid::new("search", search.len(), 1, search.to_vec())?;
+    // Bilinear interpolation needs a 2×2 neighbourhood: the signal becomes
+    // a grid of two identical rows, always read on the first (dr = 0).
+    let s = Grid::new("search", search.len(), 2, [search, search].concat())?;
     let mut start = start;
     // 1-D: the rows stay put
     start.a[1] = 0.0;
@@ -369,6 +374,26 @@ fn outside(t: &Grid, s: &Grid, p: &Params, one_d: bool) -> Option<String> {
 
 /// Checks the sizes and the start; `Err` names the field.
 fn check(t: &Grid, s: &Grid, start: &Params, settings: &Settings, one_d: bool) -> Result<()> {
+    if s.width() < 2 || s.height() < 2 {
+        return Err(Error::input(
+            "search",
+            format!(
+                "is {}×{}; bilinear interpolation needs a window of at least 2×2 (use the 1-D matching for a single row)",
+                s.width(),
+                s.height()
+            ),
+        ));
+    }
+    if one_d && t.width() > s.width() {
+        return Err(Error::input(
+            "template",
+            format!(
+                "has {} values, more than the {} of the search window",
+                t.width(),
+                s.width()
+            ),
+        ));
+    }
     if t.width() > s.width() || t.height() > s.height() {
         return Err(Error::input(
             "template",

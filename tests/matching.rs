@@ -494,7 +494,7 @@ fn the_example_and_the_core_are_one_computation() {
     // a 2-D run on a one-row-high window is refused cleanly, not a panic
     let g = Grid::from_rows("t", &[t.to_vec()]).unwrap();
     let s2 = Grid::from_rows("s", &[sw.to_vec()]).unwrap();
-    let r = match_2d(
+    let e = match_2d(
         &g,
         &s2,
         Params::shift(7.0, 0.0, 1.0, 0.0),
@@ -504,8 +504,9 @@ fn the_example_and_the_core_are_one_computation() {
             max_iterations: 10,
         },
     )
-    .unwrap();
-    assert!(matches!(r.status, Status::Degenerate { .. }));
+    .unwrap_err();
+    assert_eq!(e.field(), Some("search"));
+    assert!(e.to_string().contains("at least 2×2"), "{e}");
 }
 
 // ------------------------------------------------------------ bad inputs
@@ -526,7 +527,7 @@ fn bad_inputs_name_the_field() {
         Record::new().with("search", Value::numbers(&[1.0, 2.0, 3.0])),
     );
     assert!(
-        e.starts_with("template: is 7×1, larger than the 3×1 search window"),
+        e.starts_with("template: has 7 values, more than the 3 of the search window"),
         "{e}"
     );
     let e = err(
