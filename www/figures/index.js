@@ -12,15 +12,22 @@
 //     },
 //   };
 //
+// Optional: `slider(solution)` returns { label, min, max, value } (integers)
+// or null; the panel then gets a labelled range input (keyboard-usable), and
+// `draw`/`describe` receive its current value as a last argument `{ slider }`.
+// The value is kept while it stays within a new solution's range.
+//
 // and is registered with one line below. The page calls mountFigures(host, id)
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { figures as coordinates } from "./coordinates.js";
+import { figures as matching } from "./matching.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
+  ...matching,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -59,9 +66,10 @@ function paint(panel, solution) {
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
+  const state = { slider: panel.sliderValue ?? null };
   try {
-    spec.draw(ctx, width, height, solution);
-    canvas.setAttribute("aria-label", spec.describe(solution));
+    spec.draw(ctx, width, height, solution, state);
+    canvas.setAttribute("aria-label", spec.describe(solution, state));
   } catch (e) {
     console.error("figure failed", e);
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -73,6 +81,34 @@ function paint(panel, solution) {
     canvas.setAttribute("aria-label", "The figure could not be drawn for these values.");
   }
   panel.drawn = { width, dpr };
+}
+
+/** Sets a panel's range input from the spec's slider(solution). */
+function syncSlider(panel, solution) {
+  panel.solution = solution;
+  if (!panel.slider) return;
+  let spec = null;
+  try {
+    spec = solution ? panel.spec.slider(solution) : null;
+  } catch {
+    spec = null;
+  }
+  const { label, name, input } = panel.slider;
+  if (!spec || !(spec.max > spec.min)) {
+    label.hidden = true;
+    panel.sliderValue = spec ? spec.value : null;
+    return;
+  }
+  label.hidden = false;
+  input.min = String(spec.min);
+  input.max = String(spec.max);
+  const keep = panel.sliderValue;
+  const value = Number.isInteger(keep) && keep >= spec.min && keep <= spec.max ? keep : spec.value;
+  input.value = String(value);
+  panel.sliderValue = value;
+  panel.sliderText = (v) => `${spec.label} ${v} of ${spec.max}`;
+  name.textContent = panel.sliderText(value);
+  input.setAttribute("aria-label", spec.label);
 }
 
 /**
@@ -96,7 +132,24 @@ export function mountFigures(host, id) {
       figure.append(caption);
     }
     host.append(figure);
-    return { spec, canvas, figure, drawn: null };
+    const panel = { spec, canvas, figure, drawn: null, slider: null, sliderValue: null };
+    if (typeof spec.slider === "function") {
+      const label = document.createElement("label");
+      label.className = "figure-slider";
+      const name = document.createElement("span");
+      const input = document.createElement("input");
+      input.type = "range";
+      input.step = "1";
+      input.addEventListener("input", () => {
+        panel.sliderValue = Number(input.value);
+        name.textContent = panel.sliderText(panel.sliderValue);
+        paint(panel, panel.solution);
+      });
+      label.append(name, input);
+      canvas.after(label);
+      panel.slider = { label, name, input };
+    }
+    return panel;
   });
 
   let solution = null;
@@ -127,6 +180,7 @@ export function mountFigures(host, id) {
   return {
     update(next) {
       solution = next;
+      panels.forEach((p) => syncSlider(p, next));
       redraw();
     },
     redraw,
