@@ -12,6 +12,10 @@
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
 //! - [`matching`]: least-squares matching (1-D, 2-D; shift, radiometric,
 //!   affine + radiometric) with the record of every iteration.
+//! - [`resample`]: nearest, bilinear and bicubic (cubic convolution) values
+//!   at fractional positions, with their intermediates.
+//! - [`filter`]: kernels (smoothing, Laplacian, sharpening, edges), median,
+//!   gradients and magnitude, with a border policy.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -20,9 +24,11 @@
 pub mod coords;
 pub mod error;
 pub mod examples;
+pub mod filter;
 pub mod lsq;
 pub mod matching;
 pub mod raster;
+pub mod resample;
 pub mod solution;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -48,6 +48,7 @@
 use crate::error::{Error, Result};
 use crate::lsq::{self, Adjustment};
 use crate::raster::Grid;
+use crate::resample;
 
 /// Convergence: largest movement of a patch pixel by one iteration's
 /// increments (px).
@@ -247,37 +248,13 @@ impl Matching {
     }
 }
 
-/// Bilinear sample at a zero-based position, the position first clamped into
-/// the grid (the replicate border policy). `None` only for an empty grid.
+/// Bilinear sample ([`crate::resample::bilinear`]) at a zero-based
+/// position, the position first clamped into the grid (the replicate border
+/// policy). `None` only for a grid under 2×2, which [`check`] refuses.
 fn sample(grid: &Grid, c: f64, r: f64) -> Option<f64> {
     let cmax = grid.width().saturating_sub(1) as f64;
     let rmax = grid.height().saturating_sub(1) as f64;
-    pending_bilinear(grid, c.clamp(0.0, cmax), r.clamp(0.0, rmax))
-}
-
-/// TEMPORARY stand-in with the contract of `crate::resample::bilinear`
-/// (issue 6): `None` outside `[0, w−1] × [0, h−1]` or for a grid under 2×2.
-fn pending_bilinear(grid: &Grid, c: f64, r: f64) -> Option<f64> {
-    let (w, h) = (grid.width(), grid.height());
-    if w < 2
-        || h < 2
-        || !(0.0..=(w - 1) as f64).contains(&c)
-        || !(0.0..=(h - 1) as f64).contains(&r)
-    {
-        return None;
-    }
-    let ci = (c.floor() as usize).min(w - 2);
-    let ri = (r.floor() as usize).min(h - 2);
-    let (dc, dr) = (c - ci as f64, r - ri as f64);
-    let p = [
-        grid.get(ci, ri)?,
-        grid.get(ci + 1, ri)?,
-        grid.get(ci, ri + 1)?,
-        grid.get(ci + 1, ri + 1)?,
-    ];
-    let i1 = p[0] + dc * (p[1] - p[0]);
-    let i2 = p[2] + dc * (p[3] - p[2]);
-    Some(i1 + dr * (i2 - i1))
+    resample::bilinear(grid, c.clamp(0.0, cmax), r.clamp(0.0, rmax)).map(|b| b.value)
 }
 
 /// The parameters a model estimates.

@@ -11,7 +11,9 @@
 
 pub mod coordinates;
 pub mod fields;
+pub mod filters;
 pub mod matching;
+pub mod resampling;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -71,7 +73,6 @@ impl Entry {
 fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
     const C: &str = "Correlation";
-    const F: &str = "Filters and edges";
     const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
     vec![
@@ -124,24 +125,6 @@ fn coming() -> Vec<Entry> {
             "Seed 000, Example 9",
         ),
         Entry::coming(
-            "resample",
-            "Resampling: nearest, bilinear, bicubic",
-            "Resampling",
-            "Seed 000, Example 12; seed 004",
-        ),
-        Entry::coming(
-            "filter-window",
-            "Filtering a window",
-            F,
-            "Seed 000, Examples 15–16; seed 004",
-        ),
-        Entry::coming(
-            "edge-window",
-            "Prewitt and Sobel edges",
-            F,
-            "Seed 000, Example 15",
-        ),
-        Entry::coming(
             "forstner-window",
             "Förstner operator",
             I,
@@ -174,6 +157,8 @@ fn coming() -> Vec<Entry> {
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
     all.extend(matching::entries());
+    all.extend(resampling::entries());
+    all.extend(filters::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
