@@ -10,6 +10,8 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`matching`]: least-squares matching (1-D, 2-D; shift, radiometric,
+//!   affine + radiometric) with the record of every iteration.
 //! - [`resample`]: nearest, bilinear and bicubic (cubic convolution) values
 //!   at fractional positions, with their intermediates.
 //! - [`filter`]: kernels (smoothing, Laplacian, sharpening, edges), median,
@@ -27,6 +29,7 @@ pub mod examples;
 pub mod filter;
 pub mod interest;
 pub mod lsq;
+pub mod matching;
 pub mod raster;
 pub mod resample;
 pub mod solution;

@@ -13,6 +13,7 @@ pub mod coordinates;
 pub mod fields;
 pub mod filters;
 pub mod interest;
+pub mod matching;
 pub mod resampling;
 
 use crate::error::{Error, Result};
@@ -73,7 +74,6 @@ impl Entry {
 fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
     const C: &str = "Correlation";
-    const L: &str = "Least-squares matching";
     const B: &str = "Chain codes and boundaries";
     vec![
         Entry::coming(
@@ -125,24 +125,6 @@ fn coming() -> Vec<Entry> {
             "Seed 000, Example 9",
         ),
         Entry::coming(
-            "lsm-1d",
-            "1-D least-squares matching",
-            L,
-            "Seed 000, Example 10",
-        ),
-        Entry::coming(
-            "lsm-2d",
-            "2-D least-squares matching",
-            L,
-            "Seed 000, Example 11",
-        ),
-        Entry::coming(
-            "lsm-affine",
-            "Affine + radiometric least-squares matching",
-            L,
-            "Seed 003",
-        ),
-        Entry::coming(
             "chain-code",
             "Freeman chain code",
             B,
@@ -162,6 +144,7 @@ fn coming() -> Vec<Entry> {
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
+    all.extend(matching::entries());
     all.extend(resampling::entries());
     all.extend(filters::entries());
     all.extend(interest::entries());

@@ -14,7 +14,12 @@
 //
 // and is registered with one line below.
 //
-// A spec may also be interactive (optional), to change inputs from the figure:
+// Optional: `slider(solution)` returns { label, min, max, value } (integers)
+// or null; the panel then gets a labelled range input (keyboard-usable), and
+// `draw`/`describe` receive its current value as a last argument `{ slider }`.
+// The value is kept while it stays within a new solution's range.
+//
+// Optional: `interact`, to change inputs from the figure:
 //
 //   interact: {
 //     hint: "Click a pixel to select it; arrow keys move the selection.",
@@ -24,7 +29,9 @@
 //   }
 //
 // The returned texts are put into the form (as if typed) and the example is
-// solved again; the canvas becomes focusable and the hint is shown below it. The page calls mountFigures(host, id)
+// solved again; the canvas becomes focusable and the hint is shown below it.
+//
+// The page calls mountFigures(host, id, { onInputs })
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
@@ -32,6 +39,7 @@ import { figures as coordinates } from "./coordinates.js";
 import { figures as interest } from "./interest.js";
 import { figures as filters } from "./filters.js";
 import { figures as resampling } from "./resampling.js";
+import { figures as matching } from "./matching.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
@@ -39,6 +47,7 @@ const REGISTRY = Object.freeze({
   ...interest,
   ...resampling,
   ...filters,
+  ...matching,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -77,9 +86,10 @@ function paint(panel, solution) {
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
+  const state = { slider: panel.sliderValue ?? null };
   try {
-    spec.draw(ctx, width, height, solution);
-    canvas.setAttribute("aria-label", spec.describe(solution));
+    spec.draw(ctx, width, height, solution, state);
+    canvas.setAttribute("aria-label", spec.describe(solution, state));
   } catch (e) {
     console.error("figure failed", e);
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -158,6 +168,34 @@ function interactive(spec, canvas, figure, current, onInputs) {
   });
 }
 
+/** Sets a panel's range input from the spec's slider(solution). */
+function syncSlider(panel, solution) {
+  panel.solution = solution;
+  if (!panel.slider) return;
+  let spec = null;
+  try {
+    spec = solution ? panel.spec.slider(solution) : null;
+  } catch {
+    spec = null;
+  }
+  const { label, name, input } = panel.slider;
+  if (!spec || !(spec.max > spec.min)) {
+    label.hidden = true;
+    panel.sliderValue = spec ? spec.value : null;
+    return;
+  }
+  label.hidden = false;
+  input.min = String(spec.min);
+  input.max = String(spec.max);
+  const keep = panel.sliderValue;
+  const value = Number.isInteger(keep) && keep >= spec.min && keep <= spec.max ? keep : spec.value;
+  input.value = String(value);
+  panel.sliderValue = value;
+  panel.sliderText = (v) => `${spec.label} ${v} of ${spec.max}`;
+  name.textContent = panel.sliderText(value);
+  input.setAttribute("aria-label", spec.label);
+}
+
 /**
  * Puts the example's canvases into `host`; `onInputs(texts)` (optional) takes
  * input changes from interactive figures.
@@ -181,8 +219,25 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       figure.append(caption);
     }
     host.append(figure);
+    const panel = { spec, canvas, figure, drawn: null, slider: null, sliderValue: null };
     if (spec.interact && onInputs) interactive(spec, canvas, figure, () => solution, onInputs);
-    return { spec, canvas, figure, drawn: null };
+    if (typeof spec.slider === "function") {
+      const label = document.createElement("label");
+      label.className = "figure-slider";
+      const name = document.createElement("span");
+      const input = document.createElement("input");
+      input.type = "range";
+      input.step = "1";
+      input.addEventListener("input", () => {
+        panel.sliderValue = Number(input.value);
+        name.textContent = panel.sliderText(panel.sliderValue);
+        paint(panel, panel.solution);
+      });
+      label.append(name, input);
+      canvas.after(label);
+      panel.slider = { label, name, input };
+    }
+    return panel;
   });
 
   const redraw = () => panels.forEach((p) => paint(p, solution));
@@ -212,6 +267,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   return {
     update(next) {
       solution = next;
+      panels.forEach((p) => syncSlider(p, next));
       redraw();
     },
     redraw,

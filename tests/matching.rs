@@ -1,0 +1,573 @@
+//! Seed 000, Examples 10–11, and seed 003's affine + radiometric model:
+//! least-squares matching reproduced natively with its numbers, its
+//! convergence and every way a run can end.
+#![cfg(not(target_arch = "wasm32"))]
+
+use photogrammetry_playground::examples::solve;
+use photogrammetry_playground::matching::{
+    self, affine_from, match_1d, match_2d, synthetic_pair, Gradients, Model, Params, Settings,
+    Status,
+};
+use photogrammetry_playground::raster::Grid;
+use photogrammetry_playground::solution::{NoteKind, Record, Solution, Value};
+
+fn result(s: &Solution, key: &str) -> f64 {
+    s.result
+        .number(key)
+        .unwrap_or_else(|| panic!("result {key} missing in {}", s.id))
+}
+
+fn printed(s: &Solution, key: &str) -> f64 {
+    s.textbook
+        .as_ref()
+        .and_then(|t| t.number(key))
+        .unwrap_or_else(|| panic!("printed {key} missing in {}", s.id))
+}
+
+fn assert_close(s: &Solution, key: &str, expected: f64, tol: f64) {
+    let got = result(s, key);
+    assert!(
+        (got - expected).abs() <= tol,
+        "{}.{key} = {got}, expected {expected}",
+        s.id
+    );
+}
+
+fn has_note(s: &Solution, kind: NoteKind, needle: &str) -> bool {
+    s.notes
+        .iter()
+        .any(|n| n.kind == kind && n.text.contains(needle))
+}
+
+fn status(s: &Solution) -> String {
+    match s.result.get("status") {
+        Some(Value::Text(t)) => t.clone(),
+        other => panic!("status is {other:?}"),
+    }
+}
+
+fn converged(s: &Solution) -> bool {
+    s.result.get("converged") == Some(&Value::Bool(true))
+}
+
+fn list(v: Option<&Value>) -> Vec<f64> {
+    match v {
+        Some(Value::List(xs)) => xs.iter().map(|x| x.as_f64().unwrap()).collect(),
+        other => panic!("not a list: {other:?}"),
+    }
+}
+
+fn text(s: &str) -> Value {
+    Value::Text(s.to_string())
+}
+
+/// A tiny deterministic generator for the property tests.
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+}
+
+// ------------------------------------------------------------ Example 10
+
+#[test]
+fn example_10_shift_only_first_iteration_and_convergence() {
+    let s = solve("lsm-1d", &Record::new()).unwrap();
+    assert_close(&s, "first_dc", -11.5 / 39.0, 1e-15);
+    assert_eq!(s.result.get("first_da"), Some(&Value::Null));
+    assert_eq!(s.result.get("first_db"), Some(&Value::Null));
+    assert!(converged(&s));
+    assert_eq!(status(&s), "converged");
+    assert_close(&s, "iterations", 13.0, 0.0);
+    assert_close(&s, "c", 7.769_971, 2e-4);
+    assert_close(&s, "a", 1.0, 0.0);
+    assert_close(&s, "b", 0.0, 0.0);
+    // the seed's printed values beside the exact ones
+    assert_eq!(printed(&s, "first_dc"), -0.2945);
+    assert_eq!(printed(&s, "c_after_first"), 7.705);
+    assert!(has_note(&s, NoteKind::Rounding, "rounds to −0.2949"));
+    assert!(has_note(&s, NoteKind::Convention, "after 13 iterations"));
+    // the first iteration laid out as the seed does
+    let a = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Design"))
+        .unwrap();
+    assert!(a.substituted.contains("(3 - 1)/2"), "{}", a.substituted);
+    assert!(a.substituted.contains("(1 - 1)/2"));
+    assert_eq!(
+        first_a(&s).iter().map(|r| r[0]).collect::<Vec<_>>(),
+        vec![1.0, 3.5, 2.5, -1.0, -3.5, -2.5, 0.0]
+    );
+    let dl = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Difference"))
+        .unwrap();
+    assert_eq!(
+        list(dl.values.get("dL")),
+        vec![0.0, -1.0, 1.0, 1.0, 2.0, 1.0, 0.0]
+    );
+    let ne = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Normal"))
+        .unwrap();
+    assert!(ne.substituted.contains("39") && ne.substituted.contains("-11.5"));
+    assert!((ne.values.number("c_after_first").unwrap() - (8.0 - 11.5 / 39.0)).abs() < 1e-12);
+    // every iteration in the table, with the increments alternating in sign
+    let table = s
+        .steps
+        .iter()
+        .find(|st| st.title == "Every iteration")
+        .unwrap();
+    let dc = list(table.values.get("dc"));
+    assert_eq!(dc.len(), 13);
+    assert!(dc.windows(2).all(|w| w[0] * w[1] < 0.0));
+    assert!(dc.last().unwrap().abs() <= matching::POSITION_TOL);
+    let keys: Vec<_> = s.result.keys().take(8).collect();
+    assert_eq!(
+        keys,
+        [
+            "first_dc",
+            "first_da",
+            "first_db",
+            "c",
+            "a",
+            "b",
+            "iterations",
+            "converged"
+        ]
+    );
+}
+
+#[test]
+fn example_10_with_radiometry() {
+    let s = solve("lsm-1d", &Record::new().with("radiometric", true)).unwrap();
+    assert_close(&s, "first_dc", -11.5 / 39.0, 1e-14);
+    assert_close(&s, "first_da", 5.0 / 32.0, 1e-14);
+    assert_close(&s, "first_db", -3.0 / 56.0, 1e-14);
+    assert_eq!(printed(&s, "first_dc"), -0.295);
+    assert_eq!(printed(&s, "first_da"), 0.156);
+    assert_eq!(printed(&s, "first_db"), -0.053);
+    assert!(has_note(&s, NoteKind::Rounding, "rounds to −0.054"));
+    assert!(converged(&s));
+    assert_close(&s, "iterations", 7.0, 0.0);
+    assert_close(&s, "c", 7.769_383, 2e-4);
+    assert_close(&s, "a", 1.279_031, 5e-4);
+    assert_close(&s, "b", -0.544_695, 2e-3);
+    let ne = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Normal"))
+        .unwrap();
+    assert!(ne
+        .substituted
+        .contains(r"39 & 0 & 0 \\ 0 & 176 & 28 \\ 0 & 28 & 7"));
+}
+
+#[test]
+fn a_what_if_has_no_textbook() {
+    let s = solve("lsm-1d", &Record::new().with("c0", 7.5)).unwrap();
+    assert!(s.textbook.is_none());
+    assert!(converged(&s));
+}
+
+// ------------------------------------------------------------ Example 11
+
+const PRINTED_A: [[f64; 2]; 9] = [
+    [9.0, 7.5],
+    [1.5, 2.0],
+    [-7.5, 7.0],
+    [3.5, 0.5],
+    [1.0, 1.5],
+    [-2.5, 0.5],
+    [10.0, -7.0],
+    [1.5, -0.5],
+    [-8.5, -6.5],
+];
+
+fn first_a(s: &Solution) -> Vec<Vec<f64>> {
+    let step = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Design"))
+        .unwrap();
+    match step.values.get("A") {
+        Some(Value::List(rows)) => rows.iter().map(|r| list(Some(r))).collect(),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn example_11_search_window_reading() {
+    let s = solve("lsm-2d", &Record::new()).unwrap();
+    assert_eq!(s.inputs.get("gradients"), Some(&text("search-window")));
+    assert_close(&s, "first_dc", 0.186_049_4, 1e-6);
+    assert_close(&s, "first_dr", 0.107_289_3, 1e-6);
+    assert_close(&s, "first_da", 0.140_693_6, 1e-6);
+    assert_close(&s, "first_db", -5.508_121, 1e-5);
+    let a = first_a(&s);
+    assert_eq!(a[0], vec![10.0, 9.0, 47.0, 1.0]);
+    assert_eq!(a[8], vec![-6.5, -8.0, 51.0, 1.0]);
+    // where the stated formula and the printed matrix differ
+    let differing: usize = a
+        .iter()
+        .zip(PRINTED_A)
+        .map(|(r, p)| (0..2).filter(|&j| r[j] != p[j]).count())
+        .sum();
+    assert_eq!(differing, 9);
+    assert!(has_note(
+        &s,
+        NoteKind::Erratum,
+        "at 9 of its 18 gradient entries"
+    ));
+    assert!(has_note(&s, NoteKind::Erratum, "(65 − 45)/2 = 10"));
+    assert!(converged(&s));
+    assert_close(&s, "iterations", 11.0, 0.0);
+    assert_close(&s, "c", 3.163_718, 2e-4);
+    assert_close(&s, "r", 4.112_809, 2e-4);
+    assert_close(&s, "a", 1.452_846, 1e-3);
+    assert_close(&s, "b", -43.534_21, 0.05);
+    assert_eq!(printed(&s, "first_dc"), 0.194);
+    assert_eq!(printed(&s, "first_db"), -5.372);
+    // the bottom border row leaves the 6-row window from iteration 2 on
+    assert!(has_note(&s, NoteKind::Warning, "Border samples outside"));
+    let keys: Vec<_> = s.result.keys().take(10).collect();
+    assert_eq!(
+        keys,
+        [
+            "first_dc",
+            "first_dr",
+            "first_da",
+            "first_db",
+            "c",
+            "r",
+            "a",
+            "b",
+            "iterations",
+            "converged"
+        ]
+    );
+}
+
+#[test]
+fn example_11_patch_edge_reading_reproduces_the_printed_matrix() {
+    let s = solve(
+        "lsm-2d",
+        &Record::new().with("gradients", text("patch-edge")),
+    )
+    .unwrap();
+    let a = first_a(&s);
+    for (row, p) in a.iter().zip(PRINTED_A) {
+        assert_eq!(&row[..2], &p[..]);
+    }
+    let step = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Design"))
+        .unwrap();
+    assert!(step
+        .substituted
+        .contains("(65 - 47)/2 & (62 - 47)/2 & 47 & 1"));
+    // the printed increments, to their three decimals
+    for (key, p) in [
+        ("first_dc", 0.194),
+        ("first_dr", 0.086),
+        ("first_da", 0.138),
+        ("first_db", -5.372),
+    ] {
+        assert!((result(&s, key) - p).abs() < 5e-4, "{key}");
+        assert_eq!(printed(&s, key), p);
+    }
+    assert_close(&s, "first_dc", 0.193_654_5, 1e-6);
+    assert_close(&s, "first_db", -5.372_021, 1e-5);
+    assert!(converged(&s));
+    assert_close(&s, "iterations", 81.0, 0.0);
+    assert_close(&s, "c", 3.163_852, 3e-4);
+    assert_close(&s, "r", 4.106_619, 3e-4);
+    assert!(has_note(
+        &s,
+        NoteKind::Rounding,
+        "patch-edge reading rounded"
+    ));
+    assert!(has_note(&s, NoteKind::Convention, "zig-zags"));
+}
+
+#[test]
+fn an_iteration_limit_ends_as_not_converged_with_the_last_increments() {
+    let s = solve(
+        "lsm-2d",
+        &Record::new()
+            .with("gradients", text("patch-edge"))
+            .with("max_iterations", 30.0),
+    )
+    .unwrap();
+    assert!(!converged(&s));
+    assert_eq!(status(&s), "not-converged");
+    assert_close(&s, "iterations", 30.0, 0.0);
+    assert!(has_note(
+        &s,
+        NoteKind::Warning,
+        "Not converged within the limit of 30"
+    ));
+    assert!(has_note(
+        &s,
+        NoteKind::Warning,
+        "The last increments were dc = "
+    ));
+}
+
+// ------------------------------------------------------------ how runs end
+
+#[test]
+fn a_flat_patch_is_degenerate() {
+    let flat = Value::numbers(&[5.0; 12]);
+    let s = solve("lsm-1d", &Record::new().with("search", flat)).unwrap();
+    assert_eq!(status(&s), "degenerate");
+    assert!(!converged(&s));
+    assert_eq!(s.result.get("first_dc"), Some(&Value::Null));
+    assert_close(&s, "iterations", 0.0, 0.0);
+    assert_close(&s, "c", 8.0, 0.0);
+    assert!(has_note(&s, NoteKind::Warning, "flat"));
+    let flat2 = Value::matrix(&vec![vec![7.0; 6]; 6]);
+    let s = solve("lsm-2d", &Record::new().with("search", flat2)).unwrap();
+    assert_eq!(status(&s), "degenerate");
+    // natively through the core as well
+    let m = match_1d(
+        &[1.0, 2.0, 3.0],
+        &[4.0; 5],
+        Params::shift(2.0, 0.0, 1.0, 0.0),
+        Settings {
+            model: Model::Shift,
+            gradients: Gradients::SearchWindow,
+            max_iterations: 10,
+        },
+    )
+    .unwrap();
+    assert!(matches!(m.status, Status::Degenerate { .. }));
+}
+
+#[test]
+fn a_start_outside_the_pull_in_range_and_a_patch_leaving_the_window() {
+    // a shift of 6 px is beyond the pull-in range of the generated texture:
+    // the first steps throw the patch out of the search window
+    let s = solve(
+        "lsm-affine",
+        &Record::new().with("shift_c", 6.0).with("shift_r", 0.0),
+    )
+    .unwrap();
+    assert_eq!(status(&s), "left-window");
+    assert!(!converged(&s));
+    assert!(has_note(&s, NoteKind::Warning, "outside the search window"));
+    // 1-D: a start at the window's left end walks out
+    let s = solve("lsm-1d", &Record::new().with("c0", 4.0)).unwrap();
+    assert_eq!(status(&s), "left-window", "{:?}", s.result);
+    assert!(
+        has_note(&s, NoteKind::Warning, "left the search window")
+            || has_note(&s, NoteKind::Warning, "outside the search window")
+    );
+}
+
+// ------------------------------------------------------------ synthetic
+
+#[test]
+fn synthetic_shifts_up_to_one_pixel_are_recovered_to_a_hundredth() {
+    let mut rng = Lcg(42);
+    for k in 0..25 {
+        let (dc, dr) = (rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
+        let truth = affine_from(dc, dr, 0.0, 1.0, 0.0, 1.0, 0.0);
+        let pair = synthetic_pair(15, &truth, 0.0, k).unwrap();
+        let start = Params::shift(pair.centre, pair.centre, 1.0, 0.0);
+        for model in [Model::Shift, Model::ShiftRadiometric] {
+            let m = match_2d(
+                &pair.template,
+                &pair.search,
+                start,
+                Settings {
+                    model,
+                    gradients: Gradients::SearchWindow,
+                    max_iterations: 100,
+                },
+            )
+            .unwrap();
+            assert!(m.converged(), "{dc} {dr}: {:?}", m.status);
+            let (c, r) = (m.params.a[2] - pair.centre, m.params.a[5] - pair.centre);
+            assert!(
+                (c - dc).abs() < 0.01 && (r - dr).abs() < 0.01,
+                "{dc} {dr} → {c} {r}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_affine_radiometric_model_recovers_known_parameters() {
+    let s = solve("lsm-affine", &Record::new()).unwrap();
+    assert!(converged(&s));
+    let est = list(s.result.get("parameters"));
+    let truth = list(s.result.get("true_parameters"));
+    assert_eq!(est.len(), 8);
+    for (e, t) in est.iter().zip(&truth) {
+        assert!((e - t).abs() < 1e-3, "{est:?} vs {truth:?}");
+    }
+    assert!(result(&s, "sigma0") < 0.01);
+    assert!(has_note(&s, NoteKind::Convention, "two stacked systems"));
+    let mut rng = Lcg(7);
+    for k in 0..8 {
+        let inputs = Record::new()
+            .with("shift_c", rng.range(-1.5, 1.5))
+            .with("shift_r", rng.range(-1.5, 1.5))
+            .with("rotation_deg", rng.range(-8.0, 8.0))
+            .with("scale", rng.range(0.93, 1.07))
+            .with("shear", rng.range(-0.05, 0.05))
+            .with("gain", rng.range(0.7, 1.5))
+            .with("offset", rng.range(-30.0, 30.0))
+            .with("seed", k as f64);
+        let s = solve("lsm-affine", &inputs).unwrap();
+        assert!(converged(&s), "{inputs:?}: {}", status(&s));
+        let est = list(s.result.get("parameters"));
+        let truth = list(s.result.get("true_parameters"));
+        for (j, (e, t)) in est.iter().zip(&truth).enumerate() {
+            let tol = if j == 7 { 0.05 } else { 2e-3 };
+            assert!((e - t).abs() < tol, "a{}: {e} vs {t} ({inputs:?})", j + 1);
+        }
+    }
+}
+
+#[test]
+fn noise_raises_sigma0_as_expected() {
+    let mut last = 0.0;
+    for noise in [0.0, 1.0, 3.0, 6.0] {
+        let s = solve("lsm-affine", &Record::new().with("noise", noise)).unwrap();
+        assert!(converged(&s), "noise {noise}");
+        let s0 = result(&s, "sigma0");
+        assert!(s0 > last, "σ0 {s0} at noise {noise} not above {last}");
+        last = s0;
+        if noise > 0.0 {
+            let expected = result(&s, "expected_sigma0");
+            assert!(
+                (s0 / expected - 1.0).abs() < 0.2,
+                "noise {noise}: σ0 {s0}, expected {expected}"
+            );
+            // the parameters' standard deviations grow with the noise, and
+            // the estimates stay within a few of them
+            let sd = list(s.result.get("std_dev"));
+            let est = list(s.result.get("parameters"));
+            let truth = list(s.result.get("true_parameters"));
+            for j in 0..8 {
+                assert!((est[j] - truth[j]).abs() < 5.0 * sd[j] + 1e-6, "a{}", j + 1);
+            }
+        } else {
+            assert_eq!(s.result.get("expected_sigma0"), Some(&Value::Null));
+        }
+    }
+}
+
+#[test]
+fn the_example_and_the_core_are_one_computation() {
+    let t = [1.0, 2.0, 9.0, 9.0, 8.0, 2.0, 1.0];
+    let sw = [1.0, 2.0, 2.0, 1.0, 1.0, 3.0, 8.0, 8.0, 6.0, 1.0, 1.0, 1.0];
+    let m = match_1d(
+        &t,
+        &sw,
+        Params::shift(7.0, 0.0, 1.0, 0.0),
+        Settings {
+            model: Model::ShiftRadiometric,
+            gradients: Gradients::SearchWindow,
+            max_iterations: 100,
+        },
+    )
+    .unwrap();
+    let s = solve("lsm-1d", &Record::new().with("radiometric", true)).unwrap();
+    assert_eq!(result(&s, "c"), m.params.a[2] + 1.0);
+    assert_eq!(result(&s, "a"), m.params.gain());
+    assert_eq!(Some(result(&s, "sigma0")), m.sigma0());
+    // a 2-D run on a one-row-high window is refused cleanly, not a panic
+    let g = Grid::from_rows("t", &[t.to_vec()]).unwrap();
+    let s2 = Grid::from_rows("s", &[sw.to_vec()]).unwrap();
+    let e = match_2d(
+        &g,
+        &s2,
+        Params::shift(7.0, 0.0, 1.0, 0.0),
+        Settings {
+            model: Model::Shift,
+            gradients: Gradients::SearchWindow,
+            max_iterations: 10,
+        },
+    )
+    .unwrap_err();
+    assert_eq!(e.field(), Some("search"));
+    assert!(e.to_string().contains("at least 2×2"), "{e}");
+}
+
+// ------------------------------------------------------------ bad inputs
+
+fn err(id: &str, inputs: Record) -> String {
+    solve(id, &inputs).unwrap_err().to_string()
+}
+
+#[test]
+fn bad_inputs_name_the_field() {
+    let e = err("lsm-1d", Record::new().with("c0", 2.0));
+    assert!(
+        e.starts_with("c0: the patch does not fit at the start"),
+        "{e}"
+    );
+    let e = err(
+        "lsm-1d",
+        Record::new().with("search", Value::numbers(&[1.0, 2.0, 3.0])),
+    );
+    assert!(
+        e.starts_with("template: has 7 values, more than the 3 of the search window"),
+        "{e}"
+    );
+    let e = err(
+        "lsm-1d",
+        Record::new().with("template", Value::numbers(&[1.0])),
+    );
+    assert!(e.starts_with("template: needs at least 3"), "{e}");
+    let e = err("lsm-1d", Record::new().with("max_iterations", 0.0));
+    assert!(e.starts_with("max_iterations: must be at least 1"), "{e}");
+    let e = err("lsm-1d", Record::new().with("radiometric", text("yes")));
+    assert!(e.starts_with("radiometric: must be true or false"), "{e}");
+    let e = err("lsm-1d", Record::new().with("c0", f64::NAN));
+    assert_eq!(e, "c0: is NaN; give a number");
+    let e = err("lsm-2d", Record::new().with("gradients", text("sobel")));
+    assert!(
+        e.starts_with("gradients: \"sobel\" is not one of the choices"),
+        "{e}"
+    );
+    let e = err("lsm-2d", Record::new().with("r0", 6.0));
+    assert!(
+        e.starts_with("c0: the patch does not fit at the start"),
+        "{e}"
+    );
+    let e = err(
+        "lsm-2d",
+        Record::new().with("template", Value::matrix(&[vec![1.0, 2.0], vec![3.0]])),
+    );
+    assert!(
+        e.starts_with("template: rows must all have the same length"),
+        "{e}"
+    );
+    let big = Value::matrix(&vec![vec![1.0; 65]; 65]);
+    let e = err("lsm-2d", Record::new().with("search", big));
+    assert!(e.starts_with("search: is larger than 64×64"), "{e}");
+    let e = err("lsm-affine", Record::new().with("patch_size", 20.0));
+    assert!(e.starts_with("patch_size: must be odd"), "{e}");
+    let e = err("lsm-affine", Record::new().with("scale", 0.0));
+    assert!(e.starts_with("scale: must be at least 0.5"), "{e}");
+    let e = err("lsm-affine", Record::new().with("noise", -1.0));
+    assert!(e.starts_with("noise: must be at least 0"), "{e}");
+    let e = err("lsm-affine", Record::new().with("spin", 1.0));
+    assert!(e.starts_with("spin: unknown field"), "{e}");
+}
