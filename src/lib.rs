@@ -10,12 +10,14 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`correlation`]: normalized cross-correlation (1-D, 2-D, surfaces) and subpixel peaks.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
 //!   `parse_inputs`); the only file that knows about JavaScript.
 
 pub mod coords;
+pub mod correlation;
 pub mod error;
 pub mod examples;
 pub mod lsq;
