@@ -552,7 +552,15 @@ pub fn quadric_peak(c: [f64; 3], r: [f64; 3], rho: [[f64; 3]; 3]) -> Result<Quad
     ];
     let det = 4.0 * b[4] * b[5] - b[3] * b[3];
     let scale = (4.0 * b[4] * b[5]).abs().max(b[3] * b[3]);
-    let extremum = if det.abs() <= DEGENERATE * scale || scale == 0.0 {
+    // curvature that is rounding noise against the data (a plane) is none
+    let span = |x: [f64; 3], m: f64| x.iter().fold(0.0f64, |s, v| s.max((v - m).abs()));
+    let (su, sv) = (span(c, cm), span(r, rm));
+    let rho_max = rho.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+    let curvature = (b[4].abs() * su * su)
+        .max(b[5].abs() * sv * sv)
+        .max(b[3].abs() * su * sv);
+    let flat = curvature <= DEGENERATE * rho_max;
+    let extremum = if flat || det.abs() <= DEGENERATE * scale || scale == 0.0 {
         Extremum::Degenerate
     } else {
         // [2b4 b3; b3 2b5]·[u v]ᵀ = −[b1 b2]ᵀ by Cramer's rule
