@@ -140,7 +140,7 @@ fn matrix(
 fn rho_from_field(help: &'static str) -> Field {
     Field {
         key: "rho_from",
-        label: "Correlation coefficients",
+        label: "Take ρ from",
         help,
         kind: Kind::Choice { options: RHO_FROM },
         default: Value::Text("printed".to_string()),
@@ -1735,41 +1735,27 @@ fn stationary(a: &[f64; 6]) -> Option<(f64, f64)> {
 }
 
 fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
-    let eqs: Vec<String> = q
-        .design
-        .iter()
-        .zip(&q.observations)
-        .map(|(row, l)| {
-            let g = |i: usize| row.get(i).copied().unwrap_or(0.0);
-            format!(
-                r"\rho({}, {}) = {} &= a_0 + {} a_1 + {} a_2 + {} a_3 + {} a_4 + {} a_5",
-                num(g(1)),
-                num(g(2)),
-                num(*l),
-                tex(g(1)),
-                tex(g(2)),
-                tex(g(3)),
-                tex(g(4)),
-                tex(g(5))
-            )
-        })
-        .collect();
     s.step(
         Step::new(
             "Nine equations",
             &format!(
-                "The surface ρ = a0 + a1·c + a2·r + a3·c·r + a4·c² + a5·r² at the best position and its 8 neighbours (c = {}, {}, {}; r = {}, {}, {}): nine equations for six unknowns, solved by least squares.",
+                "The surface ρ = a0 + a1·c + a2·r + a3·c·r + a4·c² + a5·r² at the best position and its 8 neighbours (c = {}, {}, {}; r = {}, {}, {}): nine equations for six unknowns, one row of A per (c, r) in reading order (r = {} first), solved by least squares.",
                 num(c[0]),
                 num(c[1]),
                 num(c[2]),
                 num(r[0]),
                 num(r[1]),
-                num(r[2])
+                num(r[2]),
+                num(r[0])
             ),
         )
         .formula(
-            r"\rho(c, r) = a_0 + a_1 c + a_2 r + a_3 c r + a_4 c^2 + a_5 r^2",
-            format!(r"\begin{{aligned}} {} \end{{aligned}}", eqs.join(r" \\ ")),
+            r"\rho(c, r) = a_0 + a_1 c + a_2 r + a_3 c r + a_4 c^2 + a_5 r^2 \;\Rightarrow\; A X = L,\ A_i = [1,\ c_i,\ r_i,\ c_i r_i,\ c_i^2,\ r_i^2]",
+            format!(
+                r"{} \begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \\ a_3 \\ a_4 \\ a_5 \end{{bmatrix}} = {}",
+                tex_matrix(&q.design),
+                tex_column(&q.observations)
+            ),
         )
         .value("A", Value::matrix(&q.design))
         .value("L", Value::numbers(&q.observations)),
