@@ -288,6 +288,7 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
         "edge-window",
         "forstner-window",
         "moravec-window",
+        "forstner-image",
         "chain-code",
         "boundary-length",
         "boundary-shape",

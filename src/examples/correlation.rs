@@ -468,6 +468,44 @@ fn ncc_values(step: Step, n: &Ncc) -> Step {
         .value("rho", opt(n.rho))
 }
 
+/// What each result key of this topic means, for the page's table.
+fn label_results(s: &mut Solution) {
+    for (key, label, unit) in [
+        ("mean_template", "Template mean Ā", ""),
+        ("mean_subwindows", "Sub-window means B̄ₖ", ""),
+        ("rho", "Correlation coefficients ρ", ""),
+        ("best", "Best sub-window (from 1)", ""),
+        ("centres", "Sub-window centres c", "px"),
+        ("best_c", "Centre column c of the best window", "px"),
+        ("best_r", "Centre row r of the best window", "px"),
+        ("best_position", "Best position (from 1, row by row)", ""),
+        ("best_col", "Surface column of the best position", ""),
+        ("best_row", "Surface row of the best position", ""),
+        ("mean_a", "Mean Ā", ""),
+        ("mean_b", "Mean B̄", ""),
+        ("sum_dadb", "Σ(A−Ā)(B−B̄)", ""),
+        ("sum_da2", "Σ(A−Ā)²", ""),
+        ("sum_db2", "Σ(B−B̄)²", ""),
+        ("coefficients", "Coefficients a₀, a₁, …", ""),
+        ("c_max", "Subpixel peak column c", "px"),
+        ("r_max", "Subpixel peak row r", "px"),
+        ("extremum", "Stationary point", ""),
+        ("rho_max", "ρ at the peak", ""),
+        ("positions", "Positions c used", "px"),
+        ("c", "Columns c used", "px"),
+        ("r", "Rows r used", "px"),
+        ("residuals", "Residuals V of the nine ρ", ""),
+        ("sigma0", "σ₀ of the fit", ""),
+        ("c_max_printed_rho", "Peak column from the printed ρ", "px"),
+        ("r_max_printed_rho", "Peak row from the printed ρ", "px"),
+        ("peak_shift", "How far the peak moves", "px"),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, unit);
+        }
+    }
+}
+
 // ---------------------------------------------------------------- Example 5
 
 fn ncc_1d(inputs: &Record) -> Result<Solution> {
@@ -656,6 +694,7 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
     if is_seed(&ncc_1d_fields(), inputs) {
         seed_notes_5(&mut s, &profile);
     }
+    label_results(&mut s);
     Ok(s)
 }
 
@@ -877,6 +916,7 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
     if is_seed(&ncc_2d_fields(), inputs) {
         seed_notes_6(&mut s, &n, av, bv);
     }
+    label_results(&mut s);
     Ok(s)
 }
 
@@ -1176,6 +1216,7 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
     if is_seed(&ncc_surface_fields(), inputs) {
         seed_notes_7(&mut s, &rho_rows);
     }
+    label_results(&mut s);
     Ok(s)
 }
 
@@ -1395,6 +1436,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             );
         }
     }
+    label_results(&mut s);
     Ok(s)
 }
 
@@ -1719,6 +1761,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             );
         }
     }
+    label_results(&mut s);
     Ok(s)
 }
 

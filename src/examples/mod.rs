@@ -12,6 +12,7 @@
 pub mod coordinates;
 pub mod correlation;
 pub mod fields;
+pub mod interest;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -72,7 +73,6 @@ fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
     const L: &str = "Least-squares matching";
     const F: &str = "Filters and edges";
-    const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
     vec![
         Entry::coming(
@@ -130,18 +130,6 @@ fn coming() -> Vec<Entry> {
             "Seed 000, Example 15",
         ),
         Entry::coming(
-            "forstner-window",
-            "Förstner operator",
-            I,
-            "Seed 000, Example 13; seed 003",
-        ),
-        Entry::coming(
-            "moravec-window",
-            "Moravec operator",
-            I,
-            "Seed 000, Example 14",
-        ),
-        Entry::coming(
             "chain-code",
             "Freeman chain code",
             B,
@@ -162,6 +150,7 @@ fn coming() -> Vec<Entry> {
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
     all.extend(correlation::entries());
+    all.extend(interest::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS

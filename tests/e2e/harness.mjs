@@ -137,6 +137,12 @@ export const CATALOG_IDS = [
   "utm",
 ];
 
+/**
+ * Entries beyond CATALOG.md, each documented in docs/API.md
+ * (forstner-image: the Förstner operator on a generated test pattern).
+ */
+export const EXTRA_IDS = ["forstner-image"];
+
 /** The ids in ../shared/CATALOG.md (first column of its tables), or null when absent. */
 export function catalogMdIds() {
   const file = path.resolve("..", "shared", "CATALOG.md");

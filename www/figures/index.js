@@ -28,11 +28,13 @@
 
 import { figures as coordinates } from "./coordinates.js";
 import { figures as correlation } from "./correlation.js";
+import { figures as interest } from "./interest.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
   ...correlation,
+  ...interest,
 });
 
 /** Heights are kept within these bounds (CSS px). */
