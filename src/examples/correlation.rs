@@ -1467,9 +1467,9 @@ fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
             "A 2nd-order polynomial ρ(c) = a0 + a1·c + a2·c² through the best ρ and its two neighbours: one equation per position, in matrix form A·X = L.",
         )
         .formula(
-            r"\rho_i = a_0 + a_1 c_i + a_2 c_i^2 \;\Rightarrow\; A X = L",
+            r"\rho_i = a_0 + a_1 c_i + a_2 c_i^2,\quad A X = L",
             format!(
-                r"\begin{{aligned}} {} \end{{aligned}} \;\Rightarrow\; {} \begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \end{{bmatrix}} = {}",
+                r"\begin{{aligned}} {} \end{{aligned}}\quad {} \begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \end{{bmatrix}} = {}",
                 eqs.join(r" \\ "),
                 tex_matrix(&a),
                 tex_column(&y)
@@ -1793,7 +1793,7 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
             ),
         )
         .formula(
-            r"\rho(c, r) = a_0 + a_1 c + a_2 r + a_3 c r + a_4 c^2 + a_5 r^2 \;\Rightarrow\; A X = L,\ A_i = [1,\ c_i,\ r_i,\ c_i r_i,\ c_i^2,\ r_i^2]",
+            r"\rho(c, r) = a_0 + a_1 c + a_2 r + a_3 c r + a_4 c^2 + a_5 r^2,\quad A X = L,\quad A_i = [1,\ c_i,\ r_i,\ c_i r_i,\ c_i^2,\ r_i^2]",
             format!(
                 r"{} \begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \\ a_3 \\ a_4 \\ a_5 \end{{bmatrix}} = {}",
                 tex_matrix(&q.design),

@@ -20,6 +20,8 @@ const MARGIN = 12;
 /** Cell sizes (CSS px) of the number grids: largest, and smallest that still shows numbers. */
 const CELL_MAX = 40;
 const CELL_NUMBERS = 24;
+/** Largest heat-map cell; ρ gets four decimals (as the seed prints them) near this size. */
+const HEAT_MAX = 64;
 /** Positive ρ orange, negative ρ blue (the page's highlight and pixel colours). */
 const RHO_POS = [217, 119, 6];
 const RHO_NEG = [29, 95, 191];
@@ -95,6 +97,17 @@ function outline(ctx, x, y, w, h, color, width = 2.5, dash = null) {
   ctx.setLineDash(dash ? [...dash] : []);
   ctx.strokeRect(x, y, w, h);
   ctx.restore();
+}
+
+/** Round tick values within [lo, hi]: steps of 1, 2 or 5 × 10ⁿ, about four of them. */
+function niceTicks(lo, hi) {
+  const raw = (hi - lo) / 4;
+  if (!(raw > 0)) return [lo];
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((m) => m * p).find((s) => s >= raw) ?? 10 * p;
+  const out = [];
+  for (let v = Math.ceil(lo / step) * step; v <= hi + 1e-12; v += step) out.push(Math.abs(v) < step * 1e-9 ? 0 : v);
+  return out;
 }
 
 /** Clamp an index into [0, n − 1] (NaN → the fallback). */
@@ -413,7 +426,7 @@ function layoutSurface(width, d) {
   const xs = xt + tw * cell + MARGIN;
   const y1 = MARGIN + 18;
   const y2 = y1 + Math.max(th, sh) * cell + 34;
-  const heat = Math.min(CELL_MAX + 12, (width - 2 * MARGIN) / Math.max(d.w, 1));
+  const heat = Math.min(HEAT_MAX, (width - 2 * MARGIN) / Math.max(d.w, 1));
   const xh = MARGIN + (width - 2 * MARGIN - d.w * heat) / 2;
   const y3 = y2 + d.h * heat + 14;
   return { th, tw, sh, sw, cell, xt, xs, y1, y2, heat, xh, y3 };
@@ -452,7 +465,7 @@ function drawSurface(ctx, width, height, solution, state) {
 
   text(ctx, "Correlation surface ρ (orange > 0, blue < 0)", MARGIN, L.y2 - 12, TITLE);
   // ρ as the seed prints it: four decimals where they fit, two otherwise
-  const decimals = L.heat >= 50 ? 4 : 2;
+  const decimals = L.heat >= HEAT_MAX - 4 ? 4 : 2;
   cells(ctx, d.rho, L.xh, L.y2, L.heat, rhoShade, (v) => v.toFixed(decimals).replace("-", "\u2212"));
   if (d.best) {
     const [br, bc] = d.best;
@@ -553,7 +566,7 @@ function drawParabola(ctx, width, height, solution) {
   line(ctx, m.left, m.top, m.left, height - m.bottom, { color: COLORS.ink });
   text(ctx, "c (column)", width - m.right, height - 8, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
   text(ctx, "ρ", m.left - 8, m.top - 10, { color: COLORS.muted, weight: "bold", align: "right" });
-  for (const v of [yLo + pad, (yLo + yHi) / 2, yHi - pad]) {
+  for (const v of niceTicks(yLo, yHi)) {
     line(ctx, m.left - 4, Y(v), m.left, Y(v), { color: COLORS.ink });
     text(ctx, formatNumber(v, 3), m.left - 6, Y(v), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
   }
