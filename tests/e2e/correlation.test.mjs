@@ -134,8 +134,10 @@ describe("correlation examples", () => {
       const box = await canvas.boundingBox();
       const geometry = await page.evaluate(() => {
         const width = document.querySelector(".figure-canvas").clientWidth;
-        const cell = Math.min(36, (width - 36) / 9);
-        return { xs: 12 + 3 * cell + 12, y1: 12 + 18, cell };
+        let cell = Math.min(36, (width - 36) / 9);
+        const xs = 12 + Math.max(3 * cell, 80) + 12;
+        cell = Math.min(cell, (width - 12 - xs) / 6);
+        return { xs, y1: 12 + 18, cell };
       });
       await page.mouse.click(box.x + geometry.xs + geometry.cell / 2, box.y + geometry.y1 + geometry.cell / 2);
       assert.match(await statusText(page), /^Position 1:/);

@@ -22,6 +22,8 @@ const CELL_MAX = 40;
 const CELL_NUMBERS = 24;
 /** Largest heat-map cell; ρ gets four decimals (as the seed prints them) near this size. */
 const HEAT_MAX = 64;
+/** Width kept for the title above the template (CSS px). */
+const TEMPLATE_TITLE_W = 80;
 /** Positive ρ orange, negative ρ blue (the page's highlight and pixel colours). */
 const RHO_POS = [217, 119, 6];
 const RHO_NEG = [29, 95, 191];
@@ -214,7 +216,7 @@ function draw1d(ctx, width, height, solution, state) {
   line(ctx, X(k + n), L.ySearch + L.cell + 2, X(k + n), L.yTemplate, { color: SELECT, dash: DASH });
 
   // ρ bars at each window's centre
-  text(ctx, "ρ at each position (bar under the window's centre)", MARGIN, L.yBars - 9, TITLE);
+  text(ctx, "ρ at each position", MARGIN, L.yBars - 9, TITLE);
   const half = ONE_D.barsH / 2 - 4;
   const Y = (r) => L.yZero - r * half;
   line(ctx, X(0), Y(1), X(L.n), Y(1), { color: COLORS.grid });
@@ -272,7 +274,7 @@ function describe1d(solution, state) {
 }
 
 const ncc1d = {
-  caption: "The template slides along the search array; each bar is the correlation coefficient at one position (dashed: the usual 0.7 threshold). Click a bar or use ← → on the figure to see that position's computation.",
+  caption: "The template slides along the search array; each bar is the correlation coefficient at one position, drawn under the centre of its window (dashed: the usual 0.7 threshold). Click a bar or use ← → on the figure to see that position's computation.",
   height: height1d,
   describe: describe1d,
   draw: draw1d,
@@ -421,9 +423,11 @@ function layoutSurface(width, d) {
   const sh = d.search.length;
   const sw = d.search[0]?.length ?? 1;
   const avail = width - 3 * MARGIN;
-  const cell = Math.min(CELL_MAX - 4, avail / (tw + sw));
+  let cell = Math.min(CELL_MAX - 4, avail / (tw + sw));
   const xt = MARGIN;
-  const xs = xt + tw * cell + MARGIN;
+  // room for the title "Template T" even above a narrow template
+  const xs = xt + Math.max(tw * cell, TEMPLATE_TITLE_W) + MARGIN;
+  cell = Math.min(cell, (width - MARGIN - xs) / sw);
   const y1 = MARGIN + 18;
   const y2 = y1 + Math.max(th, sh) * cell + 34;
   const heat = Math.min(HEAT_MAX, (width - 2 * MARGIN) / Math.max(d.w, 1));
