@@ -16,6 +16,7 @@
 //!   at fractional positions, with their intermediates.
 //! - [`filter`]: kernels (smoothing, Laplacian, sharpening, edges), median,
 //!   gradients and magnitude, with a border policy.
+//! - [`correlation`]: normalized cross-correlation (1-D, 2-D, surfaces) and subpixel peaks.
 //! - [`interest`]: the Förstner and Moravec interest operators, on a window
 //!   and as whole-image maps with thresholding and suppression.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
@@ -24,6 +25,7 @@
 //!   `parse_inputs`); the only file that knows about JavaScript.
 
 pub mod coords;
+pub mod correlation;
 pub mod error;
 pub mod examples;
 pub mod filter;

@@ -60,14 +60,13 @@ fn catalog_is_plain_data_with_typed_fields() {
         Some("900")
     );
     assert_eq!(get(&dpi, "min_exclusive").as_bool(), Some(true));
-    let coming = cat
+    // an entry not built yet (if any is left) is listed with no inputs
+    if let Some(coming) = cat
         .iter()
-        .find(|e| get(e, "id").as_string().as_deref() == Some("ncc-1d"))
-        .unwrap();
-    assert_eq!(
-        get(&coming, "status").as_string().as_deref(),
-        Some("coming")
-    );
+        .find(|e| get(e, "status").as_string().as_deref() == Some("coming"))
+    {
+        assert_eq!(Array::from(&get(&coming, "inputs")).length(), 0);
+    }
 }
 
 #[wasm_bindgen_test]

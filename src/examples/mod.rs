@@ -10,6 +10,7 @@
 //! in that file's `entries()`, and remove it from [`coming`].
 
 pub mod coordinates;
+pub mod correlation;
 pub mod fields;
 pub mod filters;
 pub mod interest;
@@ -73,7 +74,6 @@ impl Entry {
 /// Entries of the catalog that are not built yet.
 fn coming() -> Vec<Entry> {
     const T: &str = "Transformations";
-    const C: &str = "Correlation";
     const B: &str = "Chain codes and boundaries";
     vec![
         Entry::coming(
@@ -93,36 +93,6 @@ fn coming() -> Vec<Entry> {
             "2-D transformations by least squares",
             T,
             "Seed 004, Table 9.5.1",
-        ),
-        Entry::coming(
-            "ncc-1d",
-            "1-D correlation matching",
-            C,
-            "Seed 000, Example 5",
-        ),
-        Entry::coming(
-            "ncc-2d",
-            "2-D correlation coefficient",
-            C,
-            "Seed 000, Example 6",
-        ),
-        Entry::coming(
-            "ncc-surface",
-            "Correlation surface",
-            C,
-            "Seed 000, Example 7",
-        ),
-        Entry::coming(
-            "subpixel-1d",
-            "Subpixel peak in 1-D",
-            C,
-            "Seed 000, Example 8",
-        ),
-        Entry::coming(
-            "subpixel-2d",
-            "Subpixel peak in 2-D",
-            C,
-            "Seed 000, Example 9",
         ),
         Entry::coming(
             "chain-code",
@@ -147,6 +117,7 @@ pub fn entries() -> Vec<Entry> {
     all.extend(matching::entries());
     all.extend(resampling::entries());
     all.extend(filters::entries());
+    all.extend(correlation::entries());
     all.extend(interest::entries());
     all.extend(coming());
     all.sort_by_key(|e| {

@@ -31,11 +31,22 @@
 // The returned texts are put into the form (as if typed) and the example is
 // solved again; the canvas becomes focusable and the hint is shown below it.
 //
+// Optional: a view state (a selection the figure draws, e.g. one position of a
+// correlation): a spec with `select(solution, { x, y, width, height }, state)`
+// (a click, in CSS px of the canvas) and/or `key(solution, key, state)` (a
+// KeyboardEvent.key on the focused canvas) returns the new selection state,
+// or undefined to leave it; the canvas then takes the keyboard focus, and
+// `draw(ctx, w, h, solution, state)`, `describe(solution, state)` and the
+// optional `status(solution, state)` (a line of text under the canvas, read
+// out by screen readers) receive it. The state lives as long as the example
+// view; specs treat a state that no longer fits the solution as none.
+//
 // The page calls mountFigures(host, id, { onInputs })
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { figures as coordinates } from "./coordinates.js";
+import { figures as correlation } from "./correlation.js";
 import { figures as interest } from "./interest.js";
 import { figures as filters } from "./filters.js";
 import { figures as resampling } from "./resampling.js";
@@ -44,6 +55,7 @@ import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
+  ...correlation,
   ...interest,
   ...resampling,
   ...filters,
@@ -86,10 +98,11 @@ function paint(panel, solution) {
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
-  const state = { slider: panel.sliderValue ?? null };
+  const state = { ...(panel.state ?? {}), slider: panel.sliderValue ?? null };
   try {
     spec.draw(ctx, width, height, solution, state);
     canvas.setAttribute("aria-label", spec.describe(solution, state));
+    if (panel.status) panel.status.textContent = spec.status(solution, state) ?? "";
   } catch (e) {
     console.error("figure failed", e);
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -219,7 +232,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       figure.append(caption);
     }
     host.append(figure);
-    const panel = { spec, canvas, figure, drawn: null, slider: null, sliderValue: null };
+    const panel = { spec, canvas, figure, drawn: null, slider: null, sliderValue: null, state: null, status: null };
     if (spec.interact && onInputs) interactive(spec, canvas, figure, () => solution, onInputs);
     if (typeof spec.slider === "function") {
       const label = document.createElement("label");
@@ -237,9 +250,39 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       canvas.after(label);
       panel.slider = { label, name, input };
     }
+    if (typeof spec.status === "function") {
+      panel.status = document.createElement("p");
+      panel.status.className = "figure-status";
+      panel.status.setAttribute("aria-live", "polite");
+      figure.insertBefore(panel.status, canvas.nextSibling);
+    }
     return panel;
   });
 
+  const interact = (panel, next) => {
+    if (next === undefined) return false;
+    panel.state = next;
+    paint(panel, solution);
+    return true;
+  };
+  for (const panel of panels) {
+    const { spec, canvas } = panel;
+    if (typeof spec.select === "function") {
+      canvas.addEventListener("click", (e) => {
+        if (!solution) return;
+        const box = canvas.getBoundingClientRect();
+        const point = { x: e.clientX - box.left, y: e.clientY - box.top, width: box.width, height: box.height };
+        interact(panel, spec.select(solution, point, panel.state));
+      });
+    }
+    if (typeof spec.key === "function") {
+      canvas.tabIndex = 0;
+      canvas.addEventListener("keydown", (e) => {
+        if (!solution || e.altKey || e.ctrlKey || e.metaKey) return;
+        if (interact(panel, spec.key(solution, e.key, panel.state))) e.preventDefault();
+      });
+    }
+  }
   const redraw = () => panels.forEach((p) => paint(p, solution));
   const onResize = () => {
     // repaint only when the width or the pixel ratio changed (the height follows the width)
