@@ -10,6 +10,7 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`transform`]: 2-D transformations estimated from point pairs by least squares.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -21,5 +22,6 @@ pub mod examples;
 pub mod lsq;
 pub mod raster;
 pub mod solution;
+pub mod transform;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -11,6 +11,7 @@
 
 pub mod coordinates;
 pub mod fields;
+pub mod transformations;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -68,31 +69,12 @@ impl Entry {
 
 /// Entries of the catalog that are not built yet.
 fn coming() -> Vec<Entry> {
-    const T: &str = "Transformations";
     const C: &str = "Correlation";
     const L: &str = "Least-squares matching";
     const F: &str = "Filters and edges";
     const I: &str = "Interest operators";
     const B: &str = "Chain codes and boundaries";
     vec![
-        Entry::coming(
-            "fiducial-similarity",
-            "Fiducials: similarity transformation",
-            T,
-            "Seed 000, Example 4a",
-        ),
-        Entry::coming(
-            "fiducial-affine",
-            "Fiducials: affine transformation",
-            T,
-            "Seed 000, Example 4b",
-        ),
-        Entry::coming(
-            "transform-fit",
-            "2-D transformations by least squares",
-            T,
-            "Seed 004, Table 9.5.1",
-        ),
         Entry::coming(
             "ncc-1d",
             "1-D correlation matching",
@@ -191,6 +173,7 @@ fn coming() -> Vec<Entry> {
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
+    all.extend(transformations::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
