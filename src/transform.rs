@@ -330,7 +330,8 @@ impl Transform {
             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
         let norm: f64 = m.iter().flatten().map(|x| x.abs()).fold(0.0, f64::max);
-        if !(det.abs() > 1e-14 * norm.powi(3)) {
+        let regular = det.abs() > 1e-14 * norm.powi(3); // false for NaN too
+        if !regular {
             return Err(Error::Singular {
                 reason: format!(
                     "the {} transformation is singular (determinant {det:e}) and has no inverse",
@@ -348,7 +349,8 @@ impl Transform {
             [c(1, 0, 2, 1), -c(0, 0, 2, 1), c(0, 0, 1, 1)],
         ];
         let w = inv[2][2];
-        if !(w.abs() > 1e-14 * norm.powi(2)) {
+        let finite_origin = w.abs() > 1e-14 * norm.powi(2);
+        if !finite_origin {
             return Err(Error::Singular {
                 reason: "the inverse projective transformation maps the origin of (x, y) to infinity and cannot be written with the denominator a7·x + a8·y + 1".to_string(),
             });
@@ -511,7 +513,8 @@ fn collinear(pts: &[[f64; 2]]) -> bool {
     let tr = sxx + syy;
     let det = sxx * syy - sxy * sxy;
     // λmin·λmax = det, λmin + λmax = tr: λmin/λmax ≈ det / tr² when small.
-    !(det > 1e-20 * tr * tr)
+    let spread = det > 1e-20 * tr * tr; // false for NaN too
+    !spread
 }
 
 /// Estimates `model` from point pairs by least squares (each point gives an

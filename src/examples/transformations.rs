@@ -647,6 +647,40 @@ fn common_result(s: &mut Solution, fit: &Fit, inverse: Option<Vec<f64>>) {
     s.result.set("condition", adj.condition);
 }
 
+/// Labels of the result keys; `unit` is the target system's (mm for the
+/// fiducials, none for arbitrary points).
+fn label_results(s: &mut Solution, names: &[String], unit: &str) {
+    let params = format!("Parameters [{}]", names.join(", "));
+    for (key, label, u) in [
+        ("parameters", params.as_str(), ""),
+        ("residuals", "Residuals V = A·X − L, [vx1, vy1, …]", unit),
+        ("sigma0", "Standard deviation of unit weight σ0", unit),
+        ("redundancy", "Redundancy r = n − u", ""),
+        ("parameter_names", "Parameter names", ""),
+        ("std_devs", "Standard deviations of the parameters", ""),
+        (
+            "point_residuals",
+            "Coordinate residuals (x̂ − x, ŷ − y) per point",
+            unit,
+        ),
+        (
+            "inverse_parameters",
+            "Parameters of the inverse transformation",
+            "",
+        ),
+        ("condition", "Condition number of N (columns scaled)", ""),
+        ("scale", "Scale m", ""),
+        ("rotation_deg", "Rotation θ", "°"),
+        ("model", "Model", ""),
+        ("point_set", "Control points", ""),
+        ("fitted", "Transformed points (x̂, ŷ)", unit),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, u);
+        }
+    }
+}
+
 fn condition_note(s: &mut Solution, fit: &Fit) {
     let c = fit.adjustment.condition;
     if c > ILL_CONDITIONED {
@@ -751,6 +785,7 @@ fn example4(inputs: &Record, model: Model) -> Result<Solution> {
         s.result.set("scale", scale);
         s.result.set("rotation_deg", rot);
     }
+    label_results(&mut s, &model.param_names(), "mm");
     s.note(
         NoteKind::Convention,
         "Points are entered as the seed's table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the seed's printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
@@ -1004,6 +1039,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
     }
     s.result
         .set("fitted", Value::matrix(&pairs_to_rows(&fit.fitted)));
+    label_results(&mut s, &model.param_names(), "");
 
     s.note(
         NoteKind::Convention,
@@ -1040,15 +1076,10 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
                 SIM_PRINTED_V.to_vec(),
                 "Example 4(a)",
             )),
+            // Same positions: the table's (a, b, c, d, e, f) are Example 4's
+            // (a, b, e, c, d, f).
             Model::Affine => Some((
-                vec![
-                    AFF_PRINTED_X[0],
-                    AFF_PRINTED_X[1],
-                    AFF_PRINTED_X[3],
-                    AFF_PRINTED_X[4],
-                    AFF_PRINTED_X[2],
-                    AFF_PRINTED_X[5],
-                ],
+                AFF_PRINTED_X.to_vec(),
                 AFF_PRINTED_V.to_vec(),
                 "Example 4(b)",
             )),
