@@ -326,7 +326,7 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
         .formula(
             r"A\,X = L + V",
             format!(
-                r"{}\,{} = {} + \begin{{bmatrix}} v_1 \\ \vdots \\ v_{{{n_obs}}} \end{{bmatrix}}",
+                r"{}\,{} = {} + V",
                 bmatrix(&fit.a),
                 bsymbols(&names),
                 bvector(&fit.l)
@@ -612,7 +612,14 @@ fn inverse_step(
     )
     .formula(
         r"H^{-1} = \frac{\operatorname{adj} H}{\det H}",
-        format!(r"\begin{{gathered}} {} \end{{gathered}}", lines.join(r",\quad ")),
+        format!(
+            r"\begin{{gathered}} {} \end{{gathered}}",
+            lines
+                .chunks(2)
+                .map(|c| c.join(r",\quad "))
+                .collect::<Vec<_>>()
+                .join(r" \\ ")
+        ),
     )
     .value("inverse_parameters", Value::numbers(&inv.params));
     for (k, v) in step_values.iter() {
@@ -740,18 +747,15 @@ fn example4(inputs: &Record, model: Model) -> Result<Solution> {
     };
     let mut s = Solution::new(id, title, inputs.clone());
 
-    let table: Vec<String> = cr
+    let table: Vec<String> = pts
         .iter()
-        .zip(&pts)
         .enumerate()
-        .map(|(i, (a, b))| {
+        .map(|(i, b)| {
             format!(
-                r"{} & {} & {} & {} & {} & {} & {}",
+                r"{} & {} & {} & {} & {}",
                 i + 1,
-                num(a.u),
-                num(a.v),
                 num(b.u),
-                num(b.v),
+                tex(b.v),
                 num(b.x),
                 num(b.y)
             )
@@ -760,7 +764,7 @@ fn example4(inputs: &Record, model: Model) -> Result<Solution> {
     let (k, cut) = shown(table.len());
     let mut table: Vec<String> = table.into_iter().take(k).collect();
     if cut {
-        table.push(r"\vdots & & & & & &".to_string());
+        table.push(r"\vdots & & & &".to_string());
     }
     s.step(
         Step::new(
@@ -770,7 +774,7 @@ fn example4(inputs: &Record, model: Model) -> Result<Solution> {
         .formula(
             r"x' = c,\qquad y' = -r",
             format!(
-                r"\begin{{array}}{{c|rr|rr|rr}} \text{{No.}} & c & r & x' & y' & x & y \\ \hline {} \end{{array}}",
+                r"\begin{{array}}{{c|rr|rr}} \text{{No.}} & x' = c & y' = -r & x & y \\ \hline {} \end{{array}}",
                 table.join(r" \\ ")
             ),
         )
@@ -845,11 +849,11 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
         s.note(
             NoteKind::Rounding,
             format!(
-                "The printed {what} {} the exact values rounded to three decimals: {}.",
+                "{} {what} are the exact values rounded to three decimals: {}.",
                 if to_two.is_empty() && other.is_empty() {
-                    "are"
+                    "The printed"
                 } else {
-                    "otherwise are"
+                    "The other printed"
                 },
                 fine.join(", ")
             ),

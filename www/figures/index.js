@@ -12,15 +12,28 @@
 //     },
 //   };
 //
+// Optional, for figures whose items (points) can be picked:
+//
+//     count(solution)                        // how many items there are
+//     select(x, y, width, height, solution)  // the item under (x, y), or null
+//
+// With them the canvas takes the focus (Tab); hovering an item, clicking it
+// (pins it) or the arrow keys (Escape clears) select it, and every canvas of
+// the example is redrawn with draw(ctx, width, height, solution, { selected })
+// and describe(solution, { selected }) — so one figure can highlight what
+// another shows. `selected` is the item's index or null.
+//
 // and is registered with one line below. The page calls mountFigures(host, id)
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { figures as coordinates } from "./coordinates.js";
+import { figures as transformations } from "./transformations.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
+  ...transformations,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -38,7 +51,7 @@ export function hasFigure(id) {
   return specsFor(id).length > 0;
 }
 
-function paint(panel, solution) {
+function paint(panel, solution, state = { selected: null }) {
   const { spec, canvas, figure } = panel;
   const width = Math.floor(figure.clientWidth);
   if (!solution || width <= 0) return;
@@ -60,8 +73,8 @@ function paint(panel, solution) {
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
   try {
-    spec.draw(ctx, width, height, solution);
-    canvas.setAttribute("aria-label", spec.describe(solution));
+    spec.draw(ctx, width, height, solution, state);
+    canvas.setAttribute("aria-label", spec.describe(solution, state));
   } catch (e) {
     console.error("figure failed", e);
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -100,13 +113,49 @@ export function mountFigures(host, id) {
   });
 
   let solution = null;
-  const redraw = () => panels.forEach((p) => paint(p, solution));
+  const state = { selected: null, pinned: false };
+  const redraw = () => panels.forEach((p) => paint(p, solution, state));
+  const select = (index, pinned) => {
+    if (index === state.selected && pinned === state.pinned) return;
+    state.selected = index;
+    state.pinned = pinned;
+    redraw();
+  };
+  for (const p of panels) {
+    const { spec, canvas } = p;
+    if (typeof spec.select !== "function" || typeof spec.count !== "function") continue;
+    canvas.tabIndex = 0;
+    const hit = (e) => (solution ? spec.select(e.offsetX, e.offsetY, canvas.clientWidth, canvas.clientHeight, solution) : null);
+    canvas.addEventListener("pointermove", (e) => {
+      if (!state.pinned) select(hit(e), false);
+    });
+    canvas.addEventListener("pointerleave", () => {
+      if (!state.pinned) select(null, false);
+    });
+    canvas.addEventListener("click", (e) => {
+      const i = hit(e);
+      if (i === null || (state.pinned && i === state.selected)) select(null, false);
+      else select(i, true);
+    });
+    canvas.addEventListener("keydown", (e) => {
+      const n = solution ? spec.count(solution) : 0;
+      if (!n) return;
+      const cur = state.selected;
+      let next;
+      if (e.key === "ArrowRight" || e.key === "ArrowDown") next = cur === null ? 0 : (cur + 1) % n;
+      else if (e.key === "ArrowLeft" || e.key === "ArrowUp") next = cur === null ? n - 1 : (cur - 1 + n) % n;
+      else if (e.key === "Escape") next = null;
+      else return;
+      e.preventDefault();
+      select(next, next !== null);
+    });
+  }
   const onResize = () => {
     // repaint only when the width or the pixel ratio changed (the height follows the width)
     const dpr = window.devicePixelRatio || 1;
     for (const p of panels) {
       const w = Math.floor(p.figure.clientWidth);
-      if (!p.drawn || p.drawn.width !== w || p.drawn.dpr !== dpr) paint(p, solution);
+      if (!p.drawn || p.drawn.width !== w || p.drawn.dpr !== dpr) paint(p, solution, state);
     }
   };
   const observer = new ResizeObserver(onResize);
@@ -127,6 +176,11 @@ export function mountFigures(host, id) {
   return {
     update(next) {
       solution = next;
+      const counts = panels.filter((p) => typeof p.spec.count === "function").map((p) => p.spec.count(next));
+      if (state.selected !== null && !counts.some((n) => state.selected < n)) {
+        state.selected = null;
+        state.pinned = false;
+      }
       redraw();
     },
     redraw,
