@@ -302,7 +302,7 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
         )
         .formula(
             if model.is_linearised() {
-                r"x\,(a_7 u + a_8 v + 1) = a_1 u + a_2 v + a_3 \;\Rightarrow\; a_1 u + a_2 v + a_3 - a_7\,u x - a_8\,v x = x"
+                r"\begin{aligned} x\,(a_7 u + a_8 v + 1) &= a_1 u + a_2 v + a_3 \\ \Rightarrow\quad a_1 u + a_2 v + a_3 - a_7\,u x - a_8\,v x &= x \end{aligned}"
             } else {
                 equations_tex(model)
             },

@@ -21,7 +21,7 @@ const PLOT = Object.freeze({
   pointRadius: 4,
   ringRadius: 9,
   hitRadius: 14, // a pointer this close to a point selects it
-  arrowShare: 0.16, // the longest residual arrow spans this share of the plot
+  arrowShare: 0.12, // the longest residual arrow spans this share of the plot
   labelGap: 7,
 });
 
