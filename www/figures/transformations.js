@@ -21,7 +21,7 @@ const PLOT = Object.freeze({
   pointRadius: 4,
   ringRadius: 9,
   hitRadius: 14, // a pointer this close to a point selects it
-  arrowShare: 0.12, // the longest residual arrow spans this share of the plot
+  arrowShare: 0.18, // the longest residual arrow spans this share of the plot
   labelGap: 7,
 });
 
@@ -222,12 +222,17 @@ function drawPoints(ctx, width, height, solution, state) {
 
   const mag = magnification(d, tgt.plot);
   if (mag) {
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(tgt.x, tgt.y, tgt.w, tgt.h); // an arrow may leave the plot, never the panel
+    ctx.clip();
     d.target.forEach(([a, b], i) => {
       const [vx, vy] = d.residuals[i] ?? [0, 0];
       const [x0, y0] = tgt.plot.map(a, b);
       const [x1, y1] = tgt.plot.map(a + mag.k * vx, b + mag.k * vy);
       if (Math.hypot(x1 - x0, y1 - y0) > 1) arrow(ctx, x0, y0, x1, y1, { color: i === selected ? COLORS.highlight : COLORS.point, width: i === selected ? 2.5 : 1.8, size: 7 });
     });
+    ctx.restore();
   }
   drawPanel(ctx, tgt, d.targetName, d.target, COLORS.imageSystem, selected, true);
 
