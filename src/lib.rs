@@ -19,6 +19,7 @@
 //! - [`correlation`]: normalized cross-correlation (1-D, 2-D, surfaces) and subpixel peaks.
 //! - [`interest`]: the Förstner and Moravec interest operators, on a window
 //!   and as whole-image maps with thresholding and suppression.
+//! - [`transform`]: 2-D transformations estimated from point pairs by least squares.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -35,5 +36,6 @@ pub mod matching;
 pub mod raster;
 pub mod resample;
 pub mod solution;
+pub mod transform;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -137,6 +137,44 @@ impl Field {
         self
     }
 
+    /// A point-list field: each point `point_len` numbers, at most `max_len`
+    /// points (at least one; the solver says how many its model needs).
+    pub fn points(
+        key: &'static str,
+        label: &'static str,
+        point_len: usize,
+        max_len: usize,
+        default: &[Vec<f64>],
+    ) -> Self {
+        Field {
+            key,
+            label,
+            help: "",
+            kind: Kind::Points {
+                point_len,
+                min_len: 1,
+                max_len,
+            },
+            default: Value::matrix(default),
+        }
+    }
+
+    /// A choice field; `options` are `(value, label)` pairs.
+    pub fn choice(
+        key: &'static str,
+        label: &'static str,
+        options: &'static [(&'static str, &'static str)],
+        default: &'static str,
+    ) -> Self {
+        Field {
+            key,
+            label,
+            help: "",
+            kind: Kind::Choice { options },
+            default: Value::from(default),
+        }
+    }
+
     /// Checks a typed value against the field's kind and limits; returns it
     /// normalised (integers as whole numbers).
     pub fn check(&self, v: &Value) -> Result<Value> {
@@ -522,6 +560,31 @@ impl Inputs<'_> {
         self.0
             .number(key)
             .ok_or_else(|| Error::Internal(format!("validated input \"{key}\" is not a number")))
+    }
+
+    /// The text of a validated choice field.
+    pub fn text(&self, key: &str) -> Result<&str> {
+        match self.0.get(key) {
+            Some(Value::Text(t)) => Ok(t),
+            _ => Err(Error::Internal(format!(
+                "validated input \"{key}\" is not a string"
+            ))),
+        }
+    }
+
+    /// The rows of a validated matrix or point-list field.
+    pub fn rows(&self, key: &str) -> Result<Vec<Vec<f64>>> {
+        let bad = || Error::Internal(format!("validated input \"{key}\" is not a list of rows"));
+        match self.0.get(key) {
+            Some(Value::List(rows)) => rows
+                .iter()
+                .map(|r| match r {
+                    Value::List(xs) => xs.iter().map(|x| x.as_f64().ok_or_else(bad)).collect(),
+                    _ => Err(bad()),
+                })
+                .collect(),
+            _ => Err(bad()),
+        }
     }
 }
 

@@ -16,6 +16,7 @@ pub mod filters;
 pub mod interest;
 pub mod matching;
 pub mod resampling;
+pub mod transformations;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -73,27 +74,8 @@ impl Entry {
 
 /// Entries of the catalog that are not built yet.
 fn coming() -> Vec<Entry> {
-    const T: &str = "Transformations";
     const B: &str = "Chain codes and boundaries";
     vec![
-        Entry::coming(
-            "fiducial-similarity",
-            "Fiducials: similarity transformation",
-            T,
-            "Seed 000, Example 4a",
-        ),
-        Entry::coming(
-            "fiducial-affine",
-            "Fiducials: affine transformation",
-            T,
-            "Seed 000, Example 4b",
-        ),
-        Entry::coming(
-            "transform-fit",
-            "2-D transformations by least squares",
-            T,
-            "Seed 004, Table 9.5.1",
-        ),
         Entry::coming(
             "chain-code",
             "Freeman chain code",
@@ -119,6 +101,7 @@ pub fn entries() -> Vec<Entry> {
     all.extend(filters::entries());
     all.extend(correlation::entries());
     all.extend(interest::entries());
+    all.extend(transformations::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS

@@ -41,6 +41,18 @@
 // out by screen readers) receive it. The state lives as long as the example
 // view; specs treat a state that no longer fits the solution as none.
 //
+// Optional, for figures whose items (points) can be picked, shared by all
+// canvases of the example:
+//
+//     count(solution)                        // how many items there are
+//     pick(x, y, width, height, solution)    // the item under (x, y), or null
+//
+// With them the canvas takes the focus (Tab); hovering an item, clicking it
+// (pins it) or the arrow keys (Escape clears) select it, and every canvas of
+// the example is redrawn with draw(ctx, width, height, solution, { selected })
+// and describe(solution, { selected }) — so one figure can highlight what
+// another shows. `selected` is the item's index or null.
+//
 // The page calls mountFigures(host, id, { onInputs })
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
@@ -51,6 +63,7 @@ import { figures as interest } from "./interest.js";
 import { figures as filters } from "./filters.js";
 import { figures as resampling } from "./resampling.js";
 import { figures as matching } from "./matching.js";
+import { figures as transformations } from "./transformations.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
@@ -60,6 +73,7 @@ const REGISTRY = Object.freeze({
   ...resampling,
   ...filters,
   ...matching,
+  ...transformations,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -77,7 +91,7 @@ export function hasFigure(id) {
   return specsFor(id).length > 0;
 }
 
-function paint(panel, solution) {
+function paint(panel, solution, shared = { selected: null }) {
   const { spec, canvas, figure } = panel;
   const width = Math.floor(figure.clientWidth);
   if (!solution || width <= 0) return;
@@ -98,7 +112,7 @@ function paint(panel, solution) {
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
-  const state = { ...(panel.state ?? {}), slider: panel.sliderValue ?? null };
+  const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null };
   try {
     spec.draw(ctx, width, height, solution, state);
     canvas.setAttribute("aria-label", spec.describe(solution, state));
@@ -218,6 +232,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   const specs = specsFor(id);
   if (!specs.length) return null;
   let solution = null;
+  const shared = { selected: null, pinned: false };
   const panels = specs.map((spec) => {
     const canvas = document.createElement("canvas");
     canvas.className = "figure-canvas";
@@ -244,7 +259,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       input.addEventListener("input", () => {
         panel.sliderValue = Number(input.value);
         name.textContent = panel.sliderText(panel.sliderValue);
-        paint(panel, panel.solution);
+        paint(panel, panel.solution, shared);
       });
       label.append(name, input);
       canvas.after(label);
@@ -262,7 +277,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   const interact = (panel, next) => {
     if (next === undefined) return false;
     panel.state = next;
-    paint(panel, solution);
+    paint(panel, solution, shared);
     return true;
   };
   for (const panel of panels) {
@@ -283,13 +298,48 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       });
     }
   }
-  const redraw = () => panels.forEach((p) => paint(p, solution));
+  const redraw = () => panels.forEach((p) => paint(p, solution, shared));
+  const select = (index, pinned) => {
+    if (index === shared.selected && pinned === shared.pinned) return;
+    shared.selected = index;
+    shared.pinned = pinned;
+    redraw();
+  };
+  for (const p of panels) {
+    const { spec, canvas } = p;
+    if (typeof spec.pick !== "function" || typeof spec.count !== "function") continue;
+    canvas.tabIndex = 0;
+    const hit = (e) => (solution ? spec.pick(e.offsetX, e.offsetY, canvas.clientWidth, canvas.clientHeight, solution) : null);
+    canvas.addEventListener("pointermove", (e) => {
+      if (!shared.pinned) select(hit(e), false);
+    });
+    canvas.addEventListener("pointerleave", () => {
+      if (!shared.pinned) select(null, false);
+    });
+    canvas.addEventListener("click", (e) => {
+      const i = hit(e);
+      if (i === null || (shared.pinned && i === shared.selected)) select(null, false);
+      else select(i, true);
+    });
+    canvas.addEventListener("keydown", (e) => {
+      const n = solution ? spec.count(solution) : 0;
+      if (!n) return;
+      const cur = shared.selected;
+      let next;
+      if (e.key === "ArrowRight" || e.key === "ArrowDown") next = cur === null ? 0 : (cur + 1) % n;
+      else if (e.key === "ArrowLeft" || e.key === "ArrowUp") next = cur === null ? n - 1 : (cur - 1 + n) % n;
+      else if (e.key === "Escape") next = null;
+      else return;
+      e.preventDefault();
+      select(next, next !== null);
+    });
+  }
   const onResize = () => {
     // repaint only when the width or the pixel ratio changed (the height follows the width)
     const dpr = window.devicePixelRatio || 1;
     for (const p of panels) {
       const w = Math.floor(p.figure.clientWidth);
-      if (!p.drawn || p.drawn.width !== w || p.drawn.dpr !== dpr) paint(p, solution);
+      if (!p.drawn || p.drawn.width !== w || p.drawn.dpr !== dpr) paint(p, solution, shared);
     }
   };
   const observer = new ResizeObserver(onResize);
@@ -311,6 +361,19 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     update(next) {
       solution = next;
       panels.forEach((p) => syncSlider(p, next));
+      const counts = panels
+        .filter((p) => typeof p.spec.count === "function")
+        .map((p) => {
+          try {
+            return p.spec.count(next);
+          } catch {
+            return 0;
+          }
+        });
+      if (shared.selected !== null && !counts.some((n) => shared.selected < n)) {
+        shared.selected = null;
+        shared.pinned = false;
+      }
       redraw();
     },
     redraw,

@@ -1,0 +1,1107 @@
+//! Seed 000, Example 4 (fiducials: similarity and affine transformation) and
+//! seed 004, Table 9.5.1 (every 2-D transformation model), estimated by least
+//! squares step by step: observation equations, A and L, N = AᵀA, AᵀL, X, V,
+//! σ0 and the parameters' precision, with the seed's printed values and why
+//! they differ.
+
+use super::fields::{is_seed, Field, Inputs};
+use super::Entry;
+use crate::error::{Error, Result};
+use crate::lsq::ILL_CONDITIONED;
+use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::transform::{self, Fit, Model, PointPair, Transform};
+
+const TOPIC: &str = "Transformations";
+/// The most control points a point list may hold.
+pub const MAX_POINTS: usize = 1000;
+/// Matrices with more rows than this are shown shortened in the LaTeX.
+const SHOW_ROWS: usize = 24;
+
+/// Example 4's fiducials: `[c, r, x, y]`, pixels and millimetres.
+pub const FIDUCIALS: [[f64; 4]; 4] = [
+    [48.15, 2699.98, -113.002, 0.008],
+    [5353.12, 2699.13, 112.991, 0.036],
+    [2700.21, 47.62, 0.008, 112.998],
+    [2700.56, 5352.74, -0.016, -113.0],
+];
+
+/// Eight check points for the prepared set `control-12`, `[c, r, x, y]`.
+/// Made up for this playground (the seed has only the four fiducials): the
+/// positions spread over the photo; `(x, y)` computed from Example 4's affine
+/// fit, plus a radial distortion of 4·10⁻⁹·ρ² (about 5 µm at 110 mm) and a
+/// few micrometres of measurement noise, rounded to 0.001 mm like the seed.
+pub const CHECK_POINTS: [[f64; 4]; 8] = [
+    [612.4, 598.85, -88.946, 89.521],
+    [4791.27, 605.12, 89.079, 89.25],
+    [4788.93, 4795.66, 88.955, -89.275],
+    [606.71, 4801.38, -89.223, -89.519],
+    [2702.35, 2698.02, 0.074, 0.091],
+    [1521.84, 1893.47, -50.208, 34.366],
+    [3955.62, 1402.19, 53.472, 55.287],
+    [1788.05, 3987.73, -38.885, -54.849],
+];
+
+/// What Example 4 prints: (a) `X`, `V`; (b) `X`, `V`.
+const SIM_PRINTED_X: [f64; 4] = [0.043, 0.000, -115.030, 115.040];
+const SIM_PRINTED_V: [f64; 8] = [0.006, 0.009, 0.006, -0.006, -0.014, -0.001, 0.002, -0.002];
+const AFF_PRINTED_X: [f64; 6] = [0.043, 0.000, -115.030, -0.000, 0.043, 115.030];
+const AFF_PRINTED_V: [f64; 8] = [0.006, 0.002, 0.006, 0.002, -0.006, -0.002, -0.006, -0.002];
+
+const MODELS: &[(&str, &str)] = &[
+    ("helmert", "1) Helmert (4 parameters)"),
+    ("affine", "2) Affine (6)"),
+    ("pseudo-affine", "3) Pseudo-affine (8)"),
+    ("projective", "4) Projective (8)"),
+    ("conformal-2", "5) Second-order conformal (6)"),
+    ("polynomial-2", "6) Polynomial, order 2 (12)"),
+    ("polynomial-3", "6) Polynomial, order 3 (20)"),
+];
+
+const POINT_SETS: &[(&str, &str)] = &[
+    ("table", "The points in the table"),
+    ("fiducials", "Example 4's four fiducials"),
+    (
+        "control-12",
+        "Fiducials + 8 check points (12, enough for every model)",
+    ),
+];
+
+pub fn entries() -> Vec<Entry> {
+    vec![
+        Entry {
+            id: "fiducial-similarity",
+            title: "Fiducials: similarity transformation",
+            topic: TOPIC,
+            source: "Seed 000, Example 4a",
+            summary: "Pixel to photo coordinates through the four fiducials: a similarity transformation (scale, rotation, shift) by least squares.",
+            fields: fiducial_fields,
+            solve: Some(fiducial_similarity),
+        },
+        Entry {
+            id: "fiducial-affine",
+            title: "Fiducials: affine transformation",
+            topic: TOPIC,
+            source: "Seed 000, Example 4b",
+            summary: "Pixel to photo coordinates through the four fiducials: an affine transformation (two scales, shear, rotation, shift) by least squares.",
+            fields: fiducial_fields,
+            solve: Some(fiducial_affine),
+        },
+        Entry {
+            id: "transform-fit",
+            title: "2-D transformations by least squares",
+            topic: TOPIC,
+            source: "Seed 004, Table 9.5.1",
+            summary: "Any model of the transform table — Helmert, affine, pseudo-affine, projective, second-order conformal, polynomials — fitted to your control points.",
+            fields: transform_fit_fields,
+            solve: Some(transform_fit),
+        },
+    ]
+}
+
+fn rows_of(points: &[[f64; 4]]) -> Vec<Vec<f64>> {
+    points.iter().map(|p| p.to_vec()).collect()
+}
+
+/// `[c, r, x, y]` to `[u, v, x, y]` with `u = c`, `v = −r`.
+fn row_axis_up(points: &[[f64; 4]]) -> Vec<Vec<f64>> {
+    points
+        .iter()
+        .map(|p| vec![p[0], -p[1], p[2], p[3]])
+        .collect()
+}
+
+fn fiducial_fields() -> Vec<Field> {
+    vec![Field::points(
+        "points",
+        "Fiducials [c, r, x, y]",
+        4,
+        MAX_POINTS,
+        &rows_of(&FIDUCIALS),
+    )
+    .help("One row per fiducial: measured column c and row r (pixels, r downward), calibrated x and y (mm). The solver uses x′ = c, y′ = −r.")]
+}
+
+fn transform_fit_fields() -> Vec<Field> {
+    vec![
+        Field::choice("model", "Model (Table 9.5.1)", MODELS, "helmert")
+            .help("The transformation x = f(u, v), y = g(u, v); the number is how many parameters it has. Each point gives two equations."),
+        Field::choice("point_set", "Control points", POINT_SETS, "table")
+            .help("\"The points in the table\" uses the point list below. A prepared set replaces it: Example 4's fiducials, or the fiducials with 8 check points, enough for every model (the third-order polynomial needs 10)."),
+        Field::points(
+            "points",
+            "Points [u, v, x, y]",
+            4,
+            MAX_POINTS,
+            &row_axis_up(&FIDUCIALS),
+        )
+        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm."),
+    ]
+}
+
+/// `[u, v, x, y]` rows to point pairs (rows have been checked to hold 4).
+fn pairs(rows: &[Vec<f64>]) -> Result<Vec<PointPair>> {
+    rows.iter()
+        .enumerate()
+        .map(|(i, r)| match r.as_slice() {
+            [u, v, x, y] => Ok(PointPair {
+                u: *u,
+                v: *v,
+                x: *x,
+                y: *y,
+            }),
+            _ => Err(Error::input(
+                "points",
+                format!(
+                    "point {} has {} numbers; each point needs 4",
+                    i + 1,
+                    r.len()
+                ),
+            )),
+        })
+        .collect()
+}
+
+// ---------------------------------------------------------------- LaTeX
+
+/// `a` → `a`, `a7` → `a_{7}`, `a21` → `a_{21}`.
+fn tex_name(n: &str) -> String {
+    let split = n.find(|c: char| c.is_ascii_digit()).unwrap_or(n.len());
+    let (base, idx) = n.split_at(split);
+    if idx.is_empty() {
+        base.to_string()
+    } else {
+        format!("{base}_{{{idx}}}")
+    }
+}
+
+/// Rows to show: all, or the first ones and a marker when there are many.
+fn shown(n: usize) -> (usize, bool) {
+    if n > SHOW_ROWS {
+        (SHOW_ROWS - 4, true)
+    } else {
+        (n, false)
+    }
+}
+
+fn bmatrix(rows: &[Vec<f64>]) -> String {
+    let (k, cut) = shown(rows.len());
+    let cols = rows.first().map_or(1, Vec::len);
+    let mut lines: Vec<String> = rows
+        .iter()
+        .take(k)
+        .map(|r| r.iter().map(|x| num(*x)).collect::<Vec<_>>().join(" & "))
+        .collect();
+    if cut {
+        lines.push(vec![r"\vdots"; cols].join(" & "));
+    }
+    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", lines.join(r" \\ "))
+}
+
+fn bvector(xs: &[f64]) -> String {
+    let rows: Vec<Vec<f64>> = xs.iter().map(|x| vec![*x]).collect();
+    bmatrix(&rows)
+}
+
+fn bsymbols(names: &[String]) -> String {
+    let (k, cut) = shown(names.len());
+    let mut lines: Vec<String> = names.iter().take(k).map(|n| tex_name(n)).collect();
+    if cut {
+        lines.push(r"\vdots".to_string());
+    }
+    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", lines.join(r" \\ "))
+}
+
+/// The model's equations, symbolic.
+fn equations_tex(model: Model) -> &'static str {
+    match model {
+        Model::Helmert => r"x = a\,u + b\,v + c,\qquad y = -b\,u + a\,v + d",
+        Model::Affine => r"x = a\,u + b\,v + c,\qquad y = d\,u + e\,v + f",
+        Model::PseudoAffine => {
+            r"x = a_1 uv + a_2 u + a_3 v + a_4,\qquad y = a_5 uv + a_6 u + a_7 v + a_8"
+        }
+        Model::Projective => {
+            r"x = \frac{a_1 u + a_2 v + a_3}{a_7 u + a_8 v + 1},\qquad y = \frac{a_4 u + a_5 v + a_6}{a_7 u + a_8 v + 1}"
+        }
+        Model::Conformal2 => {
+            r"x = a_1 u + a_2 v + a_3 (u^2 - v^2) + 2 a_4 uv + a_5,\qquad y = -a_2 u + a_1 v + 2 a_3 uv - a_4 (u^2 - v^2) + a_6"
+        }
+        Model::Polynomial2 => {
+            r"x = \sum_{i+j \le 4} a_{ij}\, u^{i-1} v^{j-1} = a_{11} + a_{21} u + a_{12} v + a_{31} u^2 + a_{22} uv + a_{13} v^2,\qquad y = \sum_{i+j \le 4} b_{ij}\, u^{i-1} v^{j-1}"
+        }
+        Model::Polynomial3 => {
+            r"x = \sum_{i+j \le 5} a_{ij}\, u^{i-1} v^{j-1} = a_{11} + a_{21} u + a_{12} v + a_{31} u^2 + a_{22} uv + a_{13} v^2 + a_{41} u^3 + a_{32} u^2 v + a_{23} u v^2 + a_{14} v^3,\qquad y = \sum_{i+j \le 5} b_{ij}\, u^{i-1} v^{j-1}"
+        }
+        Model::Similarity => r"x = a\,x' - b\,y' + c,\qquad y = b\,x' + a\,y' + d",
+        Model::FiducialAffine => r"x = a\,x' + b\,y' + e,\qquad y = c\,x' + d\,y' + f",
+    }
+}
+
+/// One observation equation with its numbers: `l_k + v_k = Σ A_kj·X_j`.
+fn obs_equation(k: usize, row: &[f64], l: f64, names: &[String]) -> String {
+    let mut rhs = String::new();
+    for (c, n) in row.iter().zip(names) {
+        if *c == 0.0 {
+            continue;
+        }
+        let name = tex_name(n);
+        let (sign, mag) = if *c < 0.0 { ("-", -c) } else { ("+", *c) };
+        let term = if mag == 1.0 {
+            name
+        } else {
+            format!(r"{}\,{name}", num(mag))
+        };
+        if rhs.is_empty() {
+            rhs = if sign == "-" {
+                format!("-{term}")
+            } else {
+                term
+            };
+        } else {
+            rhs = format!("{rhs} {sign} {term}");
+        }
+    }
+    if rhs.is_empty() {
+        rhs = "0".to_string();
+    }
+    format!("{} + v_{{{k}}} = {rhs}", num(l))
+}
+
+// ---------------------------------------------------------------- steps
+
+/// The least-squares steps every entry shares, from the observation
+/// equations to the parameters' precision.
+fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
+    let names = model.param_names();
+    let adj = &fit.adjustment;
+    let (n_obs, u) = (fit.l.len(), model.n_params());
+    let n_pts = n_obs / 2;
+
+    let (k, cut) = shown(n_obs);
+    let mut eqs: Vec<String> = fit
+        .a
+        .iter()
+        .zip(&fit.l)
+        .take(k)
+        .enumerate()
+        .map(|(i, (row, l))| obs_equation(i + 1, row, *l, &names))
+        .collect();
+    if cut {
+        eqs.push(r"\vdots".to_string());
+    }
+    let lin = if model.is_linearised() {
+        " The projective model is not linear in its parameters; multiplying out its denominator gives the linearised form that is solved here: a₁u + a₂v + a₃ − a₇·u·x − a₈·v·x = x (and the same for y with a₄, a₅, a₆), so x and y appear in A as well as in L."
+    } else {
+        ""
+    };
+    s.step(
+        Step::new(
+            "Observation equations",
+            &format!(
+                "Each of the {n_pts} points gives two equations, one for x and one for y, with {src} as the source coordinates: {n_obs} equations in {u} unknowns. An observation plus its residual equals the model's value: l + v = A·X.{lin}"
+            ),
+        )
+        .formula(
+            if model.is_linearised() {
+                r"\begin{aligned} x\,(a_7 u + a_8 v + 1) &= a_1 u + a_2 v + a_3 \\ \Rightarrow\quad a_1 u + a_2 v + a_3 - a_7\,u x - a_8\,v x &= x \end{aligned}"
+            } else {
+                equations_tex(model)
+            },
+            format!(
+                r"\begin{{aligned}} {} \end{{aligned}}",
+                eqs.iter()
+                    .map(|e| e.replacen(" = ", " &= ", 1))
+                    .collect::<Vec<_>>()
+                    .join(r" \\ ")
+            ),
+        ),
+    );
+
+    s.step(
+        Step::new(
+            "Design matrix A and observations L",
+            &format!(
+                "Rows 2i−1 and 2i of A belong to point i (its x and its y equation); L holds the target coordinates in the same order. A is {n_obs}×{u}."
+            ),
+        )
+        .formula(
+            r"A\,X = L + V",
+            format!(
+                r"{}\,{} = {} + V",
+                bmatrix(&fit.a),
+                bsymbols(&names),
+                bvector(&fit.l)
+            ),
+        )
+        .value("A", Value::matrix(&fit.a))
+        .value("L", Value::numbers(&fit.l)),
+    );
+
+    s.step(
+        Step::new(
+            "Normal equations",
+            "Multiplying by Aᵀ gives u equations in u unknowns (all observations have weight 1, P = I).",
+        )
+        .formula(
+            r"N = A^\mathsf{T} A,\qquad A^\mathsf{T} L",
+            format!(r"N = {},\qquad A^\mathsf{{T}} L = {}", bmatrix(&adj.n), bvector(&adj.atl)),
+        )
+        .value("N", Value::matrix(&adj.n))
+        .value("AtL", Value::numbers(&adj.atl))
+        .value("condition", adj.condition),
+    );
+
+    s.step(
+        Step::new(
+            "Solution",
+            "The parameters that make the sum of squared residuals smallest.",
+        )
+        .formula(
+            r"X = (A^\mathsf{T} A)^{-1} A^\mathsf{T} L = Q_{xx}\, A^\mathsf{T} L",
+            format!(r"X = {} = {}", bsymbols(&names), bvector(&adj.x)),
+        )
+        .value("X", Value::numbers(&adj.x))
+        .value("Qxx", Value::matrix(&adj.qxx))
+        .value("parameter_names", names_value(&names)),
+    );
+
+    let vtext = if model.is_linearised() {
+        format!(
+            "V holds the residuals of the linearised equations, D·(x̂ − x) with D = a₇u + a₈v + 1; the residuals of the coordinates themselves, x̂ − x, are listed beside them (at these points D lies between {} and {}).",
+            num(denominators(fit).0),
+            num(denominators(fit).1)
+        )
+    } else {
+        "Each residual is the fitted coordinate minus the given one (x̂ − x, ŷ − y), in the order of the rows of A.".to_string()
+    };
+    let pr: Vec<f64> = fit.point_residuals.iter().flatten().copied().collect();
+    s.step(
+        Step::new("Residuals", &vtext)
+            .formula(r"V = A\,X - L", format!(r"V = {}", bvector(&adj.v)))
+            .value("V", Value::numbers(&adj.v))
+            .value(
+                "point_residuals",
+                Value::matrix(&pairs_to_rows(&fit.point_residuals)),
+            )
+            .value("coordinate_residuals", Value::numbers(&pr))
+            .value("fitted", Value::matrix(&pairs_to_rows(&fit.fitted))),
+    );
+
+    let r = adj.redundancy;
+    let s0_step = match adj.sigma0 {
+        Some(s0) => Step::new(
+            "Standard deviation of unit weight",
+            &format!("The redundancy is r = n − u = {n_obs} − {u} = {r}."),
+        )
+        .formula(
+            r"\sigma_0 = \sqrt{\frac{V^\mathsf{T} V}{n - u}}",
+            format!(
+                r"\sigma_0 = \sqrt{{\frac{{{}}}{{{n_obs} - {u}}}}} = {}",
+                num(adj.vtpv),
+                num(s0)
+            ),
+        ),
+        None => Step::new(
+            "Standard deviation of unit weight",
+            &format!(
+                "There are exactly as many equations as unknowns (r = n − u = {n_obs} − {u} = 0): the transformation passes through the points, the residuals vanish and σ0 cannot be estimated."
+            ),
+        )
+        .formula(
+            r"\sigma_0 = \sqrt{\frac{V^\mathsf{T} V}{n - u}}",
+            format!(r"\sigma_0 = \sqrt{{\frac{{{}}}{{0}}}}\ \text{{(undefined)}}", num(adj.vtpv)),
+        ),
+    };
+    s.step(
+        s0_step
+            .value("sigma0", adj.sigma0)
+            .value("redundancy", r)
+            .value("vtv", adj.vtpv),
+    );
+
+    let q: Vec<f64> = (0..u)
+        .map(|j| {
+            adj.qxx
+                .get(j)
+                .and_then(|row| row.get(j))
+                .copied()
+                .unwrap_or(0.0)
+        })
+        .collect();
+    let prec = match (&adj.std_dev, adj.sigma0) {
+        (Some(sd), Some(s0)) => {
+            let lines: Vec<String> = names
+                .iter()
+                .zip(sd)
+                .zip(&q)
+                .map(|((n, sdj), qj)| {
+                    format!(
+                        r"\sigma_{{{}}} = {} \sqrt{{{}}} = {}",
+                        tex_name(n),
+                        num(s0),
+                        num(*qj),
+                        num(*sdj)
+                    )
+                })
+                .collect();
+            Step::new(
+                "Precision of the parameters",
+                "Each parameter's standard deviation is σ0 times the square root of its diagonal element of Qxx = N⁻¹.",
+            )
+            .formula(
+                r"\sigma_{x_j} = \sigma_0 \sqrt{q_{jj}}",
+                format!(r"\begin{{gathered}} {} \end{{gathered}}", lines.join(r" \\ ")),
+            )
+            .value("std_devs", Value::numbers(sd))
+        }
+        _ => Step::new(
+            "Precision of the parameters",
+            "Without redundancy there is no σ0, so the parameters' standard deviations cannot be given; only the cofactors q_jj of Qxx = N⁻¹ are known.",
+        )
+        .formula(r"\sigma_{x_j} = \sigma_0 \sqrt{q_{jj}}", String::new())
+        .value("std_devs", Value::Null),
+    };
+    s.step(prec.value("q_diagonal", Value::numbers(&q)));
+
+    if let Some((scale, rot)) = scale_rotation(&fit.transform) {
+        let (a, b) = (
+            fit.transform.params.first().copied().unwrap_or(0.0),
+            fit.transform.params.get(1).copied().unwrap_or(0.0),
+        );
+        let (f, sub) = if model == Model::Similarity {
+            (
+                r"m = \sqrt{a^2 + b^2},\qquad \theta = \operatorname{atan2}(b, a)",
+                format!(
+                    r"m = \sqrt{{{}^2 + {}^2}} = {},\qquad \theta = \operatorname{{atan2}}({}, {}) = {}^\circ",
+                    tex(a),
+                    tex(b),
+                    num(scale),
+                    num(b),
+                    num(a),
+                    num(rot)
+                ),
+            )
+        } else {
+            (
+                r"m = \sqrt{a^2 + b^2},\qquad \theta = \operatorname{atan2}(-b, a)",
+                format!(
+                    r"m = \sqrt{{{}^2 + {}^2}} = {},\qquad \theta = \operatorname{{atan2}}({}, {}) = {}^\circ",
+                    tex(a),
+                    tex(b),
+                    num(scale),
+                    num(-b),
+                    num(a),
+                    num(rot)
+                ),
+            )
+        };
+        s.step(
+            Step::new(
+                "Scale and rotation",
+                "A similarity is a scale times a rotation (counter-clockwise positive) plus a shift.",
+            )
+            .formula(f, sub)
+            .value("scale", scale)
+            .value("rotation_deg", rot),
+        );
+    }
+}
+
+/// Scale and rotation (degrees) of a Helmert or similarity transformation.
+fn scale_rotation(t: &Transform) -> Option<(f64, f64)> {
+    let a = t.params.first().copied()?;
+    let b = t.params.get(1).copied()?;
+    let sb = match t.model {
+        Model::Similarity => b,
+        Model::Helmert => -b,
+        _ => return None,
+    };
+    Some((a.hypot(b), sb.atan2(a).to_degrees()))
+}
+
+fn denominators(fit: &Fit) -> (f64, f64) {
+    let p = &fit.transform.params;
+    let (a7, a8) = (
+        p.get(6).copied().unwrap_or(0.0),
+        p.get(7).copied().unwrap_or(0.0),
+    );
+    let ds: Vec<f64> = fit
+        .a
+        .iter()
+        .step_by(2)
+        .map(|row| {
+            let u = row.first().copied().unwrap_or(0.0);
+            let v = row.get(1).copied().unwrap_or(0.0);
+            a7 * u + a8 * v + 1.0
+        })
+        .collect();
+    let lo = ds.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = ds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if lo.is_finite() && hi.is_finite() {
+        (lo, hi)
+    } else {
+        (1.0, 1.0)
+    }
+}
+
+fn pairs_to_rows(xs: &[[f64; 2]]) -> Vec<Vec<f64>> {
+    xs.iter().map(|p| p.to_vec()).collect()
+}
+
+fn names_value(names: &[String]) -> Value {
+    Value::List(names.iter().map(|n| Value::Text(n.clone())).collect())
+}
+
+/// The inverse step, where a closed form exists; returns the inverse's
+/// parameters (or `None`).
+fn inverse_step(
+    s: &mut Solution,
+    fit: &Fit,
+    first: Option<&PointPair>,
+    src: &str,
+) -> Result<Option<Vec<f64>>> {
+    let model = fit.transform.model;
+    let inv = match fit.transform.inverse() {
+        Ok(Some(inv)) => inv,
+        Ok(None) => {
+            s.step(Step::new(
+                "Inverse transformation",
+                &format!(
+                    "The {} model has no inverse of the same form in closed form (inverting it means solving a quadratic or cubic in u and v, which need not have one real solution); to go from (x, y) back to {src}, fit the model in the other direction.",
+                    model.name()
+                ),
+            ));
+            return Ok(None);
+        }
+        Err(e) => {
+            s.note(
+                NoteKind::Warning,
+                format!("The fitted transformation cannot be inverted: {e}."),
+            );
+            return Ok(None);
+        }
+    };
+    let names = model.param_names();
+    let lines: Vec<String> = names
+        .iter()
+        .zip(&inv.params)
+        .map(|(n, p)| format!("{}' = {}", tex_name(n), num(*p)))
+        .collect();
+    // Check on the first point: its fitted (x̂, ŷ) goes back to (u, v).
+    let mut check = String::new();
+    let mut step_values = Record::new();
+    if let (Some(f), Some(p)) = (fit.fitted.first(), first) {
+        let (u, v) = (p.u, p.v);
+        if let Ok((bu, bv)) = inv.apply(f[0], f[1]) {
+            check = format!(
+                " Check with point 1: (x̂, ŷ) = ({}, {}) maps back to ({}, {}); the point was ({}, {}).",
+                num(f[0]),
+                num(f[1]),
+                num(bu),
+                num(bv),
+                num(u),
+                num(v)
+            );
+            step_values.set("check_back", Value::numbers(&[bu, bv]));
+        }
+    }
+    let mut st = Step::new(
+        "Inverse transformation",
+        &format!(
+            "The inverse is a transformation of the same form, from (x, y) back to {src}: the 3×3 matrix of the transformation inverted and scaled so that its last element is 1.{check}"
+        ),
+    )
+    .formula(
+        r"H^{-1} = \frac{\operatorname{adj} H}{\det H}",
+        format!(
+            r"\begin{{gathered}} {} \end{{gathered}}",
+            lines
+                .chunks(2)
+                .map(|c| c.join(r",\quad "))
+                .collect::<Vec<_>>()
+                .join(r" \\ ")
+        ),
+    )
+    .value("inverse_parameters", Value::numbers(&inv.params));
+    for (k, v) in step_values.iter() {
+        st = st.value(k, v.clone());
+    }
+    s.step(st);
+    Ok(Some(inv.params))
+}
+
+fn common_result(s: &mut Solution, fit: &Fit, inverse: Option<Vec<f64>>) {
+    let adj = &fit.adjustment;
+    let names = fit.transform.model.param_names();
+    s.result.set("parameters", Value::numbers(&adj.x));
+    s.result.set("residuals", Value::numbers(&adj.v));
+    s.result.set("sigma0", adj.sigma0);
+    s.result.set("redundancy", adj.redundancy);
+    s.result.set("parameter_names", names_value(&names));
+    s.result.set(
+        "std_devs",
+        adj.std_dev
+            .as_ref()
+            .map_or(Value::Null, |sd| Value::numbers(sd)),
+    );
+    s.result.set(
+        "point_residuals",
+        Value::matrix(&pairs_to_rows(&fit.point_residuals)),
+    );
+    s.result.set(
+        "inverse_parameters",
+        inverse.map_or(Value::Null, |p| Value::numbers(&p)),
+    );
+    s.result.set("condition", adj.condition);
+}
+
+/// Labels of the result keys; `unit` is the target system's (mm for the
+/// fiducials, none for arbitrary points).
+fn label_results(s: &mut Solution, names: &[String], unit: &str) {
+    let params = format!("Parameters [{}]", names.join(", "));
+    for (key, label, u) in [
+        ("parameters", params.as_str(), ""),
+        ("residuals", "Residuals V = A·X − L, [vx1, vy1, …]", unit),
+        ("sigma0", "Standard deviation of unit weight σ0", unit),
+        ("redundancy", "Redundancy r = n − u", ""),
+        ("parameter_names", "Parameter names", ""),
+        ("std_devs", "Standard deviations of the parameters", ""),
+        (
+            "point_residuals",
+            "Coordinate residuals (x̂ − x, ŷ − y) per point",
+            unit,
+        ),
+        (
+            "inverse_parameters",
+            "Parameters of the inverse transformation",
+            "",
+        ),
+        ("condition", "Condition number of N (columns scaled)", ""),
+        ("scale", "Scale m", ""),
+        ("rotation_deg", "Rotation θ", "°"),
+        ("model", "Model", ""),
+        ("point_set", "Control points", ""),
+        ("fitted", "Transformed points (x̂, ŷ)", unit),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, u);
+        }
+    }
+}
+
+fn condition_note(s: &mut Solution, fit: &Fit) {
+    let c = fit.adjustment.condition;
+    if c > ILL_CONDITIONED {
+        let hint = if fit.transform.model == Model::PseudoAffine {
+            " With four points laid out like Example 4's fiducials — a diamond whose diagonals run along the axes — the uv column of A is almost a combination of the columns of 1, u and v, so the uv terms are decided by the measurement noise; add points off the diagonals (the prepared set control-12)."
+        } else {
+            " Spread the points more evenly, or add points."
+        };
+        s.note(
+            NoteKind::Warning,
+            format!(
+                "The normal matrix is nearly singular (condition number {} after scaling its columns, above {}): the parameters are poorly determined and may mean little.{hint}",
+                fmt_sig(c, 3),
+                fmt_sig(ILL_CONDITIONED, 1)
+            ),
+        );
+    }
+    if fit.adjustment.redundancy == 0 {
+        s.note(
+            NoteKind::Warning,
+            "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 is reported as null). Add points to get them.",
+        );
+    }
+}
+
+// ---------------------------------------------------------------- Example 4
+
+fn fiducial_similarity(inputs: &Record) -> Result<Solution> {
+    example4(inputs, Model::Similarity)
+}
+
+fn fiducial_affine(inputs: &Record) -> Result<Solution> {
+    example4(inputs, Model::FiducialAffine)
+}
+
+fn example4(inputs: &Record, model: Model) -> Result<Solution> {
+    let rows = Inputs(inputs).rows("points")?;
+    let cr = pairs(&rows)?;
+    // x' = c, y' = −r: the row axis turned up.
+    let pts: Vec<PointPair> = cr
+        .iter()
+        .map(|p| PointPair {
+            u: p.u,
+            v: -p.v,
+            x: p.x,
+            y: p.y,
+        })
+        .collect();
+    let fit = transform::fit(model, &pts)?;
+    let (id, title) = if model == Model::Similarity {
+        (
+            "fiducial-similarity",
+            "Fiducials: similarity transformation",
+        )
+    } else {
+        ("fiducial-affine", "Fiducials: affine transformation")
+    };
+    let mut s = Solution::new(id, title, inputs.clone());
+
+    let table: Vec<String> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, b)| {
+            format!(
+                r"{} & {} & {} & {} & {}",
+                i + 1,
+                num(b.u),
+                tex(b.v),
+                num(b.x),
+                num(b.y)
+            )
+        })
+        .collect();
+    let (k, cut) = shown(table.len());
+    let mut table: Vec<String> = table.into_iter().take(k).collect();
+    if cut {
+        table.push(r"\vdots & & & &".to_string());
+    }
+    s.step(
+        Step::new(
+            "Axes: x′ = c, y′ = −r",
+            "The pixel system counts rows r downward, the photo system counts y upward. The design matrices of Example 4 only fit the fiducials with the row axis turned up: x′ = c, y′ = −r. (The photo x axis runs along c, its y axis against r.)",
+        )
+        .formula(
+            r"x' = c,\qquad y' = -r",
+            format!(
+                r"\begin{{array}}{{c|rr|rr}} \text{{No.}} & x' = c & y' = -r & x & y \\ \hline {} \end{{array}}",
+                table.join(r" \\ ")
+            ),
+        )
+        .value("source", Value::matrix(&pts.iter().map(|p| vec![p.u, p.v]).collect::<Vec<_>>()))
+        .value("target", Value::matrix(&pts.iter().map(|p| vec![p.x, p.y]).collect::<Vec<_>>()))
+        .value("pixel", Value::matrix(&cr.iter().map(|p| vec![p.u, p.v]).collect::<Vec<_>>())),
+    );
+    adjustment_steps(&mut s, model, &fit, "(x′, y′) = (c, −r)");
+    let inverse = inverse_step(&mut s, &fit, pts.first(), "(x′, y′)")?;
+    common_result(&mut s, &fit, inverse);
+    if let Some((scale, rot)) = scale_rotation(&fit.transform) {
+        s.result.set("scale", scale);
+        s.result.set("rotation_deg", rot);
+    }
+    label_results(&mut s, &model.param_names(), "mm");
+    s.note(
+        NoteKind::Convention,
+        "Points are entered as the seed's table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the seed's printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
+    );
+    condition_note(&mut s, &fit);
+    if is_seed(&fiducial_fields(), inputs) {
+        if model == Model::Similarity {
+            seed_notes_similarity(&mut s, &fit, &cr)?;
+        } else {
+            seed_notes_affine(&mut s, &fit, &cr)?;
+        }
+    }
+    Ok(s)
+}
+
+/// `A·X − L` for given parameters.
+fn residuals_with(fit: &Fit, x: &[f64]) -> Vec<f64> {
+    fit.a
+        .iter()
+        .zip(&fit.l)
+        .map(|(row, l)| row.iter().zip(x).map(|(a, b)| a * b).sum::<f64>() - l)
+        .collect()
+}
+
+fn max_abs(xs: &[f64]) -> f64 {
+    xs.iter().fold(0.0, |m, x| m.max(x.abs()))
+}
+
+fn round_to(x: f64, decimals: i32) -> f64 {
+    let f = 10f64.powi(decimals);
+    (x * f).round() / f
+}
+
+/// Notes on printed values that are not the exact ones rounded to three
+/// decimals: which, and whether two decimals explain them.
+fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64], printed: &[f64]) {
+    let mut to_two = Vec::new();
+    let mut other = Vec::new();
+    let mut fine = Vec::new();
+    for ((n, e), p) in names.iter().zip(exact).zip(printed) {
+        let d = (e - p).abs();
+        if d <= 0.0005 + 1e-12 {
+            fine.push(format!("{n} = {} → {:.3}", num(*e), p));
+        } else if (round_to(*e, 2) - p).abs() < 1e-9 {
+            to_two.push(format!(
+                "{n}: printed {:.3}, exact {} ({:.3} to three decimals, {:.2} to two)",
+                p,
+                num(*e),
+                e,
+                e
+            ));
+        } else {
+            other.push(format!("{n}: printed {:.3}, exact {}", p, num(*e)));
+        }
+    }
+    if !fine.is_empty() {
+        s.note(
+            NoteKind::Rounding,
+            format!(
+                "{} {what} are the exact values rounded to three decimals: {}.",
+                if to_two.is_empty() && other.is_empty() {
+                    "The printed"
+                } else {
+                    "The other printed"
+                },
+                fine.join(", ")
+            ),
+        );
+    }
+    if !to_two.is_empty() {
+        s.note(
+            NoteKind::Rounding,
+            format!(
+                "Beyond its printed precision: {}. The seed rounded these to two decimals and printed a third, zero, decimal that it does not have.",
+                to_two.join("; ")
+            ),
+        );
+    }
+    if !other.is_empty() {
+        s.note(
+            NoteKind::Erratum,
+            format!(
+                "These printed values are not the exact ones rounded: {}.",
+                other.join("; ")
+            ),
+        );
+    }
+}
+
+fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f64]) {
+    let v = residuals_with(fit, printed_x);
+    let a = fit.adjustment.x.first().copied().unwrap_or(0.0);
+    s.note(
+        NoteKind::Rounding,
+        format!(
+            "The printed residuals come from the unrounded parameters: with the printed X they would reach {} mm (instead of at most {} mm), because the scale a = {} printed as 0.043 is {} off, which over 5300 pixels is about {} mm. Three decimals are far too few for a scale in mm per pixel; the exact values are given here with seven significant digits.",
+            fmt_sig(max_abs(&v), 3),
+            fmt_sig(max_abs(&fit.adjustment.v), 2),
+            num(a),
+            format_args!("{:.1} %", (0.043 - a) / a * 100.0),
+            fmt_sig((0.043 - a) * 5305.0, 2)
+        ),
+    );
+}
+
+fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
+    s.textbook = Some(
+        Record::new()
+            .with("parameters", Value::numbers(&SIM_PRINTED_X))
+            .with("residuals", Value::numbers(&SIM_PRINTED_V)),
+    );
+    // The stated equations with y' = r literally, as the table header says.
+    let literal: Vec<PointPair> = cr.to_vec();
+    let lit = transform::fit(Model::Similarity, &literal)?;
+    let x = &fit.adjustment.x;
+    let g = |i: usize| x.get(i).copied().unwrap_or(0.0);
+    s.note(
+        NoteKind::Erratum,
+        format!(
+            "The seed's table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, its printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
+            num(g(0)),
+            num(g(1)),
+            num(g(2)),
+            num(g(3)),
+            fmt_sig(lit.adjustment.sigma0.unwrap_or(0.0), 3),
+            fmt_sig(max_abs(&lit.adjustment.v), 3)
+        ),
+    );
+    let names = Model::Similarity.param_names();
+    rounding_notes(s, "parameters", &names, x, &SIM_PRINTED_X);
+    if let Some((_, rot)) = scale_rotation(&fit.transform) {
+        s.note(
+            NoteKind::Rounding,
+            format!(
+                "b = {} is printed as 0.000 (its sign lost in the rounding): a rotation of {}° between the scanned photo and the fiducial system.",
+                num(g(1)),
+                fmt_sig(rot, 2)
+            ),
+        );
+    }
+    printed_residual_note(s, fit, &SIM_PRINTED_X);
+    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
+    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &SIM_PRINTED_V);
+    s.note(
+        NoteKind::Convention,
+        "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
+    );
+    Ok(())
+}
+
+fn seed_notes_affine(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
+    s.textbook = Some(
+        Record::new()
+            .with("parameters", Value::numbers(&AFF_PRINTED_X))
+            .with("residuals", Value::numbers(&AFF_PRINTED_V)),
+    );
+    let lit = transform::fit(Model::FiducialAffine, cr)?;
+    let lx = &lit.adjustment.x;
+    let g = |i: usize| lx.get(i).copied().unwrap_or(0.0);
+    s.note(
+        NoteKind::Convention,
+        format!(
+            "Here the printed A carries −r in its y′ columns ([c, −r, 1, 0, 0, 0] and [0, 0, 0, c, −r, 1]): y′ = −r is written into the matrix, consistent with the equations x = a·x′ + b·y′ + e, y = c·x′ + d·y′ + f. An affine transformation could absorb the flip itself: with y′ = r it fits just as well (σ0 = {} mm, the same residuals) but b and d change sign (b = {}, d = {}).",
+            fmt_sig(lit.adjustment.sigma0.unwrap_or(0.0), 4),
+            num(g(1)),
+            num(g(4))
+        ),
+    );
+    let names = Model::FiducialAffine.param_names();
+    rounding_notes(s, "parameters", &names, &fit.adjustment.x, &AFF_PRINTED_X);
+    printed_residual_note(s, fit, &AFF_PRINTED_X);
+    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
+    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &AFF_PRINTED_V);
+    s.note(
+        NoteKind::Convention,
+        "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
+    );
+    Ok(())
+}
+
+// ---------------------------------------------------------------- transform-fit
+
+fn transform_fit(inputs: &Record) -> Result<Solution> {
+    let i = Inputs(inputs);
+    let model_id = i.text("model")?;
+    let model = Model::from_id(model_id)
+        .ok_or_else(|| Error::input("model", format!("\"{model_id}\" is not a model")))?;
+    let set = i.text("point_set")?.to_string();
+    let rows = match set.as_str() {
+        "fiducials" => row_axis_up(&FIDUCIALS),
+        "control-12" => {
+            let all: Vec<[f64; 4]> = FIDUCIALS.iter().chain(&CHECK_POINTS).copied().collect();
+            row_axis_up(&all)
+        }
+        _ => i.rows("points")?,
+    };
+    let pts = pairs(&rows)?;
+    let fit = transform::fit(model, &pts).map_err(|e| match e {
+        Error::InvalidInput { field, reason } if reason.contains("more needed") => {
+            Error::InvalidInput {
+                field,
+                reason: format!(
+                    "{reason}; add points in the table or choose the prepared set \"control-12\" (12 points)"
+                ),
+            }
+        }
+        other => other,
+    })?;
+    let mut used = inputs.clone();
+    used.set("points", Value::matrix(&rows));
+    let mut s = Solution::new(
+        "transform-fit",
+        "2-D transformations by least squares",
+        used,
+    );
+
+    let set_text = match set.as_str() {
+        "fiducials" => "Example 4's four fiducials (prepared set; the table's points are not used), u = c, v = −r.".to_string(),
+        "control-12" => "Example 4's four fiducials and eight check points (prepared set `control-12`; the table's points are not used), u = c, v = −r. The check points are made up for this playground.".to_string(),
+        _ => format!("The {} points of the table.", pts.len()),
+    };
+    s.step(
+        Step::new(
+            "Model and control points",
+            &format!(
+                "Table 9.5.1, {}: {} parameters, so at least {} points; {} given. {set_text}",
+                model.name(),
+                model.n_params(),
+                model.min_points(),
+                pts.len()
+            ),
+        )
+        .formula(equations_tex(model), String::new())
+        .value(
+            "source",
+            Value::matrix(&pts.iter().map(|p| vec![p.u, p.v]).collect::<Vec<_>>()),
+        )
+        .value(
+            "target",
+            Value::matrix(&pts.iter().map(|p| vec![p.x, p.y]).collect::<Vec<_>>()),
+        ),
+    );
+    adjustment_steps(&mut s, model, &fit, "(u, v)");
+    let inverse = inverse_step(&mut s, &fit, pts.first(), "(u, v)")?;
+    common_result(&mut s, &fit, inverse);
+    s.result.set("model", model.id());
+    s.result.set("point_set", set.as_str());
+    if let Some((scale, rot)) = scale_rotation(&fit.transform) {
+        s.result.set("scale", scale);
+        s.result.set("rotation_deg", rot);
+    }
+    s.result
+        .set("fitted", Value::matrix(&pairs_to_rows(&fit.fitted)));
+    label_results(&mut s, &model.param_names(), "");
+
+    s.note(
+        NoteKind::Convention,
+        "Table 9.5.1 maps image (u, v) to map (x, y); here (u, v) is any source system and (x, y) any target. Parameters are listed in the table's order; residuals V = A·X − L as [vx1, vy1, vx2, vy2, …]. The default points are Example 4's fiducials with the row axis turned up (u = c, v = −r); with v = r the conformal models (Helmert, second-order conformal) cannot fit, since they allow no reflection.",
+    );
+    match model {
+        Model::Projective => s.note(
+            NoteKind::Erratum,
+            "Table 9.5.1 prints the projective denominator as a7·u + a8 + 1. It must be a7·u + a8·v + 1: as printed, a8 + 1 is one constant, the model would have only 7 independent parameters and could not represent a tilt about the u axis. The corrected form is solved here, in its linearised form a1·u + a2·v + a3 − a7·u·x − a8·v·x = x (and likewise for y), which is linear in a1 … a8 and needs no initial values; its residuals V are those of the linearised equations (D·(x̂ − x)), the coordinate residuals x̂ − x are in point_residuals.",
+        ),
+        Model::Polynomial2 | Model::Polynomial3 => s.note(
+            NoteKind::Convention,
+            "The seed's polynomial Σᵢ Σⱼ a_ij·u^(i−1)·v^(j−1), i, j = 1 … n (n at most 3), runs over a square of exponents and would include u²v² (and for order 3 up to u³v³). Here a polynomial of order k has every term u^p·v^q with p + q ≤ k (the usual definition): 6 terms per coordinate for k = 2, 10 for k = 3; a_ij multiplies u^(i−1)·v^(j−1) as in the seed. Coordinates are used as given (not centred or scaled), so that the parameters are the table's; the condition number is reported.",
+        ),
+        Model::Helmert => s.note(
+            NoteKind::Convention,
+            "The table's Helmert transformation x = a·u + b·v + c, y = −b·u + a·v + d is Example 4's similarity with b of the other sign (Example 4: x = a·x′ − b·y′ + c).",
+        ),
+        _ => {}
+    }
+    condition_note(&mut s, &fit);
+
+    // Example 4's printed values, in the table's parameter names.
+    let fid = row_axis_up(&FIDUCIALS);
+    if rows == fid {
+        let tb = match model {
+            Model::Helmert => Some((
+                vec![
+                    SIM_PRINTED_X[0],
+                    -SIM_PRINTED_X[1],
+                    SIM_PRINTED_X[2],
+                    SIM_PRINTED_X[3],
+                ],
+                SIM_PRINTED_V.to_vec(),
+                "Example 4(a)",
+            )),
+            // Same positions: the table's (a, b, c, d, e, f) are Example 4's
+            // (a, b, e, c, d, f).
+            Model::Affine => Some((
+                AFF_PRINTED_X.to_vec(),
+                AFF_PRINTED_V.to_vec(),
+                "Example 4(b)",
+            )),
+            _ => None,
+        };
+        if let Some((x, v, which)) = tb {
+            s.textbook = Some(
+                Record::new()
+                    .with("parameters", Value::numbers(&x))
+                    .with("residuals", Value::numbers(&v)),
+            );
+            s.note(
+                NoteKind::Rounding,
+                format!(
+                    "With Example 4's fiducials this is {which}; its printed values are shown in this table's parameter names and order. See that example for why its shifts (printed −115.030, 115.040 / 115.030) differ from the exact ones beyond their third decimal: they were rounded to two."
+                ),
+            );
+        }
+    }
+    Ok(s)
+}
