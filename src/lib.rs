@@ -10,11 +10,13 @@
 //! - [`lsq`]: least-squares adjustment with its intermediates, rank and
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
+//! - [`chain`]: Freeman chain codes, boundary tracing, boundary descriptors.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
 //!   `parse_inputs`); the only file that knows about JavaScript.
 
+pub mod chain;
 pub mod coords;
 pub mod error;
 pub mod examples;

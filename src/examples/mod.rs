@@ -9,6 +9,7 @@
 //! `fn solve(inputs: &Record) -> Result<Solution>` in its topic file, list it
 //! in that file's `entries()`, and remove it from [`coming`].
 
+pub mod chains;
 pub mod coordinates;
 pub mod fields;
 
@@ -73,7 +74,6 @@ fn coming() -> Vec<Entry> {
     const L: &str = "Least-squares matching";
     const F: &str = "Filters and edges";
     const I: &str = "Interest operators";
-    const B: &str = "Chain codes and boundaries";
     vec![
         Entry::coming(
             "fiducial-similarity",
@@ -171,19 +171,6 @@ fn coming() -> Vec<Entry> {
             I,
             "Seed 000, Example 14",
         ),
-        Entry::coming(
-            "chain-code",
-            "Freeman chain code",
-            B,
-            "Seed 000, Example 17",
-        ),
-        Entry::coming(
-            "boundary-length",
-            "Boundary length",
-            B,
-            "Seed 000, Example 18",
-        ),
-        Entry::coming("boundary-shape", "Boundary descriptors", B, "Seed 000"),
         Entry::coming("utm", "UTM coordinates", "Map projection", "Seed 004"),
     ]
 }
@@ -191,6 +178,7 @@ fn coming() -> Vec<Entry> {
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
+    all.extend(chains::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
