@@ -296,10 +296,7 @@ fn text<'a>(inputs: &'a Record, key: &str) -> Result<&'a str> {
 }
 
 fn connectivity(inputs: &Record) -> Result<Connectivity> {
-    Ok(match text(inputs, "connectivity")? {
-        "4" => Connectivity::Four,
-        _ => Connectivity::Eight,
-    })
+    Ok(conn_of(text(inputs, "connectivity")?))
 }
 
 fn rows(inputs: &Record, key: &str) -> Result<Vec<Value>> {
@@ -814,10 +811,18 @@ fn is_code_input(inputs: &Record, code: &[u8], conn: &str) -> bool {
         && digits(inputs).is_ok_and(|d| d == code)
 }
 
+fn conn_of(text: &str) -> Connectivity {
+    if text == "4" {
+        Connectivity::Four
+    } else {
+        Connectivity::Eight
+    }
+}
+
 fn is_pixel_input(inputs: &Record, start: Pixel, code: &[u8], conn: &str) -> bool {
     text(inputs, "given").is_ok_and(|g| g == "pixels")
         && text(inputs, "connectivity").is_ok_and(|c| c == conn)
-        && inputs.get("pixels") == Some(&pixel_value(&decoded(start, code, Connectivity::Eight)))
+        && inputs.get("pixels") == Some(&pixel_value(&decoded(start, code, conn_of(conn))))
 }
 
 fn chain_code(inputs: &Record) -> Result<Solution> {
