@@ -17,7 +17,7 @@ wasm-bindgen --target web --no-typescript --remove-name-section --remove-produce
   target/wasm32-unknown-unknown/release/photogrammetry_playground.wasm
 cp -R www/. dist/
 katex=node_modules/katex/dist
-cp "$katex/katex.min.js" "$katex/katex.mjs" "$katex/katex.min.css" dist/vendor/katex/
+cp "$katex/katex.min.js" "$katex/katex.min.css" dist/vendor/katex/
 mkdir -p dist/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
 echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm $(wc -c < dist/pkg/photogrammetry_playground_bg.wasm) bytes)"

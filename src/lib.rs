@@ -11,6 +11,8 @@
 //!   condition checks.
 //! - [`coords`]: pixel ↔ image coordinates, pixel size, scale, GSD.
 //! - [`chain`]: Freeman chain codes, boundary tracing, boundary descriptors.
+//! - [`interest`]: the Förstner and Moravec interest operators, on a window
+//!   and as whole-image maps with thresholding and suppression.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -20,6 +22,7 @@ pub mod chain;
 pub mod coords;
 pub mod error;
 pub mod examples;
+pub mod interest;
 pub mod lsq;
 pub mod raster;
 pub mod solution;

@@ -278,6 +278,9 @@ pub struct Solution {
     pub result: Record,
     pub textbook: Option<Record>,
     pub notes: Vec<Note>,
+    /// What each result key means: `{ key: { label, unit } }` (unit may be
+    /// null), for tables a student can read. Keys without one show as is.
+    pub labels: Record,
 }
 
 impl Solution {
@@ -290,7 +293,21 @@ impl Solution {
             result: Record::new(),
             textbook: None,
             notes: Vec::new(),
+            labels: Record::new(),
         }
+    }
+    /// Says what result `key` is, for the page: `label` in words and its
+    /// `unit` ("" when it has none).
+    pub fn label(&mut self, key: &str, label: &str, unit: &str) {
+        let unit = if unit.is_empty() {
+            Value::Null
+        } else {
+            Value::from(unit)
+        };
+        self.labels.set(
+            key,
+            Value::Object(Record::new().with("label", label).with("unit", unit)),
+        );
     }
     pub fn step(&mut self, step: Step) {
         self.steps.push(step);

@@ -119,6 +119,21 @@ fn example_3_photo_to_pixel_exact_values_and_the_sign_slip() {
 }
 
 #[test]
+fn every_result_key_is_labelled_for_the_page() {
+    for id in ["pixel-to-photo", "gsd", "photo-to-pixel"] {
+        let s = solve(id, &Record::new()).unwrap();
+        for key in s.result.keys() {
+            assert!(s.labels.get(key).is_some(), "{id}: {key} has no label");
+        }
+    }
+    let s = solve("gsd", &Record::new()).unwrap();
+    let Some(Value::Object(l)) = s.labels.get("gsd_cm") else {
+        panic!("gsd_cm label missing")
+    };
+    assert_eq!(l.get("unit"), Some(&Value::from("cm")));
+}
+
+#[test]
 fn what_if_inputs_take_defaults_for_the_rest_and_drop_the_textbook() {
     let s = solve("gsd", &Record::new().with("dpi", 1200.0)).unwrap();
     assert_close(&s, "gsd_cm", 25.4 / 1200.0 * (1920.0 / 0.152) / 10.0, 1e-9);
@@ -270,6 +285,7 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
         "edge-window",
         "forstner-window",
         "moravec-window",
+        "forstner-image",
         "chain-code",
         "boundary-length",
         "boundary-shape",

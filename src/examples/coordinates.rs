@@ -108,7 +108,33 @@ fn photo_to_pixel_fields() -> Vec<Field> {
 
 /// Relative difference in percent, for notes.
 fn percent(printed: f64, exact: f64) -> String {
-    format!("{:.2} %", (printed - exact) / exact * 100.0)
+    let p = (printed - exact) / exact * 100.0;
+    let sign = if p > 0.0 { "+" } else { "" };
+    format!("{sign}{} %", crate::solution::fmt_sig(p, 2))
+}
+
+/// Labels of the result keys shared by the three examples.
+fn label_results(s: &mut Solution) {
+    for (key, label, unit) in [
+        ("c0", "Centre column c₀", "px"),
+        ("r0", "Centre row r₀", "px"),
+        ("x_px", "x offset from the centre", "px"),
+        ("y_px", "y offset from the centre", "px"),
+        ("pixel_size_mm", "Pixel size p", "mm"),
+        ("x_mm", "Image coordinate x", "mm"),
+        ("y_mm", "Image coordinate y", "mm"),
+        ("dc_px", "Column offset Δc", "px"),
+        ("dr_px", "Row offset Δr", "px"),
+        ("c", "Column c", "px"),
+        ("r", "Row r", "px"),
+        ("scale_denominator", "Scale number m (1 : m)", ""),
+        ("gsd_mm", "Ground sample distance", "mm"),
+        ("gsd_cm", "Ground sample distance", "cm"),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, unit);
+        }
+    }
 }
 
 fn centre_step(frame: Frame) -> Step {
@@ -231,6 +257,7 @@ fn pixel_to_photo(inputs: &Record) -> Result<Solution> {
         .with("pixel_size_mm", o.pixel_size_mm)
         .with("x_mm", o.x_mm)
         .with("y_mm", o.y_mm);
+    label_results(&mut s);
     convention_note(&mut s);
     if !o.inside {
         s.note(NoteKind::Warning, outside_note(c, r, frame));
@@ -324,6 +351,7 @@ fn gsd(inputs: &Record) -> Result<Solution> {
         .with("pixel_size_mm", g.pixel_size_mm)
         .with("gsd_mm", g.gsd_mm)
         .with("gsd_cm", gsd_cm);
+    label_results(&mut s);
     if is_seed(&gsd_fields(), inputs) {
         let (m, p, mm, cm) = (12632.0, 0.028, 353.7, 35.37);
         s.textbook = Some(
@@ -417,6 +445,7 @@ fn photo_to_pixel(inputs: &Record) -> Result<Solution> {
         .with("dr_px", o.dr_px)
         .with("c", o.c)
         .with("r", o.r);
+    label_results(&mut s);
     convention_note(&mut s);
     if !o.inside {
         s.note(NoteKind::Warning, outside_note(o.c, o.r, frame));

@@ -12,6 +12,7 @@
 pub mod chains;
 pub mod coordinates;
 pub mod fields;
+pub mod interest;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
@@ -73,7 +74,6 @@ fn coming() -> Vec<Entry> {
     const C: &str = "Correlation";
     const L: &str = "Least-squares matching";
     const F: &str = "Filters and edges";
-    const I: &str = "Interest operators";
     vec![
         Entry::coming(
             "fiducial-similarity",
@@ -159,18 +159,6 @@ fn coming() -> Vec<Entry> {
             F,
             "Seed 000, Example 15",
         ),
-        Entry::coming(
-            "forstner-window",
-            "Förstner operator",
-            I,
-            "Seed 000, Example 13; seed 003",
-        ),
-        Entry::coming(
-            "moravec-window",
-            "Moravec operator",
-            I,
-            "Seed 000, Example 14",
-        ),
         Entry::coming("utm", "UTM coordinates", "Map projection", "Seed 004"),
     ]
 }
@@ -179,6 +167,7 @@ fn coming() -> Vec<Entry> {
 pub fn entries() -> Vec<Entry> {
     let mut all = coordinates::entries();
     all.extend(chains::entries());
+    all.extend(interest::entries());
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS

@@ -1,0 +1,156 @@
+// Shared set-up of the end-to-end tests: the built page (dist/, from
+// `npm run build`) served on 127.0.0.1, and headless Chromium.
+// Not a test file itself (node --test runs only *.test.mjs here).
+
+import assert from "node:assert/strict";
+import fs from "node:fs";
+import path from "node:path";
+import { chromium } from "playwright-core";
+import { startServer } from "../../scripts/serve.mjs";
+
+/** The built site; E2E_DIST points elsewhere (e.g. a hand-assembled copy). */
+export const DIST = process.env.E2E_DIST || "dist";
+export const CHROMIUM = process.env.CHROMIUM_PATH || "/usr/bin/chromium";
+export const CHROMIUM_ARGS = [
+  "--headless",
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-quic",
+  "--no-first-run",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+];
+/** Statuses the page sets on <body data-status> once it has settled. */
+const SETTLED = ["ok", "invalid", "error", "home", "message", "fatal"];
+export const TEST_TIMEOUT = 60_000;
+const WAIT = 15_000;
+
+/** Starts the server and the browser; `close()` stops both. */
+export async function start() {
+  assert.ok(
+    fs.existsSync(path.join(DIST, "index.html")) && fs.existsSync(path.join(DIST, "pkg")),
+    `${DIST}/ is not built: run "npm run build" first`,
+  );
+  const server = await startServer({ dir: DIST, port: 0 });
+  let browser;
+  try {
+    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  } catch (e) {
+    await server.close();
+    throw e;
+  }
+  return {
+    url: server.url,
+    browser,
+    async close() {
+      await browser.close().catch(() => {});
+      await server.close();
+    },
+  };
+}
+
+/**
+ * A fresh context and page that record every request, page error, console
+ * error and dialog.
+ */
+export async function open(browser, options = {}) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, ...options });
+  const page = await context.newPage();
+  const log = { requests: [], pageErrors: [], consoleErrors: [], dialogs: [] };
+  context.on("request", (r) => log.requests.push(r.url()));
+  page.on("pageerror", (e) => log.pageErrors.push(e.message));
+  page.on("console", (m) => {
+    if (m.type() === "error") log.consoleErrors.push(m.text());
+  });
+  page.on("dialog", (d) => {
+    log.dialogs.push(d.message());
+    d.dismiss().catch(() => {});
+  });
+  return { context, page, log };
+}
+
+/** Waits until the page has settled after a load or an edit. */
+export async function settled(page) {
+  await page.waitForFunction((states) => states.includes(document.body.dataset.status), SETTLED, { timeout: WAIT });
+  return page.evaluate(() => document.body.dataset.status);
+}
+
+/** Loads `file#hash` and waits for the page to settle. */
+export async function visit(page, base, file, hash = "") {
+  await page.goto(`${base}${file}${hash}`);
+  return settled(page);
+}
+
+/** The full-precision exact value of a result row (its data-value). */
+export async function exact(page, key) {
+  const cell = page.locator(`.result-table tr[data-key="${key}"] td.exact`);
+  return Number(await cell.getAttribute("data-value", { timeout: WAIT }));
+}
+
+/** The text of a result cell ("exact", "printed", "diff"). */
+export async function cellText(page, key, column) {
+  return (await page.locator(`.result-table tr[data-key="${key}"] td.${column}`).innerText({ timeout: WAIT })).trim();
+}
+
+/** A number as the page writes it (a real minus sign, maybe a "+"). */
+export function parseShown(text) {
+  return Number(text.replace(/\u2212/g, "-").replace(/^\+/, "").trim());
+}
+
+/** Waits until a result's exact value is within `tol` of `expected`. */
+export async function waitForExact(page, key, expected, tol = 1e-3) {
+  await page.waitForFunction(
+    ([k, e, t]) => {
+      const cell = document.querySelector(`.result-table tr[data-key="${k}"] td.exact`);
+      return cell && Math.abs(Number(cell.dataset.value) - e) <= t;
+    },
+    [key, expected, tol],
+    { timeout: WAIT },
+  );
+}
+
+/** The ids of every example of shared/CATALOG.md (read from it when it is beside the repo). */
+export const CATALOG_IDS = [
+  "pixel-to-photo",
+  "gsd",
+  "photo-to-pixel",
+  "fiducial-similarity",
+  "fiducial-affine",
+  "transform-fit",
+  "ncc-1d",
+  "ncc-2d",
+  "ncc-surface",
+  "subpixel-1d",
+  "subpixel-2d",
+  "lsm-1d",
+  "lsm-2d",
+  "lsm-affine",
+  "resample",
+  "filter-window",
+  "edge-window",
+  "forstner-window",
+  "moravec-window",
+  "chain-code",
+  "boundary-length",
+  "boundary-shape",
+  "utm",
+];
+
+/**
+ * Entries beyond CATALOG.md, each documented in docs/API.md
+ * (forstner-image: the Förstner operator on a generated test pattern).
+ */
+export const EXTRA_IDS = ["forstner-image"];
+
+/** The ids in ../shared/CATALOG.md (first column of its tables), or null when absent. */
+export function catalogMdIds() {
+  const file = path.resolve("..", "shared", "CATALOG.md");
+  if (!fs.existsSync(file)) return null;
+  const ids = [];
+  for (const line of fs.readFileSync(file, "utf8").split("\n")) {
+    const m = /^\|\s*`([a-z0-9-]+)`\s*\|/.exec(line);
+    if (m) ids.push(m[1]);
+  }
+  return ids;
+}

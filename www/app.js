@@ -1,0 +1,385 @@
+// Photogrammetry Playground: the page. One module for both views:
+//   index.html  <body data-mode="full">   header, catalog, the chosen example
+//   embed.html  <body data-mode="embed">  the chosen example only (for iframes)
+//
+// Flow on every edit: form texts -> parse_inputs(id, texts) -> errors beside
+// their fields (the last good solution stays, marked stale) or
+// solve(id, inputs) -> steps, result, notes, figure; the URL follows with
+// history.replaceState. Nothing read from the URL is ever parsed as HTML.
+
+import { loadCore, messageOf } from "./core.js";
+import { loadMath } from "./math.js";
+import { buildHash, parseHash } from "./url.js";
+import { el } from "./dom.js";
+import { buildForm } from "./form.js";
+import { renderNotes, renderResult, renderSteps } from "./render.js";
+import { hasFigure, mountFigures } from "./figures/index.js";
+import { formatValue } from "./format.js";
+
+/** Topics in page order (docs/API.md); unknown topics follow in catalog order. */
+const TOPIC_ORDER = [
+  "Coordinates",
+  "Transformations",
+  "Correlation",
+  "Least-squares matching",
+  "Resampling",
+  "Filters and edges",
+  "Interest operators",
+  "Chain codes and boundaries",
+  "Map projection",
+];
+const SITE_TITLE = "Photogrammetry Playground";
+/** Longest URL key quoted back in the "ignored" notice. */
+const MAX_QUOTED_KEY = 40;
+/** How long "Link copied" stays. */
+const COPY_STATUS_MS = 4000;
+
+const mode = document.body.dataset.mode === "embed" ? "embed" : "full";
+const root = document.getElementById("app");
+
+let core = null;
+let entries = [];
+/** The example on screen: { id, entry, form, figure, parts, lastGood } */
+let view = null;
+
+function setStatus(status) {
+  document.body.dataset.status = status;
+}
+
+function entryById(id) {
+  return entries.find((e) => e.id === id) ?? null;
+}
+
+function topicsInOrder() {
+  const topics = [...TOPIC_ORDER];
+  for (const e of entries) if (!topics.includes(e.topic)) topics.push(e.topic);
+  return topics.filter((t) => entries.some((e) => e.topic === t));
+}
+
+// ---------------------------------------------------------------------------
+// The catalog
+
+function catalogNav({ detailed, currentId = null }) {
+  const nav = el("nav", { class: `catalog ${detailed ? "catalog-detailed" : "catalog-compact"}`, "aria-label": "All examples" });
+  for (const topic of topicsInOrder()) {
+    const headingId = `topic-${topic.replace(/[^A-Za-z0-9]+/g, "-").toLowerCase()}${detailed ? "" : "-menu"}`;
+    const list = el("ul", { class: "catalog-list", "aria-labelledby": headingId });
+    for (const e of entries.filter((x) => x.topic === topic)) {
+      const ready = e.status === "ready";
+      const item = el("li", { class: `catalog-item ${ready ? "ready" : "coming"}`, "data-id": e.id, "data-status": e.status });
+      if (ready) {
+        item.append(el("a", { href: `#/${encodeURIComponent(e.id)}`, "aria-current": e.id === currentId ? "page" : null }, e.title));
+      } else {
+        item.append(el("span", { class: "coming-title" }, e.title), " ", el("span", { class: "badge badge-coming" }, "coming"));
+      }
+      if (detailed) {
+        item.append(el("span", { class: "catalog-source" }, e.source ?? ""));
+        if (e.summary) item.append(el("p", { class: "catalog-summary" }, e.summary));
+      }
+      list.append(item);
+    }
+    nav.append(el("section", { class: "catalog-topic" }, el(detailed ? "h2" : "h3", { id: headingId }, topic), list));
+  }
+  return nav;
+}
+
+function showHome() {
+  destroyView();
+  document.title = SITE_TITLE;
+  if (mode === "embed") {
+    root.replaceChildren(
+      el("p", { class: "notice" }, "No example chosen. Use an address such as embed.html#/gsd?dpi=1200 to embed one example."),
+    );
+    setStatus("home");
+    return;
+  }
+  const ready = entries.filter((e) => e.status === "ready").length;
+  root.replaceChildren(
+    el(
+      "section",
+      { class: "home" },
+      el(
+        "p",
+        { class: "intro" },
+        "Worked examples of digital photogrammetry and image processing, solved step by step with every intermediate number. Choose an example, change any input, and the whole solution follows at once; the address holds the inputs, so a what-if is a link.",
+      ),
+      el("p", { class: "muted" }, `${ready} of ${entries.length} examples are ready; the others are marked “coming”.`),
+      catalogNav({ detailed: true }),
+    ),
+  );
+  setStatus("home");
+}
+
+function showMessage(title, message) {
+  destroyView();
+  document.title = `${title} — ${SITE_TITLE}`;
+  const parts = [el("h2", {}, title), el("p", {}, message)];
+  if (mode === "full") parts.push(el("p", {}, el("a", { href: "#/" }, "← All examples")));
+  root.replaceChildren(el("section", { class: "message" }, parts));
+  setStatus("message");
+}
+
+// ---------------------------------------------------------------------------
+// One example
+
+function destroyView() {
+  if (view?.figure) view.figure.destroy();
+  view = null;
+}
+
+function buildView(entry) {
+  destroyView();
+  const id = entry.id;
+  const v = { id, entry, lastGood: null, figure: null };
+
+  const heading = el("h2", { id: "example-title", tabindex: "-1" }, entry.title);
+  const meta = el("p", { class: "example-meta" }, `${entry.source ?? ""}${entry.source ? " · " : ""}${entry.topic ?? ""}`);
+  const summary = entry.summary ? el("p", { class: "example-summary" }, entry.summary) : null;
+  const urlNotice = el("p", { class: "notice url-notice", role: "status", hidden: true });
+  const errorBox = el("div", { class: "error-box", role: "alert", hidden: true });
+  const staleBanner = el("p", { class: "stale-banner", role: "status", hidden: true });
+
+  v.form = buildForm(entry, () => recompute());
+  const copyStatus = el("span", { class: "copy-status", role: "status" });
+  const resetButton = el("button", { type: "button", class: "button" }, "Reset to the seed’s values");
+  resetButton.addEventListener("click", () => {
+    v.form.setAll({});
+    urlNotice.hidden = true;
+    recompute();
+  });
+  const copyButton = el("button", { type: "button", class: "button" }, "Copy link");
+  copyButton.addEventListener("click", () => copyLink(copyStatus));
+  const actions = el("div", { class: "actions" }, resetButton, copyButton, copyStatus);
+  if (mode === "embed") {
+    const open = el("a", { class: "open-full", target: "_blank", rel: "noopener", href: "index.html" }, `Open in ${SITE_TITLE} ↗`);
+    v.openLink = open;
+    actions.append(open);
+  }
+
+  const inputs = el("section", { class: "panel inputs", "aria-labelledby": "inputs-h" }, el("h3", { id: "inputs-h" }, "Inputs"), v.form.element, actions);
+  const stepsList = el("div", { class: "steps-body" });
+  const steps = el("section", { class: "panel steps-panel", "aria-labelledby": "steps-h" }, el("h3", { id: "steps-h" }, "Solution, step by step"), stepsList);
+  const figureHost = el("div", { class: "figure-host" });
+  const figureSection = hasFigure(id) ? el("section", { class: "panel figure-section", "aria-labelledby": "figure-h" }, el("h3", { id: "figure-h" }, "Figure"), figureHost) : null;
+  const resultBody = el("div", { class: "result-body" });
+  const result = el("section", { class: "panel result-section", "aria-labelledby": "result-h" }, el("h3", { id: "result-h" }, "Result"), resultBody);
+  const notesBody = el("div", { class: "notes-body" });
+  const notes = el("section", { class: "panel notes-section", "aria-labelledby": "notes-h" }, el("h3", { id: "notes-h" }, "Notes"), notesBody);
+  const side = el("div", { class: "side" }, figureSection, result, notes);
+  const solutionArea = el("div", { class: "layout" }, inputs, steps, side);
+
+  const children = [];
+  if (mode === "full") {
+    const drawer = el("details", { class: "catalog-drawer" }, el("summary", {}, "Other examples"), catalogNav({ detailed: false, currentId: id }));
+    children.push(el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog"), drawer));
+  }
+  children.push(el("header", { class: "example-head" }, heading, meta, summary), urlNotice, errorBox, staleBanner, solutionArea);
+  const article = el("article", { class: "example", "data-id": id }, children);
+  root.replaceChildren(article);
+  if (figureSection) v.figure = mountFigures(figureHost, id);
+
+  v.parts = { heading, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
+  document.title = `${entry.title} — ${SITE_TITLE}`;
+  view = v;
+  return v;
+}
+
+function showGeneralError(message) {
+  const box = view.parts.errorBox;
+  box.replaceChildren(el("strong", {}, "Cannot solve: "), el("span", { class: "error-message" }, message));
+  box.hidden = false;
+}
+
+function clearGeneralError() {
+  view.parts.errorBox.hidden = true;
+  view.parts.errorBox.replaceChildren();
+}
+
+function markStale(reason) {
+  const { staleBanner, solutionArea, stepsList } = view.parts;
+  solutionArea.classList.toggle("stale", Boolean(view.lastGood));
+  solutionArea.classList.toggle("no-solution", !view.lastGood);
+  if (!view.lastGood) stepsList.replaceChildren(el("p", { class: "muted" }, "No solution yet: the steps appear as soon as every input is valid."));
+  if (view.lastGood) {
+    const used = Object.entries(view.lastGood.inputs ?? {})
+      .map(([k, val]) => `${k} = ${formatValue(val).replace(/\n/g, "; ")}`)
+      .join(", ");
+    staleBanner.textContent = `${reason} The solution below is still the one for the last valid inputs (${used}).`;
+  } else {
+    staleBanner.textContent = reason;
+  }
+  staleBanner.hidden = false;
+}
+
+function clearStale() {
+  view.parts.solutionArea.classList.remove("stale", "no-solution");
+  view.parts.staleBanner.hidden = true;
+  view.parts.staleBanner.textContent = "";
+}
+
+/** Turns any Map the core might hand back into a plain object (API.md says plain; be safe). */
+function plain(value) {
+  if (value instanceof Map) return Object.fromEntries([...value].map(([k, v]) => [k, plain(v)]));
+  if (Array.isArray(value)) return value.map(plain);
+  if (value && typeof value === "object") return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, plain(v)]));
+  return value;
+}
+
+function renderSolution(solution) {
+  const { stepsList, resultBody, notesBody } = view.parts;
+  stepsList.replaceChildren(renderSteps(solution));
+  resultBody.replaceChildren(...renderResult(solution));
+  notesBody.replaceChildren(...renderNotes(solution));
+  if (view.figure) view.figure.update(solution);
+  // for `npm run bench`: navigation to the first solution on screen
+  if (!performance.getEntriesByName("first-solution").length) performance.mark("first-solution");
+}
+
+function writeUrl() {
+  const hash = buildHash(view.id, view.form.entries());
+  if (location.hash !== hash) history.replaceState(history.state, "", hash);
+  if (view.openLink) view.openLink.setAttribute("href", `index.html${hash}`);
+}
+
+/** Reads the form, parses, solves, renders; the URL follows. */
+function recompute() {
+  if (!view) return;
+  const id = view.id;
+  const texts = view.form.texts();
+  writeUrl();
+  let parsed;
+  try {
+    parsed = plain(core.parseInputs(id, texts));
+  } catch (e) {
+    view.form.showErrors({});
+    showGeneralError(messageOf(e));
+    markStale("The inputs could not be read.");
+    setStatus("error");
+    return;
+  }
+  const errors = parsed?.errors ?? {};
+  const rest = view.form.showErrors(errors);
+  if (Object.keys(errors).length) {
+    const others = Object.entries(rest);
+    if (others.length) showGeneralError(others.map(([k, m]) => `${k}: ${m}`).join("; "));
+    else clearGeneralError();
+    const n = Object.keys(errors).length;
+    markStale(n === 1 ? "One input is not valid (see the message beside it)." : `${n} inputs are not valid (see the messages beside them).`);
+    setStatus("invalid");
+    return;
+  }
+  let solution;
+  try {
+    solution = plain(core.solve(id, parsed.inputs ?? {}));
+  } catch (e) {
+    showGeneralError(messageOf(e));
+    markStale("These inputs cannot be solved.");
+    setStatus("error");
+    return;
+  }
+  clearGeneralError();
+  try {
+    renderSolution(solution);
+  } catch (e) {
+    console.error(e);
+    showGeneralError(`The page could not show this solution: ${messageOf(e)}`);
+    setStatus("error");
+    return;
+  }
+  view.lastGood = solution;
+  clearStale();
+  setStatus("ok");
+}
+
+async function copyLink(status) {
+  const url = location.href;
+  clearTimeout(copyLink.timer);
+  try {
+    await navigator.clipboard.writeText(url);
+    status.textContent = "Link copied.";
+  } catch {
+    // no clipboard (permissions, insecure context): show the link to copy by hand
+    const field = el("input", { type: "text", readonly: true, class: "copy-field", "aria-label": "Link to these inputs" });
+    field.value = url;
+    status.replaceChildren("Copy this link: ", field);
+    field.focus();
+    field.select();
+    return;
+  }
+  copyLink.timer = setTimeout(() => {
+    status.textContent = "";
+  }, COPY_STATUS_MS);
+}
+
+function quoteKey(key) {
+  const k = key.length > MAX_QUOTED_KEY ? `${key.slice(0, MAX_QUOTED_KEY)}…` : key;
+  return `“${k}”`;
+}
+
+// ---------------------------------------------------------------------------
+// Routing
+
+function route({ focus = false } = {}) {
+  const { id, params } = parseHash(location.hash);
+  if (!id) {
+    showHome();
+    return;
+  }
+  const entry = entryById(id);
+  if (!entry) {
+    showMessage("No such example", `There is no example called “${id.length > MAX_QUOTED_KEY ? `${id.slice(0, MAX_QUOTED_KEY)}…` : id}”.`);
+    return;
+  }
+  if (entry.status !== "ready") {
+    showMessage(entry.title, `This example (${entry.source ?? entry.topic}) is coming: it is not built yet.`);
+    return;
+  }
+  const v = view && view.id === id ? view : buildView(entry);
+  const texts = {};
+  const dropped = [];
+  for (const [key, value] of params) {
+    if (v.form.has(key)) texts[key] = value;
+    else if (!dropped.includes(key)) dropped.push(key);
+  }
+  v.form.setAll(texts);
+  const notice = v.parts.urlNotice;
+  if (dropped.length) {
+    notice.textContent = `Ignored ${dropped.length === 1 ? "an unknown URL parameter" : "unknown URL parameters"}: ${dropped.map(quoteKey).join(", ")}. This example takes ${v.form.keys().join(", ")}.`;
+    notice.hidden = false;
+  } else {
+    notice.hidden = true;
+    notice.textContent = "";
+  }
+  recompute();
+  if (focus) v.parts.heading.focus({ preventScroll: false });
+}
+
+async function main() {
+  setStatus("loading");
+  root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
+  const [coreResult] = await Promise.allSettled([loadCore(), loadMath()]);
+  if (coreResult.status !== "fulfilled") {
+    root.replaceChildren(
+      el(
+        "div",
+        { class: "error-box", role: "alert" },
+        el("strong", {}, "The solver could not be loaded. "),
+        `(${messageOf(coreResult.reason)}) The page needs the WebAssembly build: run “npm run build” and serve the dist/ folder.`,
+      ),
+    );
+    setStatus("fatal");
+    return;
+  }
+  core = coreResult.value;
+  try {
+    entries = plain(core.catalog());
+  } catch (e) {
+    root.replaceChildren(el("div", { class: "error-box", role: "alert" }, `The catalog could not be read: ${messageOf(e)}`));
+    setStatus("fatal");
+    return;
+  }
+  window.addEventListener("hashchange", () => route({ focus: true }));
+  route();
+}
+
+main();

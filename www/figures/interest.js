@@ -1,0 +1,417 @@
+// Figures of the "Interest operators" topic (seed 000, Examples 13–14; seed 003):
+//   forstner-window: the window as a grid of numbers with the gradient arrow
+//     at each interior pixel; N with its error ellipse beside the threshold T.
+//   moravec-window: the four directional differences at each interior pixel.
+//   forstner-image: the test pattern with the window, its error ellipse
+//     (magnified), the candidates and the interest points; then the window
+//     and N as above.
+
+import { formatNumber } from "../format.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, arrow, dot, finite, line, text, textBlock, textWidth } from "./draw.js";
+
+/** Layout constants (CSS px). */
+const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26 });
+const ELLIPSE = Object.freeze({ height: 290, panelMin: 200, clip: 2.6, margin: 14 });
+const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, maxShown: 4 });
+const IMAGE = Object.freeze({ margin: 14, legend: 62, maxSide: 620, tRadiusCells: 1, clip: 3 });
+/** Digits in figure labels. */
+const DIGITS = 4;
+/** The four Moravec directions, in the order of the core's `diffs`. */
+const DIRECTIONS = Object.freeze([
+  { name: "row", from: [-1, 0], to: [1, 0], color: "#1d5fbf" },
+  { name: "column", from: [0, -1], to: [0, 1], color: "#b3400a" },
+  { name: "main diagonal", from: [-1, -1], to: [1, 1], color: "#2f7d32" },
+  { name: "other diagonal", from: [1, -1], to: [-1, 1], color: "#8f1d8f" },
+]);
+
+const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
+
+/** The last step value named `key`. */
+function stepValue(solution, key) {
+  let found;
+  for (const step of solution.steps ?? []) {
+    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
+  }
+  return found;
+}
+
+function isMatrix(m) {
+  return Array.isArray(m) && m.length > 0 && m.every((r) => Array.isArray(r) && r.length === m[0].length);
+}
+
+/** Fill grey for a grey value between lo and hi: light for low, darker for high, text stays readable. */
+function cellShade(v, lo, hi) {
+  const t = hi > lo ? (v - lo) / (hi - lo) : 0;
+  const g = Math.round(250 - 120 * t);
+  return { fill: `rgb(${g},${g},${g})`, ink: COLORS.ink };
+}
+
+/** The window grid with its numbers; arrows of (gx, gy) at the interior pixels. */
+function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
+  const flat = win.flat();
+  const lo = Math.min(...flat);
+  const hi = Math.max(...flat);
+  const rows = win.length;
+  const cols = win[0].length;
+  for (let r = 0; r < rows; r++) {
+    for (let c = 0; c < cols; c++) {
+      const v = win[r][c];
+      const { fill } = cellShade(v, lo, hi);
+      ctx.fillStyle = fill;
+      ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
+      const interior = r > 0 && c > 0 && r < rows - 1 && c < cols - 1;
+      text(ctx, fmt(v, 5), x0 + c * cell + 4, y0 + r * cell + 3, {
+        size: cell < 34 ? 9.5 : FONT_SIZE_SMALL,
+        baseline: "top",
+        color: interior ? COLORS.ink : COLORS.muted,
+        halo: true,
+      });
+    }
+  }
+  ctx.save();
+  ctx.strokeStyle = COLORS.grid;
+  for (let i = 0; i <= rows; i++) line(ctx, x0, y0 + i * cell, x0 + cols * cell, y0 + i * cell, { color: COLORS.grid });
+  for (let i = 0; i <= cols; i++) line(ctx, x0 + i * cell, y0, x0 + i * cell, y0 + rows * cell, { color: COLORS.grid });
+  ctx.strokeStyle = COLORS.frameStroke;
+  ctx.lineWidth = 1.5;
+  ctx.strokeRect(x0 + cell, y0 + cell, (cols - 2) * cell, (rows - 2) * cell);
+  ctx.restore();
+  if (!isMatrix(gx) || !isMatrix(gy)) return;
+  const mags = gx.flatMap((row, r) => row.map((v, c) => Math.hypot(v, gy[r][c])));
+  const maxMag = Math.max(...mags);
+  if (!(maxMag > 0)) return;
+  const reach = 0.46 * cell;
+  gx.forEach((row, r) =>
+    row.forEach((vx, c) => {
+      const vy = gy[r][c];
+      const cx = x0 + (c + 1.5) * cell;
+      const cy = y0 + (r + 1.5) * cell + 4;
+      const k = reach / maxMag;
+      if (Math.hypot(vx, vy) * k < 3) {
+        dot(ctx, cx, cy, 2, COLORS.pixelSystem);
+        return;
+      }
+      arrow(ctx, cx, cy, cx + vx * k, cy + vy * k, { color: COLORS.pixelSystem, width: 2, size: 7 });
+    }),
+  );
+}
+
+function windowCell(width, win) {
+  const cols = win[0].length;
+  return Math.max(GRID.minCell, Math.min(GRID.maxCell, (width - 2 * GRID.margin) / cols));
+}
+
+const windowSpec = (source) => ({
+  caption:
+    "The window: grey values (darker = brighter value), the interior framed; each blue arrow is the gradient (g′x, g′y) of an interior pixel by central differences, drawn to scale with the longest one.",
+  height(width, solution) {
+    const win = source(solution).window;
+    if (!isMatrix(win)) return 120;
+    return win.length * windowCell(width, win) + 2 * GRID.margin + GRID.legend;
+  },
+  describe(solution) {
+    const { window: win, gx, gy } = source(solution);
+    if (!isMatrix(win) || !isMatrix(gx)) return "The window.";
+    let best = { m: -1 };
+    gx.forEach((row, r) => row.forEach((v, c) => {
+      const m = Math.hypot(v, gy[r][c]);
+      if (m > best.m) best = { m, c: c + 2, r: r + 2, gx: v, gy: gy[r][c] };
+    }));
+    return `A ${win.length}×${win[0].length} window of grey values with the gradient arrows of its ${gx.length * gx[0].length} interior pixels; the longest is at P(c${best.c}, r${best.r}): g′x = ${fmt(best.gx)}, g′y = ${fmt(best.gy)}.`;
+  },
+  draw(ctx, width, height, solution) {
+    const { window: win, gx, gy } = source(solution);
+    if (!isMatrix(win)) return;
+    const cell = windowCell(width, win);
+    const x0 = Math.max(GRID.margin, (width - win[0].length * cell) / 2);
+    drawWindow(ctx, x0, GRID.margin, cell, win, gx, gy);
+    text(ctx, "c →  r ↓  (from 1)   arrow = (g′x, g′y) at an interior pixel", GRID.margin, height - GRID.legend / 2, {
+      size: FONT_SIZE_SMALL,
+      color: COLORS.muted,
+    });
+  },
+});
+
+/** The error ellipse (or its degenerate forms) centred at (cx, cy): `unit` CSS px per px of σ. */
+function drawEllipse(ctx, cx, cy, unit, res, clipRadius) {
+  const smax = res.sigma_max_px;
+  const smin = res.sigma_min_px;
+  const angle = (finite(res.weak_angle_deg) * Math.PI) / 180;
+  ctx.save();
+  ctx.beginPath();
+  ctx.arc(cx, cy, clipRadius, 0, 2 * Math.PI);
+  ctx.clip();
+  ctx.strokeStyle = COLORS.imageSystem;
+  ctx.fillStyle = "rgba(179, 64, 10, 0.16)";
+  ctx.lineWidth = 2;
+  if (typeof smin !== "number") {
+    // N = 0: no direction is determined
+    ctx.setLineDash([...DASH]);
+    ctx.beginPath();
+    ctx.arc(cx, cy, clipRadius - 2, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.stroke();
+  } else {
+    const a = typeof smax === "number" ? smax * unit : 4 * clipRadius; // ∞ along an edge
+    const b = Math.max(smin * unit, 1.5);
+    ctx.beginPath();
+    ctx.ellipse(cx, cy, a, b, angle, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
+/** The lines of numbers beside the ellipse. */
+function ellipseLines(solution) {
+  const r = solution.result ?? {};
+  const T = finite(solution.inputs?.threshold_px, 0.5);
+  const n = isMatrix(r.n) ? r.n : [[0, 0], [0, 0]];
+  const d = 6;
+  return [
+    { text: "N =", weight: "bold" },
+    { text: `  [ ${fmt(n[0][0], d)}   ${fmt(n[0][1], d)} ]` },
+    { text: `  [ ${fmt(n[1][0], d)}   ${fmt(n[1][1], d)} ]` },
+    { text: `det N = ${fmt(r.det_n, 7)}` },
+    { text: `trace N⁻¹ = ${typeof r.trace_n_inverse === "number" ? fmt(r.trace_n_inverse) : "∞"}` },
+    { text: `w = det N / trace N = ${fmt(r.w)}` },
+    { text: `q = 4 det N / trace² N = ${fmt(r.q)}` },
+    { text: `λ(N) = ${fmt(r.lambda_max)}, ${fmt(r.lambda_min)}` },
+    { text: `λmax(Σuv) = ${typeof r.lambda_max_shift === "number" ? fmt(r.lambda_max_shift) : "∞"} px² ${r.accepted ? "≤" : ">"} T² = ${fmt(T * T)}`, color: r.accepted ? COLORS.ink : COLORS.imageSystem },
+    { text: `case: ${r.case}${r.accepted ? " (accepted)" : " (rejected)"}`, weight: "bold", color: r.accepted ? "#2f7d32" : COLORS.imageSystem },
+  ];
+}
+
+/** Side by side when the canvas is wide enough, else the ellipse below the numbers. */
+function ellipseLayout(width, solution) {
+  const lines = ellipseLines(solution);
+  const box = { w: Math.max(...lines.map((l) => textWidth(l.text, FONT_SIZE, l.weight ?? "normal"))) + 10, h: lines.length * FONT_SIZE * LINE_HEIGHT + 10 };
+  const side = width - box.w - 3 * ELLIPSE.margin >= ELLIPSE.panelMin;
+  const panel = side
+    ? { x: box.w + 2 * ELLIPSE.margin, y: 0, w: width - box.w - 3 * ELLIPSE.margin, h: ELLIPSE.height }
+    : { x: ELLIPSE.margin, y: box.h + ELLIPSE.margin, w: width - 2 * ELLIPSE.margin, h: ELLIPSE.height - 30 };
+  return { lines, box, panel, height: side ? ELLIPSE.height : panel.y + panel.h };
+}
+
+const ellipseSpec = {
+  caption:
+    "N and seed 003's precision test: the error ellipse of the position (semi-axes σmax, σmin; orange) beside the threshold circle of radius T (dashed). Inside the circle: accepted. A long ellipse is an edge, a huge one a flat area.",
+  height(width, solution) {
+    return ellipseLayout(width, solution).height;
+  },
+  describe(solution) {
+    const r = solution.result ?? {};
+    const smax = typeof r.sigma_max_px === "number" ? `${fmt(r.sigma_max_px)} px` : "infinite";
+    const T = finite(solution.inputs?.threshold_px, 0.5);
+    return `N = [[${(r.n ?? []).flat().map((v) => fmt(v, 6)).join(", ")}]]; w = ${fmt(r.w)}, q = ${fmt(r.q)}. Error ellipse: σmax ${smax}, σmin ${fmt(r.sigma_min_px)} px against T = ${fmt(T)} px: ${r.accepted ? "accepted" : "not accepted"}, case ${r.case}.`;
+  },
+  draw(ctx, width, height, solution) {
+    const r = solution.result ?? {};
+    const T = finite(solution.inputs?.threshold_px, 0.5);
+    const L = ellipseLayout(width, solution);
+    textBlock(ctx, L.lines, ELLIPSE.margin, ELLIPSE.margin, { size: FONT_SIZE });
+    const { panel } = L;
+    const cx = panel.x + panel.w / 2;
+    const cy = panel.y + panel.h / 2;
+    const clipR = Math.max(20, Math.min(panel.w / 2, panel.h / 2 - 22));
+    // the larger of T and σmax (up to the clip) fills the panel
+    const smax = typeof r.sigma_max_px === "number" ? r.sigma_max_px : Infinity;
+    const fit = Math.min(Math.max(T, smax), ELLIPSE.clip * T);
+    const unit = (clipR - 6) / fit;
+    drawEllipse(ctx, cx, cy, unit, r, clipR);
+    ctx.save();
+    ctx.strokeStyle = COLORS.ink;
+    ctx.setLineDash([...DASH]);
+    ctx.lineWidth = 1.2;
+    ctx.beginPath();
+    ctx.arc(cx, cy, T * unit, 0, 2 * Math.PI);
+    ctx.stroke();
+    ctx.restore();
+    line(ctx, cx - 5, cy, cx + 5, cy, { color: COLORS.ink });
+    line(ctx, cx, cy - 5, cx, cy + 5, { color: COLORS.ink });
+    text(ctx, `dashed circle: T = ${fmt(T)} px`, cx, panel.y + 12, { align: "center", size: FONT_SIZE_SMALL, color: COLORS.ink, halo: true });
+    const axes = typeof r.sigma_min_px !== "number"
+      ? "no gradient: undetermined in every direction"
+      : `σmax = ${typeof r.sigma_max_px === "number" ? fmt(r.sigma_max_px) : "∞"} px, σmin = ${fmt(r.sigma_min_px)} px`;
+    text(ctx, axes, cx, panel.y + panel.h - 10, { align: "center", size: FONT_SIZE_SMALL, color: COLORS.imageSystem, halo: true });
+  },
+};
+
+// ---------------------------------------------------------------------------
+// Moravec: the four directional differences of each interior pixel
+
+function moravecPixels(solution) {
+  const rows = solution.result?.differences;
+  const win = solution.inputs?.window;
+  if (!isMatrix(rows) || !isMatrix(win)) return { shown: [], win: null, total: 0 };
+  let shown = rows.map((d) => ({ c: d[0], r: d[1], g: d[2], diffs: d.slice(3, 7), sum: d[7] }));
+  const total = shown.length;
+  if (shown.length > MORAVEC.maxShown) shown = [...shown].sort((a, b) => b.sum - a.sum).slice(0, MORAVEC.maxShown);
+  return { shown, win, total };
+}
+
+function moravecLayout(width, count) {
+  const perRow = Math.max(1, Math.min(count, Math.floor((width + MORAVEC.panelGap) / (MORAVEC.minPanel + MORAVEC.panelGap))));
+  const panelW = (width - MORAVEC.panelGap * (perRow + 1)) / perRow;
+  const cell = Math.min(MORAVEC.maxCell, (panelW - 20) / 3);
+  const textH = MORAVEC.textLines * FONT_SIZE_SMALL * LINE_HEIGHT + 10;
+  const panelH = 3 * cell + textH + 18;
+  return { perRow, panelW, cell, panelH, rows: Math.ceil(count / perRow) };
+}
+
+const moravecSpec = {
+  caption:
+    "Moravec (seed 000): at each interior pixel (framed), the four differences across it — along the row, the column and both diagonals, each arrow from the subtracted to the other neighbour — squared and summed.",
+  height(width, solution) {
+    const { shown } = moravecPixels(solution);
+    const L = moravecLayout(width, Math.max(shown.length, 1));
+    return L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20;
+  },
+  describe(solution) {
+    const { shown, total } = moravecPixels(solution);
+    const parts = shown.map((p) => `P(c${p.c}, r${p.r}) = ${fmt(p.g)}: differences ${p.diffs.map((d) => fmt(d)).join(", ")}, sum ${fmt(p.sum)}`);
+    return `${total} interior pixels${total > shown.length ? ` (the ${shown.length} largest shown)` : ""}. ${parts.join("; ")}. Mean ${fmt(solution.result?.mean)}.`;
+  },
+  draw(ctx, width, height, solution) {
+    const { shown, win, total } = moravecPixels(solution);
+    if (!win) return;
+    const L = moravecLayout(width, Math.max(shown.length, 1));
+    const flat = win.flat();
+    const lo = Math.min(...flat);
+    const hi = Math.max(...flat);
+    shown.forEach((p, i) => {
+      const px = MORAVEC.panelGap + (i % L.perRow) * (L.panelW + MORAVEC.panelGap);
+      const py = MORAVEC.panelGap + Math.floor(i / L.perRow) * (L.panelH + MORAVEC.panelGap);
+      const gx0 = px + (L.panelW - 3 * L.cell) / 2;
+      const gy0 = py + 16;
+      text(ctx, `P(c${p.c}, r${p.r}) = ${fmt(p.g)}`, px + L.panelW / 2, py + 6, { align: "center", weight: "bold", size: FONT_SIZE_SMALL });
+      for (let dr = -1; dr <= 1; dr++) {
+        for (let dc = -1; dc <= 1; dc++) {
+          const v = win[p.r - 1 + dr]?.[p.c - 1 + dc];
+          const x = gx0 + (dc + 1) * L.cell;
+          const y = gy0 + (dr + 1) * L.cell;
+          ctx.fillStyle = typeof v === "number" ? cellShade(v, lo, hi).fill : COLORS.background;
+          ctx.fillRect(x, y, L.cell, L.cell);
+          ctx.strokeStyle = dr === 0 && dc === 0 ? COLORS.frameStroke : COLORS.grid;
+          ctx.lineWidth = dr === 0 && dc === 0 ? 2 : 1;
+          ctx.strokeRect(x + 0.5, y + 0.5, L.cell - 1, L.cell - 1);
+          text(ctx, fmt(v), x + 3, y + 3, { size: 9.5, baseline: "top", halo: true });
+        }
+      }
+      const centre = (d) => [gx0 + (d[0] + 1.5) * L.cell, gy0 + (d[1] + 1.5) * L.cell];
+      DIRECTIONS.forEach((dir, k) => {
+        const [x0, y0] = centre(dir.from);
+        const [x1, y1] = centre(dir.to);
+        const shrink = 0.28;
+        arrow(ctx, x0 + (x1 - x0) * shrink, y0 + (y1 - y0) * shrink, x1 - (x1 - x0) * shrink, y1 - (y1 - y0) * shrink, { color: dir.color, width: 2, size: 6 });
+        const diff = p.diffs[k];
+        const a = win[p.r - 1 + dir.to[1]]?.[p.c - 1 + dir.to[0]];
+        const b = win[p.r - 1 + dir.from[1]]?.[p.c - 1 + dir.from[0]];
+        const sub = typeof b === "number" && b < 0 ? `(${fmt(b)})` : fmt(b);
+        text(ctx, `${dir.name}: (${fmt(a)} − ${sub})² = ${fmt(diff * diff)}`, px + 8, gy0 + 3 * L.cell + 12 + k * FONT_SIZE_SMALL * LINE_HEIGHT, { size: FONT_SIZE_SMALL, color: dir.color });
+      });
+      text(ctx, `sum = ${fmt(p.sum)}`, px + 8, gy0 + 3 * L.cell + 14 + 4 * FONT_SIZE_SMALL * LINE_HEIGHT, { size: FONT_SIZE_SMALL, weight: "bold" });
+    });
+    const note = total > shown.length ? `  (the ${shown.length} largest of ${total} interior pixels)` : "";
+    text(ctx, `mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { size: FONT_SIZE, weight: "bold" });
+  },
+};
+
+// ---------------------------------------------------------------------------
+// The test pattern: window, ellipse, candidates, interest points
+
+function imageLayout(width, img) {
+  const side = img.length;
+  const avail = Math.min(width - 2 * IMAGE.margin, IMAGE.maxSide);
+  const cell = Math.max(2, Math.floor(avail / side));
+  return { cell, side, x0: Math.floor((width - side * cell) / 2), y0: IMAGE.margin };
+}
+
+const imageSpec = {
+  caption:
+    "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression.",
+  height(width, solution) {
+    const img = stepValue(solution, "image");
+    if (!isMatrix(img)) return 120;
+    const L = imageLayout(width, img);
+    return L.side * L.cell + 2 * IMAGE.margin + IMAGE.legend;
+  },
+  describe(solution) {
+    const r = solution.result ?? {};
+    const inp = solution.inputs ?? {};
+    const pts = Array.isArray(r.points) ? r.points : [];
+    return `Test pattern 64×64; ${inp.window_size}×${inp.window_size} window at (c, r) = (${inp.c}, ${inp.r}): case ${r.case}, w = ${fmt(r.w)}, q = ${fmt(r.q)}. ${r.candidates} pixels pass the threshold, ${pts.length} interest points after suppression: ${pts.map((p) => `(${p[0]}, ${p[1]})`).join(", ")}.`;
+  },
+  draw(ctx, width, height, solution) {
+    const img = stepValue(solution, "image");
+    if (!isMatrix(img)) return;
+    const r = solution.result ?? {};
+    const inp = solution.inputs ?? {};
+    const L = imageLayout(width, img);
+    const X = (c) => L.x0 + c * L.cell; // c zero-based, left edge of the pixel
+    const Y = (rr) => L.y0 + rr * L.cell;
+    for (let rr = 0; rr < L.side; rr++) {
+      for (let c = 0; c < L.side; c++) {
+        const g = Math.max(0, Math.min(255, Math.round(img[rr][c])));
+        ctx.fillStyle = `rgb(${g},${g},${g})`;
+        ctx.fillRect(X(c), Y(rr), L.cell + 0.5, L.cell + 0.5);
+      }
+    }
+    const cands = stepValue(solution, "candidates");
+    if (isMatrix(cands)) for (const p of cands) dot(ctx, X(p[0] - 0.5), Y(p[1] - 0.5), Math.max(1.2, L.cell * 0.16), COLORS.highlight);
+    const pts = Array.isArray(r.points) ? r.points : [];
+    for (const p of pts) {
+      ctx.save();
+      ctx.strokeStyle = "#ffffff";
+      ctx.lineWidth = 4;
+      ctx.beginPath();
+      ctx.arc(X(p[0] - 0.5), Y(p[1] - 0.5), Math.max(4, L.cell * 0.9), 0, 2 * Math.PI);
+      ctx.stroke();
+      ctx.strokeStyle = COLORS.point;
+      ctx.lineWidth = 2;
+      ctx.stroke();
+      ctx.restore();
+    }
+    // the window and its magnified ellipse
+    const size = finite(inp.window_size, 5);
+    const half = Math.floor(size / 2);
+    const c0 = finite(inp.c, 1) - 1;
+    const r0 = finite(inp.r, 1) - 1;
+    ctx.save();
+    ctx.strokeStyle = "#ffffff";
+    ctx.lineWidth = 4;
+    ctx.strokeRect(X(c0 - half), Y(r0 - half), size * L.cell, size * L.cell);
+    ctx.strokeStyle = COLORS.highlight;
+    ctx.lineWidth = 2;
+    ctx.strokeRect(X(c0 - half), Y(r0 - half), size * L.cell, size * L.cell);
+    ctx.restore();
+    const T = finite(inp.threshold_px, 0.5);
+    const cx = X(c0 + 0.5);
+    const cy = Y(r0 + 0.5);
+    const rT = (half + IMAGE.tRadiusCells) * L.cell;
+    drawEllipse(ctx, cx, cy, rT / T, r, rT * IMAGE.clip);
+    ctx.save();
+    ctx.strokeStyle = "#ffffff";
+    ctx.setLineDash([...DASH]);
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    ctx.arc(cx, cy, rT, 0, 2 * Math.PI);
+    ctx.stroke();
+    ctx.restore();
+    const magnification = rT / T / L.cell;
+    const y = L.y0 + L.side * L.cell + 14;
+    const lh = FONT_SIZE * LINE_HEIGHT + 2;
+    text(ctx, `window (${inp.c}, ${inp.r}), ${size}×${size}: ${r.case} · w = ${fmt(r.w)} · q = ${fmt(r.q)}`, IMAGE.margin, y, { size: FONT_SIZE, weight: "bold" });
+    text(ctx, `${r.candidates} pixels pass the threshold (orange dots) · ${pts.length} interest points (purple rings)`, IMAGE.margin, y + lh, { size: FONT_SIZE_SMALL });
+    text(ctx, `ellipse magnified ×${fmt(magnification, 3)}: the dashed circle is T = ${fmt(T)} px · c → 1…64, r ↓ 1…64`, IMAGE.margin, y + 2 * lh, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+  },
+};
+
+const fromResult = (solution) => ({ window: solution.inputs?.window, gx: solution.result?.gx, gy: solution.result?.gy });
+const fromImage = (solution) => ({ window: solution.result?.window, gx: solution.result?.gx, gy: solution.result?.gy });
+
+export const figures = {
+  "forstner-window": [windowSpec(fromResult), ellipseSpec],
+  "moravec-window": moravecSpec,
+  "forstner-image": [imageSpec, windowSpec(fromImage), ellipseSpec],
+};
