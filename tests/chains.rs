@@ -219,7 +219,7 @@ fn example_18_b_length_with_diagonals() {
     assert!(has_note(&s, NoteKind::Convention, "Example 18 (b)"));
     let keys: Vec<_> = s.result.keys().collect();
     assert_eq!(&keys[..4], ["length", "horizontal", "vertical", "diagonal"]);
-    let last = s.steps.last().unwrap();
+    let last = s.steps.iter().find(|t| t.title == "Length").unwrap();
     assert!(last
         .substituted
         .contains(r"L = 4 + 4 + \sqrt{2} \times 9 = 20.72792"));
@@ -242,12 +242,8 @@ fn example_18_a_length_of_a_4_connected_edge() {
     let t = s.textbook.as_ref().unwrap();
     assert_eq!(t.number("length"), Some(23.0));
     assert_eq!(t.number("pixel_count"), Some(24.0));
-    assert!(s
-        .steps
-        .last()
-        .unwrap()
-        .substituted
-        .contains("L = 24 - 1 = 23"));
+    let step = s.steps.iter().find(|t| t.title == "Length").unwrap();
+    assert!(step.substituted.contains("L = 24 - 1 = 23"));
     // the same edge given by its pixels is recognised too
     let pixels = s.result.get("pixels").unwrap().clone();
     let s2 = solve(
@@ -676,6 +672,16 @@ fn closed_boundaries_single_pixels_and_near_misses() {
     assert_eq!(result_numbers(&s, "differential"), [6.0, 6.0, 6.0, 6.0]);
     let l = solve("boundary-length", &Record::new().with("pixels", px(&sq))).unwrap();
     assert_eq!(num(&l, "length"), 4.0);
+    // a closed shape also gets its descriptors, from the same core function
+    assert!((num(&s, "diameter") - 2f64.sqrt()).abs() < 1e-15);
+    assert!((num(&s, "eccentricity") - 1.0).abs() < 1e-12);
+    assert_eq!(num(&s, "length"), 4.0);
+    assert!((num(&l, "minor_axis_length") - 2f64.sqrt()).abs() < 1e-12);
+    assert_eq!(result_numbers(&l, "differential"), [6.0, 6.0, 6.0, 6.0]);
+    assert!(s.labels.get("eccentricity").is_some());
+    // an open edge has none
+    let open = solve("chain-code", &Record::new()).unwrap();
+    assert!(open.result.get("diameter").is_none());
     // not closed, but could be: a hint
     let s = solve("chain-code", &Record::new().with("pixels", px(&sq[..4]))).unwrap();
     assert_eq!(s.result.get("closed"), Some(&Value::Bool(false)));

@@ -803,7 +803,119 @@ fn conn_note(s: &mut Solution, conn: Connectivity) {
     }
 }
 
+/// The descriptors of a closed boundary as result keys.
+fn set_shape(result: &mut Record, sh: &chain::Shape) {
+    result.set("diameter", sh.diameter);
+    result.set("major_axis", pixel_value(&sh.major_axis));
+    result.set("minor_axis_length", sh.minor_axis_length);
+    result.set(
+        "basic_rectangle",
+        Value::List(sh.basic_rectangle.iter().map(|p| point_value(*p)).collect()),
+    );
+    result.set("eccentricity", sh.eccentricity);
+    result.set(
+        "minor_axis",
+        Value::List(sh.minor_axis.iter().map(|p| point_value(*p)).collect()),
+    );
+}
+
+/// One step with the descriptors of a closed boundary, for the examples
+/// whose subject is the code or the length (`boundary-shape` has a step each).
+fn shape_summary_step(sh: &chain::Shape) -> Step {
+    let [a, b] = sh.major_axis;
+    let e = sh
+        .eccentricity
+        .map_or(r"\text{no value (}m = 0\text{)}".to_string(), num);
+    Step::new(
+        "Shape of the closed boundary",
+        "The descriptors of seed 000 for this boundary (the example “Boundary descriptors” shows each step): the diameter D between the two farthest pixels (the major axis), the width m across it (the minor axis), the basic rectangle D × m, and the eccentricity D / m.",
+    )
+    .formula(
+        r"D = \max_{i,j} \lVert p_i - p_j \rVert,\quad m = t_{\max} - t_{\min},\quad E = \frac{D}{m}",
+        format!(
+            r"D = \lVert {} - {} \rVert = {},\quad m = {},\quad E = {}",
+            pixel_tex(b),
+            pixel_tex(a),
+            num(sh.diameter),
+            num(sh.minor_axis_length),
+            e
+        ),
+    )
+    .value("diameter", sh.diameter)
+    .value("minor_axis_length", sh.minor_axis_length)
+    .value("eccentricity", sh.eccentricity)
+}
+
+/// What each result key means, for the result table.
+fn label_results(s: &mut Solution, conn: Connectivity) {
+    let digits = match conn {
+        Connectivity::Eight => "Chain code (digits 1–8)",
+        Connectivity::Four => "Chain code (digits 1–4)",
+    };
+    for (key, label, unit) in [
+        ("code", digits, ""),
+        ("differential", "Differential chain code", ""),
+        ("differences", "Differences before mod", ""),
+        ("pixels", "Pixels [c, r] in coding order", ""),
+        ("closed", "Closed boundary", ""),
+        ("breaks", "Breaks [k, c, r, c′, r′]: pixel k to k+1", ""),
+        ("branches", "Repeated pixels [k, first k, c, r]", ""),
+        ("regions", "Regions", ""),
+        ("length", "Length L", "px"),
+        ("horizontal", "Horizontal steps n_h", ""),
+        ("vertical", "Vertical steps n_v", ""),
+        ("diagonal", "Diagonal steps n_d", ""),
+        ("pixel_count", "Pixels N", ""),
+        ("diameter", "Diameter D", "px"),
+        ("major_axis", "Major axis (end pixels [c, r])", ""),
+        ("minor_axis_length", "Minor axis length m", "px"),
+        ("basic_rectangle", "Basic rectangle (corners [c, r])", ""),
+        ("eccentricity", "Eccentricity E = D / m", ""),
+        ("minor_axis", "Minor axis (ends [c, r])", ""),
+        ("boundary", "Traced boundary [c, r]", ""),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, unit);
+        }
+    }
+}
+
 // ---------------------------------------------------------------- solvers
+
+/// The step that adds up a length.
+fn length_step(l: &chain::Length, conn: Connectivity, p: &Path) -> Step {
+    let positions = p.pixels.len() + usize::from(p.closed);
+    let step = match conn {
+        Connectivity::Four if !p.closed => Step::new(
+            "Length",
+            "A 4-connected edge: every step is one pixel side, so the length is the number of pixels minus 1.",
+        )
+        .formula(
+            "L = N - 1",
+            format!("L = {} - 1 = {}", positions, num(l.length)),
+        ),
+        Connectivity::Four => Step::new(
+            "Length",
+            "A closed 4-connected boundary: one step per pixel, the last one back to the start, so the length is the number of pixels.",
+        )
+        .formula("L = N", format!("L = {}", num(l.length))),
+        Connectivity::Eight => Step::new(
+            "Length",
+            "Horizontal and vertical steps count 1, diagonal steps √2 (the diagonal of a pixel).",
+        )
+        .formula(
+            r"L = n_h + n_v + \sqrt{2}\, n_d",
+            format!(
+                r"L = {} + {} + \sqrt{{2}} \times {} = {}",
+                l.horizontal,
+                l.vertical,
+                l.diagonal,
+                num(l.length)
+            ),
+        ),
+    };
+    step.value("length", l.length)
+}
 
 fn is_code_input(inputs: &Record, code: &[u8], conn: &str) -> bool {
     text(inputs, "given").is_ok_and(|g| g == "code")
@@ -858,14 +970,24 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
                     .collect(),
             ),
         );
+        let l = chain::length(code, conn);
+        s.step(length_step(&l, conn, p));
+        s.result.set("length", l.length);
+        if p.closed {
+            let sh = chain::shape("pixels", &p.pixels)?;
+            s.step(shape_summary_step(&sh));
+            set_shape(&mut s.result, &sh);
+        }
     } else {
         s.step(broken_step(p));
+        s.result.set("length", Value::Null);
     }
     s.result.set("breaks", breaks_value(p));
     s.result.set("branches", branches_value(p));
     if e.given == Given::Region {
         s.result.set("regions", e.regions.len());
     }
+    label_results(&mut s, conn);
     problems(&mut s, p, conn);
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);
@@ -930,7 +1052,6 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
     s.result.set("horizontal", Value::Null);
     s.result.set("vertical", Value::Null);
     s.result.set("diagonal", Value::Null);
-    let positions = p.pixels.len() + usize::from(p.closed);
     s.result.set("pixel_count", p.pixels.len());
     if let Some(code) = &p.code {
         s.step(code_step(p, code));
@@ -954,52 +1075,37 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
             .value("vertical", l.vertical)
             .value("diagonal", l.diagonal),
         );
-        let step = match conn {
-            Connectivity::Four if !p.closed => Step::new(
-                "Length",
-                "A 4-connected edge: every step is one pixel side, so the length is the number of pixels minus 1.",
-            )
-            .formula(
-                "L = N - 1",
-                format!("L = {} - 1 = {}", positions, num(l.length)),
-            ),
-            Connectivity::Four => Step::new(
-                "Length",
-                "A closed 4-connected boundary: one step per pixel, the last one back to the start, so the length is the number of pixels.",
-            )
-            .formula("L = N", format!("L = {}", num(l.length))),
-            Connectivity::Eight => Step::new(
-                "Length",
-                "Horizontal and vertical steps count 1, diagonal steps √2 (the diagonal of a pixel).",
-            )
-            .formula(
-                r"L = n_h + n_v + \sqrt{2}\, n_d",
-                format!(
-                    r"L = {} + {} + \sqrt{{2}} \times {} = {}",
-                    l.horizontal,
-                    l.vertical,
-                    l.diagonal,
-                    num(l.length)
-                ),
-            ),
-        };
-        s.step(step.value("length", l.length));
+        s.step(length_step(&l, conn, p));
         s.result.set("length", l.length);
         s.result.set("horizontal", l.horizontal);
         s.result.set("vertical", l.vertical);
         s.result.set("diagonal", l.diagonal);
         s.result.set("code", digits_value(code));
+        let d = chain::differential(code, conn, p.closed);
+        let [_, dcode] = differential_steps(&d, p.closed, conn);
+        s.step(dcode);
+        s.result.set("differential", digits_value(&d.code));
+        if p.closed {
+            let sh = chain::shape("pixels", &p.pixels)?;
+            s.step(shape_summary_step(&sh));
+            set_shape(&mut s.result, &sh);
+        }
     } else {
         s.step(broken_step(p));
         s.result.set("code", Value::Null);
+        s.result.set("differential", Value::Null);
     }
     s.result.set("pixels", pixel_value(&p.pixels));
     s.result.set("closed", p.closed);
     s.result.set("breaks", breaks_value(p));
     s.result.set("branches", branches_value(p));
+    if e.given == Given::Region {
+        s.result.set("regions", e.regions.len());
+    }
     problems(&mut s, p, conn);
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);
+    label_results(&mut s, conn);
     if p.closed && p.code.is_some() {
         s.note(
             NoteKind::Convention,
@@ -1153,19 +1259,39 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
             )
             .value("eccentricity", Value::Null),
     });
-    s.result = Record::new()
-        .with("diameter", sh.diameter)
-        .with("major_axis", pixel_value(&sh.major_axis))
-        .with("minor_axis_length", sh.minor_axis_length)
-        .with("basic_rectangle", rect)
-        .with("eccentricity", sh.eccentricity)
-        .with(
-            "minor_axis",
-            Value::List(sh.minor_axis.iter().map(|p| point_value(*p)).collect()),
+    s.result = Record::new();
+    set_shape(&mut s.result, &sh);
+    let code = e.path.code.clone().unwrap_or_default();
+    let d = chain::differential(&code, conn, e.path.closed);
+    let l = chain::length(&code, conn);
+    s.step(
+        Step::new(
+            "Code and length of the traced boundary",
+            "The traced boundary's chain code (closed: the last digit leads back to the start), its differential code (the first element from the last and the first digit) and its length (axial steps 1, diagonal steps √2).",
         )
-        .with("boundary", pixel_value(b))
-        .with("code", digits_value(e.path.code.as_deref().unwrap_or(&[])))
-        .with("regions", e.regions.len());
+        .formula(
+            r"a,\quad d_k = (a_k - a_{k-1}) \bmod n,\quad L = n_h + n_v + \sqrt{2}\, n_d",
+            format!(
+                r"a = {},\quad d = {},\quad L = {} + {} + \sqrt{{2}} \times {} = {}",
+                digits_tex(&code),
+                digits_tex(&d.code),
+                l.horizontal,
+                l.vertical,
+                l.diagonal,
+                num(l.length)
+            ),
+        )
+        .value("code", digits_value(&code))
+        .value("differential", digits_value(&d.code))
+        .value("length", l.length),
+    );
+    s.result.set("boundary", pixel_value(b));
+    s.result.set("code", digits_value(&code));
+    s.result.set("differential", digits_value(&d.code));
+    s.result.set("length", l.length);
+    s.result.set("closed", e.path.closed);
+    s.result.set("regions", e.regions.len());
+    label_results(&mut s, conn);
     if sh.eccentricity.is_none() {
         s.note(
             NoteKind::Warning,
