@@ -176,7 +176,15 @@ function buildView(entry) {
   children.push(el("header", { class: "example-head" }, heading, meta, summary), urlNotice, errorBox, staleBanner, solutionArea);
   const article = el("article", { class: "example", "data-id": id }, children);
   root.replaceChildren(article);
-  if (figureSection) v.figure = mountFigures(figureHost, id);
+  if (figureSection) {
+    // a figure may edit inputs (a click on a drawing grid, a preset button)
+    const setInputs = (texts) => {
+      if (view !== v) return;
+      v.form.set(texts);
+      recompute();
+    };
+    v.figure = mountFigures(figureHost, id, { setInputs });
+  }
 
   v.parts = { heading, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
   document.title = `${entry.title} — ${SITE_TITLE}`;

@@ -461,19 +461,26 @@ fn pixel_tex(p: Pixel) -> String {
     format!("({},{})", p[0], p[1])
 }
 
-fn list_tex<T>(items: &[T], f: impl Fn(&T) -> String, sep: &str) -> String {
-    let mut s: Vec<String> = items.iter().take(SHOW).map(f).collect();
+/// Items for LaTeX, `per_line` to a line (a `gathered` block when more than
+/// one), at most [`SHOW`] of them.
+fn list_tex<T>(items: &[T], f: impl Fn(&T) -> String, sep: &str, per_line: usize) -> String {
+    let shown: Vec<String> = items.iter().take(SHOW).map(f).collect();
+    let mut lines: Vec<String> = shown.chunks(per_line.max(1)).map(|c| c.join(sep)).collect();
     if items.len() > SHOW {
-        s.push(format!(r"\ldots\ (\text{{{} in all}})", items.len()));
+        lines.push(format!(r"\ldots\ (\text{{{} in all}})", items.len()));
     }
-    s.join(sep)
+    if lines.len() > 1 {
+        format!(r"\begin{{gathered}}{}\end{{gathered}}", lines.join(r" \\ "))
+    } else {
+        lines.concat()
+    }
 }
 
 fn digits_tex(code: &[u8]) -> String {
     if code.is_empty() {
         return r"\text{(empty)}".to_string();
     }
-    list_tex(code, |d| d.to_string(), r"\;")
+    list_tex(code, |d| d.to_string(), r"\;", 24)
 }
 
 fn pixel_text(p: Pixel) -> String {
@@ -488,7 +495,7 @@ fn edge_step(e: &Edge, conn: Connectivity, inputs: &Record) -> Result<Step> {
     } else {
         "open edge"
     };
-    let shown = list_tex(&p.pixels, |q| pixel_tex(*q), r"\;");
+    let shown = list_tex(&p.pixels, |q| pixel_tex(*q), r"\;", 8);
     let step = match e.given {
         Given::Pixels => Step::new(
             "The edge",
@@ -549,7 +556,14 @@ fn numbering_step(conn: Connectivity) -> Step {
             "With 4-connectivity only the four axial steps are allowed: 1 east, 2 north, 3 west, 4 south, counter-clockwise as in the 8-connectivity figure.",
         ),
     };
-    Step::new("Direction numbers", text).formula(formula, formula.to_string())
+    let steps: Vec<String> = (1..=conn.directions())
+        .filter_map(|d| {
+            conn.step(d)
+                .map(|(dc, dr)| format!(r"\Delta({d}) = ({dc},{dr})"))
+        })
+        .collect();
+    Step::new("Direction numbers", text)
+        .formula(formula, list_tex(&steps, String::clone, r",\ ", 4))
 }
 
 fn code_step(path: &Path, code: &[u8]) -> Step {
@@ -591,7 +605,7 @@ fn reverse_step(forward: &[u8], code: &[u8], conn: Connectivity) -> Step {
 
 fn differential_steps(d: &chain::Differential, closed: bool, conn: Connectivity) -> [Step; 2] {
     let n = conn.directions();
-    let diffs = list_tex(&d.differences, |x| tex(*x as f64), r"\;");
+    let diffs = list_tex(&d.differences, |x| tex(*x as f64), r"\;", 20);
     let first = if closed {
         "For a closed boundary the first element is the first digit minus the last; then each"
     } else {
@@ -754,6 +768,7 @@ fn broken_step(path: &Path) -> Step {
             )
         },
         r",\quad ",
+        2,
     );
     Step::new(
         "The path breaks",
@@ -1229,6 +1244,7 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
                 &sh.basic_rectangle,
                 |p| format!("({},\\ {})", num(p[0]), num(p[1])),
                 r"\;",
+                2,
             ),
         )
         .value("basic_rectangle", rect.clone()),

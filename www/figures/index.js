@@ -12,17 +12,28 @@
 //     },
 //   };
 //
-// and is registered with one line below. The page calls mountFigures(host, id)
+// Two optional members let a figure edit the inputs (the page then sets those
+// fields' texts and solves again, as if typed):
+//
+//     onPointer(x, y, width, height, solution) { return { pixels: "1 4; 2 4" }; }
+//       a click or tap at (x, y) CSS px on the canvas; returns { key: text }
+//       for the fields to change, or null for none;
+//     actions: [{ label: "Circle", inputs(solution) { return { … }; } }]
+//       buttons under the canvas, each setting the fields it returns.
+//
+// The figure is registered with one line below. The page calls mountFigures(host, id)
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { figures as coordinates } from "./coordinates.js";
 import { figures as interest } from "./interest.js";
+import { figures as chains } from "./chains.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
   ...coordinates,
   ...interest,
+  ...chains,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -81,9 +92,13 @@ function paint(panel, solution) {
  * Puts the example's canvases into `host`.
  * @returns {{ update(solution): void, redraw(): void, destroy(): void } | null}
  */
-export function mountFigures(host, id) {
+export function mountFigures(host, id, { setInputs = null } = {}) {
   const specs = specsFor(id);
   if (!specs.length) return null;
+  let solution = null;
+  const edit = (texts) => {
+    if (setInputs && texts && typeof texts === "object") setInputs(texts);
+  };
   const panels = specs.map((spec) => {
     const canvas = document.createElement("canvas");
     canvas.className = "figure-canvas";
@@ -92,6 +107,38 @@ export function mountFigures(host, id) {
     const figure = document.createElement("figure");
     figure.className = "figure-panel";
     figure.append(canvas);
+    if (typeof spec.onPointer === "function" && setInputs) {
+      canvas.classList.add("figure-interactive");
+      canvas.addEventListener("click", (e) => {
+        if (!solution) return;
+        const box = canvas.getBoundingClientRect();
+        try {
+          edit(spec.onPointer(e.clientX - box.left, e.clientY - box.top, box.width, box.height, solution));
+        } catch (err) {
+          console.error("figure pointer failed", err);
+        }
+      });
+    }
+    if (Array.isArray(spec.actions) && spec.actions.length && setInputs) {
+      const bar = document.createElement("div");
+      bar.className = "figure-actions";
+      for (const action of spec.actions) {
+        const button = document.createElement("button");
+        button.type = "button";
+        button.className = "button";
+        button.textContent = action.label;
+        if (action.title) button.title = action.title;
+        button.addEventListener("click", () => {
+          try {
+            edit(action.inputs(solution));
+          } catch (err) {
+            console.error("figure action failed", err);
+          }
+        });
+        bar.append(button);
+      }
+      figure.append(bar);
+    }
     if (spec.caption) {
       const caption = document.createElement("figcaption");
       caption.textContent = spec.caption;
@@ -101,7 +148,6 @@ export function mountFigures(host, id) {
     return { spec, canvas, figure, drawn: null };
   });
 
-  let solution = null;
   const redraw = () => panels.forEach((p) => paint(p, solution));
   const onResize = () => {
     // repaint only when the width or the pixel ratio changed (the height follows the width)
