@@ -17,6 +17,7 @@
 //! - [`filter`]: kernels (smoothing, Laplacian, sharpening, edges), median,
 //!   gradients and magnitude, with a border policy.
 //! - [`correlation`]: normalized cross-correlation (1-D, 2-D, surfaces) and subpixel peaks.
+//! - [`chain`]: Freeman chain codes, boundary tracing, boundary descriptors.
 //! - [`interest`]: the Förstner and Moravec interest operators, on a window
 //!   and as whole-image maps with thresholding and suppression.
 //! - [`transform`]: 2-D transformations estimated from point pairs by least squares.
@@ -25,6 +26,7 @@
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
 //!   `parse_inputs`); the only file that knows about JavaScript.
 
+pub mod chain;
 pub mod coords;
 pub mod correlation;
 pub mod error;

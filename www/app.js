@@ -177,8 +177,10 @@ function buildView(entry) {
   const article = el("article", { class: "example", "data-id": id }, children);
   root.replaceChildren(article);
   if (figureSection) {
-    const onInputs = (changes) => {
-      v.form.setAll({ ...v.form.texts(), ...changes });
+    // a figure may edit inputs (a click on a grid or a window, a key, a preset button)
+    const onInputs = (texts) => {
+      if (view !== v) return;
+      v.form.set(texts);
       recompute();
     };
     v.figure = mountFigures(figureHost, id, { onInputs });

@@ -172,6 +172,10 @@ export function buildForm(entry, onInput) {
     /** All texts in field order, as [key, text] pairs. */
     entries: () => [...controls].map(([key, c]) => [key, c.getText()]),
     texts: () => Object.fromEntries([...controls].map(([key, c]) => [key, c.getText()])),
+    /** Sets only the fields named in `texts` (keys the form lacks are ignored). */
+    set(texts) {
+      for (const [key, t] of Object.entries(texts || {})) if (controls.has(key)) controls.get(key).setText(t);
+    },
     /** Sets every field: from `texts` where given, else the seed's value. */
     setAll(texts) {
       for (const [key, c] of controls) c.setText(Object.hasOwn(texts, key) ? texts[key] : c.seedText);

@@ -9,6 +9,7 @@
 //! `fn solve(inputs: &Record) -> Result<Solution>` in its topic file, list it
 //! in that file's `entries()`, and remove it from [`coming`].
 
+pub mod chains;
 pub mod coordinates;
 pub mod correlation;
 pub mod fields;
@@ -74,23 +75,12 @@ impl Entry {
 
 /// Entries of the catalog that are not built yet.
 fn coming() -> Vec<Entry> {
-    const B: &str = "Chain codes and boundaries";
-    vec![
-        Entry::coming(
-            "chain-code",
-            "Freeman chain code",
-            B,
-            "Seed 000, Example 17",
-        ),
-        Entry::coming(
-            "boundary-length",
-            "Boundary length",
-            B,
-            "Seed 000, Example 18",
-        ),
-        Entry::coming("boundary-shape", "Boundary descriptors", B, "Seed 000"),
-        Entry::coming("utm", "UTM coordinates", "Map projection", "Seed 004"),
-    ]
+    vec![Entry::coming(
+        "utm",
+        "UTM coordinates",
+        "Map projection",
+        "Seed 004",
+    )]
 }
 
 /// Every entry, grouped by topic in [`TOPICS`] order.
@@ -100,6 +90,7 @@ pub fn entries() -> Vec<Entry> {
     all.extend(resampling::entries());
     all.extend(filters::entries());
     all.extend(correlation::entries());
+    all.extend(chains::entries());
     all.extend(interest::entries());
     all.extend(transformations::entries());
     all.extend(coming());

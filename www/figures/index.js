@@ -53,6 +53,10 @@
 // and describe(solution, { selected }) — so one figure can highlight what
 // another shows. `selected` is the item's index or null.
 //
+// Optional: `actions: [{ label: "Circle", title, inputs(solution) { return { … }; } }]`,
+// buttons under the canvas, each setting the input texts it returns (as if
+// typed) and solving again.
+//
 // The page calls mountFigures(host, id, { onInputs })
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
@@ -64,6 +68,7 @@ import { figures as filters } from "./filters.js";
 import { figures as resampling } from "./resampling.js";
 import { figures as matching } from "./matching.js";
 import { figures as transformations } from "./transformations.js";
+import { figures as chains } from "./chains.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
 const REGISTRY = Object.freeze({
@@ -74,6 +79,7 @@ const REGISTRY = Object.freeze({
   ...filters,
   ...matching,
   ...transformations,
+  ...chains,
 });
 
 /** Heights are kept within these bounds (CSS px). */
@@ -158,6 +164,7 @@ function interactive(spec, canvas, figure, current, onInputs) {
     }
   };
   canvas.addEventListener("pointerdown", (e) => {
+    if (e.button !== 0) return;
     pressed = true;
     if (interact.drag) canvas.setPointerCapture(e.pointerId);
     apply(fromEvent(e));
@@ -233,6 +240,9 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   if (!specs.length) return null;
   let solution = null;
   const shared = { selected: null, pinned: false };
+  const edit = (texts) => {
+    if (onInputs && texts && typeof texts === "object" && Object.keys(texts).length) onInputs(texts);
+  };
   const panels = specs.map((spec) => {
     const canvas = document.createElement("canvas");
     canvas.className = "figure-canvas";
@@ -241,6 +251,26 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     const figure = document.createElement("figure");
     figure.className = "figure-panel";
     figure.append(canvas);
+    if (Array.isArray(spec.actions) && spec.actions.length && onInputs) {
+      const bar = document.createElement("div");
+      bar.className = "figure-actions";
+      for (const action of spec.actions) {
+        const button = document.createElement("button");
+        button.type = "button";
+        button.className = "button";
+        button.textContent = action.label;
+        if (action.title) button.title = action.title;
+        button.addEventListener("click", () => {
+          try {
+            edit(action.inputs(solution));
+          } catch (err) {
+            console.error("figure action failed", err);
+          }
+        });
+        bar.append(button);
+      }
+      figure.append(bar);
+    }
     if (spec.caption) {
       const caption = document.createElement("figcaption");
       caption.textContent = spec.caption;
