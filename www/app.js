@@ -103,7 +103,13 @@ function showHome() {
         { class: "intro" },
         "Worked examples of digital photogrammetry and image processing, solved step by step with every intermediate number. Choose an example, change any input, and the whole solution follows at once; the address holds the inputs, so a what-if is a link.",
       ),
-      el("p", { class: "muted" }, `${ready} of ${entries.length} examples are ready; the others are marked “coming”.`),
+      el(
+        "p",
+        { class: "muted" },
+        ready === entries.length
+          ? `All ${ready} examples are ready.`
+          : `${ready} of ${entries.length} examples are ready; ${entries.length - ready === 1 ? "the other is" : "the others are"} marked “coming”.`,
+      ),
       catalogNav({ detailed: true }),
     ),
   );
