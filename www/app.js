@@ -13,7 +13,7 @@ import { buildHash, parseHash } from "./url.js";
 import { el } from "./dom.js";
 import { buildForm } from "./form.js";
 import { renderNotes, renderResult, renderSteps } from "./render.js";
-import { hasFigure, mountFigures } from "./figures/index.js";
+import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 
 /** Topics in page order (docs/API.md); unknown topics follow in catalog order. */
@@ -333,8 +333,9 @@ function quoteKey(key) {
 // ---------------------------------------------------------------------------
 // Routing
 
-function route({ focus = false } = {}) {
-  const { id, params } = parseHash(location.hash);
+async function route({ focus = false } = {}) {
+  const hash = location.hash;
+  const { id, params } = parseHash(hash);
   if (!id) {
     showHome();
     return;
@@ -347,6 +348,11 @@ function route({ focus = false } = {}) {
   if (entry.status !== "ready") {
     showMessage(entry.title, `This example (${entry.source ?? entry.topic}) is coming: it is not built yet.`);
     return;
+  }
+  if (!(view && view.id === id)) {
+    if (figuresPending(entry.topic)) setStatus("loading");
+    await loadFigures(entry.topic);
+    if (location.hash !== hash) return; // the reader moved on; that hashchange routes
   }
   const v = view && view.id === id ? view : buildView(entry);
   const texts = {};
@@ -392,8 +398,13 @@ async function main() {
     setStatus("fatal");
     return;
   }
-  window.addEventListener("hashchange", () => route({ focus: true }));
-  route();
+  const go = (options) =>
+    route(options).catch((e) => {
+      console.error(e);
+      showMessage("Something went wrong", `The example could not be shown: ${messageOf(e)}`);
+    });
+  window.addEventListener("hashchange", () => go({ focus: true }));
+  go();
 }
 
 main();

@@ -12,7 +12,7 @@
 //     },
 //   };
 //
-// and is registered with one line below.
+// and its module is listed by topic in MODULES below.
 //
 // Optional: `slider(solution)` returns { label, min, max, value } (integers)
 // or null; the panel then gets a labelled range input (keyboard-usable), and
@@ -61,26 +61,53 @@
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
-import { figures as coordinates } from "./coordinates.js";
-import { figures as correlation } from "./correlation.js";
-import { figures as interest } from "./interest.js";
-import { figures as filters } from "./filters.js";
-import { figures as resampling } from "./resampling.js";
-import { figures as matching } from "./matching.js";
-import { figures as transformations } from "./transformations.js";
-import { figures as chains } from "./chains.js";
 import { COLORS, font, FONT_SIZE } from "./draw.js";
 
-const REGISTRY = Object.freeze({
-  ...coordinates,
-  ...correlation,
-  ...interest,
-  ...resampling,
-  ...filters,
-  ...matching,
-  ...transformations,
-  ...chains,
+/**
+ * The figure module of each topic (the catalog's `topic`), loaded when an
+ * example of that topic is first shown, so a page shows its first example
+ * without fetching every topic's drawing code.
+ */
+const MODULES = Object.freeze({
+  Coordinates: () => import("./coordinates.js"),
+  Transformations: () => import("./transformations.js"),
+  Correlation: () => import("./correlation.js"),
+  "Least-squares matching": () => import("./matching.js"),
+  Resampling: () => import("./resampling.js"),
+  "Filters and edges": () => import("./filters.js"),
+  "Interest operators": () => import("./interest.js"),
+  "Chain codes and boundaries": () => import("./chains.js"),
 });
+
+/** id → spec or [spec…], filled as topic modules load. */
+const REGISTRY = {};
+const loading = new Map();
+
+/** Whether a topic's figures still have to be fetched (the page then shows "loading"). */
+export function figuresPending(topic) {
+  return Object.hasOwn(MODULES, topic) && !loading.has(topic);
+}
+
+/**
+ * Loads the figures of `topic` (once); resolves when its examples' figures
+ * are registered. A module that fails to load leaves those examples without
+ * a figure (the error is logged) and is tried again next time.
+ */
+export function loadFigures(topic) {
+  if (!Object.hasOwn(MODULES, topic)) return Promise.resolve();
+  if (!loading.has(topic)) {
+    const promise = MODULES[topic]()
+      .then((module) => {
+        Object.assign(REGISTRY, module.figures);
+      })
+      .catch((e) => {
+        loading.delete(topic);
+        console.warn(`the figures of "${topic}" could not be loaded`, e);
+      });
+    loading.set(topic, promise);
+  }
+  return loading.get(topic);
+}
 
 /** Heights are kept within these bounds (CSS px). */
 const MIN_HEIGHT = 120;
