@@ -44,6 +44,13 @@
 //! - **degenerate** when the system cannot determine the parameters: a flat
 //!   patch has no gradients, a gain driven to zero removes the geometric
 //!   columns, an affine part that folds the patch flat has no inverse.
+//!
+//! A start outside the pull-in range has no status of its own: the matching
+//! cannot know the truth. It shows as one of the above — most often *left
+//! the window* or *not converged* — or as *converged* at another optimum,
+//! which only a caller that knows the truth can tell (the `lsm-affine`
+//! example warns when estimates lie more than five standard deviations from
+//! its generated truth).
 
 use crate::error::{Error, Result};
 use crate::lsq::{self, Adjustment};

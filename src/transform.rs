@@ -449,9 +449,14 @@ pub fn check_points(model: Model, points: &[PointPair]) -> Result<()> {
             }
         }
     }
-    // Helmert and similarity are fixed by any two distinct points; every
-    // other model needs points spread in two directions.
-    if !matches!(model, Model::Helmert | Model::Similarity) {
+    // Helmert and similarity are fixed by any two distinct points and the
+    // second-order conformal map z = c1·w + c2·w² + c3 by any three (a
+    // complex Vandermonde system, regular for distinct w, on a line or not);
+    // every other model needs points spread in two directions.
+    if !matches!(
+        model,
+        Model::Helmert | Model::Similarity | Model::Conformal2
+    ) {
         let src: Vec<[f64; 2]> = points.iter().map(|p| [p.u, p.v]).collect();
         if collinear(&src) {
             return Err(err(format!(

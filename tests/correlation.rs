@@ -427,6 +427,20 @@ fn example_9_quadric_from_the_printed_rho() {
     );
     assert!(has_note(&s, NoteKind::Rounding, "3.011, 4.076"));
     assert!(has_note(&s, NoteKind::Convention, "centred"));
+    // the seed's third equation: labelled (c, r) = (4, 5) but its −0.3921 is
+    // ρ at (4, 3); it is used there (and (4, 5) holds the ninth, −0.1268)
+    assert!(
+        has_note(
+            &s,
+            NoteKind::Erratum,
+            "third equation is labelled ρ(3+1, 4+1)"
+        ),
+        "{}",
+        notes(&s)
+    );
+    let used = rows(result(&s, "rho"));
+    assert_eq!(used[0][2], -0.3921);
+    assert_eq!(used[2][2], -0.1268);
     // residuals and σ0 of the 9-equation, 6-unknown fit
     assert_eq!(nums(result(&s, "residuals")).len(), 9);
     assert_close(num(result(&s, "sigma0")), 0.145_761_576, 1e-8, "σ0");

@@ -674,8 +674,10 @@ fn collinear_points_are_refused() {
         [1.0, 1.0, 1.0, 2.0],
         [2.0, 2.0, 2.0, 4.1],
         [3.0, 3.0, 3.0, 6.0],
+        [4.0, 4.0, 4.0, 8.0],
+        [5.0, 5.0, 5.0, 10.2],
     ];
-    for model in ["affine", "pseudo-affine", "projective", "conformal-2"] {
+    for model in ["affine", "pseudo-affine", "projective", "polynomial-2"] {
         let e = err(
             "transform-fit",
             Record::new()
@@ -683,7 +685,7 @@ fn collinear_points_are_refused() {
                 .with("points", points(&line)),
         );
         assert!(
-            e.starts_with("points: all 4 points lie on one line in the source system"),
+            e.starts_with("points: all 6 points lie on one line in the source system"),
             "{model}: {e}"
         );
     }
@@ -693,6 +695,31 @@ fn collinear_points_are_refused() {
         &Record::new().with("points", points(&line))
     )
     .is_ok());
+    // and the second-order conformal map z = c1·w + c2·w² + c3 by any three
+    // distinct points: points on a line fit, and points generated from known
+    // parameters on a line are recovered
+    let truth = [0.9, 0.2, 0.01, -0.02, 5.0, -3.0];
+    let map = Transform::new(Model::Conformal2, truth.to_vec()).expect("parameters");
+    let on_line: Vec<[f64; 4]> = (0..4)
+        .map(|k| {
+            let (u, v) = (k as f64 * 10.0, k as f64 * 5.0);
+            let (x, y) = map.apply(u, v).expect("apply");
+            [u, v, x, y]
+        })
+        .collect();
+    let s = solve(
+        "transform-fit",
+        &Record::new()
+            .with("model", "conformal-2")
+            .with("points", points(&on_line)),
+    )
+    .expect("conformal-2 from points on a line");
+    assert_all_close(
+        &list(&s, "parameters"),
+        &truth,
+        1e-9,
+        "conformal-2 on a line",
+    );
     // three of four on a line: the projective model cannot be determined
     let three = [
         [0.0, 0.0, 0.0, 0.0],

@@ -66,6 +66,8 @@ fn example_11_both_readings() {
     assert!((num(&s, &["result", "first_dc"]) - 0.193_654_5).abs() < 1e-6);
     assert!((num(&s, &["result", "first_db"]) + 5.372_021).abs() < 1e-5);
     assert_eq!(num(&s, &["result", "iterations"]), 81.0);
+    assert!((num(&s, &["result", "c"]) - 3.163_852).abs() < 3e-4);
+    assert!((num(&s, &["result", "r"]) - 4.106_619).abs() < 3e-4);
     // the iteration table carries one patch per iteration for the figures
     let steps: Array = get(&s, "steps").dyn_into().unwrap();
     let table = steps
@@ -90,6 +92,12 @@ fn every_end_status_arrives() {
     assert_eq!(get(&get(&s, "result"), "converged").as_bool(), Some(false));
     let s = solve("lsm-affine", obj(r#"{"shift_c": 6, "shift_r": 0}"#)).unwrap();
     assert_eq!(text(&s, &["result", "status"]), "left-window");
+    let s = solve(
+        "lsm-affine",
+        obj(r#"{"shift_c": 3, "shift_r": 1.5, "rotation_deg": 35}"#),
+    )
+    .unwrap();
+    assert_eq!(text(&s, &["result", "status"]), "not-converged");
     let s = solve("lsm-1d", obj(r#"{"c0": 4}"#)).unwrap();
     assert_eq!(text(&s, &["result", "status"]), "left-window");
     let s = solve("lsm-affine", JsValue::UNDEFINED).unwrap();

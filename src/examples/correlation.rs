@@ -1746,6 +1746,10 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         }
     }
     if seed {
+        s.note(
+            NoteKind::Erratum,
+            "The seed's third equation is labelled ρ(3+1, 4+1) and written with c = 4, r = 5, but its value −0.3921 is ρ at c = 4, r = 3, the upper right neighbour: it should read ρ(3+1, 4−1) = a0 + a1(4) + a2(3) + a3(4)(3) + a4(4)² + a5(3)². The ninth equation is the real ρ(3+1, 4+1) = −0.1268. The seed's coefficients fit the corrected equation (see the coefficients above), so only the label and the written terms are wrong; this solution uses the corrected one.",
+        );
         let ((ce, re, rhoe), _) = example_7_exact()?;
         let e = quadric_peak(ce, re, rhoe)?;
         if let (Some(ea), Some(pa)) = (e.extremum.maximum(), printed_at) {

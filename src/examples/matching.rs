@@ -1277,7 +1277,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
     );
     s.note(
         NoteKind::Convention,
-        "The template is made from the search window with the same bilinear interpolation the matching uses, so without noise the model fits exactly and the estimates return the true values; real images also carry the interpolation's own error.",
+        "The template is made from the search window with the same bilinear interpolation the matching uses, so without noise the model fits exactly and the estimates return the true values. Real images also carry the interpolation's own error: for a template sampled from a smooth continuous texture instead, the least-squares optimum itself lies up to about 0.1 px from the true shift (measured in this project's tests).",
     );
     if m.converged() {
         if let Some(sd) = &sd {

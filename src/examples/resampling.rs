@@ -385,6 +385,11 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 num(a)
             ),
         );
+    } else {
+        s.note(
+            NoteKind::Convention,
+            "Seed 004's cubic kernel (a = −1) passes through the samples, but it does not reproduce a linear ramp between them: on grey values rising by g per pixel it is off by s(1 − s)(1 − 2s)·g at the fraction s, up to 0.096·g. Keys' a = −0.5 (choose it above) reproduces ramps exactly.",
+        );
     }
     if let Some((which, p)) = seed_case(&patch, fc, fr, c, r) {
         s.textbook = Some(

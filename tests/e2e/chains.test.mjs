@@ -113,6 +113,38 @@ describe("chain codes", () => {
     }
   });
 
+  test("drawing by keyboard: digits and arrows add a step, Backspace takes one back", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/chain-code"), "ok");
+      await page.getByRole("button", { name: "Start again" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.equal(await pixelsText(page), "1 4");
+      const canvas = page.locator(".figure-canvas");
+      await canvas.focus();
+      // digit 1 = east, 8 = south-east, then the arrow up (north = 3)
+      for (const key of ["1", "8", "ArrowUp"]) {
+        await page.keyboard.press(key);
+        assert.equal(await settled(page), "ok");
+      }
+      assert.equal(await pixelsText(page), "1 4\n2 4\n3 5\n3 4");
+      assert.match((await figure(page)).label, /Chain code 1 8 3;/);
+      assert.match(page.url(), /pixels=/);
+      await page.keyboard.press("Backspace");
+      assert.equal(await settled(page), "ok");
+      assert.equal(await pixelsText(page), "1 4\n2 4\n3 5");
+      assert.match((await figure(page)).label, /Chain code 1 8;/);
+      // a key that is no direction changes nothing
+      await page.keyboard.press("9");
+      assert.equal(await settled(page), "ok");
+      assert.equal(await pixelsText(page), "1 4\n2 4\n3 5");
+      assert.deepEqual(log.pageErrors, []);
+      assert.deepEqual(log.consoleErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("Example 18 lengths and the descriptors of drawn regions", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {

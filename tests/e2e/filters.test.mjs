@@ -100,6 +100,45 @@ describe("resampling, filters and edges", () => {
     }
   });
 
+  test("the preset buttons load the seeds' other windows and patches", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/resample"), "ok");
+      await page.getByRole("button", { name: "Example 12b" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.ok(Math.abs((await exact(page, "bilinear")) - 56.2336) < 1e-9);
+      const printed = page.locator('.result-table tr[data-key="bilinear"] td.printed');
+      assert.equal(Number(await printed.getAttribute("data-value")), 56.234);
+      assert.match(page.url(), /first_c=523/);
+      await page.getByRole("button", { name: "Example 12a" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.ok(Math.abs((await exact(page, "bilinear")) - 75.3584) < 1e-9);
+
+      assert.equal(await visit(page, env.url, "index.html", "#/filter-window"), "ok");
+      await page.getByRole("button", { name: "Example 16: Laplacian" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.equal(await exact(page, "selected"), 1 + 9 + 2 + 9 + 8 + 1 + 8 + 1 - 8 * 9);
+      assert.equal(await exact(page, "kernel_sum"), 0);
+      assert.match(await page.locator('.result-table tr[data-key="output"] td.diff').innerText(), /agrees/);
+      await page.getByRole("button", { name: "Seed 004: mean (33)" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.ok(Math.abs((await exact(page, "selected")) - 300 / 9) < 1e-12);
+      assert.equal(Number(await page.locator('.result-table tr[data-key="selected"] td.printed').getAttribute("data-value")), 33);
+      await page.getByRole("button", { name: "Example 15: Gaussian" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.equal(await page.locator('[name="kernel"]').inputValue(), "gaussian-3");
+
+      assert.equal(await visit(page, env.url, "index.html", "#/edge-window"), "ok");
+      await page.getByRole("button", { name: "Example 15: Sobel" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.equal(await page.locator('[name="operator"]').inputValue(), "sobel");
+      assert.deepEqual(log.pageErrors, []);
+      assert.deepEqual(log.consoleErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("Example 16 and the edge operators; a bad custom kernel is reported beside its field", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {

@@ -109,6 +109,89 @@ describe("interest operators", () => {
     }
   });
 
+  test("the window moves on the pattern by a click and by the arrow keys", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/forstner-image"), "ok");
+      const canvas = page.locator(".figure-canvas").first();
+      await canvas.scrollIntoViewIfNeeded();
+      const [x, y] = await page.evaluate(async () => {
+        const { loadCore } = await import("./core.js");
+        const { patternPoint } = await import("./figures/interest.js");
+        const core = await loadCore();
+        return patternPoint(document.querySelector(".figure-canvas").clientWidth, core.solve("forstner-image", {}), 16, 9);
+      });
+      await canvas.click({ position: { x, y } });
+      await waitForCell(page, "case", "edge");
+      assert.equal(await page.getByLabel(/column c/).inputValue(), "16");
+      assert.equal(await page.getByLabel(/row r/).inputValue(), "9");
+      assert.match(await page.evaluate(() => location.hash), /c=16/);
+      // the canvas keeps the focus: the arrow keys move the window by one pixel
+      await page.keyboard.press("ArrowRight");
+      await page.waitForFunction(() => document.querySelector('.field[data-key="c"] input').value === "17");
+      await page.keyboard.press("ArrowDown");
+      await page.waitForFunction(() => document.querySelector('.field[data-key="r"] input').value === "10");
+      const [fig] = await canvases(page);
+      await page.waitForFunction(() => document.querySelector(".figure-canvas").getAttribute("aria-label").includes("(c, r) = (17, 10)"));
+      assert.ok(fig.ink > fig.pixels * 0.02);
+      // the window stops at the border: c cannot go below half the window + 1
+      await page.getByLabel(/column c/).fill("3");
+      await page.waitForFunction(() => document.querySelector(".figure-canvas").getAttribute("aria-label").includes("(c, r) = (3, 10)"));
+      await canvas.focus();
+      await page.keyboard.press("ArrowLeft");
+      assert.equal(await page.getByLabel(/column c/).inputValue(), "3");
+      assert.deepEqual(log.pageErrors, []);
+      assert.deepEqual(log.consoleErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("Moravec on an 8×8 window: click or arrow to any interior pixel and see its differences", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/moravec-window"), "ok");
+      const rows = [];
+      for (let r = 0; r < 8; r++) rows.push(Array.from({ length: 8 }, (_, c) => (r === 3 && c === 5 ? 90 : 10 + ((3 * r + 5 * c) % 7))).join(" "));
+      await page.getByLabel(/Window of grey values/).fill(rows.join("\n"));
+      await page.waitForFunction(() => document.querySelector(".figure-canvas").getAttribute("aria-label").startsWith("36 interior pixels"));
+      const status = page.locator(".figure-status");
+      // by default the pixel of the largest sum: one of the bright pixel's neighbours
+      assert.match(await status.innerText(), /^Selected P\(c\d, r\d\)/);
+      const canvas = page.locator(".figure-canvas").first();
+      await canvas.scrollIntoViewIfNeeded();
+      const [x, y] = await page.evaluate(async () => {
+        const { loadCore } = await import("./core.js");
+        const { moravecPoint } = await import("./figures/interest.js");
+        const core = await loadCore();
+        const texts = { window: document.querySelector('.field[data-key="window"] textarea').value };
+        const solution = core.solve("moravec-window", core.parseInputs("moravec-window", texts).inputs);
+        return moravecPoint(document.querySelector(".figure-canvas").clientWidth, solution, 2, 2);
+      });
+      await canvas.click({ position: { x, y } });
+      assert.match(await status.innerText(), /^Selected P\(c2, r2\) = 11: sum of the four squared differences/);
+      assert.match(await canvas.getAttribute("aria-label"), /P\(c2, r2\) = 11: differences/);
+      await page.keyboard.press("ArrowRight");
+      await page.keyboard.press("ArrowDown");
+      assert.match(await status.innerText(), /^Selected P\(c3, r3\)/);
+      // an edge pixel is not interior: a click there keeps the selection
+      const [x0, y0] = await page.evaluate(async () => {
+        const { loadCore } = await import("./core.js");
+        const { moravecPoint } = await import("./figures/interest.js");
+        const core = await loadCore();
+        const texts = { window: document.querySelector('.field[data-key="window"] textarea').value };
+        const solution = core.solve("moravec-window", core.parseInputs("moravec-window", texts).inputs);
+        return moravecPoint(document.querySelector(".figure-canvas").clientWidth, solution, 1, 1);
+      });
+      await canvas.click({ position: { x: x0, y: y0 } });
+      assert.match(await status.innerText(), /^Selected P\(c3, r3\)/);
+      assert.deepEqual(log.pageErrors, []);
+      assert.deepEqual(log.consoleErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("a window too small, ragged or off the image is reported beside its field", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {

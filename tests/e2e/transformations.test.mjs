@@ -142,11 +142,21 @@ describe("transformations", () => {
       assert.notEqual(await canvasPixels(page, 1), rowsBefore, "the rows figure highlights");
       await page.keyboard.press("Escape");
       assert.ok(!(await fig.getAttribute("aria-label")).includes("Point 2:"));
-      // hovering a point picks it too
+      // hovering a point picks it too (its position from the figure's own layout), leaving lets it go
+      await fig.scrollIntoViewIfNeeded();
       const box = await fig.boundingBox();
-      const found = await page.evaluate(() => document.querySelectorAll(".figure-canvas")[0].clientWidth);
-      assert.ok(found > 200);
-      await page.mouse.move(box.x + 5, box.y + 5);
+      const [px, py] = await page.evaluate(async () => {
+        const { loadCore } = await import("./core.js");
+        const { pointPosition } = await import("./figures/transformations.js");
+        const core = await loadCore();
+        const solution = core.solve("fiducial-similarity", {});
+        return pointPosition(document.querySelector(".figure-canvas").clientWidth, solution, 2);
+      });
+      await page.mouse.move(box.x + px, box.y + py);
+      await page.waitForFunction(() => document.querySelector(".figure-canvas").getAttribute("aria-label").includes("Point 3:"));
+      assert.ok((await rows.getAttribute("aria-label")).includes("Point 3: row 5 is"), await rows.getAttribute("aria-label"));
+      await page.mouse.move(2, 2);
+      await page.waitForFunction(() => !document.querySelector(".figure-canvas").getAttribute("aria-label").includes("Point 3:"));
       assert.deepEqual(log.pageErrors, []);
     } finally {
       await context.close();

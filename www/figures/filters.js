@@ -433,6 +433,23 @@ const edgeSpec = {
   interact: selectionInteract(edgeData),
 };
 
+// Preset buttons: the seeds' windows with their kernels (the help texts list them too).
+const grid = (rows) => rows.map((r) => r.join(" ")).join("\n");
+const EXAMPLE_15 = [[10, 13, 3, 11, 13], [11, 15, 10, 9, 9], [9, 24, 7, 8, 10], [10, 13, 14, 15, 13], [13, 18, 17, 19, 21]];
+const EXAMPLE_16 = [[1, 2, 1, 1, 1], [1, 1, 9, 2, 1], [1, 9, 9, 8, 1], [1, 1, 8, 1, 2], [2, 1, 1, 1, 1]];
+const SEED_004 = [[5, 6, 7, 8, 9], [11, 10, 20, 30, 9], [31, 50, 60, 70, 9], [40, 30, 20, 10, 9], [58, 95, 105, 106, 98]];
+const seed15 = { window: grid(EXAMPLE_15), select_c: "2", select_r: "2", border: "crop" };
+filterSpec.actions = [
+  { label: "Example 15: mean", inputs: () => ({ ...seed15, kernel: "mean" }) },
+  { label: "Example 15: Gaussian", inputs: () => ({ ...seed15, kernel: "gaussian-3" }) },
+  { label: "Example 16: Laplacian", inputs: () => ({ window: grid(EXAMPLE_16), kernel: "laplacian-8", select_c: "3", select_r: "3", border: "crop" }) },
+  { label: "Seed 004: mean (33)", inputs: () => ({ window: grid(SEED_004), kernel: "mean", select_c: "3", select_r: "3", border: "crop" }) },
+];
+edgeSpec.actions = [
+  { label: "Example 15: Prewitt", inputs: () => ({ ...seed15, operator: "prewitt" }) },
+  { label: "Example 15: Sobel", inputs: () => ({ ...seed15, operator: "sobel" }) },
+];
+
 export const figures = {
   "filter-window": filterSpec,
   "edge-window": edgeSpec,

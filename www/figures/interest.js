@@ -12,7 +12,7 @@ import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, arrow, dot, fini
 /** Layout constants (CSS px). */
 const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26 });
 const ELLIPSE = Object.freeze({ height: 290, panelMin: 200, clip: 2.6, margin: 14 });
-const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, maxShown: 4 });
+const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, maxShown: 4, overviewMin: 26, overviewMax: 48 });
 const IMAGE = Object.freeze({ margin: 14, legend: 62, maxSide: 620, tRadiusCells: 1, clip: 3 });
 /** Digits in figure labels. */
 const DIGITS = 4;
@@ -240,14 +240,24 @@ const ellipseSpec = {
 // ---------------------------------------------------------------------------
 // Moravec: the four directional differences of each interior pixel
 
-function moravecPixels(solution) {
+/** Every interior pixel with its differences; `shown`: all of them for a small window, else the selected one (the largest sum by default). */
+function moravecPixels(solution, state) {
   const rows = solution.result?.differences;
   const win = solution.inputs?.window;
-  if (!isMatrix(rows) || !isMatrix(win)) return { shown: [], win: null, total: 0 };
-  let shown = rows.map((d) => ({ c: d[0], r: d[1], g: d[2], diffs: d.slice(3, 7), sum: d[7] }));
-  const total = shown.length;
-  if (shown.length > MORAVEC.maxShown) shown = [...shown].sort((a, b) => b.sum - a.sum).slice(0, MORAVEC.maxShown);
-  return { shown, win, total };
+  if (!isMatrix(rows) || !isMatrix(win)) return { all: [], shown: [], win: null, total: 0, selected: null };
+  const all = rows.map((d) => ({ c: d[0], r: d[1], g: d[2], diffs: d.slice(3, 7), sum: d[7] }));
+  const total = all.length;
+  if (total <= MORAVEC.maxShown) return { all, shown: all, win, total, selected: null };
+  const largest = all.reduce((a, b) => (b.sum > a.sum ? b : a));
+  const selected = all.find((p) => p.c === state?.c && p.r === state?.r) ?? largest;
+  return { all, shown: [selected], win, total, selected };
+}
+
+/** The overview grid of a large window (every interior pixel with its sum; the selected one framed). */
+function overviewLayout(width, win) {
+  const cols = win[0].length;
+  const cell = Math.max(MORAVEC.overviewMin, Math.min(MORAVEC.overviewMax, Math.floor((width - 2 * MORAVEC.panelGap) / cols)));
+  return { cell, x0: Math.floor((width - cols * cell) / 2), y0: MORAVEC.panelGap + 18, h: win.length * cell + 18 + MORAVEC.panelGap };
 }
 
 function moravecLayout(width, count) {
@@ -259,29 +269,86 @@ function moravecLayout(width, count) {
   return { perRow, panelW, cell, panelH, rows: Math.ceil(count / perRow) };
 }
 
+function drawOverview(ctx, width, m) {
+  const O = overviewLayout(width, m.win);
+  const flat = m.win.flat();
+  const lo = Math.min(...flat);
+  const hi = Math.max(...flat);
+  const sums = new Map(m.all.map((p) => [`${p.c},${p.r}`, p.sum]));
+  text(ctx, width < 520 ? "Click an interior pixel (Σ: its sum)." : "Click an interior pixel or use the arrow keys; Σ under a grey value is that pixel’s sum.", MORAVEC.panelGap, MORAVEC.panelGap, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+  m.win.forEach((row, r) =>
+    row.forEach((v, c) => {
+      const x = O.x0 + c * O.cell;
+      const y = O.y0 + r * O.cell;
+      ctx.fillStyle = cellShade(v, lo, hi).fill;
+      ctx.fillRect(x, y, O.cell, O.cell);
+      ctx.strokeStyle = COLORS.grid;
+      ctx.lineWidth = 1;
+      ctx.strokeRect(x + 0.5, y + 0.5, O.cell - 1, O.cell - 1);
+      text(ctx, fmt(v), x + 3, y + 3, { size: 9.5, baseline: "top", halo: true });
+      const sum = sums.get(`${c + 1},${r + 1}`);
+      if (sum !== undefined) text(ctx, `Σ ${fmt(sum)}`, x + 3, y + O.cell - 3, { size: 9, baseline: "bottom", color: "#1d5fbf", halo: true });
+    }),
+  );
+  const s = m.selected;
+  ctx.strokeStyle = COLORS.highlight;
+  ctx.lineWidth = 3;
+  ctx.strokeRect(O.x0 + (s.c - 2) * O.cell + 1.5, O.y0 + (s.r - 2) * O.cell + 1.5, 3 * O.cell - 3, 3 * O.cell - 3);
+  ctx.lineWidth = 2;
+  ctx.strokeStyle = COLORS.frameStroke;
+  ctx.strokeRect(O.x0 + (s.c - 1) * O.cell + 1, O.y0 + (s.r - 1) * O.cell + 1, O.cell - 2, O.cell - 2);
+  return O.h;
+}
+
 const moravecSpec = {
   caption:
-    "Moravec (seed 000): at each interior pixel (framed), the four differences across it — along the row, the column and both diagonals, each arrow from the subtracted to the other neighbour — squared and summed.",
-  height(width, solution) {
-    const { shown } = moravecPixels(solution);
-    const L = moravecLayout(width, Math.max(shown.length, 1));
-    return L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20;
+    "Moravec (seed 000): at each interior pixel (framed), the four differences across it — along the row, the column and both diagonals, each arrow from the subtracted to the other neighbour — squared and summed. A window larger than 4×4 shows the selected pixel (orange 3×3 frame).",
+  height(width, solution, state) {
+    const m = moravecPixels(solution, state);
+    const L = moravecLayout(width, Math.max(m.shown.length, 1));
+    const top = m.selected ? overviewLayout(width, m.win).h : 0;
+    return top + L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20;
   },
-  describe(solution) {
-    const { shown, total } = moravecPixels(solution);
-    const parts = shown.map((p) => `P(c${p.c}, r${p.r}) = ${fmt(p.g)}: differences ${p.diffs.map((d) => fmt(d)).join(", ")}, sum ${fmt(p.sum)}`);
-    return `${total} interior pixels${total > shown.length ? ` (the ${shown.length} largest shown)` : ""}. ${parts.join("; ")}. Mean ${fmt(solution.result?.mean)}.`;
+  describe(solution, state) {
+    const m = moravecPixels(solution, state);
+    const parts = m.shown.map((p) => `P(c${p.c}, r${p.r}) = ${fmt(p.g)}: differences ${p.diffs.map((d) => fmt(d)).join(", ")}, sum ${fmt(p.sum)}`);
+    const which = m.selected ? ` (the selected one shown; sums ${m.all.map((p) => fmt(p.sum)).join(", ")})` : "";
+    return `${m.total} interior pixels${which}. ${parts.join("; ")}. Mean ${fmt(solution.result?.mean)}.`;
   },
-  draw(ctx, width, height, solution) {
-    const { shown, win, total } = moravecPixels(solution);
+  status(solution, state) {
+    const m = moravecPixels(solution, state);
+    if (!m.selected) return "";
+    const p = m.selected;
+    return `Selected P(c${p.c}, r${p.r}) = ${fmt(p.g)}: sum of the four squared differences ${fmt(p.sum)}.`;
+  },
+  select(solution, point, state) {
+    const m = moravecPixels(solution, state);
+    if (!m.selected) return undefined;
+    const O = overviewLayout(point.width, m.win);
+    const c = Math.floor((point.x - O.x0) / O.cell) + 1;
+    const r = Math.floor((point.y - O.y0) / O.cell) + 1;
+    return m.all.some((p) => p.c === c && p.r === r) ? { c, r } : undefined;
+  },
+  key(solution, key, state) {
+    const m = moravecPixels(solution, state);
+    if (!m.selected) return undefined;
+    const step = { ArrowRight: [1, 0], ArrowLeft: [-1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[key];
+    if (!step) return undefined;
+    const next = { c: m.selected.c + step[0], r: m.selected.r + step[1] };
+    return m.all.some((p) => p.c === next.c && p.r === next.r) ? next : { c: m.selected.c, r: m.selected.r };
+  },
+  draw(ctx, width, height, solution, state) {
+    const m = moravecPixels(solution, state);
+    const { shown, win, total } = m;
     if (!win) return;
+    const top = m.selected ? drawOverview(ctx, width, m) : 0;
     const L = moravecLayout(width, Math.max(shown.length, 1));
     const flat = win.flat();
     const lo = Math.min(...flat);
     const hi = Math.max(...flat);
     shown.forEach((p, i) => {
       const px = MORAVEC.panelGap + (i % L.perRow) * (L.panelW + MORAVEC.panelGap);
-      const py = MORAVEC.panelGap + Math.floor(i / L.perRow) * (L.panelH + MORAVEC.panelGap);
+      const py = top + MORAVEC.panelGap + Math.floor(i / L.perRow) * (L.panelH + MORAVEC.panelGap);
       const gx0 = px + (L.panelW - 3 * L.cell) / 2;
       const gy0 = py + 16;
       text(ctx, `P(c${p.c}, r${p.r}) = ${fmt(p.g)}`, px + L.panelW / 2, py + 6, { align: "center", weight: "bold", size: FONT_SIZE_SMALL });
@@ -312,7 +379,7 @@ const moravecSpec = {
       });
       text(ctx, `sum = ${fmt(p.sum)}`, px + 8, gy0 + 3 * L.cell + 14 + 4 * FONT_SIZE_SMALL * LINE_HEIGHT, { size: FONT_SIZE_SMALL, weight: "bold" });
     });
-    const note = total > shown.length ? `  (the ${shown.length} largest of ${total} interior pixels)` : "";
+    const note = m.selected ? ` (${total} pixels)` : "";
     text(ctx, `mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { size: FONT_SIZE, weight: "bold" });
   },
 };
@@ -404,6 +471,48 @@ const imageSpec = {
     text(ctx, `window (${inp.c}, ${inp.r}), ${size}×${size}: ${r.case} · w = ${fmt(r.w)} · q = ${fmt(r.q)}`, IMAGE.margin, y, { size: FONT_SIZE, weight: "bold" });
     text(ctx, `${r.candidates} pixels pass the threshold (orange dots) · ${pts.length} interest points (purple rings)`, IMAGE.margin, y + lh, { size: FONT_SIZE_SMALL });
     text(ctx, `ellipse magnified ×${fmt(magnification, 3)}: the dashed circle is T = ${fmt(T)} px · c → 1…64, r ↓ 1…64`, IMAGE.margin, y + 2 * lh, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+  },
+};
+
+/** The centre of pattern pixel (c, r), counted from 1, in CSS px of a canvas `width` wide; for tests and tools. */
+export function patternPoint(width, solution, c, r) {
+  const L = imageLayout(width, stepValue(solution, "image"));
+  return [L.x0 + (c - 0.5) * L.cell, L.y0 + (r - 0.5) * L.cell];
+}
+
+/** The centre of window pixel (c, r) in the Moravec overview grid (shown for windows larger than 4×4). */
+export function moravecPoint(width, solution, c, r) {
+  const O = overviewLayout(width, solution.inputs.window);
+  return [O.x0 + (c - 0.5) * O.cell, O.y0 + (r - 0.5) * O.cell];
+}
+
+/** Moves the window on the pattern: a click (or a drag) centres it on a pixel, the arrow keys move it by one. */
+function moveWindow(solution, c, r) {
+  const img = stepValue(solution, "image");
+  const size = finite(solution.inputs?.window_size, 5);
+  if (!isMatrix(img)) return null;
+  const half = Math.floor(size / 2);
+  const clamp = (v) => Math.max(half + 1, Math.min(img.length - half, Math.round(v)));
+  const next = { c: clamp(c), r: clamp(r) };
+  return next.c === solution.inputs?.c && next.r === solution.inputs?.r ? null : { c: String(next.c), r: String(next.r) };
+}
+
+imageSpec.interact = {
+  hint: "Click or drag on the pattern to move the window there; with the pattern focused, the arrow keys move it by one pixel.",
+  drag: true,
+  pointer(x, y, width, height, solution) {
+    const img = stepValue(solution, "image");
+    if (!isMatrix(img)) return null;
+    const L = imageLayout(width, img);
+    const c = Math.floor((x - L.x0) / L.cell) + 1;
+    const r = Math.floor((y - L.y0) / L.cell) + 1;
+    if (c < 1 || r < 1 || c > L.side || r > L.side) return null;
+    return moveWindow(solution, c, r);
+  },
+  key(key, solution) {
+    const step = { ArrowRight: [1, 0], ArrowLeft: [-1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[key];
+    if (!step) return null;
+    return moveWindow(solution, finite(solution.inputs?.c, 1) + step[0], finite(solution.inputs?.r, 1) + step[1]);
   },
 };
 

@@ -199,6 +199,19 @@ const spec = {
   },
 };
 
+// Preset buttons: the seed's two patches with their positions (the help text lists them too).
+const grid = (rows) => rows.map((r) => r.join(" ")).join("\n");
+spec.actions = [
+  {
+    label: "Example 12a",
+    inputs: () => ({ patch: grid([[68, 64, 72, 79], [64, 71, 78, 74], [61, 65, 71, 78], [63, 56, 62, 68]]), first_c: "545", first_r: "817", c: "547.44", r: "817.24" }),
+  },
+  {
+    label: "Example 12b",
+    inputs: () => ({ patch: grid([[58, 54, 66, 64], [54, 62, 67, 59], [52, 57, 60, 54], [53, 46, 52, 48]]), first_c: "523", first_r: "835", c: "523.72", r: "835.24" }),
+  },
+];
+
 export const figures = {
   resample: spec,
 };

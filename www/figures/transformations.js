@@ -274,6 +274,13 @@ function pickedLine(d, i) {
   return `Point ${i + 1}: (${d.axes[0]}, ${d.axes[1]}) = (${f(u)}, ${f(v)}) → (x, y) = (${f(x)}, ${f(y)}); residuals ${f(vx)}, ${f(vy)}${unit} (rows ${2 * i + 1} and ${2 * i + 2} of A and V)`;
 }
 
+/** Where point `i` is drawn in the source panel (CSS px of a canvas `width` wide); for tests and tools. */
+export function pointPosition(width, solution, i) {
+  const d = dataOf(solution);
+  const [a, b] = d.source[i];
+  return layout(width, d).panels[0].plot.map(a, b);
+}
+
 function pickPoint(px, py, width, solution) {
   const d = dataOf(solution);
   const { panels } = layout(width, d);
