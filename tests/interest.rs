@@ -581,6 +581,40 @@ fn test_pattern_image_mode_finds_the_corners_and_the_three_cases() {
     let flat = at_pos(35.0, 12.0);
     assert_eq!(flat.result.get("case"), Some(&Value::from("flat")));
     assert!(num(&flat, "sigma_min_px") > 0.5);
+    // the three reference windows of seed 003's cases: one of each, and each
+    // the same as moving the window there
+    let refs = s
+        .steps
+        .iter()
+        .find(|st| st.title == "The three cases on the image")
+        .and_then(|st| st.values.get("references"))
+        .expect("reference windows");
+    let Value::List(refs) = refs else {
+        panic!("references is not a list: {refs:?}")
+    };
+    let cases: Vec<&Value> = refs
+        .iter()
+        .map(|r| match r {
+            Value::Object(o) => o.get("case").unwrap(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    assert_eq!(
+        cases,
+        [
+            &Value::from("flat"),
+            &Value::from("edge"),
+            &Value::from("corner")
+        ]
+    );
+    for r in refs {
+        let Value::Object(o) = r else { unreachable!() };
+        let (c, rr) = (o.number("c").unwrap(), o.number("r").unwrap());
+        let moved = at_pos(c, rr);
+        assert_eq!(o.get("case"), moved.result.get("case"));
+        assert_eq!(o.get("sigma_min_px"), moved.result.get("sigma_min_px"));
+        assert_eq!(o.get("sigma_max_px"), moved.result.get("sigma_max_px"));
+    }
     // the noise-free pattern: the flat window is exactly flat
     let clean = solve(
         "forstner-image",

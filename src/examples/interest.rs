@@ -117,6 +117,15 @@ fn moravec_fields() -> Vec<Field> {
     )]
 }
 
+/// Fixed places of the test pattern, one for each of seed 003's cases
+/// (1-based column, row): the flat background, the long vertical edge and
+/// the centre of the checkerboard.
+const REFERENCE_WINDOWS: &[(&str, usize, usize)] = &[
+    ("flat background", 34, 16),
+    ("vertical edge", 47, 14),
+    ("checkerboard corner", 47, 47),
+];
+
 fn image_fields() -> Vec<Field> {
     let side = PATTERN_SIZE as f64;
     vec![
@@ -762,6 +771,46 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
         .value("r", r1 as f64),
     );
     forstner_steps(&mut s, &f, &p, sigma_n, t);
+    // Seed 003's three cases side by side: one window of each kind of place
+    // in the pattern, drawn on the image with its ellipse.
+    let mut references = Vec::new();
+    let mut lines = Vec::new();
+    for (place, rc, rr) in REFERENCE_WINDOWS {
+        let Some(win) = interest::window_at(&image, rc - 1, rr - 1, size) else {
+            continue;
+        };
+        let rf = interest::forstner(&win)?;
+        let rp = interest::precision(&rf.measures, sigma_n, t);
+        references.push(
+            Record::new()
+                .with("place", *place)
+                .with("c", *rc as f64)
+                .with("r", *rr as f64)
+                .with("case", rp.case.name())
+                .with("sigma_max_px", rp.sigma_max)
+                .with("sigma_min_px", rp.sigma_min)
+                .with("weak_angle_deg", rf.measures.weak_angle.to_degrees()),
+        );
+        lines.push(format!(
+            "{place} at ({rc}, {rr}): {} (semi-axes {} and {} px)",
+            rp.case.name(),
+            rp.sigma_max.map_or("∞".to_string(), num),
+            rp.sigma_min.map_or("∞".to_string(), num),
+        ));
+    }
+    s.step(
+        Step::new(
+            "The three cases on the image",
+            &format!(
+                "Seed 003's three cases, each at a fixed place of the pattern with the same window size, σn and T: {}. The figure draws their ellipses on the image beside the moving window's.",
+                lines.join("; ")
+            ),
+        )
+        .value(
+            "references",
+            Value::List(references.into_iter().map(Value::Object).collect()),
+        ),
+    );
     let one_based = |pts: &[interest::InterestPoint]| {
         Value::matrix(
             &pts.iter()

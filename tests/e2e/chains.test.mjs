@@ -145,6 +145,36 @@ describe("chain codes", () => {
     }
   });
 
+  test("a path that goes back over itself is marked as a branch; the circle and the seed's edge presets", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/chain-code"), "ok");
+      // a T drawn by going out along the arm and back: pixel 4 repeats pixel 2
+      await page.locator('textarea[name="pixels"]').fill("1 1\n2 1\n3 1\n2 1\n2 2");
+      assert.equal(await settled(page), "ok");
+      const fig = await figure(page);
+      assert.match(fig.label, /Branch: pixel 4 \(2, 1\) repeats pixel 2\./);
+      const notes = await page.locator(".notes .note").allInnerTexts();
+      assert.ok(notes.some((n) => /pixel 4 \(2, 1\) is pixel 2 again/.test(n)), notes.join("\n"));
+      // the presets
+      await page.getByRole("button", { name: "Circle" }).click();
+      assert.equal(await settled(page), "ok");
+      let label = (await figure(page)).label;
+      assert.match(label, /outer boundary of the first, 22 positions/);
+      // a digitised circle: diameter and minor axis nearly equal
+      const ecc = Number(/eccentricity ([\d.]+)\.$/.exec(label)?.[1]);
+      assert.ok(ecc >= 1 && ecc < 1.1, label);
+      await page.getByRole("button", { name: "Example 17 (the seed’s edge)" }).click();
+      assert.equal(await settled(page), "ok");
+      label = (await figure(page)).label;
+      assert.match(label, /Chain code 1 8 8 8 7 1 1 2 3 4 4 2 1 1 2 2;/);
+      assert.deepEqual(log.pageErrors, []);
+      assert.deepEqual(log.consoleErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("Example 18 lengths and the descriptors of drawn regions", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {

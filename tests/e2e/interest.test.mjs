@@ -92,6 +92,7 @@ describe("interest operators", () => {
       assert.equal(figs.length, 3);
       for (const f of figs) assert.ok(f.ink > f.pixels * 0.02, `drawn: ${f.label}`);
       assert.match(figs[0].label, /14 interest points after suppression: \(9, 9\), \(24, 9\)/);
+      assert.match(figs[0].label, /Reference windows: flat background \(34, 16\) flat, vertical edge \(47, 14\) edge, checkerboard corner \(47, 47\) corner\./);
       // move the window onto the square's top edge, then into the flat background
       await page.getByLabel(/column c/).fill("16");
       await waitForCell(page, "case", "edge");

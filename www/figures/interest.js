@@ -396,7 +396,7 @@ function imageLayout(width, img) {
 
 const imageSpec = {
   caption:
-    "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression.",
+    "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression. Three fixed windows (dotted) show seed 003's three cases with their ellipses at the same magnification: flat (a dashed disc, no direction determined or both axes long), edge (long along the edge), corner (small).",
   height(width, solution) {
     const img = stepValue(solution, "image");
     if (!isMatrix(img)) return 120;
@@ -407,7 +407,9 @@ const imageSpec = {
     const r = solution.result ?? {};
     const inp = solution.inputs ?? {};
     const pts = Array.isArray(r.points) ? r.points : [];
-    return `Test pattern 64×64; ${inp.window_size}×${inp.window_size} window at (c, r) = (${inp.c}, ${inp.r}): case ${r.case}, w = ${fmt(r.w)}, q = ${fmt(r.q)}. ${r.candidates} pixels pass the threshold, ${pts.length} interest points after suppression: ${pts.map((p) => `(${p[0]}, ${p[1]})`).join(", ")}.`;
+    const refs = stepValue(solution, "references");
+    const cases = Array.isArray(refs) ? ` Reference windows: ${refs.map((x) => `${x.place} (${x.c}, ${x.r}) ${x.case}`).join(", ")}.` : "";
+    return `Test pattern 64×64; ${inp.window_size}×${inp.window_size} window at (c, r) = (${inp.c}, ${inp.r}): case ${r.case}, w = ${fmt(r.w)}, q = ${fmt(r.q)}. ${r.candidates} pixels pass the threshold, ${pts.length} interest points after suppression: ${pts.map((p) => `(${p[0]}, ${p[1]})`).join(", ")}.${cases}`;
   },
   draw(ctx, width, height, solution) {
     const img = stepValue(solution, "image");
@@ -456,6 +458,20 @@ const imageSpec = {
     const cx = X(c0 + 0.5);
     const cy = Y(r0 + 0.5);
     const rT = (half + IMAGE.tRadiusCells) * L.cell;
+    // seed 003's three cases at fixed places, with the same magnification
+    const refs = stepValue(solution, "references");
+    for (const ref of Array.isArray(refs) ? refs : []) {
+      const rx = X(ref.c - 0.5);
+      const ry = Y(ref.r - 0.5);
+      ctx.save();
+      ctx.strokeStyle = "#ffffff";
+      ctx.lineWidth = 1;
+      ctx.setLineDash([3, 3]);
+      ctx.strokeRect(X(ref.c - 1 - half), Y(ref.r - 1 - half), size * L.cell, size * L.cell);
+      ctx.restore();
+      drawEllipse(ctx, rx, ry, rT / T, ref, rT * IMAGE.clip * 0.7);
+      text(ctx, ref.case, rx, Y(ref.r - 1 - half) - 4, { align: "center", baseline: "bottom", size: FONT_SIZE_SMALL, weight: "bold", halo: true });
+    }
     drawEllipse(ctx, cx, cy, rT / T, r, rT * IMAGE.clip);
     ctx.save();
     ctx.strokeStyle = "#ffffff";
