@@ -620,6 +620,34 @@ fn shifting_the_targets_only_changes_the_shift_parameters() {
     }
 }
 
+#[test]
+fn the_projective_solution_says_that_a_shift_moves_a1_to_a6() {
+    let s = solve(
+        "transform-fit",
+        &Record::new()
+            .with("model", "projective")
+            .with("point_set", "control-12"),
+    )
+    .unwrap();
+    assert!(has_note(
+        &s,
+        NoteKind::Convention,
+        "a1 … a6 all take up part of the shift"
+    ));
+    let affine = solve(
+        "transform-fit",
+        &Record::new()
+            .with("model", "affine")
+            .with("point_set", "control-12"),
+    )
+    .unwrap();
+    assert!(!has_note(
+        &affine,
+        NoteKind::Convention,
+        "take up part of the shift"
+    ));
+}
+
 // ------------------------------------------------------------- bad input
 
 #[test]

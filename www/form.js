@@ -82,6 +82,7 @@ export function buildForm(entry, onInput) {
     const unit = field.unit ? el("span", { class: "unit" }, ` (${field.unit})`) : null;
 
     let control;
+    let extra = null;
     let getText;
     let setText;
     let label;
@@ -135,6 +136,21 @@ export function buildForm(entry, onInput) {
         control.rows = textareaRows(field, control.value);
       };
       label = el("label", { for: inputId }, field.label, unit, " ", keyTag);
+      if (field.kind === "points" && Array.isArray(field.columns) && field.columns.length) {
+        const table = pointsTable(field, key, () => control.value, (text) => {
+          control.value = text;
+          control.rows = textareaRows(field, text);
+          onInput(key);
+        });
+        const textSet = setText;
+        setText = (t) => {
+          textSet(t);
+          table.refresh();
+        };
+        control.addEventListener("input", () => table.refresh());
+        table.refresh();
+        extra = table.element;
+      }
     } else {
       // number, integer, and any kind this page does not know yet: a text box
       const negativeAllowed = field.min == null || field.min < 0;
@@ -160,7 +176,7 @@ export function buildForm(entry, onInput) {
       control.addEventListener("change", () => onInput(key));
     }
 
-    const wrapper = el("div", { class: `field field-${field.kind}`, "data-key": key }, label, field.kind === "flag" ? null : control, error, help);
+    const wrapper = el("div", { class: `field field-${field.kind}`, "data-key": key }, label, extra, field.kind === "flag" ? null : control, error, help);
     form.append(wrapper);
     controls.set(key, { field, control, error, helpId, errId, getText, setText, seedText, wrapper });
   }
@@ -208,6 +224,76 @@ export function buildForm(entry, onInput) {
         }
       }
       return rest;
+    },
+  };
+}
+
+/** The rows of a point-list text: lines (or ";"-separated parts) of tokens split by spaces or commas. */
+function splitPoints(text) {
+  return String(text)
+    .split(/[\n;]/)
+    .map((line) => line.trim())
+    .filter((line) => line.length > 0)
+    .map((line) => line.split(/[\s,]+/).filter((t) => t.length > 0));
+}
+
+/**
+ * A table editing a point-list field cell by cell, kept in step with its
+ * text (which stays the value the core parses, and the URL's): edits in the
+ * table rewrite the text; a new text (typed, pasted, from the URL) rebuilds
+ * the table. Rows: one input per column, a remove button; below, "Add point".
+ */
+function pointsTable(field, key, currentText, onEdit) {
+  const cols = field.columns;
+  const body = el("tbody");
+  const head = el("thead", {}, el("tr", {}, el("th", { scope: "col" }, "#"), ...cols.map((c) => el("th", { scope: "col" }, c)), el("th", { scope: "col" }, el("span", { class: "visually-hidden" }, "Remove"))));
+  const table = el("table", { class: "points-table" }, head, body);
+  const add = el("button", { type: "button", class: "points-add" }, "+ Add point");
+  const element = el("div", { class: "points-editor" }, el("div", { class: "points-scroll" }, table), add);
+
+  const write = () => {
+    const lines = [...body.rows]
+      .map((tr) => [...tr.querySelectorAll("input")].map((i) => i.value.trim()))
+      .filter((cells) => cells.some((c) => c.length > 0))
+      .map((cells) => cells.map((c) => c || "?").join(" "));
+    onEdit(lines.join("\n"));
+  };
+  const renumber = () => {
+    [...body.rows].forEach((tr, i) => {
+      tr.cells[0].textContent = String(i + 1);
+      tr.querySelectorAll("input").forEach((input, j) => input.setAttribute("aria-label", `Point ${i + 1}, ${cols[j]}`));
+      tr.querySelector("button").setAttribute("aria-label", `Remove point ${i + 1}`);
+    });
+  };
+  const row = (cells) => {
+    const inputs = cols.map((_, j) =>
+      el("input", { type: "text", inputmode: "decimal", autocomplete: "off", spellcheck: "false", value: cells[j] ?? "", "data-col": String(j) }),
+    );
+    for (const input of inputs) input.addEventListener("input", write);
+    const remove = el("button", { type: "button", class: "points-remove", title: "Remove this point" }, "×");
+    const tr = el("tr", {}, el("th", { scope: "row" }), ...inputs.map((i) => el("td", {}, i)), el("td", {}, remove));
+    remove.addEventListener("click", () => {
+      const next = tr.nextElementSibling ?? tr.previousElementSibling;
+      tr.remove();
+      renumber();
+      write();
+      (next?.querySelector("input") ?? add).focus();
+    });
+    return tr;
+  };
+  add.addEventListener("click", () => {
+    if (field.max_len != null && body.rows.length >= field.max_len) return;
+    const tr = row([]);
+    body.append(tr);
+    renumber();
+    tr.querySelector("input").focus();
+  });
+  return {
+    element,
+    /** Rebuilds the rows from the current text (a row with the wrong count of numbers shows what it has). */
+    refresh() {
+      body.replaceChildren(...splitPoints(currentText()).map((cells) => row(cells)));
+      renumber();
     },
   };
 }

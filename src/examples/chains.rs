@@ -198,6 +198,7 @@ fn pixels_field(default: &[Pixel], help: &'static str) -> Field {
             point_len: 2,
             min_len: 1,
             max_len: MAX_LEN,
+            columns: None,
         },
         pixel_value(default),
     )

@@ -37,6 +37,9 @@ pub enum Kind {
         point_len: usize,
         min_len: usize,
         max_len: usize,
+        /// Column names, when the page should offer a table to edit the
+        /// points (else only the text).
+        columns: Option<&'static [&'static str]>,
     },
     /// One of a fixed set of option values.
     Choice {
@@ -154,9 +157,19 @@ impl Field {
                 point_len,
                 min_len: 1,
                 max_len,
+                columns: None,
             },
             default: Value::matrix(default),
         }
+    }
+
+    /// Names the columns of a point-list field: the page then edits the
+    /// points in a table (with add and remove buttons) beside the text.
+    pub fn columns(mut self, names: &'static [&'static str]) -> Self {
+        if let Kind::Points { columns, .. } = &mut self.kind {
+            *columns = Some(names);
+        }
+        self
     }
 
     /// A choice field; `options` are `(value, label)` pairs.
@@ -304,6 +317,7 @@ impl Field {
                 point_len,
                 min_len,
                 max_len,
+                ..
             } => {
                 let m = number_rows(key, v)?;
                 check_len(key, m.len(), *min_len, *max_len, "points")?;
@@ -607,6 +621,7 @@ pub struct FieldInfo {
     pub rows: Option<usize>,
     pub cols: Option<usize>,
     pub point_len: Option<usize>,
+    pub columns: Option<&'static [&'static str]>,
     pub max_len: Option<usize>,
     pub options: Option<Vec<ChoiceInfo>>,
     pub default: Value,
@@ -633,6 +648,7 @@ impl From<&Field> for FieldInfo {
             rows: None,
             cols: None,
             point_len: None,
+            columns: None,
             max_len: None,
             options: None,
             default: f.default.clone(),
@@ -666,10 +682,14 @@ impl From<&Field> for FieldInfo {
                 info.cols = *cols;
             }
             Kind::Points {
-                point_len, max_len, ..
+                point_len,
+                max_len,
+                columns,
+                ..
             } => {
                 info.kind = "points";
                 info.point_len = Some(*point_len);
+                info.columns = *columns;
                 info.max_len = Some(*max_len);
             }
             Kind::Choice { options } => {

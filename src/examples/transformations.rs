@@ -118,6 +118,7 @@ fn fiducial_fields() -> Vec<Field> {
         MAX_POINTS,
         &rows_of(&FIDUCIALS),
     )
+    .columns(&["c (px)", "r (px)", "x (mm)", "y (mm)"])
     .help("One row per fiducial: measured column c and row r (pixels, r downward), calibrated x and y (mm). The solver uses x′ = c, y′ = −r.")]
 }
 
@@ -134,6 +135,7 @@ fn transform_fit_fields() -> Vec<Field> {
             MAX_POINTS,
             &row_axis_up(&FIDUCIALS),
         )
+        .columns(&["u", "v", "x", "y"])
         .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm."),
     ]
 }
@@ -1049,6 +1051,12 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
         NoteKind::Convention,
         "Table 9.5.1 maps image (u, v) to map (x, y); here (u, v) is any source system and (x, y) any target. Parameters are listed in the table's order; residuals V = A·X − L as [vx1, vy1, vx2, vy2, …]. The default points are Example 4's fiducials with the row axis turned up (u = c, v = −r); with v = r the conformal models (Helmert, second-order conformal) cannot fit, since they allow no reflection.",
     );
+    if model == Model::Projective {
+        s.note(
+            NoteKind::Convention,
+            "Unlike the other models, a shift of every target point by (Δx, Δy) changes more than a3 and a6: x + Δx = (a1·u + a2·v + a3 + Δx·D)/D with D = a7·u + a8·v + 1, so a1 … a6 all take up part of the shift (a1 + Δx·a7, a2 + Δx·a8, a3 + Δx, and likewise for y) while a7 and a8 stay.",
+        );
+    }
     match model {
         Model::Projective => s.note(
             NoteKind::Erratum,

@@ -97,6 +97,51 @@ describe("transformations", () => {
     }
   });
 
+  test("the point table: change a cell, add a point, remove one; the text follows and the table follows the text", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/transform-fit?model=affine"), "ok");
+      const table = page.locator('.field[data-key="points"] .points-table tbody');
+      const area = page.locator('.field[data-key="points"] textarea');
+      assert.equal(await table.locator("tr").count(), 4);
+      const before = await resultValue(page, "parameters");
+      // y of point 4 moved by 0.1 mm, in its cell
+      const cell = page.getByLabel("Point 4, y");
+      assert.equal(await cell.inputValue(), "-113");
+      await cell.fill("-112.9");
+      assert.equal(await settled(page), "ok");
+      assert.equal((await area.inputValue()).split("\n")[3], "2700.56 -5352.74 -0.016 -112.9");
+      assert.notDeepEqual(await resultValue(page, "parameters"), before);
+      assert.match(await page.evaluate(() => location.hash), /112\.9/);
+      // a new point: an empty row, then its four numbers
+      await page.getByRole("button", { name: "+ Add point" }).click();
+      assert.equal(await table.locator("tr").count(), 5);
+      await page.getByLabel("Point 5, u").fill("1000");
+      assert.equal(await settled(page), "invalid"); // a point with one number (the others "?") is not a point yet
+      await page.getByLabel("Point 5, v").fill("-1000");
+      await page.getByLabel("Point 5, x").fill("-72.4");
+      await page.getByLabel("Point 5, y").fill("72.4");
+      assert.equal(await settled(page), "ok");
+      assert.equal(await resultValue(page, "redundancy"), 4);
+      assert.equal((await area.inputValue()).split("\n").length, 5);
+      // remove point 1: four points, renumbered
+      await page.getByRole("button", { name: "Remove point 1" }).click();
+      assert.equal(await settled(page), "ok");
+      assert.equal(await table.locator("tr").count(), 4);
+      assert.equal(await resultValue(page, "redundancy"), 2);
+      assert.equal(await page.getByLabel("Point 1, u").inputValue(), "5353.12");
+      // the text rebuilds the table
+      await area.fill("0 0 0 0\n1 0 2 0\n0 1 0 2");
+      assert.equal(await settled(page), "ok");
+      assert.equal(await table.locator("tr").count(), 3);
+      assert.equal(await page.getByLabel("Point 2, x").inputValue(), "2");
+      assert.deepEqual(log.pageErrors, []);
+      assert.deepEqual(log.consoleErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("models and prepared point sets; a bad row is reported beside the field", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {
