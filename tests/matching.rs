@@ -582,6 +582,52 @@ fn shifts_of_a_continuous_profile_are_recovered_to_two_hundredths_in_1d() {
 }
 
 #[test]
+fn the_1d_affine_radiometric_model_recovers_scale_shift_gain_and_offset() {
+    // T(u) = a7·S(a1·u + a3) + a8 with S linear between its samples, so the
+    // model fits exactly: every parameter comes back
+    let search: Vec<f64> = (0..41)
+        .map(|c| {
+            let x = c as f64;
+            90.0 + 30.0 * (x / 4.0).sin() + 12.0 * (x / 2.3 + 1.0).cos()
+        })
+        .collect();
+    let linear = |x: f64| {
+        let i = (x.floor() as usize).min(search.len() - 2);
+        let t = x - i as f64;
+        search[i] * (1.0 - t) + search[i + 1] * t
+    };
+    let (a1, a3, gain, offset) = (1.06, 20.35, 1.3, -12.0);
+    let template: Vec<f64> = (0..15)
+        .map(|i| gain * linear(a1 * (i as f64 - 7.0) + a3) + offset)
+        .collect();
+    let out = match_1d(
+        &template,
+        &search,
+        Params::shift(20.0, 0.0, 1.0, 0.0),
+        Settings {
+            model: Model::AffineRadiometric,
+            gradients: Gradients::SearchWindow,
+            max_iterations: 100,
+        },
+    )
+    .unwrap();
+    assert!(out.converged(), "{:?}", out.status);
+    let p = out.params.a;
+    for (name, got, want, tol) in [
+        // to the convergence tolerance (a last step moving no pixel by more
+        // than 1e-4 px is not taken further)
+        ("a1", p[0], a1, 2e-5),
+        ("a3", p[2], a3, 1e-4),
+        ("gain", p[6], gain, 1e-4),
+        ("offset", p[7], offset, 1e-2),
+    ] {
+        assert!((got - want).abs() < tol, "{name}: {got} vs {want}");
+    }
+    // the rows stay put in 1-D
+    assert_eq!((p[3], p[4], p[5]), (0.0, 1.0, 0.0));
+}
+
+#[test]
 fn the_affine_radiometric_model_recovers_known_parameters() {
     let s = solve("lsm-affine", &Record::new()).unwrap();
     assert!(converged(&s));
