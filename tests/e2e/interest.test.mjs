@@ -33,6 +33,21 @@ async function waitForCell(page, key, textValue) {
   );
 }
 
+/** Where window pixel (c, r) is drawn in the Moravec overview, from the figure's own layout for the current window. */
+function moravecCell(page, c, r) {
+  return page.evaluate(
+    async ([cc, rr]) => {
+      const { loadCore } = await import("./core.js");
+      const { moravecPoint } = await import("./figures/interest.js");
+      const core = await loadCore();
+      const texts = { window: document.querySelector('.field[data-key="window"] textarea').value };
+      const solution = core.solve("moravec-window", core.parseInputs("moravec-window", texts).inputs);
+      return moravecPoint(document.querySelector(".figure-canvas").clientWidth, solution, cc, rr);
+    },
+    [c, r],
+  );
+}
+
 describe("interest operators", () => {
   test("Example 13: exact N, det N, trace N⁻¹ beside the printed ones; the two figures", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
@@ -161,14 +176,7 @@ describe("interest operators", () => {
       assert.match(await status.innerText(), /^Selected P\(c\d, r\d\)/);
       const canvas = page.locator(".figure-canvas").first();
       await canvas.scrollIntoViewIfNeeded();
-      const [x, y] = await page.evaluate(async () => {
-        const { loadCore } = await import("./core.js");
-        const { moravecPoint } = await import("./figures/interest.js");
-        const core = await loadCore();
-        const texts = { window: document.querySelector('.field[data-key="window"] textarea').value };
-        const solution = core.solve("moravec-window", core.parseInputs("moravec-window", texts).inputs);
-        return moravecPoint(document.querySelector(".figure-canvas").clientWidth, solution, 2, 2);
-      });
+      const [x, y] = await moravecCell(page, 2, 2);
       await canvas.click({ position: { x, y } });
       assert.match(await status.innerText(), /^Selected P\(c2, r2\) = 11: sum of the four squared differences/);
       assert.match(await canvas.getAttribute("aria-label"), /P\(c2, r2\) = 11: differences/);
@@ -176,14 +184,7 @@ describe("interest operators", () => {
       await page.keyboard.press("ArrowDown");
       assert.match(await status.innerText(), /^Selected P\(c3, r3\)/);
       // an edge pixel is not interior: a click there keeps the selection
-      const [x0, y0] = await page.evaluate(async () => {
-        const { loadCore } = await import("./core.js");
-        const { moravecPoint } = await import("./figures/interest.js");
-        const core = await loadCore();
-        const texts = { window: document.querySelector('.field[data-key="window"] textarea').value };
-        const solution = core.solve("moravec-window", core.parseInputs("moravec-window", texts).inputs);
-        return moravecPoint(document.querySelector(".figure-canvas").clientWidth, solution, 1, 1);
-      });
+      const [x0, y0] = await moravecCell(page, 1, 1);
       await canvas.click({ position: { x: x0, y: y0 } });
       assert.match(await status.innerText(), /^Selected P\(c3, r3\)/);
       assert.deepEqual(log.pageErrors, []);
