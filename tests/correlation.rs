@@ -507,6 +507,36 @@ fn rho_is_one_for_a_positive_gain_and_minus_one_for_a_negative_one() {
 }
 
 #[test]
+fn in_2d_too_rho_is_plus_or_minus_one_under_any_gain_and_offset() {
+    let mut rng = Rng(0x5eed_0005);
+    for trial in 0..100 {
+        let (w, h) = (2 + (rng.next() % 9) as usize, 2 + (rng.next() % 9) as usize);
+        let a = Grid::new("a", w, h, rng.values(w * h)).unwrap();
+        if a.data().iter().all(|x| *x == a.data()[0]) {
+            continue;
+        }
+        let gain = rng.uniform(0.05, 4.0);
+        let offset = rng.uniform(-300.0, 300.0);
+        let up = Grid::from_fn(w, h, |c, r| gain * a.get(c, r).unwrap() + offset);
+        let down = Grid::from_fn(w, h, |c, r| -gain * a.get(c, r).unwrap() + offset);
+        let r = ncc_grid(&a, &up).unwrap().rho.unwrap();
+        assert_close(r, 1.0, 1e-12, &format!("trial {trial}: ρ(A, g·A + o)"));
+        let r = ncc_grid(&a, &down).unwrap().rho.unwrap();
+        assert_close(r, -1.0, 1e-12, &format!("trial {trial}: ρ(A, −g·A + o)"));
+        let b = Grid::new("b", w, h, rng.values(w * h)).unwrap();
+        let shifted = Grid::from_fn(w, h, |c, r| b.get(c, r).unwrap() + offset);
+        match (
+            ncc_grid(&a, &b).unwrap().rho,
+            ncc_grid(&a, &shifted).unwrap().rho,
+        ) {
+            (Some(r1), Some(r2)) => assert_close(r1, r2, 1e-12, "offset invariance (2-D)"),
+            (None, None) => {}
+            other => panic!("offset changed flatness: {other:?}"),
+        }
+    }
+}
+
+#[test]
 fn a_template_cut_from_a_search_array_is_found_at_rho_one() {
     let mut rng = Rng(0x5eed_0002);
     for _ in 0..20 {

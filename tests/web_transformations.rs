@@ -138,6 +138,16 @@ fn bad_points_are_js_errors_and_the_module_keeps_answering() {
     );
     assert!(solve_err(
         "transform-fit",
+        obj(r#"{"points": [[1, 2, 3, 4], [5, 6, 3, 4]]}"#)
+    )
+    .starts_with("points: points 1 and 2 have the same target position (x, y) = (3, 4)"));
+    assert!(solve_err(
+        "transform-fit",
+        obj(r#"{"model": "projective", "points": [[0, 0, 0, 0], [1, 0, 1, 0], [0, 1, 2, 0], [1, 1, 0, 1]]}"#)
+    )
+    .contains("lie on one line in the target (x, y) system"));
+    assert!(solve_err(
+        "transform-fit",
         obj(r#"{"model": "affine", "points": [[0, 0, 0, 0], [1, 1, 1, 1], [2, 2, 2, 2.5]]}"#)
     )
     .starts_with("points: all 3 points lie on one line"));
