@@ -308,7 +308,16 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
         if built {
             // every built entry solves with its defaults, and each
             // default's text parses back to the default
-            let defaults = solve(e.id, &Record::new()).unwrap().inputs;
+            let solved = solve(e.id, &Record::new()).unwrap();
+            // every result the page lists has a human label
+            for (key, _) in solved.result.iter() {
+                assert!(
+                    solved.labels.get(key).is_some(),
+                    "{}: result {key} has no label",
+                    e.id
+                );
+            }
+            let defaults = solved.inputs;
             let mut texts = Record::new();
             for f in &e.inputs {
                 texts.set(f.key, f.default_text.as_str());

@@ -628,6 +628,40 @@ fn said_of(e: Error, start_fields: &str) -> Error {
 
 // ---------------------------------------------------------------- lsm-1d
 
+/// What each result key is, for the page's result table.
+fn label_results(s: &mut Solution) {
+    for (key, label, unit) in [
+        ("first_dc", "First iteration: shift increment dc", "px"),
+        ("first_dr", "First iteration: shift increment dr", "px"),
+        ("first_da", "First iteration: gain increment da", ""),
+        (
+            "first_db",
+            "First iteration: offset increment db",
+            "grey values",
+        ),
+        ("c", "Matched position c (after the last iteration)", "px"),
+        ("r", "Matched position r (after the last iteration)", "px"),
+        ("a", "Gain a", ""),
+        ("b", "Offset b", "grey values"),
+        ("iterations", "Iterations", ""),
+        ("converged", "Converged", ""),
+        ("status", "How the run ended", ""),
+        ("sigma0", "σ0 of the last iteration", "grey values"),
+        ("parameters", "Estimates a1 … a8", ""),
+        ("true_parameters", "True values a1 … a8 (generated)", ""),
+        ("std_dev", "Standard deviations of a1 … a8", ""),
+        (
+            "expected_sigma0",
+            "Expected σ0 from the noise",
+            "grey values",
+        ),
+    ] {
+        if s.result.get(key).is_some() {
+            s.label(key, label, unit);
+        }
+    }
+}
+
 fn lsm_1d(inputs: &Record) -> Result<Solution> {
     let t = numbers(inputs, "template")?;
     let sw = numbers(inputs, "search")?;
@@ -708,6 +742,7 @@ fn lsm_1d(inputs: &Record) -> Result<Solution> {
     if seed_inputs(&lsm_1d_fields(), inputs, &["template", "search", "c0"]) {
         ex10_notes(&mut s, &m, radiometric);
     }
+    label_results(&mut s);
     Ok(s)
 }
 
@@ -921,6 +956,7 @@ fn lsm_2d(inputs: &Record) -> Result<Solution> {
     ) {
         ex11_notes(&mut s, &m, gradients, inputs)?;
     }
+    label_results(&mut s);
     Ok(s)
 }
 
@@ -1301,6 +1337,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
             }
         }
     }
+    label_results(&mut s);
     Ok(s)
 }
 
