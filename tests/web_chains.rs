@@ -96,6 +96,11 @@ fn broken_branching_and_single_pixel_paths_are_documented_answers() {
     .unwrap();
     assert_eq!(list(&s, &["result", "code"]), [1., 1., 5., 7.]);
     assert!(notes_text(&s).contains("pixel 4 (1, 0) is pixel 2 again"));
+    // a single pixel: an empty code and zero length, for each example
+    let s = solve("chain-code", obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
+    assert_eq!(list(&s, &["result", "code"]), Vec::<f64>::new());
+    let s = solve("boundary-length", obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
+    assert_eq!(num(&s, &["result", "length"]), 0.0);
     let s = solve("boundary-shape", obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
     assert_eq!(num(&s, &["result", "diameter"]), 0.0);
     assert!(at(&s, &["result", "eccentricity"]).is_null());

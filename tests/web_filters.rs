@@ -112,6 +112,9 @@ fn bad_inputs_are_js_errors_and_the_module_keeps_answering() {
         solve_err("resample", obj(r#"{"c": 600}"#)),
         "c: 600 is outside the patch: its pixel centres run from column 545 to 548"
     );
+    assert!(solve_err("resample", obj(r#"{"r": 700}"#)).starts_with("r: 700 is outside the patch"));
+    assert!(solve_err("resample", obj(r#"{"patch": [[1,2,3],[4,5]]}"#))
+        .starts_with("patch: rows must all have the same length"));
     assert!(solve_err("filter-window", obj(r#"{"window": []}"#)).starts_with("window: is empty"));
     assert!(
         solve_err("edge-window", obj(r#"{"window": [[1,2,3],[4]]}"#))

@@ -162,6 +162,22 @@ fn bad_windows_are_js_errors_and_the_module_keeps_answering() {
         .as_string()
         .unwrap()
         .contains("same length"));
+    // each class for the other operator too
+    assert!(
+        solve_err("moravec-window", obj(r#"{"window": [[1,2],[3,4]]}"#))
+            .starts_with("window: is 2×2; the window needs at least 3×3")
+    );
+    assert!(solve_err(
+        "forstner-window",
+        obj(r#"{"window": [[1,2,3],[4,5],[6,7,8]]}"#)
+    )
+    .starts_with("window: rows must all have the same length"));
+    let nan_inputs = Object::new();
+    Reflect::set(&nan_inputs, &"window".into(), &nan_window).unwrap();
+    assert_eq!(
+        solve_err("moravec-window", nan_inputs.into()),
+        "window[2][3]: is NaN; give a number"
+    );
     // still answering
     let s = solve("moravec-window", JsValue::UNDEFINED).unwrap();
     assert_eq!(num(&s, &["result", "mean"]), 183.0);
