@@ -309,6 +309,15 @@ impl Solution {
             Value::Object(Record::new().with("label", label).with("unit", unit)),
         );
     }
+    /// Labels the results that are present, from a table of
+    /// `(key, label, unit)` rows shared by a topic's examples.
+    pub fn label_present(&mut self, table: &[(&str, &str, &str)]) {
+        for &(key, label, unit) in table {
+            if self.result.get(key).is_some() {
+                self.label(key, label, unit);
+            }
+        }
+    }
     pub fn step(&mut self, step: Step) {
         self.steps.push(step);
     }

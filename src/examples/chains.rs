@@ -868,7 +868,7 @@ fn label_results(s: &mut Solution, conn: Connectivity) {
         Connectivity::Eight => "Chain code (digits 1–8)",
         Connectivity::Four => "Chain code (digits 1–4)",
     };
-    for (key, label, unit) in [
+    s.label_present(&[
         ("code", digits, ""),
         ("differential", "Differential chain code", ""),
         ("differences", "Differences before mod", ""),
@@ -889,11 +889,7 @@ fn label_results(s: &mut Solution, conn: Connectivity) {
         ("eccentricity", "Eccentricity E = D / m", ""),
         ("minor_axis", "Minor axis (ends [c, r])", ""),
         ("boundary", "Traced boundary [c, r]", ""),
-    ] {
-        if s.result.get(key).is_some() {
-            s.label(key, label, unit);
-        }
-    }
+    ]);
 }
 
 // ---------------------------------------------------------------- solvers

@@ -115,7 +115,7 @@ fn percent(printed: f64, exact: f64) -> String {
 
 /// Labels of the result keys shared by the three examples.
 fn label_results(s: &mut Solution) {
-    for (key, label, unit) in [
+    s.label_present(&[
         ("c0", "Centre column c₀", "px"),
         ("r0", "Centre row r₀", "px"),
         ("x_px", "x offset from the centre", "px"),
@@ -130,11 +130,7 @@ fn label_results(s: &mut Solution) {
         ("scale_denominator", "Scale number m (1 : m)", ""),
         ("gsd_mm", "Ground sample distance", "mm"),
         ("gsd_cm", "Ground sample distance", "cm"),
-    ] {
-        if s.result.get(key).is_some() {
-            s.label(key, label, unit);
-        }
-    }
+    ]);
 }
 
 fn centre_step(frame: Frame) -> Step {

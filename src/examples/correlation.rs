@@ -470,7 +470,7 @@ fn ncc_values(step: Step, n: &Ncc) -> Step {
 
 /// What each result key of this topic means, for the page's table.
 fn label_results(s: &mut Solution) {
-    for (key, label, unit) in [
+    s.label_present(&[
         ("mean_template", "Template mean Ā", ""),
         ("mean_subwindows", "Sub-window means B̄ₖ", ""),
         ("rho", "Correlation coefficients ρ", ""),
@@ -499,11 +499,7 @@ fn label_results(s: &mut Solution) {
         ("c_max_printed_rho", "Peak column from the printed ρ", "px"),
         ("r_max_printed_rho", "Peak row from the printed ρ", "px"),
         ("peak_shift", "How far the peak moves", "px"),
-    ] {
-        if s.result.get(key).is_some() {
-            s.label(key, label, unit);
-        }
-    }
+    ]);
 }
 
 // ---------------------------------------------------------------- Example 5

@@ -483,7 +483,7 @@ fn forstner_result(f: &Forstner, p: &Precision) -> Record {
 
 /// What each result key is, for the page's result table.
 fn label_results(s: &mut Solution) {
-    for (key, label, unit) in [
+    s.label_present(&[
         ("gx", "Gradients g′x (interior)", "grey values/px"),
         ("gy", "Gradients g′y (interior)", "grey values/px"),
         ("n", "Matrix N", ""),
@@ -515,11 +515,7 @@ fn label_results(s: &mut Solution) {
             "[c, r, g, row, column, main diag., other diag., sum]",
             "",
         ),
-    ] {
-        if s.result.get(key).is_some() {
-            s.label(key, label, unit);
-        }
-    }
+    ]);
 }
 
 fn singular_notes(s: &mut Solution, m: &Measures) {

@@ -630,7 +630,7 @@ fn said_of(e: Error, start_fields: &str) -> Error {
 
 /// What each result key is, for the page's result table.
 fn label_results(s: &mut Solution) {
-    for (key, label, unit) in [
+    s.label_present(&[
         ("first_dc", "First iteration: shift increment dc", "px"),
         ("first_dr", "First iteration: shift increment dr", "px"),
         ("first_da", "First iteration: gain increment da", ""),
@@ -655,11 +655,7 @@ fn label_results(s: &mut Solution) {
             "Expected σ0 from the noise",
             "grey values",
         ),
-    ] {
-        if s.result.get(key).is_some() {
-            s.label(key, label, unit);
-        }
-    }
+    ]);
 }
 
 fn lsm_1d(inputs: &Record) -> Result<Solution> {

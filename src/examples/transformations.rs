@@ -660,7 +660,7 @@ fn common_result(s: &mut Solution, fit: &Fit, inverse: Option<Vec<f64>>) {
 /// fiducials, none for arbitrary points).
 fn label_results(s: &mut Solution, names: &[String], unit: &str) {
     let params = format!("Parameters [{}]", names.join(", "));
-    for (key, label, u) in [
+    s.label_present(&[
         ("parameters", params.as_str(), ""),
         ("residuals", "Residuals V = A·X − L, [vx1, vy1, …]", unit),
         ("sigma0", "Standard deviation of unit weight σ0", unit),
@@ -683,11 +683,7 @@ fn label_results(s: &mut Solution, names: &[String], unit: &str) {
         ("model", "Model", ""),
         ("point_set", "Control points", ""),
         ("fitted", "Transformed points (x̂, ŷ)", unit),
-    ] {
-        if s.result.get(key).is_some() {
-            s.label(key, label, u);
-        }
-    }
+    ]);
 }
 
 fn condition_note(s: &mut Solution, fit: &Fit) {
