@@ -63,6 +63,15 @@ fn text(s: &str) -> Value {
 }
 
 /// A tiny deterministic generator for the property tests.
+/// Matching settings with the gradients the seeds state.
+fn stated(model: Model, max_iterations: usize) -> Settings {
+    Settings {
+        model,
+        gradients: Gradients::SearchWindow,
+        max_iterations,
+    }
+}
+
 struct Lcg(u64);
 impl Lcg {
     fn next(&mut self) -> f64 {
@@ -360,11 +369,7 @@ fn a_flat_patch_is_degenerate() {
         &[1.0, 2.0, 3.0],
         &[4.0; 5],
         Params::shift(2.0, 0.0, 1.0, 0.0),
-        Settings {
-            model: Model::Shift,
-            gradients: Gradients::SearchWindow,
-            max_iterations: 10,
-        },
+        stated(Model::Shift, 10),
     )
     .unwrap();
     assert!(matches!(m.status, Status::Degenerate { .. }));
@@ -395,12 +400,13 @@ fn a_start_outside_the_pull_in_range_and_a_patch_leaving_the_window() {
     .unwrap();
     assert_eq!(status(&s), "not-converged");
     assert!(has_note(&s, NoteKind::Warning, "The last increments were"));
-    // the same rotation from a start 2 px closer converges
+    // the same shift with a smaller rotation (20°) is within the pull-in
+    // range and converges
     let s = solve(
         "lsm-affine",
         &Record::new()
-            .with("shift_c", 2.0)
-            .with("shift_r", 1.0)
+            .with("shift_c", 3.0)
+            .with("shift_r", 1.5)
             .with("rotation_deg", 20.0),
     )
     .unwrap();
@@ -425,17 +431,7 @@ fn synthetic_shifts_up_to_one_pixel_are_recovered_to_a_hundredth() {
         let pair = synthetic_pair(15, &truth, 0.0, k).unwrap();
         let start = Params::shift(pair.centre, pair.centre, 1.0, 0.0);
         for model in [Model::Shift, Model::ShiftRadiometric] {
-            let m = match_2d(
-                &pair.template,
-                &pair.search,
-                start,
-                Settings {
-                    model,
-                    gradients: Gradients::SearchWindow,
-                    max_iterations: 100,
-                },
-            )
-            .unwrap();
+            let m = match_2d(&pair.template, &pair.search, start, stated(model, 100)).unwrap();
             assert!(m.converged(), "{dc} {dr}: {:?}", m.status);
             let (c, r) = (m.params.a[2] - pair.centre, m.params.a[5] - pair.centre);
             assert!(
@@ -515,11 +511,7 @@ fn shifts_of_a_continuous_texture_reach_the_least_squares_optimum_in_2d() {
             &template,
             &search,
             Params::shift(centre, centre, 1.0, 0.0),
-            Settings {
-                model: Model::Shift,
-                gradients: Gradients::SearchWindow,
-                max_iterations: 100,
-            },
+            stated(Model::Shift, 100),
         )
         .unwrap();
         assert!(out.converged(), "{dc} {dr}: {:?}", out.status);
@@ -567,11 +559,7 @@ fn shifts_of_a_continuous_profile_are_recovered_to_two_hundredths_in_1d() {
                 &template,
                 &search,
                 Params::shift(15.0, 0.0, 1.0, 0.0),
-                Settings {
-                    model,
-                    gradients: Gradients::SearchWindow,
-                    max_iterations: 100,
-                },
+                stated(model, 100),
             )
             .unwrap();
             assert!(out.converged(), "{dc}: {:?}", out.status);
@@ -604,11 +592,7 @@ fn the_1d_affine_radiometric_model_recovers_scale_shift_gain_and_offset() {
         &template,
         &search,
         Params::shift(20.0, 0.0, 1.0, 0.0),
-        Settings {
-            model: Model::AffineRadiometric,
-            gradients: Gradients::SearchWindow,
-            max_iterations: 100,
-        },
+        stated(Model::AffineRadiometric, 100),
     )
     .unwrap();
     assert!(out.converged(), "{:?}", out.status);
@@ -698,11 +682,7 @@ fn the_example_and_the_core_are_one_computation() {
         &t,
         &sw,
         Params::shift(7.0, 0.0, 1.0, 0.0),
-        Settings {
-            model: Model::ShiftRadiometric,
-            gradients: Gradients::SearchWindow,
-            max_iterations: 100,
-        },
+        stated(Model::ShiftRadiometric, 100),
     )
     .unwrap();
     let s = solve("lsm-1d", &Record::new().with("radiometric", true)).unwrap();
@@ -716,11 +696,7 @@ fn the_example_and_the_core_are_one_computation() {
         &g,
         &s2,
         Params::shift(7.0, 0.0, 1.0, 0.0),
-        Settings {
-            model: Model::Shift,
-            gradients: Gradients::SearchWindow,
-            max_iterations: 10,
-        },
+        stated(Model::Shift, 10),
     )
     .unwrap_err();
     assert_eq!(e.field(), Some("search"));

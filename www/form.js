@@ -255,7 +255,8 @@ function pointsTable(field, key, currentText, onEdit) {
     const lines = [...body.rows]
       .map((tr) => [...tr.querySelectorAll("input")].map((i) => i.value.trim()))
       .filter((cells) => cells.some((c) => c.length > 0))
-      .map((cells) => cells.map((c) => c || "?").join(" "));
+      // an unfinished row keeps the numbers it has: the core then says how many are missing
+      .map((cells) => cells.filter((c) => c.length > 0).join(" "));
     onEdit(lines.join("\n"));
   };
   const renumber = () => {

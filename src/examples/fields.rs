@@ -326,9 +326,10 @@ impl Field {
                         return Err(Error::input(
                             key,
                             format!(
-                                "point {} has {} numbers; each point needs {point_len}",
+                                "point {} has {} number{}; each point needs {point_len}",
                                 i + 1,
-                                row.len()
+                                row.len(),
+                                if row.len() == 1 { "" } else { "s" }
                             ),
                         ));
                     }

@@ -154,9 +154,10 @@ fn pairs(rows: &[Vec<f64>]) -> Result<Vec<PointPair>> {
             _ => Err(Error::input(
                 "points",
                 format!(
-                    "point {} has {} numbers; each point needs 4",
+                    "point {} has {} number{}; each point needs 4",
                     i + 1,
-                    r.len()
+                    r.len(),
+                    if r.len() == 1 { "" } else { "s" }
                 ),
             )),
         })

@@ -113,6 +113,7 @@ describe("resampling, filters and edges", () => {
       await page.getByRole("button", { name: "Example 12a" }).click();
       assert.equal(await settled(page), "ok");
       assert.ok(Math.abs((await exact(page, "bilinear")) - 75.3584) < 1e-9);
+      assert.equal(Number(await printed.getAttribute("data-value")), 75.35);
 
       assert.equal(await visit(page, env.url, "index.html", "#/filter-window"), "ok");
       await page.getByRole("button", { name: "Example 16: Laplacian" }).click();
@@ -127,11 +128,15 @@ describe("resampling, filters and edges", () => {
       await page.getByRole("button", { name: "Example 15: Gaussian" }).click();
       assert.equal(await settled(page), "ok");
       assert.equal(await page.locator('[name="kernel"]').inputValue(), "gaussian-3");
+      // the seed's printed values appear only when the window is exactly the seed's
+      // (the Rust constant): the preset's copy of it is right
+      assert.ok((await page.locator(".result-table .verdict").count()) > 0, "Example 15 preset compared with the seed");
 
       assert.equal(await visit(page, env.url, "index.html", "#/edge-window"), "ok");
       await page.getByRole("button", { name: "Example 15: Sobel" }).click();
       assert.equal(await settled(page), "ok");
       assert.equal(await page.locator('[name="operator"]').inputValue(), "sobel");
+      assert.ok((await page.locator(".result-table .verdict").count()) > 0, "Example 15 Sobel preset compared with the seed");
       assert.deepEqual(log.pageErrors, []);
       assert.deepEqual(log.consoleErrors, []);
     } finally {

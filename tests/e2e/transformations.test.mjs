@@ -117,7 +117,8 @@ describe("transformations", () => {
       await page.getByRole("button", { name: "+ Add point" }).click();
       assert.equal(await table.locator("tr").count(), 5);
       await page.getByLabel("Point 5, u").fill("1000");
-      assert.equal(await settled(page), "invalid"); // a point with one number (the others "?") is not a point yet
+      assert.equal(await settled(page), "invalid"); // a point with one number is not a point yet
+      assert.equal(await page.locator('.field[data-key="points"] .field-error').innerText(), "point 5 has 1 number; each point needs 4");
       await page.getByLabel("Point 5, v").fill("-1000");
       await page.getByLabel("Point 5, x").fill("-72.4");
       await page.getByLabel("Point 5, y").fill("72.4");
