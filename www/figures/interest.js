@@ -13,7 +13,7 @@ import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, arrow, dot, fini
 const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26 });
 const ELLIPSE = Object.freeze({ height: 290, panelMin: 200, clip: 2.6, margin: 14 });
 const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, maxShown: 4, overviewMin: 26, overviewMax: 48 });
-const IMAGE = Object.freeze({ margin: 14, legend: 62, maxSide: 620, tRadiusCells: 1, clip: 3 });
+const IMAGE = Object.freeze({ margin: 14, maxSide: 620, tRadiusCells: 1, clip: 3 });
 /** Digits in figure labels. */
 const DIGITS = 4;
 /** The four Moravec directions, in the order of the core's `diffs`. */
@@ -394,6 +394,39 @@ function imageLayout(width, img) {
   return { cell, side, x0: Math.floor((width - side * cell) / 2), y0: IMAGE.margin };
 }
 
+/** Splits `str` at " · " and spaces into lines no wider than `max` CSS px. */
+function wrap(str, max, size, weight) {
+  const lines = [];
+  let cur = "";
+  for (const word of str.split(" ")) {
+    const next = cur ? `${cur} ${word}` : word;
+    if (cur && textWidth(next, size, weight) > max) {
+      lines.push(cur.replace(/ ·$/, ""));
+      cur = word === "·" ? "" : word;
+    } else {
+      cur = next;
+    }
+  }
+  if (cur) lines.push(cur);
+  return lines;
+}
+
+/** The legend under the pattern, wrapped to the canvas width. */
+function legendLines(width, solution, magnification) {
+  const r = solution.result ?? {};
+  const inp = solution.inputs ?? {};
+  const pts = Array.isArray(r.points) ? r.points : [];
+  const size = finite(inp.window_size, 5);
+  const T = finite(inp.threshold_px, 0.5);
+  const max = width - 2 * IMAGE.margin;
+  const parts = [
+    [`window (${inp.c}, ${inp.r}), ${size}×${size}: ${r.case} · w = ${fmt(r.w)} · q = ${fmt(r.q)}`, { size: FONT_SIZE, weight: "bold" }],
+    [`${r.candidates} pixels pass the threshold (orange dots) · ${pts.length} interest points (purple rings)`, { size: FONT_SIZE_SMALL }],
+    [`ellipse magnified ×${fmt(magnification, 3)}: the dashed circle is T = ${fmt(T)} px · c → 1…64, r ↓ 1…64`, { size: FONT_SIZE_SMALL, color: COLORS.muted }],
+  ];
+  return parts.flatMap(([str, style]) => wrap(str, max, style.size, style.weight).map((t) => ({ text: t, style })));
+}
+
 const imageSpec = {
   caption:
     "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression. Three fixed windows (dotted) show seed 003's three cases with their ellipses at the same magnification: flat (a dashed disc, no direction determined or both axes long), edge (long along the edge), corner (small).",
@@ -401,7 +434,7 @@ const imageSpec = {
     const img = stepValue(solution, "image");
     if (!isMatrix(img)) return 120;
     const L = imageLayout(width, img);
-    return L.side * L.cell + 2 * IMAGE.margin + IMAGE.legend;
+    return L.side * L.cell + 2 * IMAGE.margin + 14 + legendLines(width, solution, 1).length * (FONT_SIZE * LINE_HEIGHT + 2);
   },
   describe(solution) {
     const r = solution.result ?? {};
@@ -482,11 +515,12 @@ const imageSpec = {
     ctx.stroke();
     ctx.restore();
     const magnification = rT / T / L.cell;
-    const y = L.y0 + L.side * L.cell + 14;
+    let y = L.y0 + L.side * L.cell + 14;
     const lh = FONT_SIZE * LINE_HEIGHT + 2;
-    text(ctx, `window (${inp.c}, ${inp.r}), ${size}×${size}: ${r.case} · w = ${fmt(r.w)} · q = ${fmt(r.q)}`, IMAGE.margin, y, { size: FONT_SIZE, weight: "bold" });
-    text(ctx, `${r.candidates} pixels pass the threshold (orange dots) · ${pts.length} interest points (purple rings)`, IMAGE.margin, y + lh, { size: FONT_SIZE_SMALL });
-    text(ctx, `ellipse magnified ×${fmt(magnification, 3)}: the dashed circle is T = ${fmt(T)} px · c → 1…64, r ↓ 1…64`, IMAGE.margin, y + 2 * lh, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+    for (const line of legendLines(width, solution, magnification)) {
+      text(ctx, line.text, IMAGE.margin, y, line.style);
+      y += lh;
+    }
   },
 };
 
