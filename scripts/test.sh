@@ -18,6 +18,8 @@ step "cargo test (native)"
 cargo test
 step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
 cargo test --target wasm32-unknown-unknown --test 'web*'
+step "unit tests of the page modules (Node)"
+node --test tests/unit/
 step "build the page"
 SKIP_SETUP=1 bash scripts/build.sh
 step "end-to-end tests of the page in Chromium"

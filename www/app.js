@@ -8,11 +8,11 @@
 // history.replaceState. Nothing read from the URL is ever parsed as HTML.
 
 import { loadCore, messageOf } from "./core.js";
-import { loadMath } from "./math.js";
+import { fitFormulas, keepFitted, loadMath } from "./math.js";
 import { buildHash, parseHash } from "./url.js";
 import { el } from "./dom.js";
 import { buildForm } from "./form.js";
-import { renderNotes, renderResult, renderSteps } from "./render.js";
+import { renderAnswer, renderNotes, renderResult, renderSteps } from "./render.js";
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 
@@ -33,6 +33,8 @@ const SITE_TITLE = "Photogrammetry Playground";
 const MAX_QUOTED_KEY = 40;
 /** How long "Link copied" stays. */
 const COPY_STATUS_MS = 4000;
+/** Where the "Show API names" choice is remembered. */
+const API_NAMES_KEY = "photogrammetry-playground:show-api-names";
 
 const mode = document.body.dataset.mode === "embed" ? "embed" : "full";
 const root = document.getElementById("app");
@@ -130,7 +132,26 @@ function showMessage(title, message) {
 
 function destroyView() {
   if (view?.figure) view.figure.destroy();
+  if (view?.stopFitting) view.stopFitting();
   view = null;
+}
+
+function showApiNames(on) {
+  document.body.classList.toggle("show-api", on);
+  try {
+    if (on) localStorage.setItem(API_NAMES_KEY, "1");
+    else localStorage.removeItem(API_NAMES_KEY);
+  } catch {
+    // no storage (private mode): the choice lasts for this page only
+  }
+}
+
+function apiNamesRemembered() {
+  try {
+    return localStorage.getItem(API_NAMES_KEY) === "1";
+  } catch {
+    return false;
+  }
 }
 
 function buildView(entry) {
@@ -138,8 +159,11 @@ function buildView(entry) {
   const id = entry.id;
   const v = { id, entry, lastGood: null, figure: null };
 
-  const heading = el("h2", { id: "example-title", tabindex: "-1" }, entry.title);
-  const meta = el("p", { class: "example-meta" }, `${entry.source ?? ""}${entry.source ? " · " : ""}${entry.topic ?? ""}`);
+  // the embed has no site header: the example's title is its page heading
+  const heading = el(mode === "embed" ? "h1" : "h2", { id: "example-title", tabindex: "-1" }, entry.title);
+  const from = [entry.source, entry.document && entry.document !== entry.source ? entry.document : null].filter(Boolean).join(" — ");
+  const meta = el("p", { class: "example-meta" }, `${from}${from && entry.topic ? " · " : ""}${entry.topic ?? ""}`);
+  const answerLine = el("p", { class: "answer-line", role: "status", "aria-live": "polite", hidden: true });
   const summary = entry.summary ? el("p", { class: "example-summary" }, entry.summary) : null;
   const urlNotice = el("p", { class: "notice url-notice", role: "status", hidden: true });
   const errorBox = el("div", { class: "error-box", role: "alert", hidden: true });
@@ -147,7 +171,7 @@ function buildView(entry) {
 
   v.form = buildForm(entry, () => recompute());
   const copyStatus = el("span", { class: "copy-status", role: "status" });
-  const resetButton = el("button", { type: "button", class: "button" }, "Reset to the seed’s values");
+  const resetButton = el("button", { type: "button", class: "button" }, "Reset to the worked example’s values");
   resetButton.addEventListener("click", () => {
     v.form.setAll({});
     urlNotice.hidden = true;
@@ -155,7 +179,11 @@ function buildView(entry) {
   });
   const copyButton = el("button", { type: "button", class: "button" }, "Copy link");
   copyButton.addEventListener("click", () => copyLink(copyStatus));
-  const actions = el("div", { class: "actions" }, resetButton, copyButton, copyStatus);
+  const apiBox = el("input", { type: "checkbox", id: `api-names-${id}` });
+  apiBox.checked = document.body.classList.contains("show-api");
+  apiBox.addEventListener("change", () => showApiNames(apiBox.checked));
+  const apiToggle = el("label", { class: "api-toggle", for: `api-names-${id}`, title: "The names course authors use in links and in the JS API" }, apiBox, "Show API names");
+  const actions = el("div", { class: "actions" }, resetButton, copyButton, apiToggle, copyStatus);
   if (mode === "embed") {
     const open = el("a", { class: "open-full", target: "_blank", rel: "noopener", href: "index.html" }, `Open in ${SITE_TITLE} ↗`);
     v.openLink = open;
@@ -179,7 +207,7 @@ function buildView(entry) {
     const drawer = el("details", { class: "catalog-drawer" }, el("summary", {}, "Other examples"), catalogNav({ detailed: false, currentId: id }));
     children.push(el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog"), drawer));
   }
-  children.push(el("header", { class: "example-head" }, heading, meta, summary), urlNotice, errorBox, staleBanner, solutionArea);
+  children.push(el("header", { class: "example-head" }, heading, meta, summary), answerLine, urlNotice, errorBox, staleBanner, solutionArea);
   const article = el("article", { class: "example", "data-id": id }, children);
   root.replaceChildren(article);
   if (figureSection) {
@@ -192,7 +220,8 @@ function buildView(entry) {
     v.figure = mountFigures(figureHost, id, { onInputs });
   }
 
-  v.parts = { heading, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
+  v.parts = { heading, answerLine, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
+  v.stopFitting = keepFitted(stepsList);
   document.title = `${entry.title} — ${SITE_TITLE}`;
   view = v;
   return v;
@@ -210,13 +239,19 @@ function clearGeneralError() {
 }
 
 function markStale(reason) {
-  const { staleBanner, solutionArea, stepsList } = view.parts;
+  const { staleBanner, solutionArea, stepsList, answerLine } = view.parts;
   solutionArea.classList.toggle("stale", Boolean(view.lastGood));
+  answerLine.classList.toggle("stale", Boolean(view.lastGood));
   solutionArea.classList.toggle("no-solution", !view.lastGood);
   if (!view.lastGood) stepsList.replaceChildren(el("p", { class: "muted" }, "No solution yet: the steps appear as soon as every input is valid."));
   if (view.lastGood) {
+    const fields = new Map((view.entry.inputs ?? []).map((f) => [f.key, f]));
     const used = Object.entries(view.lastGood.inputs ?? {})
-      .map(([k, val]) => `${k} = ${formatValue(val).replace(/\n/g, "; ")}`)
+      .map(([k, val]) => {
+        const f = fields.get(k);
+        const shown = f?.kind === "choice" ? (f.options ?? []).find((o) => String(o.value) === String(val))?.label ?? formatValue(val) : formatValue(val).replace(/\n/g, "; ");
+        return `${f?.label ?? k} = ${shown}${f?.unit ? ` ${f.unit}` : ""}`;
+      })
       .join(", ");
     staleBanner.textContent = `${reason} The solution below is still the one for the last valid inputs (${used}).`;
   } else {
@@ -227,6 +262,7 @@ function markStale(reason) {
 
 function clearStale() {
   view.parts.solutionArea.classList.remove("stale", "no-solution");
+  view.parts.answerLine.classList.remove("stale");
   view.parts.staleBanner.hidden = true;
   view.parts.staleBanner.textContent = "";
 }
@@ -240,8 +276,11 @@ function plain(value) {
 }
 
 function renderSolution(solution) {
-  const { stepsList, resultBody, notesBody } = view.parts;
+  const { stepsList, resultBody, notesBody, answerLine } = view.parts;
+  answerLine.replaceChildren(...renderAnswer(solution));
+  answerLine.hidden = !answerLine.childElementCount;
   stepsList.replaceChildren(renderSteps(solution));
+  fitFormulas(stepsList);
   resultBody.replaceChildren(...renderResult(solution));
   notesBody.replaceChildren(...renderNotes(solution));
   if (view.figure) view.figure.update(solution);
@@ -286,7 +325,11 @@ function recompute() {
   try {
     solution = plain(core.solve(id, parsed.inputs ?? {}));
   } catch (e) {
-    showGeneralError(messageOf(e));
+    const message = messageOf(e);
+    // "c: 560 is outside the patch …": the field it names is marked too
+    const named = /^([A-Za-z0-9_]+): /.exec(message);
+    if (named && view.form.has(named[1])) view.form.showErrors({ [named[1]]: message });
+    showGeneralError(message);
     markStale("These inputs cannot be solved.");
     setStatus("error");
     return;
@@ -391,6 +434,7 @@ async function main() {
     return;
   }
   core = coreResult.value;
+  if (apiNamesRemembered()) document.body.classList.add("show-api");
   try {
     entries = plain(core.catalog());
   } catch (e) {

@@ -75,7 +75,7 @@ export function buildForm(entry, onInput) {
       "p",
       { id: helpId, class: "help" },
       field.help ? el("span", { class: "help-text" }, field.help) : null,
-      el("span", { class: "help-rules" }, rules ? `${rules} · ` : "", `seed value ${seedText.replace(/\n/g, "; ")}`),
+      el("span", { class: "help-rules" }, rules ? `${rules} · ` : "", `worked example: ${shownText(field, seedText)}`),
     );
     const error = el("p", { id: errId, class: "field-error", hidden: true });
     const keyTag = el("code", { class: "field-key", title: "name in the URL" }, key);
@@ -181,6 +181,19 @@ export function buildForm(entry, onInput) {
     controls.set(key, { field, control, error, helpId, errId, getText, setText, seedText, wrapper });
   }
 
+  /** Hides the fields that do not apply to the mode chosen (a field's `when`). */
+  const applyWhen = () => {
+    for (const [, c] of controls) {
+      const when = c.field.when;
+      if (!when || !controls.has(when.key)) continue;
+      const applies = (when.values ?? []).map(String).includes(controls.get(when.key).getText());
+      c.wrapper.hidden = !applies;
+      c.control.disabled = !applies;
+    }
+  };
+  form.addEventListener("input", applyWhen);
+  form.addEventListener("change", applyWhen);
+
   return {
     element: form,
     keys: () => [...controls.keys()],
@@ -191,10 +204,12 @@ export function buildForm(entry, onInput) {
     /** Sets only the fields named in `texts` (keys the form lacks are ignored). */
     set(texts) {
       for (const [key, t] of Object.entries(texts || {})) if (controls.has(key)) controls.get(key).setText(t);
+      applyWhen();
     },
     /** Sets every field: from `texts` where given, else the seed's value. */
     setAll(texts) {
       for (const [key, c] of controls) c.setText(Object.hasOwn(texts, key) ? texts[key] : c.seedText);
+      applyWhen();
     },
     /**
      * Shows each error beside its field; returns the errors for keys the form
@@ -226,6 +241,16 @@ export function buildForm(entry, onInput) {
       return rest;
     },
   };
+}
+
+/** A field's text as a student reads it: a choice by its label, a flag as on/off, rows by ";". */
+function shownText(field, text) {
+  if (field.kind === "choice") {
+    const opt = (field.options ?? []).find((o) => String(o.value) === String(text));
+    if (opt) return opt.label ?? String(opt.value);
+  }
+  if (field.kind === "flag") return text === "true" ? "on" : "off";
+  return String(text).replace(/\n/g, "; ");
 }
 
 /** The rows of a point-list text: lines (or ";"-separated parts) of tokens split by spaces or commas. */

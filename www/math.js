@@ -1,12 +1,27 @@
-// KaTeX rendering with a plain-text fallback.
-// katex.render builds the formula's DOM itself and escapes its input; when it
-// fails (bad LaTeX, or KaTeX did not load) the raw LaTeX is shown as text.
+// KaTeX rendering that fits any width, with a plain-text fallback.
+//
+// The one place where formulas are broken into lines (issue 13): a formula
+// never needs sideways scrolling, on a phone, at 1280 px or on paper.
+//   1. splitFormula: top-level groups (at \quad, \qquad and ",\ " between
+//      equations), each group a chain of pieces before its second, third…
+//      relation ("a = b", "= c", "= 35.6 cm").
+//   2. splitTerms: each piece into terms before a top-level binary + or −,
+//      and at list separators (\; and ",\ " inside brackets); a gathered
+//      block into its rows. The terms flow: as many on a line as fit, the
+//      next line indented, the result after the last "=" on its own piece.
+//   3. fitFormulas (after layout, and again when the width changes): a term
+//      still wider than its line is laid out again: an aligned block as one
+//      line per row, a matrix or table as blocks of columns ("columns 1–4 of
+//      8", a table keeping its first column); what still cannot fit (one
+//      huge atom) becomes a labelled, focusable scroll region.
+// katex.render builds the DOM itself and escapes its input; when it fails
+// (bad LaTeX, or KaTeX did not load) the raw LaTeX is shown as text.
 
 // The minified UMD build (76 KB gzipped) rather than katex.mjs (146 KB
 // gzipped, not minified): loaded by a script element, it sets window.katex.
 const KATEX_URL = "./vendor/katex/katex.min.js";
 const KATEX_OPTIONS = Object.freeze({
-  displayMode: true,
+  displayMode: false, // terms are inline boxes; \displaystyle keeps display-size fractions
   throwOnError: true,
   trust: false, // no \href, \url, \includegraphics, \htmlClass...
   strict: "ignore",
@@ -37,17 +52,61 @@ export async function loadMath() {
   }
 }
 
+// ---------------------------------------------------------------------------
+// Scanning LaTeX at the top level
+
 /** Spacing commands after which a formula may wrap ("x = 1,\quad y = 2"). */
 const BREAK_COMMANDS = ["qquad", "quad"];
 /** Relations before which a chain may wrap ("GSD = p·m = 356 mm = 35.6 cm"). */
 const RELATION_COMMANDS = ["approx"];
+/** Environments whose rows and columns the fitting may rearrange. */
+const GRID_ENVS = ["bmatrix", "pmatrix", "vmatrix", "Bmatrix", "matrix", "array"];
 
 /**
- * Splits a formula where it may wrap, at the top level only (outside braces,
- * \left…\right and environments):
- *   - into groups at "\quad"/"\qquad" ("x = …,\quad y = …" -> two groups);
- *   - each group into pieces before its second, third… "=" or "\approx", the
- *     relation starting the next piece ("a = b = c" -> "a = b", "= c").
+ * Walks `tex` and calls `visit(i, token, depth)` for every top-level token:
+ * depth counts braces, \left…\right and \begin…\end; `paren` counts ( ) and
+ * [ ] (plain delimiters) separately so sums inside parentheses stay whole.
+ * Returns false when the braces do not balance.
+ */
+function scan(tex, visit) {
+  let depth = 0;
+  let paren = 0;
+  let i = 0;
+  while (i < tex.length) {
+    const ch = tex[i];
+    if (ch === "\\") {
+      const m = /^\\([A-Za-z]+|.)/.exec(tex.slice(i));
+      const name = m ? m[1] : "";
+      const length = 1 + Math.max(name.length, 1);
+      if (name === "left" || name === "begin") {
+        if (depth === 0) visit(i, { cmd: name, length }, depth, paren);
+        depth += 1;
+      } else if (name === "right" || name === "end") {
+        depth -= 1;
+      } else if (depth === 0) {
+        visit(i, { cmd: name, length }, depth, paren);
+      }
+      i += length;
+      continue;
+    }
+    if (ch === "{") depth += 1;
+    else if (ch === "}") depth -= 1;
+    else if (depth === 0) {
+      if (ch === "(" || ch === "[") paren += 1;
+      else if (ch === ")" || ch === "]") paren = Math.max(0, paren - 1);
+      visit(i, { ch }, depth, paren);
+    }
+    i += 1;
+  }
+  return depth === 0;
+}
+
+/**
+ * Splits a formula where it may wrap, at the top level only:
+ *   - into groups at "\quad"/"\qquad", and at ",\ " between equations
+ *     (outside parentheses and brackets);
+ *   - each group into pieces before its second, third… "=" or "\approx",
+ *     the relation starting the next piece ("a = b = c" -> "a = b", "= c").
  * Returns [[tex]] when there is no such place.
  * @param {string} tex
  * @returns {string[][]}
@@ -55,71 +114,257 @@ const RELATION_COMMANDS = ["approx"];
 export function splitFormula(tex) {
   const groups = [];
   let pieces = [];
-  let depth = 0;
   let start = 0;
-  let i = 0;
   const cut = (end) => {
     const piece = tex.slice(start, end).trim();
     if (piece) pieces.push(piece);
   };
-  while (i < tex.length) {
-    const ch = tex[i];
-    if (ch === "\\") {
-      const m = /^\\([A-Za-z]+|.)/.exec(tex.slice(i));
-      const name = m ? m[1] : "";
-      const length = 1 + Math.max(name.length, 1);
-      if (name === "left" || name === "begin") depth += 1;
-      else if (name === "right" || name === "end") depth -= 1;
-      else if (depth === 0 && BREAK_COMMANDS.includes(name)) {
-        cut(i);
-        if (pieces.length) groups.push(pieces);
-        pieces = [];
-        start = i + length;
-      } else if (depth === 0 && RELATION_COMMANDS.includes(name)) {
+  const endGroup = () => {
+    if (pieces.length) groups.push(pieces);
+    pieces = [];
+  };
+  const balanced = scan(tex, (i, t, depth, paren) => {
+    if (t.cmd && BREAK_COMMANDS.includes(t.cmd)) {
+      cut(i);
+      endGroup();
+      start = i + t.length;
+    } else if (t.cmd && RELATION_COMMANDS.includes(t.cmd)) {
+      cut(i);
+      start = i;
+    } else if (t.ch === "=") {
+      cut(i);
+      start = i;
+    } else if (t.ch === "," && paren === 0 && /^,\\ /.test(tex.slice(i, i + 3))) {
+      // "a_1 = …,\ a_2 = …": the comma ends one equation
+      cut(i + 1);
+      endGroup();
+      start = i + 3;
+    }
+  });
+  cut(tex.length);
+  endGroup();
+  if (!balanced || groups.length === 0) return [[tex]];
+  // the left-hand side stays with the first relation: "GSD = a × b", "= 356 mm", …
+  return groups.map((g) => (g.length > 1 && !/^(=|\\approx)/.test(g[0]) ? [`${g[0]} ${g[1]}`, ...g.slice(2)] : g));
+}
+
+/** Tokens after which a + or − is a sign, not an operation. */
+const SIGN_CONTEXT = /(^|[=<>(,[&+\-]|\\cdot|\\times|\\approx|\\quad|\\;|\\ |\\left.?)\s*$/;
+
+/**
+ * Splits a piece into terms that may flow onto several lines: before each
+ * top-level binary + or − (outside parentheses), and after each list
+ * separator (\; anywhere at the top level, ",\ " inside brackets, where it
+ * separates the items of a list). A piece that is exactly a `gathered` block
+ * gives one line per row. Returns { lines: [[term…]…] } where every line
+ * starts on a line of its own.
+ * @param {string} piece
+ */
+export function splitTerms(piece) {
+  const gathered = /^\\begin\{gathered\}([\s\S]*)\\end\{gathered\}(\s*[,.;]?)$/.exec(piece.trim());
+  if (gathered && splitTop(gathered[1], "\\\\").length > 1) {
+    const rows = splitTop(gathered[1], "\\\\").map((r) => r.trim()).filter(Boolean);
+    if (gathered[2].trim()) rows[rows.length - 1] += gathered[2].trim();
+    return { lines: rows.map((row) => termsOf(row)) };
+  }
+  return { lines: [termsOf(piece)] };
+}
+
+function termsOf(piece) {
+  const terms = [];
+  let start = 0;
+  const cut = (end) => {
+    const t = piece.slice(start, end).trim();
+    if (t) terms.push(t);
+  };
+  const balanced = scan(piece, (i, t, depth, paren) => {
+    if ((t.ch === "+" || t.ch === "-") && paren === 0) {
+      if (!SIGN_CONTEXT.test(piece.slice(0, i))) {
         cut(i);
         start = i;
       }
-      i += length;
-      continue;
-    }
-    if (ch === "{") depth += 1;
-    else if (ch === "}") depth -= 1;
-    else if (ch === "=" && depth === 0) {
+    } else if (t.cmd === ";" && paren === 0) {
       cut(i);
-      start = i;
+      start = i + t.length;
+    } else if (t.ch === "," && paren === 1 && /^,\\ /.test(piece.slice(i, i + 3)) && bracketOpen(piece.slice(0, i))) {
+      cut(i + 1);
+      start = i + 3;
     }
-    i += 1;
-  }
-  cut(tex.length);
-  if (pieces.length) groups.push(pieces);
-  if (depth !== 0 || groups.length === 0) return [[tex]];
-  // the left-hand side stays with the first relation: "GSD = a × b", "= 356 mm", …
-  return groups.map((g) => (g.length > 1 ? [`${g[0]} ${g[1]}`, ...g.slice(2)] : g));
+  });
+  cut(piece.length);
+  if (!balanced || terms.length === 0) return [piece];
+  return terms;
 }
 
-function katexNode(tex, className) {
-  const node = document.createElement("div");
-  node.className = className;
-  katex.render(tex, node, KATEX_OPTIONS);
+/** Whether the innermost open plain delimiter before the end of `s` is "[". */
+function bracketOpen(s) {
+  const stack = [];
+  scan(s, (i, t) => {
+    if (t.ch === "(" || t.ch === "[") stack.push(t.ch);
+    else if (t.ch === ")" || t.ch === "]") stack.pop();
+  });
+  return stack[stack.length - 1] === "[";
+}
+
+/** Splits at a top-level separator ("\\\\" for rows, "&" for cells). */
+function splitTop(tex, sep) {
+  const parts = [];
+  let start = 0;
+  scan(tex, (i, t) => {
+    if (sep === "\\\\" && t.cmd === "\\") {
+      parts.push(tex.slice(start, i));
+      start = i + 2;
+    } else if (sep === "&" && t.ch === "&") {
+      parts.push(tex.slice(start, i));
+      start = i + 1;
+    }
+  });
+  parts.push(tex.slice(start));
+  return parts;
+}
+
+/**
+ * The first top-level grid environment of a term: { before, env, spec, body,
+ * after } or null. `before` keeps any "N = " or size command ahead of it.
+ */
+export function findGrid(term) {
+  const m = /\\begin\{([A-Za-z]+)\}/.exec(term);
+  if (!m || !GRID_ENVS.includes(m[1])) return null;
+  const env = m[1];
+  let i = m.index + m[0].length;
+  let spec = "";
+  if (env === "array") {
+    const s = /^\s*\{([^{}]*)\}/.exec(term.slice(i));
+    if (!s) return null;
+    spec = s[1];
+    i += s[0].length;
+  }
+  // the matching \end{env}
+  const re = /\\(begin|end)\{([A-Za-z]+)\}/g;
+  re.lastIndex = i;
+  let level = 1;
+  let r;
+  while ((r = re.exec(term))) {
+    if (r[2] !== env) continue;
+    level += r[1] === "begin" ? 1 : -1;
+    if (level === 0) {
+      return { before: term.slice(0, m.index), env, spec, body: term.slice(i, r.index), after: term.slice(r.index + r[0].length) };
+    }
+  }
+  return null;
+}
+
+/** The rows of a grid body as cells; a leading \hline is kept apart. */
+function gridRows(body) {
+  return splitTop(body, "\\\\")
+    .map((row) => {
+      const h = /^\s*((?:\\hline\s*)*)([\s\S]*)$/.exec(row);
+      return { hline: h[1].trim(), cells: splitTop(h[2], "&").map((c) => c.trim()) };
+    })
+    .filter((row) => row.cells.some((c) => c.length) || row.hline);
+}
+
+/** Column letters of an array spec ("c|rr|rr" -> ["c","r","r","r","r"]). */
+function specColumns(spec) {
+  return [...spec.replace(/[^lcr]/g, "")];
+}
+
+/**
+ * A grid environment as blocks of at most `per` columns each (a table keeps
+ * its first column in every block). Returns [{ tex, from, to, of }].
+ */
+export function gridBlocks(grid, per) {
+  const rows = gridRows(grid.body);
+  const ncols = Math.max(...rows.map((r) => r.cells.length));
+  const isTable = grid.env === "array";
+  const first = isTable ? 1 : 0;
+  const letters = isTable ? specColumns(grid.spec) : [];
+  const blocks = [];
+  for (let from = first; from < ncols; from += per) {
+    const to = Math.min(ncols, from + per);
+    const cols = isTable ? [0, ...range(from, to)] : range(from, to);
+    const body = rows
+      .map((r) => `${r.hline ? `${r.hline} ` : ""}${cols.map((c) => r.cells[c] ?? "").join(" & ")}`)
+      .join(" \\\\ ");
+    let tex;
+    if (isTable) {
+      const spec = `${letters[0] ?? "l"}|${cols.slice(1).map((c) => letters[c] ?? "r").join("")}`;
+      tex = `\\begin{array}{${spec}} ${body} \\end{array}`;
+    } else {
+      tex = `\\begin{${grid.env}} ${body} \\end{${grid.env}}`;
+    }
+    blocks.push({ tex, from: from + 1, to, of: ncols });
+  }
+  return blocks;
+}
+
+function range(a, b) {
+  return Array.from({ length: b - a }, (_, k) => a + k);
+}
+
+// ---------------------------------------------------------------------------
+// Rendering
+
+/** Between boxes: a place to wrap that takes no room (KaTeX spaces the operators itself). */
+const BREAK = "\u200b";
+
+function katexInto(node, tex) {
+  katex.render(`\\displaystyle ${tex}`, node, KATEX_OPTIONS);
+}
+
+/** One term as an inline box; `lead` gives a leading + or − its binary spacing. */
+function termNode(tex, first = false) {
+  const node = document.createElement("span");
+  node.className = "formula-term";
+  node.dataset.tex = tex;
+  // a continuation's + or − is an operation (a line's first − is a sign); a relation always is one
+  const lead = (!first && /^[+\-]/.test(tex)) || /^=|^\\(approx|cdot|times)/.test(tex) ? "{}" : "";
+  katexInto(node, lead + tex);
+  return node;
+}
+
+function lineNode(terms) {
+  const line = document.createElement("span");
+  line.className = "formula-line";
+  terms.forEach((t, k) => line.append(...(k ? [BREAK, termNode(t)] : [termNode(t, true)])));
+  return line;
+}
+
+function pieceNode(piece, k) {
+  const node = document.createElement("span");
+  node.className = k === 0 ? "formula-piece" : "formula-piece formula-cont";
+  const { lines } = splitTerms(piece);
+  if (lines.length > 1) node.classList.add("formula-rows");
+  lines.forEach((l, k) => node.append(...(k ? [" ", lineNode(l)] : [lineNode(l)])));
   return node;
 }
 
 /** One group: its pieces, or the whole group when a piece cannot stand alone. */
-function renderGroup(pieces) {
+function groupNode(pieces) {
   const group = document.createElement("div");
   group.className = "formula-group";
   try {
-    group.append(...pieces.map((piece, k) => katexNode(piece, k === 0 ? "formula-part" : "formula-part formula-cont")));
+    pieces.forEach((p, k) => group.append(...(k ? [BREAK, pieceNode(p, k)] : [pieceNode(p, k)])));
   } catch {
-    group.replaceChildren(katexNode(pieces.join(" "), "formula-part"));
+    group.replaceChildren(pieceNodeWhole(pieces.join(" ")));
   }
   return group;
 }
 
+function pieceNodeWhole(tex) {
+  const node = document.createElement("span");
+  node.className = "formula-piece";
+  const line = document.createElement("span");
+  line.className = "formula-line";
+  line.append(termNode(tex));
+  node.append(line);
+  return node;
+}
+
 /**
- * Renders `tex` in display mode into a new element and returns it, split
- * (see splitFormula) into pieces that sit on one line when there is room and
- * wrap when there is not.
+ * Renders `tex` into a new element and returns it, split (see splitFormula,
+ * splitTerms) into pieces that sit on one line when there is room and wrap
+ * when there is not. Call fitFormulas on an ancestor once it is in the page.
  * @param {string} tex
  * @param {string} className
  */
@@ -129,11 +374,12 @@ export function renderFormula(tex, className = "formula") {
   if (katex) {
     try {
       try {
-        el.replaceChildren(...splitFormula(String(tex)).map(renderGroup));
+        splitFormula(String(tex)).forEach((g, k) => el.append(...(k ? [" ", groupNode(g)] : [groupNode(g)])));
       } catch {
         // the pieces do not stand alone: the whole formula, unsplit
-        el.replaceChildren(katexNode(String(tex), "formula-part"));
+        el.replaceChildren(groupNodeWhole(String(tex)));
       }
+      el.setAttribute("data-tex", String(tex));
       return el;
     } catch (e) {
       el.replaceChildren();
@@ -152,4 +398,130 @@ export function renderFormula(tex, className = "formula") {
   code.textContent = String(tex);
   el.append(code);
   return el;
+}
+
+function groupNodeWhole(tex) {
+  const group = document.createElement("div");
+  group.className = "formula-group";
+  group.append(pieceNodeWhole(tex));
+  return group;
+}
+
+// ---------------------------------------------------------------------------
+// Fitting after layout
+
+/** Whether a term is wider than the line it sits on. */
+function tooWide(term) {
+  return term.clientWidth > 0 && term.scrollWidth > term.clientWidth + 1;
+}
+
+/** The alternatives of a wide term: aligned rows, or blocks of columns. */
+function refit(term) {
+  const tex = term.dataset.tex;
+  const aligned = /^\\begin\{aligned\}([\s\S]*)\\end\{aligned\}(\s*[,.;]?)$/.exec(tex.trim());
+  if (aligned) {
+    const rows = splitTop(aligned[1], "\\\\").map((r) => r.replace(/&/g, "").trim()).filter(Boolean);
+    const rowsNode = document.createElement("span");
+    rowsNode.className = "formula-piece formula-rows formula-refit";
+    rows.forEach((row, k) => rowsNode.append(...(k ? [" ", lineNode(termsOf(row))] : [lineNode(termsOf(row))])));
+    term.replaceWith(rowsNode);
+    return rowsNode;
+  }
+  const grid = findGrid(tex);
+  if (grid) {
+    const rows = gridRows(grid.body);
+    const ncols = Math.max(...rows.map((r) => r.cells.length));
+    const first = grid.env === "array" ? 1 : 0;
+    const n = ncols - first;
+    const tries = [...new Set(range(2, n + 1).map((k) => Math.ceil(n / k)))];
+    for (const per of tries) {
+      const node = blocksNode(grid, per);
+      term.replaceWith(node);
+      const fits = ![...node.querySelectorAll(".formula-term")].some(tooWide);
+      if (fits || per === tries[tries.length - 1]) return node;
+      node.replaceWith(term);
+    }
+  }
+  return null;
+}
+
+function blocksNode(grid, per) {
+  const node = document.createElement("span");
+  node.className = "formula-piece formula-rows formula-refit formula-blocks";
+  const blocks = gridBlocks(grid, per);
+  blocks.forEach((b, k) => {
+    const block = document.createElement("span");
+    block.className = "formula-block";
+    const caption = document.createElement("span");
+    caption.className = "formula-block-caption";
+    caption.textContent = b.from === b.to ? `column ${b.from} of ${b.of}` : `columns ${b.from}–${b.to} of ${b.of}`;
+    const before = k === 0 ? grid.before : "";
+    const after = k === blocks.length - 1 ? grid.after : "";
+    block.append(caption, termNode(`${before}${b.tex}${after}`));
+    node.append(block);
+  });
+  return node;
+}
+
+/** The last resort for an atom that cannot be broken: a labelled scroll region. */
+function scrollable(term) {
+  term.classList.add("formula-scroll");
+  term.setAttribute("tabindex", "0");
+  term.setAttribute("role", "region");
+  term.setAttribute("aria-label", "Wide formula: scroll sideways to see all of it");
+}
+
+/**
+ * Lays the formulas below `root` out again for the width they have now:
+ * every refitted term starts from its original rendering, so a wider screen
+ * gets whole matrices back.
+ * @param {Element} root
+ */
+export function fitFormulas(root) {
+  if (!katex || !root) return;
+  for (const formula of root.querySelectorAll(".formula[data-tex]")) {
+    if (formula.querySelector(".formula-refit, .formula-scroll")) {
+      const fresh = renderFormula(formula.dataset.tex, formula.className);
+      formula.replaceWith(fresh);
+      fitOne(fresh);
+    } else {
+      fitOne(formula);
+    }
+  }
+}
+
+function fitOne(formula) {
+  if (formula.clientWidth === 0) return; // not laid out (hidden)
+  for (const term of [...formula.querySelectorAll(".formula-term")]) {
+    if (!tooWide(term)) continue;
+    const node = refit(term);
+    const still = node ? [...node.querySelectorAll(".formula-term")].filter(tooWide) : [term];
+    still.forEach(scrollable);
+  }
+}
+
+/**
+ * Keeps the formulas below `root` fitted as its width changes (a phone
+ * turned, a window resized, the print layout). Returns a stop function.
+ */
+export function keepFitted(root) {
+  let width = root.clientWidth;
+  let frame = 0;
+  const observer = new ResizeObserver(() => {
+    if (root.clientWidth === width) return;
+    width = root.clientWidth;
+    cancelAnimationFrame(frame);
+    frame = requestAnimationFrame(() => fitFormulas(root));
+  });
+  observer.observe(root);
+  const again = () => fitFormulas(root);
+  window.addEventListener("beforeprint", again);
+  // KaTeX's fonts arrive after the first layout and make every formula wider
+  document.fonts?.addEventListener?.("loadingdone", again);
+  document.fonts?.ready?.then(again);
+  return () => {
+    observer.disconnect();
+    window.removeEventListener("beforeprint", again);
+    document.fonts?.removeEventListener?.("loadingdone", again);
+  };
 }

@@ -1,47 +1,75 @@
-// Renders a Solution (docs/API.md) into plain DOM: steps, result table, notes.
+// Renders a Solution (docs/API.md) into plain DOM: the answer line, the
+// steps, the result with the printed-vs-exact comparison, and the notes.
+//
+// The result is one table that becomes a card per quantity where its column
+// is narrow (a container query in style.css), so the exact value, the
+// printed value and the difference are always visible together; matrices
+// are drawn as matrices.
 
 import { el } from "./dom.js";
 import { renderFormula } from "./math.js";
-import { agreesWithPrinted, difference, formatNumber, formatValue } from "./format.js";
+import { agreesWithPrinted, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
 
-/** Significant digits of a printed-minus-exact difference. */
-const DIFFERENCE_DIGITS = 4;
 /** Note kinds with their own badge style; any other kind gets the neutral one. */
 const NOTE_KINDS = ["erratum", "rounding", "convention", "warning"];
+/** Note kinds that explain a printed value as another convention or a slip, not a difference. */
+const EXPLAINING_KINDS = ["erratum", "convention"];
+/** Numbers of a vector shown in the answer line before "…". */
+const ANSWER_VECTOR_MAX = 8;
+/** Words for the comparison, used in the table head and the answer line. */
+export const WORDS = Object.freeze({
+  exact: "Exact",
+  printed: "Course notes print",
+  difference: "Difference (exact − printed)",
+});
 
 /** The steps as an ordered list. */
 export function renderSteps(solution) {
   const list = el("ol", { class: "steps" });
-  for (const step of solution.steps ?? []) {
-    const item = el("li", { class: "step" }, el("h4", { class: "step-title" }, step.title ?? ""));
+  (solution.steps ?? []).forEach((step, k) => {
+    const item = el("li", { class: "step", id: `step-${k + 1}` }, el("h4", { class: "step-title" }, step.title ?? ""));
     if (step.text) item.append(el("p", { class: "step-text" }, step.text));
     if (step.formula) item.append(renderFormula(step.formula, "formula formula-symbolic"));
     if (step.substituted) item.append(renderFormula(step.substituted, "formula formula-substituted"));
     list.append(item);
-  }
+  });
   if (!list.childElementCount) list.append(el("li", { class: "step" }, "This solution has no steps."));
   return list;
 }
 
-function signed(value) {
-  if (typeof value === "number") {
-    const s = formatNumber(value, DIFFERENCE_DIGITS);
-    return value > 0 ? `+${s}` : s;
-  }
-  if (Array.isArray(value)) {
-    if (value.length > 0 && value.every(Array.isArray)) return value.map(signed).join("\n");
-    return `[${value.map(signed).join(", ")}]`;
-  }
-  return formatValue(value);
+/** The label of a key: { label, unit } from the solution, or the key itself. */
+export function labelOf(solution, key) {
+  const l = solution.labels && Object.hasOwn(solution.labels, key) ? solution.labels[key] : null;
+  return { label: l?.label || key, unit: l?.unit || null };
 }
 
-function valueCell(className, value) {
-  const text = formatValue(value);
-  const attrs = { class: className };
-  if (typeof value === "number") attrs["data-value"] = String(value);
-  if (Array.isArray(value)) attrs["data-value"] = JSON.stringify(value);
-  const multiline = text.includes("\n");
-  return el("td", attrs, el(multiline ? "pre" : "span", { class: "value" }, text));
+function isMatrix(value) {
+  return Array.isArray(value) && value.length > 0 && value.every(Array.isArray);
+}
+
+/** A value as DOM: a number, a bracketed vector that wraps, a matrix as a grid. */
+export function valueNode(value, format = (v) => formatNumber(v)) {
+  if (isMatrix(value)) {
+    const rows = value.map((row) => el("tr", {}, row.map((v) => el("td", {}, typeof v === "number" ? format(v) : formatValue(v)))));
+    return el("table", { class: "matrix", role: "presentation" }, el("tbody", {}, rows));
+  }
+  if (Array.isArray(value)) {
+    const items = value.map((v, i) => el("span", { class: "vector-item" }, typeof v === "number" ? format(v, i) : formatValue(v), i < value.length - 1 ? "," : ""));
+    return el("span", { class: "vector" }, items);
+  }
+  return el("span", { class: "value" }, typeof value === "number" ? format(value) : formatValue(value));
+}
+
+function dataValue(value) {
+  if (typeof value === "number") return String(value);
+  if (Array.isArray(value)) return JSON.stringify(value);
+  return null;
+}
+
+/** The element-wise map of a value (numbers and arrays of the same shape). */
+function zipMap(a, b, f) {
+  if (Array.isArray(a) && Array.isArray(b) && a.length === b.length) return a.map((x, i) => zipMap(x, b[i], f));
+  return f(a, b);
 }
 
 /** The last step value named `key` (for textbook keys that are intermediates). */
@@ -53,9 +81,63 @@ function stepValue(solution, key) {
   return found;
 }
 
+/** The notes as numbered items: [{ n, note, kind }]. */
+function numberedNotes(solution) {
+  return (solution.notes ?? []).map((note, i) => ({ n: i + 1, note, kind: NOTE_KINDS.includes(note.kind) ? note.kind : "other" }));
+}
+
+function notesAbout(solution, key) {
+  return numberedNotes(solution).filter(({ note }) => Array.isArray(note.keys) && note.keys.includes(key));
+}
+
+function noteLink({ n, kind }) {
+  return el("a", { class: `note-link note-link-${kind}`, href: `#note-${n}`, "data-note": String(n) }, `note ${n}`);
+}
+
+/** The comparison of one quantity: { agrees, explained, diffText }. */
+export function compare(solution, key, exact, printed) {
+  const agrees = agreesWithPrinted(exact, printed);
+  const explaining = notesAbout(solution, key).filter(({ kind }) => EXPLAINING_KINDS.includes(kind));
+  return { agrees, explained: !agrees && explaining.length > 0, explaining };
+}
+
+function diffCell(solution, key, exact, printed) {
+  const td = el("td", { class: "diff", "data-label": WORDS.difference });
+  if (exact === undefined || exact === null) {
+    td.append(el("span", { class: "value muted" }, "—"));
+    return td;
+  }
+  const { agrees, explained, explaining } = compare(solution, key, exact, printed);
+  if (explained) {
+    // a sign slip or another convention: not a difference to report as a number
+    const kind = explaining[0].kind;
+    td.append(el("span", { class: `verdict verdict-${kind}` }, kind === "erratum" ? "erratum" : "other convention"), " — see ", ...explaining.flatMap((x, i) => (i ? [", ", noteLink(x)] : [noteLink(x)])));
+    td.dataset.verdict = kind;
+    return td;
+  }
+  const diff = zipMap(exact, printed, (e, p) => formatDifference(e, p));
+  const shown = agrees ? null : isMatrix(diff) ? valueNode(diff, (v) => v) : Array.isArray(diff) ? valueNode(diff, (v) => v) : el("span", { class: "value" }, diff ?? "—");
+  if (shown) td.append(shown, " ");
+  td.append(
+    el(
+      "span",
+      {
+        class: `verdict ${agrees ? "verdict-agrees" : "verdict-differs"}`,
+        title: agrees ? "the exact value rounds to the printed one" : "more than the printed rounding: see the notes",
+      },
+      agrees ? "agrees" : "differs",
+    ),
+  );
+  const others = notesAbout(solution, key);
+  if (!agrees && others.length) td.append(" — see ", ...others.flatMap((x, i) => (i ? [", ", noteLink(x)] : [noteLink(x)])));
+  td.dataset.verdict = agrees ? "agrees" : "differs";
+  return td;
+}
+
 /**
- * The result table: every result key with its exact value, and where the
- * seed prints the quantity (`textbook`), the printed value and the difference.
+ * The result: every result key with its exact value, and where the course
+ * notes print the quantity (`textbook`), the printed value and exact −
+ * printed. Returns DOM nodes.
  */
 export function renderResult(solution) {
   const result = solution.result ?? {};
@@ -67,63 +149,88 @@ export function renderResult(solution) {
     }
   }
 
-  const head = [el("th", { scope: "col" }, "Quantity"), el("th", { scope: "col" }, "Exact")];
-  if (textbook) head.push(el("th", { scope: "col" }, "Seed prints"), el("th", { scope: "col" }, "Difference"));
+  const head = [el("th", { scope: "col" }, "Quantity"), el("th", { scope: "col" }, WORDS.exact)];
+  if (textbook) head.push(el("th", { scope: "col" }, WORDS.printed), el("th", { scope: "col" }, WORDS.difference));
   const body = el("tbody");
   for (const row of rows) {
-    const label = solution.labels && Object.hasOwn(solution.labels, row.key) ? solution.labels[row.key] : null;
-    const name = el("th", { scope: "row" });
-    if (label && label.label) {
-      name.append(el("span", { class: "quantity-label" }, label.label + (label.unit ? ` (${label.unit})` : "")), el("br"));
-    }
-    name.append(el("code", {}, row.key));
+    const { label, unit } = labelOf(solution, row.key);
+    const name = el("th", { scope: "row" }, el("span", { class: "quantity-label" }, label + (unit ? ` (${unit})` : "")));
+    name.append(" ", el("code", { class: "api-name", title: "name in the API and the URL" }, row.key));
     if (row.intermediate) name.append(el("span", { class: "intermediate" }, " (intermediate)"));
-    const tr = el("tr", { "data-key": row.key }, name, valueCell("exact", row.exact));
+    const printed = textbook && Object.hasOwn(textbook, row.key) ? textbook[row.key] : undefined;
+    const exactCell = el("td", { class: "exact", "data-label": WORDS.exact }, valueNode(row.exact, (v) => formatExact(v, typeof printed === "number" ? printed : undefined)));
+    const dv = dataValue(row.exact);
+    if (dv !== null) exactCell.dataset.value = dv;
+    const tr = el("tr", { "data-key": row.key }, name, exactCell);
     if (textbook) {
-      if (Object.hasOwn(textbook, row.key) && row.exact === undefined) {
-        tr.append(valueCell("printed", textbook[row.key]), el("td", { class: "diff" }, "—"));
-      } else if (Object.hasOwn(textbook, row.key)) {
-        const printed = textbook[row.key];
-        const diff = difference(row.exact, printed);
-        const agrees = agreesWithPrinted(row.exact, printed);
-        const verdict = el(
-          "span",
-          {
-            class: `verdict ${agrees ? "verdict-agrees" : "verdict-differs"}`,
-            title: agrees ? "the exact value rounds to the printed one" : "more than the printed rounding: see the notes",
-          },
-          agrees ? "agrees" : "differs",
-        );
-        tr.append(
-          valueCell("printed", printed),
-          el("td", { class: "diff" }, el(diff !== null && Array.isArray(diff) && diff.every(Array.isArray) ? "pre" : "span", { class: "value" }, diff === null ? "—" : signed(diff)), " ", verdict),
-        );
+      if (printed !== undefined) {
+        const p = el("td", { class: "printed", "data-label": WORDS.printed }, valueNode(printed, (v) => formatNumber(v, 12)));
+        const pv = dataValue(printed);
+        if (pv !== null) p.dataset.value = pv;
+        tr.append(p, diffCell(solution, row.key, row.exact, printed));
       } else {
-        tr.append(el("td", { class: "printed" }, el("span", { class: "value muted" }, "not printed")), el("td", { class: "diff" }));
+        tr.append(el("td", { class: "printed not-printed", "data-label": WORDS.printed }, el("span", { class: "value muted" }, "not printed")), el("td", { class: "diff empty", "data-label": WORDS.difference }));
       }
     }
     body.append(tr);
   }
   const table = el("table", { class: "result-table" }, el("thead", {}, el("tr", {}, head)), body);
-  const wrap = el("div", { class: "table-scroll", tabindex: "0", role: "region", "aria-label": "Result table" }, table);
-  const parts = [wrap];
+  const parts = [el("div", { class: "result-wrap" }, table)];
   if (textbook) {
-    parts.push(el("p", { class: "hint" }, "Exact: computed without rounded intermediates. Difference: exact − printed; “agrees” when the exact value rounds to the printed one, “differs” otherwise (the notes say why)."));
+    parts.push(
+      el(
+        "p",
+        { class: "hint" },
+        "Exact: computed here without rounding any intermediate value. Course notes print: the value printed in the worked example. Difference: exact − printed; “agrees” when the exact value rounds to the printed one, “differs” otherwise (a note says why).",
+      ),
+    );
   } else {
-    parts.push(el("p", { class: "hint" }, "The seed prints its values only for its own inputs: “Reset to the seed’s values” compares with them."));
+    parts.push(el("p", { class: "hint" }, "The course notes print values only for their own inputs: “Reset to the worked example’s values” compares with them."));
   }
   return parts;
 }
 
-/** The notes, each with its kind as a badge. */
+/**
+ * The one-line answer near the top: "Ground sample distance = 35.649 cm; the
+ * course notes print 35.37 cm." from `solution.answer` (or the first result).
+ */
+export function renderAnswer(solution) {
+  const result = solution.result ?? {};
+  const keys = (Array.isArray(solution.answer) && solution.answer.length ? solution.answer : Object.keys(result).slice(0, 1)).filter((k) => Object.hasOwn(result, k));
+  const textbook = solution.textbook ?? {};
+  const parts = keys.map((key) => {
+    const { label, unit } = labelOf(solution, key);
+    const exact = result[key];
+    const printed = Object.hasOwn(textbook, key) ? textbook[key] : undefined;
+    const u = unit ? ` ${unit}` : "";
+    const span = el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, `${answerText(exact, printed)}${u}`));
+    if (printed !== undefined) {
+      const { agrees, explained } = compare(solution, key, exact, printed);
+      span.append(`; the course notes print ${answerText(printed)}${u}`, el("span", { class: "muted" }, agrees ? " (agrees)" : explained ? " (an erratum: see the notes)" : " (see the notes)"));
+    }
+    return span;
+  });
+  return parts.flatMap((p, i) => (i ? [el("span", { class: "answer-sep" }, " · "), p] : [p]));
+}
+
+function answerText(value, printed) {
+  if (isMatrix(value)) return `${value.length} × ${value[0].length} matrix (in the result below)`;
+  if (Array.isArray(value)) {
+    const shown = value.slice(0, ANSWER_VECTOR_MAX).map((v, i) => (typeof v === "number" ? formatExact(v, Array.isArray(printed) ? printed[i] : undefined) : formatValue(v)));
+    return `[${shown.join(", ")}${value.length > ANSWER_VECTOR_MAX ? ", …" : ""}]`;
+  }
+  return typeof value === "number" ? formatExact(value, typeof printed === "number" ? printed : undefined) : formatValue(value);
+}
+
+/** The notes, numbered, each with its kind as a badge and the quantities it concerns. */
 export function renderNotes(solution) {
-  const notes = solution.notes ?? [];
+  const notes = numberedNotes(solution);
   if (!notes.length) return [el("p", { class: "muted" }, "No notes for these inputs.")];
-  const list = el("ul", { class: "notes" });
-  for (const note of notes) {
-    const kind = NOTE_KINDS.includes(note.kind) ? note.kind : "other";
+  const list = el("ol", { class: "notes" });
+  for (const { n, note, kind } of notes) {
+    const about = Array.isArray(note.keys) && note.keys.length ? el("span", { class: "note-about" }, ` (about: ${note.keys.map((k) => labelOf(solution, k).label).join(", ")})`) : null;
     list.append(
-      el("li", { class: `note note-${kind}` }, el("span", { class: `badge badge-${kind}` }, String(note.kind ?? "note")), " ", el("span", { class: "note-text" }, note.text ?? "")),
+      el("li", { class: `note note-${kind}`, id: `note-${n}`, tabindex: "-1" }, el("span", { class: `badge badge-${kind}` }, String(note.kind ?? "note")), " ", el("span", { class: "note-text" }, note.text ?? ""), about),
     );
   }
   return [list];
