@@ -323,10 +323,49 @@ function termNode(tex, first = false) {
   return node;
 }
 
+/** Rows of a matrix or table shown before "Show all n rows". */
+const ROWS_SHOWN = 8;
+const ROWS_MAX = 12;
+
+/**
+ * A term holding a grid of more than ROWS_MAX rows: its first rows, a row of
+ * dots and a button that shows the rest. Returns null for smaller terms.
+ */
+function longGridNode(tex) {
+  const grid = findGrid(tex);
+  if (!grid) return null;
+  const rows = gridRows(grid.body);
+  const header = grid.env === "array" ? 1 : 0;
+  if (rows.length - header <= ROWS_MAX) return null;
+  const ncols = Math.max(...rows.map((r) => r.cells.length));
+  const dots = Array.from({ length: ncols }, () => "\\vdots").join(" & ");
+  const kept = rows.slice(0, header + ROWS_SHOWN).map((r) => `${r.hline ? `${r.hline} ` : ""}${r.cells.join(" & ")}`);
+  const spec = grid.env === "array" ? `{${grid.spec}}` : "";
+  const short = `${grid.before}\\begin{${grid.env}}${spec} ${[...kept, dots].join(" \\\\ ")} \\end{${grid.env}}${grid.after}`;
+  const wrap = document.createElement("span");
+  wrap.className = "formula-long";
+  const term = termNode(short);
+  const more = document.createElement("button");
+  more.type = "button";
+  more.className = "button formula-more";
+  more.textContent = `Show all ${rows.length - header} rows`;
+  more.addEventListener("click", () => {
+    const full = termNode(tex);
+    wrap.replaceWith(full);
+    const formula = full.closest(".formula");
+    if (formula) fitOne(formula);
+  });
+  wrap.append(term, more);
+  return wrap;
+}
+
 function lineNode(terms) {
   const line = document.createElement("span");
   line.className = "formula-line";
-  terms.forEach((t, k) => line.append(...(k ? [BREAK, termNode(t)] : [termNode(t, true)])));
+  terms.forEach((t, k) => {
+    const node = longGridNode(t) ?? termNode(t, k === 0);
+    line.append(...(k ? [BREAK, node] : [node]));
+  });
   return line;
 }
 
@@ -433,13 +472,15 @@ function refit(term) {
     const ncols = Math.max(...rows.map((r) => r.cells.length));
     const first = grid.env === "array" ? 1 : 0;
     const n = ncols - first;
-    const tries = [...new Set(range(2, n + 1).map((k) => Math.ceil(n / k)))];
-    for (const per of tries) {
+    // a first guess from the widths, then fewer columns a block until every block fits
+    const room = term.clientWidth;
+    let per = Math.max(1, Math.min(n - 1, Math.floor((n * room) / term.scrollWidth)));
+    for (;;) {
       const node = blocksNode(grid, per);
       term.replaceWith(node);
-      const fits = ![...node.querySelectorAll(".formula-term")].some(tooWide);
-      if (fits || per === tries[tries.length - 1]) return node;
+      if (per === 1 || ![...node.querySelectorAll(".formula-term")].some(tooWide)) return node;
       node.replaceWith(term);
+      per = Math.max(1, Math.min(per - 1, Math.floor(per * 0.8)));
     }
   }
   return null;

@@ -47,11 +47,19 @@ function isMatrix(value) {
   return Array.isArray(value) && value.length > 0 && value.every(Array.isArray);
 }
 
+/** A matrix larger than this (rows or columns) is shown in a scroll box of its own. */
+const MATRIX_MAX_COLS = 8;
+const MATRIX_MAX_ROWS = 12;
+
 /** A value as DOM: a number, a bracketed vector that wraps, a matrix as a grid. */
 export function valueNode(value, format = (v) => formatNumber(v)) {
   if (isMatrix(value)) {
     const rows = value.map((row) => el("tr", {}, row.map((v) => el("td", {}, typeof v === "number" ? format(v) : formatValue(v)))));
-    return el("table", { class: "matrix", role: "presentation" }, el("tbody", {}, rows));
+    const table = el("table", { class: "matrix", role: "presentation" }, el("tbody", {}, rows));
+    const cols = Math.max(...value.map((r) => r.length));
+    if (cols <= MATRIX_MAX_COLS && value.length <= MATRIX_MAX_ROWS) return table;
+    // a large what-if (a 64×64 search array): every number kept, in a box that scrolls
+    return el("div", { class: "matrix-scroll", tabindex: "0", role: "region", "aria-label": `${value.length} × ${cols} matrix: scroll to see all of it` }, table);
   }
   if (Array.isArray(value)) {
     const items = value.map((v, i) => el("span", { class: "vector-item" }, typeof v === "number" ? format(v, i) : formatValue(v), i < value.length - 1 ? "," : ""));

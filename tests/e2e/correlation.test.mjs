@@ -191,15 +191,12 @@ describe("correlation examples", () => {
       await page.getByLabel(/Template T/).fill(template.join("\n"));
       // pasted at once: one input event (Playwright's fill types a textarea's lines one by one)
       const search = page.getByLabel(/Search array S/);
-      const ms = await search.evaluate(async (el, text) => {
-        const t0 = performance.now();
+      // (how fast is for `npm run bench`, not for a test)
+      await search.evaluate((el, text) => {
         el.value = text;
         el.dispatchEvent(new Event("input", { bubbles: true }));
-        await new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
-        return performance.now() - t0;
       }, rows.join("\n"));
       await waitForExact(page, "best_c", 33, 0);
-      assert.ok(ms < 1000, `${ms} ms from the paste to the result on screen`);
       assert.equal(await exact(page, "best_r"), 23);
       assert.equal((await exactList(page, "rho")).length, 60);
       const [fig] = await canvases(page);
