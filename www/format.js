@@ -154,7 +154,9 @@ export function formatDifference(exact, printed) {
   const d = denoise(exact - printed);
   const decimals = printedDecimals(printed) ?? 3;
   const abs = Math.abs(d);
-  const needed = abs > 0 ? Math.max(decimals + 1, 1 - Math.floor(Math.log10(abs))) : decimals + 1;
+  // one decimal more than the print, at least the first significant digit, at most four of them
+  const lead = abs > 0 ? Math.floor(Math.log10(abs)) : 0;
+  const needed = Math.min(Math.max(decimals + 1, 1 - lead), 3 - lead);
   const s = formatDecimals(d, needed);
   return d > 0 ? `+${s}` : s;
 }

@@ -14,6 +14,8 @@ import { agreesWithPrinted, formatDifference, formatExact, formatNumber, formatV
 const NOTE_KINDS = ["erratum", "rounding", "convention", "warning"];
 /** Note kinds that explain a printed value as another convention or a slip, not a difference. */
 const EXPLAINING_KINDS = ["erratum", "convention"];
+/** Significant digits of a printed value (the course notes print at most this many; derived ones are cut here). */
+const PRINTED_DIGITS = 8;
 /** Numbers of a vector shown in the answer line before "…". */
 const ANSWER_VECTOR_MAX = 8;
 /** Words for the comparison, used in the table head and the answer line. */
@@ -172,7 +174,7 @@ export function renderResult(solution) {
     const tr = el("tr", { "data-key": row.key }, name, exactCell);
     if (textbook) {
       if (printed !== undefined) {
-        const p = el("td", { class: "printed", "data-label": WORDS.printed }, valueNode(printed, (v) => formatNumber(v, 12)));
+        const p = el("td", { class: "printed", "data-label": WORDS.printed }, valueNode(printed, (v) => formatNumber(v, PRINTED_DIGITS)));
         const pv = dataValue(printed);
         if (pv !== null) p.dataset.value = pv;
         tr.append(p, diffCell(solution, row.key, row.exact, printed));

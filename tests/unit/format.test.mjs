@@ -74,6 +74,8 @@ describe("differences: exact − printed, 0 within the printed precision", () =>
   it("a small real difference keeps two significant digits", () => {
     assert.equal(formatDifference(0.6730532, 0.69), `${M}0.017`);
     assert.equal(formatDifference(1.00004, 1.00001), "+0.00003");
+    // a printed value with a long tail: at most four significant digits of the difference
+    assert.equal(formatDifference(0.0128724, 0.0129049490058), `${M}0.00003255`);
   });
   it("printed decimals", () => {
     assert.equal(printedDecimals(12632), 0);
