@@ -204,7 +204,7 @@ describe("catalog and embed", () => {
       await page.keyboard.press("Tab");
       assert.equal(await page.evaluate(() => document.activeElement.name), "flying_height_m");
       await page.keyboard.press("Tab");
-      assert.match(await page.evaluate(() => document.activeElement.textContent), /Reset to the seed/);
+      assert.match(await page.evaluate(() => document.activeElement.textContent), /Reset to the worked example/);
     } finally {
       await context.close();
     }

@@ -109,7 +109,7 @@ describe("editing", () => {
       assert.equal(await page.getByLabel(/Scan resolution/).inputValue(), "600");
 
       // reset brings the seed back, printed values included
-      await page.getByRole("button", { name: /Reset to the seed/ }).click();
+      await page.getByRole("button", { name: /Reset to the worked example/ }).click();
       await waitForExact(page, "gsd_cm", GSD_CM_900, 1e-9);
       assert.equal(await page.evaluate(() => location.hash), GSD_SEED);
       assert.equal(parseShown(await cellText(page, "gsd_cm", "printed")), 35.37);
