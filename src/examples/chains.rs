@@ -143,6 +143,7 @@ fn field(
         help,
         kind,
         default: d,
+        when: None,
     }
 }
 
@@ -242,15 +243,21 @@ fn connectivity_field() -> Field {
     )
 }
 
+/// The fields of the pixel modes (`pixels`) and of the code mode (`code`,
+/// `start`): each applies only when `given` chooses it.
+const PIXEL_MODES: &[&str] = &["pixels", "region"];
+const CODE_MODE: &[&str] = &["code"];
+
 fn chain_code_fields() -> Vec<Field> {
     vec![
         given_field("pixels"),
         pixels_field(
             &decoded(EX17_START, &EX17_CODE, Connectivity::Eight),
             "The edge's pixels in order, one [c, r] per row (column to the right, row downward). Repeat the first pixel at the end for a closed boundary. With “regions”: any pixels, in any order.",
-        ),
-        code_field(&EX17_CODE),
-        start_field(EX17_START),
+        )
+        .when("given", PIXEL_MODES),
+        code_field(&EX17_CODE).when("given", CODE_MODE),
+        start_field(EX17_START).when("given", CODE_MODE),
         connectivity_field(),
         field(
             "from",
@@ -268,9 +275,10 @@ fn boundary_length_fields() -> Vec<Field> {
         pixels_field(
             &decoded(EX18B_START, &EX18B_CODE, Connectivity::Eight),
             "The edge's pixels in order, one [c, r] per row (column to the right, row downward). Repeat the first pixel at the end for a closed boundary. With “regions”: any pixels, in any order.",
-        ),
-        code_field(&EX18B_CODE),
-        start_field(EX18B_START),
+        )
+        .when("given", PIXEL_MODES),
+        code_field(&EX18B_CODE).when("given", CODE_MODE),
+        start_field(EX18B_START).when("given", CODE_MODE),
         connectivity_field(),
     ]
 }

@@ -115,6 +115,7 @@ fn vector(
         help,
         kind: Kind::Vector { min_len, max_len },
         default: Value::numbers(default),
+        when: None,
     }
 }
 
@@ -134,6 +135,7 @@ fn matrix(
             cols: shape.map(|s| s.1),
         },
         default: Value::matrix(&default),
+        when: None,
     }
 }
 
@@ -144,6 +146,7 @@ fn rho_from_field(help: &'static str) -> Field {
         help,
         kind: Kind::Choice { options: RHO_FROM },
         default: Value::Text("printed".to_string()),
+        when: None,
     }
 }
 
@@ -218,6 +221,9 @@ fn ncc_surface_fields() -> Vec<Field> {
     ]
 }
 
+/// The subpixel fields that only the "printed" mode uses.
+const PRINTED: &[&str] = &["printed"];
+
 fn subpixel_1d_fields() -> Vec<Field> {
     vec![
         vector(
@@ -227,7 +233,8 @@ fn subpixel_1d_fields() -> Vec<Field> {
             &[7.0, 8.0, 9.0],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         vector(
             "rho",
             "Correlation coefficients ρ",
@@ -235,7 +242,8 @@ fn subpixel_1d_fields() -> Vec<Field> {
             &[0.69, 0.97, 0.37],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         rho_from_field(
             "printed: use the positions and ρ above; exact: take them from Example 5's arrays computed exactly (the fields above are then not used).",
         ),
@@ -251,7 +259,8 @@ fn subpixel_2d_fields() -> Vec<Field> {
             &[2.0, 3.0, 4.0],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         vector(
             "r",
             "Rows r",
@@ -259,7 +268,8 @@ fn subpixel_2d_fields() -> Vec<Field> {
             &[3.0, 4.0, 5.0],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         matrix(
             "rho",
             "Correlation coefficients ρ",
@@ -270,7 +280,8 @@ fn subpixel_2d_fields() -> Vec<Field> {
                 [-0.2321, 0.2904, -0.1268],
             ]),
             Some((3, 3)),
-        ),
+        )
+        .when("rho_from", PRINTED),
         rho_from_field(
             "printed: use c, r and ρ above; exact: take them from Example 7's arrays computed exactly (the fields above are then not used).",
         ),
@@ -1543,12 +1554,12 @@ fn extremum_notes_1d(s: &mut Solution, p: &Parabola, x: [f64; 3]) {
         }
         Extremum::Minimum { .. } => s.note(
             NoteKind::Warning,
-            "The fitted parabola opens upward (a2 > 0): its stationary point is a minimum, so there is no subpixel peak and c_max is null.",
-        ),
+            "The fitted parabola opens upward (a2 > 0): its stationary point is a minimum, so there is no subpixel peak and no peak column.",
+        ).about(&["c_max", "coefficients"]),
         _ => s.note(
             NoteKind::Warning,
-            "The three values lie on a straight line (a2 = 0): the parabola has no maximum, so c_max is null.",
-        ),
+            "The three values lie on a straight line (a2 = 0): the parabola has no maximum, so there is no peak column.",
+        ).about(&["c_max", "coefficients"]),
     }
 }
 
@@ -1926,15 +1937,15 @@ fn extremum_notes_2d(s: &mut Solution, q: &Quadric, c: [f64; 3], r: [f64; 3]) {
         }
         Extremum::Minimum { .. } => s.note(
             NoteKind::Warning,
-            "The fitted surface is not concave: it curves upward, its stationary point is a minimum, so there is no subpixel peak (c_max and r_max are null).",
-        ),
+            "The fitted surface is not concave: it curves upward, its stationary point is a minimum, so there is no subpixel peak (no peak column or row).",
+        ).about(&["c_max", "r_max", "coefficients"]),
         Extremum::Saddle { .. } => s.note(
             NoteKind::Warning,
-            "The fitted surface is not concave: 4·a4·a5 − a3² < 0 makes its stationary point a saddle, so there is no subpixel peak (c_max and r_max are null).",
-        ),
+            "The fitted surface is not concave: 4·a4·a5 − a3² < 0 makes its stationary point a saddle, so there is no subpixel peak (no peak column or row).",
+        ).about(&["c_max", "r_max", "coefficients"]),
         Extremum::Degenerate => s.note(
             NoteKind::Warning,
-            "The fitted surface is not concave: 4·a4·a5 − a3² = 0 (flat in some direction), so it has no single maximum (c_max and r_max are null).",
-        ),
+            "The fitted surface is not concave: 4·a4·a5 − a3² = 0 (flat in some direction), so it has no single maximum (no peak column or row).",
+        ).about(&["c_max", "r_max", "coefficients"]),
     }
 }

@@ -110,6 +110,7 @@ pub(super) fn matrix_field(key: &'static str, label: &'static str, default: &[Ve
             cols: None,
         },
         default: Value::matrix(default),
+        when: None,
     }
 }
 
@@ -126,6 +127,7 @@ pub(super) fn choice_field(
         help: "",
         kind: Kind::Choice { options },
         default: Value::from(default),
+        when: None,
     }
 }
 
@@ -205,10 +207,12 @@ fn filter_fields() -> Vec<Field> {
             "Custom kernel (numerators)",
             &[vec![0.0, -1.0, 0.0], vec![-1.0, 5.0, -1.0], vec![0.0, -1.0, 0.0]],
         )
-        .help("Used when the kernel is Custom: an odd number of rows and of columns, at most 15×15; applied as written (no flip)."),
+        .help("Used when the kernel is Custom: an odd number of rows and of columns, at most 15×15; applied as written (no flip).")
+        .when("kernel", &["custom"]),
         Field::number("custom_divisor", "Custom kernel divisor", 1.0)
             .positive(1e12)
-            .help("The custom kernel's numerators are divided by this (16 for a 1/16 kernel)."),
+            .help("The custom kernel's numerators are divided by this (16 for a 1/16 kernel).")
+            .when("kernel", &["custom"]),
         sc,
         sr,
         border_field(),
@@ -427,15 +431,15 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                 num(sum),
                 num(sum)
             ),
-        ),
+        ).about(&["output"]),
         Some(1.0) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 1, as a smoothing (or sharpening) kernel's must: a flat area keeps its grey value.",
-        ),
+        ).about(&["output"]),
         Some(_) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 0, as a derivative kernel's must: a flat area gives 0.",
-        ),
+        ).about(&["output"]),
         None => {
             if (sum - 1.0).abs() > 1e-12 && sum.abs() > 1e-12 {
                 s.note(

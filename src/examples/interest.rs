@@ -64,6 +64,7 @@ fn window_field(default: Value, help: &'static str) -> Field {
             cols: None,
         },
         default,
+        when: None,
     }
 }
 

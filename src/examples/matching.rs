@@ -97,6 +97,7 @@ fn vector(key: &'static str, label: &'static str, default: &[f64]) -> Field {
             max_len: MAX_1D,
         },
         default: Value::numbers(default),
+        when: None,
     }
 }
 
@@ -110,6 +111,7 @@ fn matrix(key: &'static str, label: &'static str, default: &[Vec<f64>]) -> Field
             cols: None,
         },
         default: Value::matrix(default),
+        when: None,
     }
 }
 
@@ -120,6 +122,7 @@ fn flag(key: &'static str, label: &'static str, default: bool) -> Field {
         help: "",
         kind: Kind::Flag,
         default: Value::Bool(default),
+        when: None,
     }
 }
 
@@ -188,6 +191,7 @@ fn lsm_2d_fields() -> Vec<Field> {
                 options: GRADIENT_OPTIONS,
             },
             default: Value::Text("search-window".to_string()),
+            when: None,
         },
         max_iterations(),
     ]

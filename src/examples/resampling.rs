@@ -346,7 +346,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 num(fr),
                 num(last_r)
             ),
-        ),
+        ).about(&["bicubic"]),
     }
     s.result = Record::new()
         .with("nearest_c", nc)

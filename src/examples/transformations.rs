@@ -136,7 +136,8 @@ fn transform_fit_fields() -> Vec<Field> {
             &row_axis_up(&FIDUCIALS),
         )
         .columns(&["u", "v", "x", "y"])
-        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm."),
+        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm.")
+        .when("point_set", &["table"]),
     ]
 }
 
@@ -1057,16 +1058,16 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
     match model {
         Model::Projective => s.note(
             NoteKind::Erratum,
-            "Table 9.5.1 prints the projective denominator as a7·u + a8 + 1. It must be a7·u + a8·v + 1: as printed, a8 + 1 is one constant, the model would have only 7 independent parameters and could not represent a tilt about the u axis. The corrected form is solved here, in its linearised form a1·u + a2·v + a3 − a7·u·x − a8·v·x = x (and likewise for y), which is linear in a1 … a8 and needs no initial values; its residuals V are those of the linearised equations (D·(x̂ − x)), the coordinate residuals x̂ − x are in point_residuals.",
-        ),
+            "Table 9.5.1 prints the projective denominator as a7·u + a8 + 1. It must be a7·u + a8·v + 1: as printed, a8 + 1 is one constant, the model would have only 7 independent parameters and could not represent a tilt about the u axis. The corrected form is solved here, in its linearised form a1·u + a2·v + a3 − a7·u·x − a8·v·x = x (and likewise for y), which is linear in a1 … a8 and needs no initial values; its residuals V are those of the linearised equations (D·(x̂ − x)), the coordinate residuals x̂ − x are given separately (residuals of the points).",
+        ).about(&["parameters", "residuals", "point_residuals"]),
         Model::Polynomial2 | Model::Polynomial3 => s.note(
             NoteKind::Convention,
             "The seed's polynomial Σᵢ Σⱼ a_ij·u^(i−1)·v^(j−1), i, j = 1 … n (n at most 3), runs over a square of exponents and would include u²v² (and for order 3 up to u³v³). Here a polynomial of order k has every term u^p·v^q with p + q ≤ k (the usual definition): 6 terms per coordinate for k = 2, 10 for k = 3; a_ij multiplies u^(i−1)·v^(j−1) as in the seed. Coordinates are used as given (not centred or scaled), so that the parameters are the table's; the condition number is reported.",
-        ),
+        ).about(&["parameters"]),
         Model::Helmert => s.note(
             NoteKind::Convention,
             "The table's Helmert transformation x = a·u + b·v + c, y = −b·u + a·v + d is Example 4's similarity with b of the other sign (Example 4: x = a·x′ − b·y′ + c).",
-        ),
+        ).about(&["parameters"]),
         _ => {}
     }
     condition_note(&mut s, &fit);
