@@ -307,3 +307,29 @@ fn chain_code_from_pixels_solves_with_an_empty_code() {
     // and the printed comparison stays: the code does not count
     assert_eq!(s.textbook, seed.textbook);
 }
+
+#[test]
+fn every_entry_names_its_course_document() {
+    for e in catalog() {
+        assert!(!e.document.is_empty(), "{}: no document", e.id);
+        assert!(
+            !e.source.contains("Seed") && !e.source.contains("seed"),
+            "{}: {}",
+            e.id,
+            e.source
+        );
+    }
+    let cat = catalog();
+    let gsd = cat.iter().find(|e| e.id == "gsd").unwrap();
+    assert_eq!(gsd.source, "Worked examples, Example 2");
+    assert_eq!(
+        gsd.document,
+        "Course notes 000 — Point coordinates on digital images (worked examples)"
+    );
+    let f = cat.iter().find(|e| e.id == "forstner-window").unwrap();
+    assert!(
+        f.document.contains("Lecture 21 — Image matching"),
+        "{}",
+        f.document
+    );
+}

@@ -80,7 +80,7 @@ fn coming() -> Vec<Entry> {
         "utm",
         "UTM coordinates",
         "Map projection",
-        "Seed 004",
+        "Lecture 7: Image processing",
     )]
 }
 
@@ -118,6 +118,8 @@ pub struct EntryInfo {
     pub title: &'static str,
     pub topic: &'static str,
     pub source: &'static str,
+    /// The course document(s) `source` refers to, named in full.
+    pub document: String,
     pub summary: &'static str,
     pub status: &'static str,
     pub inputs: Vec<FieldInfo>,
@@ -132,6 +134,7 @@ pub fn catalog() -> Vec<EntryInfo> {
             title: e.title,
             topic: e.topic,
             source: e.source,
+            document: answers::document(e.source),
             summary: e.summary,
             status: if e.solve.is_some() { "ready" } else { "coming" },
             inputs: (e.fields)().iter().map(FieldInfo::from).collect(),

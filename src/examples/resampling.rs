@@ -36,7 +36,7 @@ pub fn entries() -> Vec<Entry> {
         id: "resample",
         title: "Resampling: nearest, bilinear, bicubic",
         topic: TOPIC,
-        source: "Seed 000, Example 12; seed 004",
+        source: "Worked examples, Example 12; Lecture 7: Image processing",
         summary: "The grey value at a fractional pixel position: nearest neighbour, bilinear interpolation along the rows then between them, and seed 004's cubic convolution.",
         fields,
         solve: Some(solve),
