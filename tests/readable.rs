@@ -43,9 +43,91 @@ fn every_example_has_an_answer_of_one_to_three_result_keys() {
     assert_eq!(s.answer, ["rho"]);
 }
 
+/// Some what-ifs in other modes, whose notes are not the seed's.
+fn variants() -> Vec<Solution> {
+    let cases: Vec<(&str, Record)> = vec![
+        (
+            "chain-code",
+            Record::new()
+                .with("given", "code")
+                .with("connectivity", "4")
+                .with("code", Value::numbers(&[1.0, 1.0, 2.0, 3.0, 3.0, 4.0])),
+        ),
+        (
+            "chain-code",
+            Record::new().with("pixels", Value::matrix(&[vec![1.0, 1.0], vec![3.0, 1.0]])),
+        ),
+        ("boundary-length", Record::new().with("given", "region")),
+        (
+            "boundary-shape",
+            Record::new().with(
+                "pixels",
+                Value::matrix(&[vec![1.0, 1.0], vec![2.0, 1.0], vec![3.0, 1.0]]),
+            ),
+        ),
+        (
+            "filter-window",
+            Record::new()
+                .with("kernel", "custom")
+                .with("custom_divisor", 2.0),
+        ),
+        (
+            "filter-window",
+            Record::new()
+                .with("kernel", "laplacian-8")
+                .with("border", "replicate"),
+        ),
+        (
+            "edge-window",
+            Record::new()
+                .with("operator", "sobel")
+                .with("select_c", 1.0),
+        ),
+        ("subpixel-1d", Record::new().with("rho_from", "exact")),
+        (
+            "subpixel-1d",
+            Record::new().with("rho", Value::numbers(&[0.9, 0.5, 0.9])),
+        ),
+        ("subpixel-2d", Record::new().with("rho_from", "exact")),
+        ("lsm-1d", Record::new().with("radiometric", true)),
+        ("lsm-2d", Record::new().with("gradients", "patch-edge")),
+        ("resample", Record::new().with("c", 545.5).with("r", 817.5)),
+        ("resample", Record::new().with("cubic_a", -0.5)),
+        (
+            "transform-fit",
+            Record::new()
+                .with("model", "projective")
+                .with("point_set", "control-12"),
+        ),
+        (
+            "transform-fit",
+            Record::new()
+                .with("model", "polynomial-2")
+                .with("point_set", "control-12"),
+        ),
+        (
+            "forstner-window",
+            Record::new().with(
+                "window",
+                Value::matrix(&[vec![5.0; 3], vec![5.0; 3], vec![5.0; 3]]),
+            ),
+        ),
+        (
+            "ncc-1d",
+            Record::new().with("template", Value::numbers(&[2.0, 2.0, 2.0])),
+        ),
+        ("pixel-to-photo", Record::new().with("c", 5000.0)),
+        ("photo-to-pixel", Record::new().with("x_mm", 500.0)),
+    ];
+    cases
+        .into_iter()
+        .map(|(id, inputs)| solve(id, &inputs).unwrap_or_else(|e| panic!("{id}: {e}")))
+        .collect()
+}
+
 #[test]
 fn notes_name_only_keys_of_the_solution() {
-    for s in seed_solutions() {
+    for s in seed_solutions().into_iter().chain(variants()) {
         for n in &s.notes {
             for k in &n.keys {
                 let known = s.result.get(k).is_some()

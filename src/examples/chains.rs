@@ -684,13 +684,14 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
                 g.index + 2,
                 pixel_text(g.to)
             ),
-        );
+        ).about(&["code", "differential", "length", "breaks"]);
     }
     if path.gaps.len() > LIST {
         s.note(
             NoteKind::Warning,
             format!("… and {} more breaks.", path.gaps.len() - LIST),
-        );
+        )
+        .about(&["breaks"]);
     }
     for r in path.revisits.iter().take(LIST) {
         s.note(
@@ -701,13 +702,14 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
                 pixel_text(r.pixel),
                 r.first + 1
             ),
-        );
+        ).about(&["branches"]);
     }
     if path.revisits.len() > LIST {
         s.note(
             NoteKind::Warning,
             format!("… and {} more repeated pixels.", path.revisits.len() - LIST),
-        );
+        )
+        .about(&["branches"]);
     }
     if !path.closed && path.gaps.is_empty() {
         if let (Some(&a), Some(&b)) = (path.pixels.first(), path.pixels.last()) {
@@ -719,7 +721,7 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
                         pixel_text(b),
                         pixel_text(a)
                     ),
-                );
+                ).about(&["closed"]);
             }
         }
     }
@@ -727,7 +729,7 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
         s.note(
             NoteKind::Warning,
             "A single pixel has no steps: its chain code and differential code are empty and its length is 0.",
-        );
+        ).about(&["code", "differential", "length"]);
     }
 }
 
@@ -814,7 +816,7 @@ fn regions_note(s: &mut Solution, e: &Edge) {
                 starts.join(", "),
                 if e.regions.len() > LIST + 1 { ", …" } else { "" }
             ),
-        );
+        ).about(&["regions"]);
     }
 }
 
@@ -823,7 +825,7 @@ fn conn_note(s: &mut Solution, conn: Connectivity) {
         s.note(
             NoteKind::Convention,
             "The seed's figure of the 4-connectivity numbering is lost; it is taken here as 1 = east, 2 = north, 3 = west, 4 = south, counter-clockwise from east like the 8-connectivity figure. Its differential code counts turns of 90° (mod 4).",
-        );
+        ).about(&["code", "differential"]);
     }
 }
 
@@ -1014,7 +1016,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Differential code as the seed computes it: each digit minus the one before, plus the number of directions when negative. An open edge of n digits gives n − 1 elements; a closed boundary gives n, the first from its first and last digits.",
-    );
+    ).about(&["differential", "differences"]);
     let ex17_pixels = is_pixel_input(inputs, EX17_START, &EX17_CODE, "8");
     let ex17 = ex17_pixels || is_code_input(inputs, &EX17_CODE, "8");
     if ex17 && !from_end {
@@ -1030,7 +1032,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
                 "Seed 000, Example 17. Its figure is lost; the edge shown is rebuilt from the printed code, starting at {} (any start pixel gives the same code). The printed code, the differences and the differential code are reproduced digit for digit.",
                 pixel_text(EX17_START)
             ),
-        );
+        ).about(&["code", "differential", "differences"]);
     }
     if ex17 && from_end {
         if let Some(code) = &p.code {
@@ -1042,7 +1044,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
                     join(code),
                     join(&d.code)
                 ),
-            );
+            ).about(&["code", "differential"]);
         }
     }
     if is_code_input(inputs, &FIG_C_CODE, "4") && !from_end {
@@ -1053,7 +1055,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
                 "Seed 000, figure c: the 4-connectivity chain code printed for a sample edge. The figure is lost; the edge shown is the one this code walks from the start pixel {}.",
                 start(inputs).map(pixel_text).unwrap_or_default()
             ),
-        );
+        ).about(&["code"]);
     }
     Ok(s)
 }
@@ -1130,7 +1132,8 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "A closed boundary's length includes the step from the last pixel back to the first.",
-        );
+        )
+        .about(&["length"]);
     }
     let b = is_pixel_input(inputs, EX18B_START, &EX18B_CODE, "8")
         || is_code_input(inputs, &EX18B_CODE, "8");
@@ -1147,21 +1150,22 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "Seed 000, Example 18 (b). Its figure is lost; the curve shown is a rebuilt one with the seed's counts, 4 horizontal, 4 vertical and 9 diagonal steps (only the counts matter for the length).",
-        );
+        ).about(&["horizontal", "vertical", "diagonal"]);
         s.note(
             NoteKind::Rounding,
             format!(
                 "The seed prints 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal).",
                 num(8.0 + 9.0 * std::f64::consts::SQRT_2)
             ),
-        );
+        )
+        .about(&["length"]);
     }
     if a {
         s.textbook = Some(Record::new().with("length", 23.0).with("pixel_count", 24.0));
         s.note(
             NoteKind::Convention,
             "Seed 000, Example 18 (a). Its figure is lost; the curve shown is a rebuilt 4-connected edge with the seed's 24 pixels (only the count matters for the length): 24 − 1 = 23, as printed.",
-        );
+        ).about(&["length", "pixel_count"]);
     }
     Ok(s)
 }
@@ -1317,14 +1321,14 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Warning,
             "All boundary pixels lie on one straight line, so the minor axis has length 0 and the eccentricity has no value (null).",
-        );
+        ).about(&["minor_axis_length", "eccentricity"]);
     }
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);
     s.note(
         NoteKind::Convention,
         "Distances are measured between pixel centres (a pixel's own size is not added), as the boundary length is. The seed does not fix where the minor axis crosses the major one; it is drawn through the centre of the basic rectangle. The diameter and the rectangle only depend on the outermost pixels, so a filled region and its boundary give the same values.",
-    );
+    ).about(&["diameter", "major_axis", "minor_axis_length", "basic_rectangle"]);
     Ok(s)
 }
 

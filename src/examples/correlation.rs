@@ -12,7 +12,9 @@ use crate::correlation::{
 };
 use crate::error::{Error, Result};
 use crate::raster::Grid;
-use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{
+    exact_minus_printed, fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value,
+};
 
 const TOPIC: &str = "Correlation";
 /// Sub-windows shown with their full computation (the rest are in the
@@ -696,7 +698,7 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
             n - 1,
             num(half)
         ),
-    );
+    ).about(&["centres", "best_c", "best"]);
     flat_notes_1d(&mut s, &profile);
     if is_seed(&ncc_1d_fields(), inputs) {
         seed_notes_5(&mut s, &profile);
@@ -713,7 +715,7 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
         s.note(
             NoteKind::Warning,
             "The template has no variance (all its values are equal): the correlation coefficient is 0/0 at every position, so no ρ has a value and there is no best match.",
-        );
+        ).about(&["rho", "best"]);
         return;
     }
     let flat: Vec<String> = profile
@@ -732,12 +734,13 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
                 flat.join(", "),
                 if flat.len() > 1 { "have" } else { "has" }
             ),
-        );
+        ).about(&["rho"]);
         if profile.best.is_none() {
             s.note(
                 NoteKind::Warning,
                 "No sub-window has a correlation coefficient, so there is no best match.",
-            );
+            )
+            .about(&["best"]);
         }
     }
     if profile.ties > 1 {
@@ -747,7 +750,7 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
                 "{} positions share the largest correlation coefficient; the first of them is taken as the best.",
                 profile.ties
             ),
-        );
+        ).about(&["best"]);
     }
 }
 
@@ -775,7 +778,7 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
             num(mean_a),
             means.iter().map(|m| num(*m)).collect::<Vec<_>>().join(", ")
         ),
-    );
+    ).about(&["mean_template", "mean_subwindows"]);
     s.note(
         NoteKind::Rounding,
         format!(
@@ -783,19 +786,19 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
             num(r1),
             fmt_sig(round_to(r1, 2), 3)
         ),
-    );
+    ).about(&["rho"]);
     s.note(
         NoteKind::Erratum,
         format!(
-            "ρ4 is printed as 0.69, but B4 = [1, 1, 3, 8, 8, 6, 1] gives Σ(A−Ā)(B−B̄) = {}, Σ(A−Ā)² = {}, Σ(B−B̄)² = {} and ρ4 = {} ≈ {}: the printed value is {} too high, more than rounding. Example 8 uses the printed 0.69.",
+            "ρ4 is printed as 0.69, but B4 = [1, 1, 3, 8, 8, 6, 1] gives Σ(A−Ā)(B−B̄) = {}, Σ(A−Ā)² = {}, Σ(B−B̄)² = {} and ρ4 = {} ≈ {}: the printed value is too high by more than rounding (ρ4: {}). Example 8 uses the printed 0.69.",
             num(dadb4),
             num(da2),
             num(db24),
             num(r4),
             fmt_sig(round_to(r4, 2), 2),
-            fmt_sig(0.69 - r4, 2)
+            exact_minus_printed(r4, 0.69, "")
         ),
-    );
+    ).about(&["rho"]);
     s.note(
         NoteKind::Rounding,
         format!(
@@ -803,7 +806,7 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
             num(r5),
             fmt_sig(round_to(r5, 2), 2)
         ),
-    );
+    ).about(&["rho", "best"]);
 }
 
 // ---------------------------------------------------------------- Example 6
@@ -918,7 +921,8 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Warning,
             format!("{flat} The correlation coefficient is 0/0 and is given as null."),
-        );
+        )
+        .about(&["rho"]);
     }
     if is_seed(&ncc_2d_fields(), inputs) {
         seed_notes_6(&mut s, &n, av, bv);
@@ -948,7 +952,7 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
             "The seed prints Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Its sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
             num(n.mean_a)
         ),
-    );
+    ).about(&["mean_a"]);
     s.note(
         NoteKind::Rounding,
         format!(
@@ -962,21 +966,22 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
             fmt_sig(ma - n.mean_a, 3),
             fmt_sig(9.0 * (ma - n.mean_a).powi(2), 2)
         ),
-    );
+    ).about(&["mean_b", "sum_dadb", "sum_da2", "sum_db2"]);
     s.note(
         NoteKind::Erratum,
         format!(
             "The seed writes the third sum without the squares, (52 − 59.1) + (37 − 59.1) + …, which adds up to {} (deviations sum to zero); its value 2604.89 is the sum of the squares, (52 − 59.1)² + (37 − 59.1)² + ….",
             fmt_sig(plain, 2)
         ),
-    );
+    ).about(&["sum_db2"]);
     s.note(
         NoteKind::Rounding,
         format!(
             "ρ = {} is the seed's 0.7753 to four decimals.",
             rho_text(n.rho)
         ),
-    );
+    )
+    .about(&["rho"]);
 }
 
 // ---------------------------------------------------------------- Example 7
@@ -1180,12 +1185,12 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Positions count from 1 row by row, as the seed does (position 10 of a 4×4 surface is row 3, column 2); c is the column (to the right) and r the row (down) of the search array, also from 1.",
-    );
+    ).about(&["best_position", "best_c", "best_r"]);
     if tw % 2 == 0 || th % 2 == 0 {
         s.note(
             NoteKind::Warning,
             "The template has an even number of columns or rows, so its centre lies between pixels: the centre c, r of the best window ends in .5.",
-        );
+        ).about(&["best_c", "best_r"]);
     }
     {
         let template_flat = surface
@@ -1196,7 +1201,7 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Warning,
                 "The template has no variance (all its values are equal): ρ is 0/0 at every position, so the surface has no values and there is no best position.",
-            );
+            ).about(&["rho", "best_position"]);
         } else {
             let flat = surface.windows.iter().filter(|w| w.rho.is_none()).count();
             if flat > 0 {
@@ -1207,7 +1212,7 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
                         if flat > 1 { "s" } else { "" },
                         if flat > 1 { "have" } else { "has" }
                     ),
-                );
+                ).about(&["rho"]);
             }
         }
     }
@@ -1218,7 +1223,8 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
                 "{} positions share the largest ρ; the first in row-by-row order is taken.",
                 surface.ties
             ),
-        );
+        )
+        .about(&["best_position"]);
     }
     if is_seed(&ncc_surface_fields(), inputs) {
         seed_notes_7(&mut s, &rho_rows);
@@ -1260,7 +1266,8 @@ fn seed_notes_7(s: &mut Solution, rho_rows: &[Vec<Option<f64>>]) {
         s.note(
             NoteKind::Rounding,
             "All 16 printed coefficients are the exact ones rounded to four decimals.",
-        );
+        )
+        .about(&["rho"]);
     } else {
         s.note(
             NoteKind::Rounding,
@@ -1270,7 +1277,7 @@ fn seed_notes_7(s: &mut Solution, rho_rows: &[Vec<Option<f64>>]) {
                 off.len(),
                 off.join("; ")
             ),
-        );
+        ).about(&["rho"]);
     }
 }
 
@@ -1351,7 +1358,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Warning,
                 "With ρ taken from Example 5 computed exactly, the positions and ρ fields are not used.",
-            );
+            ).about(&["positions", "rho"]);
         }
         (x, y)
     } else {
@@ -1399,7 +1406,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "ρ comes from Example 5's arrays computed exactly, not from the values the seed prints; the printed values shown beside are the seed's answer from its printed ρ.",
-        );
+        ).about(&["coefficients", "c_max"]);
     }
     let seed = is_seed(&subpixel_1d_fields(), inputs);
     if seed || exact_mode {
@@ -1418,11 +1425,11 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
                 num(pa[2]),
                 num(pc)
             ),
-        );
+        ).about(&["coefficients", "c_max"]);
         s.note(
             NoteKind::Erratum,
             "The seed writes the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Its result c = 7.82 is right for 6.88.",
-        );
+        ).about(&[]);
     }
     if seed {
         let (xe, ye, _) = example_5_exact()?;
@@ -1440,7 +1447,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
                     fmt_sig(ce[0] - cp, 2),
                     num(cp)
                 ),
-            );
+            ).about(&["rho"]);
         }
     }
     label_results(&mut s);
@@ -1549,7 +1556,7 @@ fn extremum_notes_1d(s: &mut Solution, p: &Parabola, x: [f64; 3]) {
                         num(lo),
                         num(hi)
                     ),
-                );
+                ).about(&["c_max"]);
             }
         }
         Extremum::Minimum { .. } => s.note(
@@ -1643,7 +1650,8 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Warning,
                 "With ρ taken from Example 7 computed exactly, the c, r and ρ fields are not used.",
-            );
+            )
+            .about(&["c", "r", "rho"]);
         }
         (c, r, rho)
     } else {
@@ -1675,7 +1683,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "The least-squares fit is computed in coordinates centred on the middle of the neighbourhood (u = c − c̄, v = r − r̄): the same surface as the seed's nine equations in c and r, but a well-conditioned system for any c and r. The coefficients are then written in the seed's form.",
-    );
+    ).about(&[]);
 
     let printed = quadric_peak([2.0, 3.0, 4.0], [3.0, 4.0, 5.0], EX9_PRINTED_RHO)?;
     let printed_at = printed.extremum.maximum();
@@ -1711,7 +1719,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "ρ comes from Example 7's arrays computed exactly, not from the four-decimal values the seed prints; the printed values shown beside are the seed's answer from its printed ρ.",
-        );
+        ).about(&["coefficients", "c_max", "r_max"]);
     }
     let seed = is_seed(&subpixel_2d_fields(), inputs);
     if seed || exact_mode {
@@ -1735,28 +1743,30 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                 num(pa[4]),
                 num(pa[5])
             ),
-        );
+        ).about(&["coefficients"]);
         if let (Some((rc, rr)), Some(p)) = (from_rounded, printed_at) {
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed's c = 3.012 and r = 4.075 come from its coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {}: about {} px from the printed point, beyond its three decimals.",
+                    "The seed's c = 3.012 and r = 4.075 come from its coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {} (c: {}; r: {}): about {} px from the printed point, beyond its three decimals.",
                     fmt_sig(rc, 5),
                     fmt_sig(rr, 5),
                     num(p[0]),
                     num(p[1]),
                     format_args!("{:.3}", p[0]),
                     format_args!("{:.3}", p[1]),
+                    exact_minus_printed(p[0], 3.012, "px"),
+                    exact_minus_printed(p[1], 4.075, "px"),
                     fmt_sig(((p[0] - 3.012).powi(2) + (p[1] - 4.075).powi(2)).sqrt(), 1)
                 ),
-            );
+            ).about(&["c_max", "r_max"]);
         }
     }
     if seed {
         s.note(
             NoteKind::Erratum,
             "The seed's third equation is labelled ρ(3+1, 4+1) and written with c = 4, r = 5, but its value −0.3921 is ρ at c = 4, r = 3, the upper right neighbour: it should read ρ(3+1, 4−1) = a0 + a1(4) + a2(3) + a3(4)(3) + a4(4)² + a5(3)². The ninth equation is the real ρ(3+1, 4+1) = −0.1268. The seed's coefficients fit the corrected equation (see the coefficients above), so only the label and the written terms are wrong; this solution uses the corrected one.",
-        );
+        ).about(&[]);
         let ((ce, re, rhoe), _) = example_7_exact()?;
         let e = quadric_peak(ce, re, rhoe)?;
         if let (Some(ea), Some(pa)) = (e.extremum.maximum(), printed_at) {
@@ -1769,7 +1779,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                     num(ea[1]),
                     fmt_sig(d, 2)
                 ),
-            );
+            ).about(&["rho"]);
         }
     }
     label_results(&mut s);
@@ -1932,7 +1942,7 @@ fn extremum_notes_2d(s: &mut Solution, q: &Quadric, c: [f64; 3], r: [f64; 3]) {
                         num(at[0]),
                         num(at[1])
                     ),
-                );
+                ).about(&["c_max", "r_max"]);
             }
         }
         Extremum::Minimum { .. } => s.note(

@@ -431,15 +431,15 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                 num(sum),
                 num(sum)
             ),
-        ).about(&["output"]),
+        ).about(&["kernel", "kernel_sum"]),
         Some(1.0) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 1, as a smoothing (or sharpening) kernel's must: a flat area keeps its grey value.",
-        ).about(&["output"]),
+        ).about(&["kernel_sum"]),
         Some(_) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 0, as a derivative kernel's must: a flat area gives 0.",
-        ).about(&["output"]),
+        ).about(&["kernel_sum"]),
         None => {
             if (sum - 1.0).abs() > 1e-12 && sum.abs() > 1e-12 {
                 s.note(
@@ -449,7 +449,7 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                         num(sum),
                         num(sum)
                     ),
-                );
+                ).about(&["kernel_sum"]);
             } else {
                 s.note(
                     NoteKind::Convention,
@@ -462,7 +462,7 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                             "a flat area keeps its grey value, as under a smoothing kernel."
                         }
                     ),
-                );
+                ).about(&["kernel_sum"]);
             }
         }
     }
@@ -488,7 +488,7 @@ fn crop_note(s: &mut Solution, border: Border, region: filter::Region, window: &
                 region.r0 + 1,
                 region.c0 + 1
             ),
-        );
+        ).about(&["output_first_c", "output_first_r"]);
     } else {
         let how = match border {
             Border::Replicate => "repeating the nearest edge pixel",
@@ -498,7 +498,7 @@ fn crop_note(s: &mut Solution, border: Border, region: filter::Region, window: &
         s.note(
             NoteKind::Convention,
             format!("Output for every pixel of the window; values outside it are made up by {how}. The seeds keep only the interior."),
-        );
+        ).about(&["output_first_c", "output_first_r"]);
     }
 }
 
@@ -686,7 +686,7 @@ fn filter_window(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "The seed describes the Laplacian of Gaussian in words (smooth with the Gaussian, then apply the Laplacian) without a kernel. It is built here from the seed's own kernels: the 3×3 Gaussian 1/16·[1 2 1; 2 4 2; 1 2 1] convolved with the 4-neighbour Laplacian [0 1 0; 1 −4 1; 0 1 0], one 5×5 kernel that sums to 0.",
-        );
+        ).about(&["kernel"]);
     }
     if border == Border::Crop {
         seed_filter_cases(&mut s, &window, name, filtered.region, sc, sr);
@@ -733,21 +733,21 @@ fn seed_filter_cases(
         s.note(
             NoteKind::Erratum,
             "Pixel (r4, c2): the seed's sum reads 1/9(9+24+7+1+13+14+13+18+17) — the 10 at (r4, c1) is copied as 1. With it the sum is 125 and the mean 125/9 = 13.89, not 116/9 = 12.89 (printed 12.88, and 12.9 in the output grid instead of 13.9).",
-        );
+        ).about(&["output", "pixel_results", "selected"]);
         s.note(
             NoteKind::Rounding,
             "The seed cuts the means off after two decimals instead of rounding: 113/9 = 12.556 at (r3, c2) is printed 12.55 and 95/9 = 10.556 at (r3, c4) 10.55 (rounded: 12.56 and 10.56); its slipped 116/9 = 12.889 is printed 12.88. The output grid then cuts these again to 12.5 and 10.5, where 12.6 and 10.6 are right.",
-        );
+        ).about(&["output", "pixel_results"]);
         s.note(
             NoteKind::Erratum,
             "Harmless: for pixel (r2, c4) the seed lists the middle row as 9 + 9 + 10 instead of 10 + 9 + 9; the total 80 and the mean 8.89 are right.",
-        );
+        ).about(&["pixel_results"]);
     } else if same_window(window, &EXAMPLE_15) && kernel == "gaussian-3" {
         s.textbook = Some(textbook(&EX15_GAUSS_GRID, Some(&EX15_GAUSS_PIXELS)));
         s.note(
             NoteKind::Rounding,
             "Every Gaussian sum of the seed is right. Four of its per-pixel values are printed with one decimal where the others have two: 145/16 = 9.0625 as 9.1, 229/16 = 14.3125 as 14.3 (twice) and 230/16 = 14.375 as 14.4. The output grid prints 164/16 = 10.25 at (r2, c3) as 10.2, where rounding half up gives 10.3.",
-        );
+        ).about(&["output", "pixel_results"]);
         s.note(
             NoteKind::Erratum,
             "Harmless: several of the seed's Gaussian sums list their terms out of kernel order (at (r2, c4): 9×4 for the centre before 2×9 + 2×10 for its right and left neighbours); every total is right.",
@@ -757,7 +757,7 @@ fn seed_filter_cases(
         s.note(
             NoteKind::Convention,
             "Every value of Example 16 is reproduced. The seed writes the centre term as −9×8 where the centre grey value 9 is multiplied by the kernel's −8: the same product.",
-        );
+        ).about(&["output"]);
     } else if same_window(window, &SEED_004) && kernel == "mean" {
         if (sc, sr) == (2, 2) {
             s.textbook = Some(Record::new().with("selected", 33.0));
@@ -765,11 +765,11 @@ fn seed_filter_cases(
         s.note(
             NoteKind::Rounding,
             "Seed 004 works out only the centre pixel (row 3, column 3): (10 + 20 + 30 + 50 + 60 + 70 + 30 + 20 + 10)/9 = 300/9 = 33.33, printed as 33.",
-        );
+        ).about(&["selected"]);
         s.note(
             NoteKind::Convention,
             "Seed 004's formula g(i, j) = Σ Σ f(m, n)·PSF(i − m, j − n) is a true convolution (the kernel turned by 180°); for the symmetric mean kernel that is the same as applying it as written.",
-        );
+        ).about(&["kernel"]);
     }
 }
 
@@ -944,7 +944,7 @@ fn edge_window(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         format!("The seed's names are kept: Gx is the response to {nx} (top row minus bottom row, a change along the rows, upward) and Gy to {ny} (right column minus left, a change along the columns). The Förstner operator's g′x is the other way round: a difference along the columns."),
-    );
+    ).about(&["gx", "gy"]);
     crop_note(&mut s, border, g.region, &window);
     if border == Border::Crop && same_window(&window, &EXAMPLE_15) {
         let (tx, ty, tm) = if op == "sobel" {
@@ -968,7 +968,7 @@ fn edge_window(inputs: &Record) -> Result<Solution> {
             format!(
                 "Every {title} value of Example 15 is reproduced: the responses exactly, the magnitudes within the one or two decimals the seed prints."
             ),
-        );
+        ).about(&["magnitude", "selected_magnitude"]);
     }
     Ok(s)
 }

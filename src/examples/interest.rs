@@ -524,12 +524,12 @@ fn singular_notes(s: &mut Solution, m: &Measures) {
         s.note(
             NoteKind::Warning,
             "The window is flat: every gradient is zero, so N = 0. N⁻¹, trace N⁻¹, q and λmax(Σuv) have no value (null); w = 0. The position cannot be determined in any direction.",
-        );
+        ).about(&["n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     } else if m.singular {
         s.note(
             NoteKind::Warning,
             "det N = 0: the gradients all point along one direction (a straight edge), so λmin(N) = 0 and q = 0. N⁻¹, trace N⁻¹ and λmax(Σuv) have no value (null, i.e. infinite); w = 0. The position is fixed across the edge only.",
-        );
+        ).about(&["det_n", "n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     }
 }
 
@@ -547,14 +547,15 @@ fn forstner_window(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Gradients are seed 000's central differences, at the interior pixels only (the border pixels are neighbours). Seed 003 computes them with a Sobel operator instead; the rest of the operator is the same.",
-    );
+    ).about(&["gx", "gy"]);
     if is_seed(&forstner_fields(), inputs) {
         example_13_notes(&mut s, &f);
     } else {
         s.note(
             NoteKind::Convention,
             "The seeds give no noise level σn; the Example 13 default is 1 grey value.",
-        );
+        )
+        .about(&["lambda_max_shift", "accepted"]);
     }
     Ok(s)
 }
@@ -591,7 +592,7 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
             num(printed_det),
             num(m.det)
         ),
-    );
+    ).about(&["n", "det_n", "n_inverse"]);
     s.note(
         NoteKind::Rounding,
         format!(
@@ -605,18 +606,18 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
                 2
             )
         ),
-    );
+    ).about(&["trace_n_inverse"]);
     s.note(
         NoteKind::Erratum,
         format!(
             "The seed's rule \"the window is classified as an interest point if the trace exceeds a certain threshold\" is backwards. trace N⁻¹ = σu² + σv² (up to σn²) is the size of the error ellipse: a distinct point has a SMALL trace N⁻¹, and a flat window has an infinite one — the rule as printed would pick exactly the homogeneous areas. Förstner accepts a window when the weight w = 1/trace N⁻¹ = det N/trace N exceeds a threshold (here w = {}); seed 003 accepts when λmax(Σuv) ≤ T².",
             num(m.w)
         ),
-    );
+    ).about(&["accepted"]);
     s.note(
         NoteKind::Convention,
         "The seeds give no noise level σn; the default is 1 grey value, with seed 003's T = 0.5 px.",
-    );
+    ).about(&["lambda_max_shift", "accepted"]);
 }
 
 fn moravec_window(inputs: &Record) -> Result<Solution> {
@@ -684,7 +685,7 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "This is the Moravec operator as seed 000 defines it: differences across the pixel (c+1 against c−1), all four directions summed, averaged over the window. Moravec's original operator sums squared differences of neighbouring pixels along each direction and keeps the MINIMUM over the four directions, so that an edge (strong in one direction only) scores low; the seed's average responds to edges as strongly as to corners.",
-    );
+    ).about(&["sums", "mean"]);
     if is_seed(&moravec_fields(), inputs) {
         s.textbook = Some(
             Record::new()
@@ -697,7 +698,7 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "All four sums (47, 361, 153, 171) and the mean 183 agree with the seed. The seed writes the row difference at P(c2, r3) as (11 − 15) and lists the other diagonal before the main one at every pixel; the squares are the same.",
-        );
+        ).about(&["sums", "mean"]);
     }
     Ok(s)
 }
@@ -879,7 +880,7 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Gradients by seed 000's central differences; σn is not given in the seeds (default 2 grey values, a little above this pattern's noise). The roundness test q ≥ q_min is Förstner's, not seed 003's: with q_min = 0 (seed 003 alone) some windows on the noisy edges pass too, because noise along an edge makes λmin(N) small but not zero.",
-    );
+    ).about(&["points", "q"]);
     s.note(
         NoteKind::Convention,
         "The map is null where the window does not fit inside the image (a border of half the window).",

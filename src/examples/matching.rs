@@ -587,7 +587,8 @@ fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
             .value("iterations", k),
     );
     if m.status != Status::Converged {
-        s.note(NoteKind::Warning, text);
+        s.note(NoteKind::Warning, text)
+            .about(&["converged", "status"]);
     }
     let clamped: Vec<(usize, usize)> = m
         .iterations
@@ -606,7 +607,7 @@ fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
                 first.0,
                 last.0
             ),
-        );
+        ).about(&["iterations"]);
     }
 }
 
@@ -738,7 +739,7 @@ fn lsm_1d(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Positions count from 1 as in the seed; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
-    );
+    ).about(&["c"]);
     if seed_inputs(&lsm_1d_fields(), inputs, &["template", "search", "c0"]) {
         ex10_notes(&mut s, &m, radiometric);
     }
@@ -825,11 +826,11 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
                 num(da),
                 num(db)
             ),
-        );
+        ).about(&["first_dc", "first_da", "first_db"]);
         s.note(
             NoteKind::Convention,
             "With a⁰ = 1 and b⁰ = 0 the gradient column is orthogonal to the columns G_s and 1 (Σ∂G·G_s = 0 and Σ∂G = 0 here), so the first dc is the same as without radiometry.",
-        );
+        ).about(&["first_da", "first_db"]);
     } else {
         printed = printed
             .with("first_dc", -0.2945)
@@ -841,7 +842,7 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
                 num(dc),
                 num(8.0 + dc)
             ),
-        );
+        ).about(&["first_dc", "c_after_first"]);
     }
     s.note(
         NoteKind::Convention,
@@ -861,7 +862,7 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
             num(m.params.a[2] + 1.0 - (8.0 + dc)),
             num(8.0 + dc)
         ),
-    );
+    ).about(&["c", "iterations"]);
     s.textbook = Some(printed);
 }
 
@@ -948,7 +949,7 @@ fn lsm_2d(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Columns c (to the right) and rows r (downward) count from 1 as in the seed; (c, r) is the search-window position of the template's centre pixel.",
-    );
+    ).about(&["c", "r"]);
     if seed_inputs(
         &lsm_2d_fields(),
         inputs,
@@ -1098,7 +1099,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
             diffs.len(),
             diffs.join("; ")
         ),
-    );
+    ).about(&["first_dc", "first_dr", "first_da", "first_db"]);
     let fmt_inc = |run: &Matching| -> String {
         run.iterations.first().map_or("–".to_string(), |it| {
             it.increments
@@ -1115,7 +1116,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
             fmt_inc(pe_run),
             fmt_inc(sw_run)
         ),
-    );
+    ).about(&["first_dc", "first_dr", "first_da", "first_db"]);
     let end = |run: &Matching| -> String {
         format!(
             "{} after {} iterations: c = {}, r = {}, a = {}, b = {}",
@@ -1134,7 +1135,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
             end(sw_run),
             end(pe_run)
         ),
-    );
+    ).about(&["c", "r", "a", "b"]);
     Ok(())
 }
 
@@ -1310,11 +1311,11 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Seed 003 writes the affine and the radiometric parts as two stacked systems of 2m rows with zero blocks (its second block's unknowns are misprinted as Δa5 … Δa8). Both parts describe the same grey values, so here they form one observation per pixel, T = a7·S(p, q) + a8, with all eight unknowns in one m × 8 design matrix — the formulation of seed 000's Examples 10–11.",
-    );
+    ).about(&["parameters"]);
     s.note(
         NoteKind::Convention,
         "The template is made from the search window with the same bilinear interpolation the matching uses, so without noise the model fits exactly and the estimates return the true values. Real images also carry the interpolation's own error: for a template sampled from a smooth continuous texture instead, the least-squares optimum itself lies up to about 0.1 px from the true shift (measured in this project's tests).",
-    );
+    ).about(&["parameters", "sigma0"]);
     if m.converged() {
         if let Some(sd) = &sd {
             let off: Vec<String> = (0..8)
@@ -1333,7 +1334,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
                         "The run converged, but {} lie more than five standard deviations from the truth: it found another optimum. The start (identity, zero shift) is outside the pull-in range for this transformation.",
                         off.join(", ")
                     ),
-                );
+                ).about(&["parameters"]);
             }
         }
     }

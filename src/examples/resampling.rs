@@ -376,7 +376,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Pixel centres are at whole column and row numbers, so column 547.44 lies 0.44 of a pixel right of pixel 547's centre. Nearest neighbour rounds halves up (547.5 → 548).",
-    );
+    ).about(&["nearest_c", "nearest_r", "nearest"]);
     if a != SEED_A {
         s.note(
             NoteKind::Convention,
@@ -384,12 +384,13 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 "The cubic kernel uses a = {} instead of seed 004's a = −1.",
                 num(a)
             ),
-        );
+        )
+        .about(&["bicubic"]);
     } else {
         s.note(
             NoteKind::Convention,
             "Seed 004's cubic kernel (a = −1) passes through the samples, but it does not reproduce a linear ramp between them: on grey values rising by g per pixel it is off by s(1 − s)(1 − 2s)·g at the fraction s, up to 0.096·g. Keys' a = −0.5 (choose it above) reproduces ramps exactly.",
-        );
+        ).about(&["bicubic"]);
     }
     if let Some((which, p)) = seed_case(&patch, fc, fr, c, r) {
         s.textbook = Some(
@@ -409,14 +410,14 @@ fn solve(inputs: &Record) -> Result<Solution> {
                     "For the lower row the seed interpolates from the right pixel: I2 = 74 + 0.56·(78 − 74) = 76.24, with 1 − dc = 0.56. That is the same as 78 + 0.44·(74 − 78) = {} from the left, as I1 is done.",
                     num(bl.i2)
                 ),
-            );
+            ).about(&["i2"]);
             s.note(
                 NoteKind::Rounding,
                 format!(
                     "The seed's I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36). The whole grey value 75 is right.",
                     num(bl.value)
                 ),
-            );
+            ).about(&["bilinear"]);
         } else {
             s.note(
                 NoteKind::Erratum,
@@ -428,7 +429,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
                     "The seed prints I = 55.12 + 0.24·(59.76 − 55.12) = {} as 56.234, rounded to three decimals; every value of Example 12b is right.",
                     num(bl.value)
                 ),
-            );
+            ).about(&["bilinear"]);
         }
     }
     Ok(s)

@@ -580,7 +580,8 @@ fn inverse_step(
             s.note(
                 NoteKind::Warning,
                 format!("The fitted transformation cannot be inverted: {e}."),
-            );
+            )
+            .about(&["inverse_parameters"]);
             return Ok(None);
         }
     };
@@ -703,13 +704,13 @@ fn condition_note(s: &mut Solution, fit: &Fit) {
                 fmt_sig(c, 3),
                 fmt_sig(ILL_CONDITIONED, 1)
             ),
-        );
+        ).about(&["parameters", "condition"]);
     }
     if fit.adjustment.redundancy == 0 {
         s.note(
             NoteKind::Warning,
             "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 is reported as null). Add points to get them.",
-        );
+        ).about(&["sigma0", "std_devs"]);
     }
 }
 
@@ -857,7 +858,8 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 },
                 fine.join(", ")
             ),
-        );
+        )
+        .about(&["parameters"]);
     }
     if !to_two.is_empty() {
         s.note(
@@ -866,7 +868,7 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 "Beyond its printed precision: {}. The seed rounded these to two decimals and printed a third, zero, decimal that it does not have.",
                 to_two.join("; ")
             ),
-        );
+        ).about(&["parameters"]);
     }
     if !other.is_empty() {
         s.note(
@@ -875,7 +877,8 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 "These printed values are not the exact ones rounded: {}.",
                 other.join("; ")
             ),
-        );
+        )
+        .about(&["parameters"]);
     }
 }
 
@@ -892,7 +895,7 @@ fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f64]) {
             format_args!("{:.1} %", (0.043 - a) / a * 100.0),
             fmt_sig((0.043 - a) * 5305.0, 2)
         ),
-    );
+    ).about(&["residuals"]);
 }
 
 fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
@@ -928,7 +931,7 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
                 num(g(1)),
                 fmt_sig(rot, 2)
             ),
-        );
+        ).about(&["parameters", "rotation_deg"]);
     }
     printed_residual_note(s, fit, &SIM_PRINTED_X);
     let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
@@ -936,7 +939,7 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
     s.note(
         NoteKind::Convention,
         "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
-    );
+    ).about(&["sigma0", "std_devs"]);
     Ok(())
 }
 
@@ -966,7 +969,7 @@ fn seed_notes_affine(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()
     s.note(
         NoteKind::Convention,
         "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
-    );
+    ).about(&["sigma0", "std_devs"]);
     Ok(())
 }
 
@@ -1048,7 +1051,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Table 9.5.1 maps image (u, v) to map (x, y); here (u, v) is any source system and (x, y) any target. Parameters are listed in the table's order; residuals V = A·X − L as [vx1, vy1, vx2, vy2, …]. The default points are Example 4's fiducials with the row axis turned up (u = c, v = −r); with v = r the conformal models (Helmert, second-order conformal) cannot fit, since they allow no reflection.",
-    );
+    ).about(&["parameter_names"]);
     if model == Model::Projective {
         s.note(
             NoteKind::Convention,
@@ -1067,7 +1070,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
         Model::Helmert => s.note(
             NoteKind::Convention,
             "The table's Helmert transformation x = a·u + b·v + c, y = −b·u + a·v + d is Example 4's similarity with b of the other sign (Example 4: x = a·x′ − b·y′ + c).",
-        ).about(&["parameters"]),
+        ).about(&["parameter_names"]),
         _ => {}
     }
     condition_note(&mut s, &fit);
@@ -1106,7 +1109,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
                 format!(
                     "With Example 4's fiducials this is {which}; its printed values are shown in this table's parameter names and order. See that example for why its shifts (printed −115.030, 115.040 / 115.030) differ from the exact ones beyond their third decimal: they were rounded to two."
                 ),
-            );
+            ).about(&["parameters", "residuals"]);
         }
     }
     Ok(s)
