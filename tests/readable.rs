@@ -415,3 +415,25 @@ fn every_entry_names_its_course_document() {
         f.document
     );
 }
+
+#[test]
+fn every_key_the_page_shows_has_a_label() {
+    let mut missing = Vec::new();
+    for s in seed_solutions().into_iter().chain(variants()) {
+        let printed = s.textbook.iter().flat_map(|t| t.keys());
+        for key in s.result.keys().chain(printed) {
+            let Some(Value::Object(l)) = s.labels.get(key) else {
+                missing.push(format!("{}: {key}", s.id));
+                continue;
+            };
+            let Some(Value::Text(label)) = l.get("label") else {
+                panic!("{}: {key}'s label is not text", s.id)
+            };
+            if label.is_empty() || label.contains('_') {
+                missing.push(format!("{}: {key} → {label}", s.id));
+            }
+        }
+    }
+    missing.dedup();
+    assert!(missing.is_empty(), "no label: {missing:?}");
+}

@@ -690,6 +690,16 @@ fn filter_window(inputs: &Record) -> Result<Solution> {
     }
     if border == Border::Crop {
         seed_filter_cases(&mut s, &window, name, filtered.region, sc, sr);
+        if s.textbook
+            .as_ref()
+            .is_some_and(|t| t.get("pixel_results").is_some())
+        {
+            s.label(
+                "pixel_results",
+                "Each output pixel worked out (printed with more decimals)",
+                "",
+            );
+        }
     }
     Ok(s)
 }

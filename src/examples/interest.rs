@@ -562,6 +562,15 @@ fn forstner_window(inputs: &Record) -> Result<Solution> {
 
 fn example_13_notes(s: &mut Solution, f: &Forstner) {
     let m = &f.measures;
+    for (key, label) in [
+        ("sum_gx", "Sum of the column gradients Σg′x"),
+        ("sum_gy", "Sum of the row gradients Σg′y"),
+        ("sum_gxgy", "Sum of the products Σg′x·g′y"),
+        ("sum_gx2", "Sum of the squares Σg′x²"),
+        ("sum_gy2", "Sum of the squares Σg′y²"),
+    ] {
+        s.label(key, label, "");
+    }
     let (printed_b, printed_det, printed_tr) = (-22.75, 8891.9375, 0.02);
     s.textbook = Some(
         Record::new()

@@ -835,6 +835,11 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
         printed = printed
             .with("first_dc", -0.2945)
             .with("c_after_first", 7.705);
+        s.label(
+            "c_after_first",
+            "Position c after the first iteration",
+            "px",
+        );
         s.note(
             NoteKind::Rounding,
             format!(
