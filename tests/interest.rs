@@ -265,7 +265,7 @@ fn example_14_moravec_reproduced() {
         .contains(r"(9 - 10)^2 + (14 - 15)^2 \\ &\quad + (15 - 12)^2 + (11 - 5)^2 = 47"));
     assert!(s.steps[1]
         .substituted
-        .contains(r"\frac{47 + 361 + 153 + 171}{4} = 183"));
+        .contains(r"\sum S = 47 + 361 + 153 + 171 = 732,\quad \bar S = \frac{732}{4} = 183"));
 }
 
 #[test]

@@ -470,6 +470,41 @@ fn rho_formula(n: &Ncc) -> String {
     )
 }
 
+/// A mean with its sum written out on a chain of its own:
+/// `\sum A = 48 + 50 + … = 529,\quad \bar A = \frac{529}{9} = 58.77778`.
+/// The page breaks a long chain at its top-level `+` and `\quad`, never
+/// inside a fraction, so the written-out sum stays outside the fraction.
+fn tex_mean(sum_sym: &str, mean_sym: &str, xs: &[f64], mean: f64) -> String {
+    let total: f64 = xs.iter().sum();
+    format!(
+        r"{sum_sym} = {} = {},\quad {mean_sym} = \frac{{{}}}{{{}}} = {}",
+        tex_sum_terms(xs),
+        num(total),
+        num(total),
+        xs.len(),
+        num(mean)
+    )
+}
+
+/// The three sums of a correlation coefficient written out, each on a chain
+/// of its own, then `rho = \frac{v1}{\sqrt{v2 × v3}} = ρ` with the values only.
+fn tex_rho_chain(rho_sym: &str, a: &[f64], b: &[f64], n: &Ncc) -> String {
+    let quotient = match n.rho {
+        Some(_) => rho_formula(n).trim_start_matches(r"\rho = ").to_string(),
+        None => rho_text(None),
+    };
+    format!(
+        r"\sum (A - \bar A)(B - \bar B) = {} = {},\quad \sum (A - \bar A)^2 = {} = {},\quad \sum (B - \bar B)^2 = {} = {},\quad {rho_sym} = {}",
+        tex_dev_terms(a, n.mean_a, Some((b, n.mean_b))),
+        num(n.sum_dadb),
+        tex_dev_terms(a, n.mean_a, None),
+        num(n.sum_da2),
+        tex_dev_terms(b, n.mean_b, None),
+        num(n.sum_db2),
+        quotient
+    )
+}
+
 const RHO_SYMBOLIC: &str = r"\rho = \frac{\sum (A - \bar A)(B - \bar B)}{\sqrt{\sum (A - \bar A)^2 \, \sum (B - \bar B)^2}}";
 
 fn ncc_values(step: Step, n: &Ncc) -> Step {
@@ -534,9 +569,8 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar A = \frac{1}{n}\sum A_j,\quad \sum (A_j - \bar A)^2",
             format!(
-                r"\bar A = \frac{{{}}}{{{n}}} = {},\quad \sum (A_j - \bar A)^2 = {} = {}",
-                tex_sum_terms(&template),
-                num(mean_a),
+                r"{},\quad \sum (A_j - \bar A)^2 = {} = {}",
+                tex_mean(r"\sum A_j", r"\bar A", &template, mean_a),
                 tex_dev_terms(&template, mean_a, None),
                 num(sum_da2)
             ),
@@ -590,26 +624,19 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
         }
         let step = Step::new(&format!("Sub-window {}", k + 1), &text)
             .formula(
-                &format!(r"\bar B_{{{0}}} = \frac{{1}}{{n}}\sum B_j,\quad {RHO_SYMBOLIC}", k + 1),
+                &format!(
+                    r"\bar B_{{{0}}} = \frac{{1}}{{n}}\sum B_j,\quad {RHO_SYMBOLIC}",
+                    k + 1
+                ),
                 format!(
-                    r"\bar B_{{{k1}}} = \frac{{{}}}{{{n}}} = {},\quad \rho_{{{k1}}} = \frac{{{}}}{{\sqrt{{[{}][{}]}}}} = {}",
-                    tex_sum_terms(sub),
-                    num(w.mean_b),
-                    tex_dev_terms(&template, w.mean_a, Some((sub, w.mean_b))),
-                    tex_dev_terms(&template, w.mean_a, None),
-                    tex_dev_terms(sub, w.mean_b, None),
-                    if w.rho.is_some() {
-                        format!(
-                            r"\frac{{{}}}{{\sqrt{{{} \times {}}}}} = {}",
-                            num(w.sum_dadb),
-                            num(w.sum_da2),
-                            num(w.sum_db2),
-                            rho_text(w.rho)
-                        )
-                    } else {
-                        rho_text(None)
-                    },
-                    k1 = k + 1
+                    r"{},\quad {}",
+                    tex_mean(
+                        &format!(r"\sum B_{{{}}}", k + 1),
+                        &format!(r"\bar B_{{{}}}", k + 1),
+                        sub,
+                        w.mean_b
+                    ),
+                    tex_rho_chain(&format!(r"\rho_{{{}}}", k + 1), &template, sub, w)
                 ),
             )
             .value("k", (k + 1) as f64)
@@ -820,7 +847,6 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
     let b = grid(inputs, "b")?;
     let n = correlation::ncc_grid(&a, &b)?;
     let (av, bv) = (a.data(), b.data());
-    let count = av.len();
     let mut s = Solution::new("ncc-2d", "2-D correlation coefficient", inputs.clone());
     s.step(
         Step::new(
@@ -834,11 +860,9 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar A = \frac{1}{mn}\sum_{i,j} A_{ij},\quad \bar B = \frac{1}{mn}\sum_{i,j} B_{ij}",
             format!(
-                r"\bar A = \frac{{{}}}{{{count}}} = {},\quad \bar B = \frac{{{}}}{{{count}}} = {}",
-                tex_sum_terms(av),
-                num(n.mean_a),
-                tex_sum_terms(bv),
-                num(n.mean_b)
+                r"{},\quad {}",
+                tex_mean(r"\sum A", r"\bar A", av, n.mean_a),
+                tex_mean(r"\sum B", r"\bar B", bv, n.mean_b)
             ),
         )
         .value("mean_a", n.mean_a)
@@ -1007,10 +1031,9 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar T = \frac{1}{mn}\sum T_{ij},\quad \sum (T_{ij} - \bar T)^2",
             format!(
-                r"\bar T = \frac{{{}}}{{{}}} = {},\quad \sum (T_{{ij}} - \bar T)^2 = {}",
-                tex_sum_terms(template.data()),
-                template.data().len(),
-                num(t_mean),
+                r"{},\quad \sum (T_{{ij}} - \bar T)^2 = {} = {}",
+                tex_mean(r"\sum T_{ij}", r"\bar T", template.data(), t_mean),
+                tex_dev_terms(template.data(), t_mean, None),
                 num(t_da2)
             ),
         )
@@ -1062,14 +1085,9 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
             .formula(
                 &format!(r"\bar B = \frac{{1}}{{mn}}\sum B_{{ij}},\quad {RHO_SYMBOLIC}"),
                 format!(
-                    r"\bar B = \frac{{{}}}{{{}}} = {},\quad \rho = \frac{{{}}}{{\sqrt{{[{}][{}]}}}} = {}",
-                    tex_sum_terms(wv),
-                    wv.len(),
-                    num(bw.mean_b),
-                    tex_dev_terms(template.data(), bw.mean_a, Some((wv, bw.mean_b))),
-                    tex_dev_terms(template.data(), bw.mean_a, None),
-                    tex_dev_terms(wv, bw.mean_b, None),
-                    rho_formula(bw).trim_start_matches(r"\rho = ")
+                    r"{},\quad {}",
+                    tex_mean(r"\sum B_{ij}", r"\bar B", wv, bw.mean_b),
+                    tex_rho_chain(r"\rho", template.data(), wv, bw)
                 ),
             )
             .value("position", (br * w + bc + 1) as f64)

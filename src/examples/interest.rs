@@ -678,8 +678,10 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar S = \frac{1}{n} \sum S(c, r)",
             format!(
-                r"\bar S = \frac{{{}}}{{{}}} = {}",
+                r"\sum S = {} = {},\quad \bar S = \frac{{{}}}{{{}}} = {}",
                 sums.join(" + "),
+                num(mv.pixels.iter().map(|p| p.sum).sum::<f64>()),
+                num(mv.pixels.iter().map(|p| p.sum).sum::<f64>()),
                 n,
                 num(mv.mean)
             ),
