@@ -437,3 +437,108 @@ fn every_key_the_page_shows_has_a_label() {
     missing.dedup();
     assert!(missing.is_empty(), "no label: {missing:?}");
 }
+
+/// The arguments of every `\frac{…}{…}`, `\tfrac`, `\sqrt{…}` in `tex`.
+fn unbreakable_parts(tex: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for cmd in [r"\frac{", r"\tfrac{", r"\sqrt{"] {
+        let mut from = 0;
+        while let Some(i) = tex[from..].find(cmd) {
+            let start = from + i + cmd.len();
+            let mut depth = 1;
+            let mut end = start;
+            for (k, ch) in tex[start..].char_indices() {
+                match ch {
+                    '{' => depth += 1,
+                    '}' => depth -= 1,
+                    _ => {}
+                }
+                if depth == 0 {
+                    end = start + k;
+                    break;
+                }
+            }
+            out.push(tex[start..end].to_string());
+            from = start;
+        }
+    }
+    out
+}
+
+#[test]
+fn no_written_out_sum_sits_inside_a_fraction_or_a_root() {
+    for s in seed_solutions().into_iter().chain(variants()) {
+        for st in &s.steps {
+            for part in unbreakable_parts(&st.substituted) {
+                let terms = part.matches(" + ").count() + part.matches(" - ").count();
+                assert!(
+                    terms <= 3 || part.len() <= 40,
+                    "{}, step \"{}\": a sum of {} terms inside a fraction or root: {part}",
+                    s.id,
+                    st.title,
+                    terms + 1
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn resample_says_where_its_bicubic_value_would_be() {
+    let s = solve("resample", &Record::new()).unwrap();
+    assert_eq!(s.result.get("bicubic"), Some(&Value::Null));
+    let n = s
+        .notes
+        .iter()
+        .find(|n| n.concerns("bicubic"))
+        .expect("a note on bicubic");
+    assert!(
+        n.text.contains("columns 546 to 549 and rows 816 to 819"),
+        "{}",
+        n.text
+    );
+    assert!(
+        n.text
+            .contains("patch covers columns 545–548 and rows 817–820"),
+        "{}",
+        n.text
+    );
+    assert!(n.text.contains("c = 546.44 and r = 818.24"), "{}", n.text);
+    // the inputs the note suggests do give one
+    let s = solve(
+        "resample",
+        &Record::new().with("c", 546.44).with("r", 818.24),
+    )
+    .unwrap();
+    assert!(s.result.number("bicubic").is_some());
+    assert!(s.notes.iter().all(|n| !n.text.contains("No bicubic")));
+}
+
+#[test]
+fn convergence_tests_name_the_parameters_estimated() {
+    let step = |s: &Solution| {
+        s.steps
+            .iter()
+            .find(|st| st.title == "Converged")
+            .cloned()
+            .expect("a converged step")
+    };
+    let s = solve("lsm-1d", &Record::new()).unwrap();
+    let st = step(&s);
+    assert_eq!(st.formula, r"|dc| \le 10^{-4}\ \text{px}");
+    assert!(!st.text.contains("grey value"), "{}", st.text);
+    let s = solve("lsm-1d", &Record::new().with("radiometric", true)).unwrap();
+    let st = step(&s);
+    assert!(st.formula.contains(r"|da\, G_i + db|"), "{}", st.formula);
+    assert!(!st.formula.contains("da_7"));
+    let s = solve("lsm-2d", &Record::new()).unwrap();
+    assert!(step(&s).formula.starts_with(r"\sqrt{dc^2 + dr^2}"));
+    let s = solve("lsm-affine", &Record::new()).unwrap();
+    let st = step(&s);
+    assert!(st.formula.contains("da_7"));
+    assert!(
+        st.text.contains("da₇ = ") && !st.text.contains("da_7"),
+        "{}",
+        st.text
+    );
+}

@@ -535,24 +535,66 @@ fn table_step(m: &Matching, syms: &[&str], origin: f64) -> Step {
 }
 
 /// The closing step and, unless converged, a warning note.
+/// The convergence test in the parameters actually estimated (`syms`, see
+/// [`symbols`]), and whether it has a radiometric part.
+fn convergence_test(syms: &[&str]) -> (&'static str, bool) {
+    let has = |s: &str| syms.contains(&s);
+    if has("a_1") {
+        (
+            r"\max_i \lVert d\mathbf{x}_i \rVert \le 10^{-4}\ \text{px},\quad \max_i |da_7\, G_i + da_8| \le 10^{-3}",
+            true,
+        )
+    } else {
+        match (has("r"), has("a")) {
+            (true, true) => (
+                r"\sqrt{dc^2 + dr^2} \le 10^{-4}\ \text{px},\quad \max_i |da\, G_i + db| \le 10^{-3}",
+                true,
+            ),
+            (true, false) => (r"\sqrt{dc^2 + dr^2} \le 10^{-4}\ \text{px}", false),
+            (false, true) => (
+                r"|dc| \le 10^{-4}\ \text{px},\quad \max_i |da\, G_i + db| \le 10^{-3}",
+                true,
+            ),
+            (false, false) => (r"|dc| \le 10^{-4}\ \text{px}", false),
+        }
+    }
+}
+
+/// A symbol such as `a_7` as prose writes it: `a₇`.
+fn prose_symbol(s: &str) -> String {
+    const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+    s.replace('_', "")
+        .chars()
+        .map(|c| c.to_digit(10).map_or(c, |d| SUB[d as usize]))
+        .collect()
+}
+
 fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
     let k = m.iterations.len();
     let last = m.iterations.last();
     let incs = last.map_or(String::new(), |it| {
         syms.iter()
             .zip(&it.increments)
-            .map(|(s, d)| format!("d{s} = {}", fmt_sig(*d, 3)))
+            .map(|(s, d)| format!("d{} = {}", prose_symbol(s), fmt_sig(*d, 3)))
             .collect::<Vec<_>>()
             .join(", ")
     });
+    let (test, radiometric) = convergence_test(syms);
     let (title, text) = match &m.status {
         Status::Converged => (
             "Converged".to_string(),
             format!(
-                "Converged in {k} iteration{}: the last increments ({incs}) move no template pixel by more than {} px and change no modelled grey value by more than {}.",
+                "Converged in {k} iteration{}: the last increments ({incs}) move no template pixel by more than {} px{}.",
                 if k == 1 { "" } else { "s" },
                 matching::POSITION_TOL,
-                matching::GREY_TOL
+                if radiometric {
+                    format!(
+                        " and change no modelled grey value by more than {}",
+                        matching::GREY_TOL
+                    )
+                } else {
+                    String::new()
+                }
             ),
         ),
         Status::NotConverged => (
@@ -576,13 +618,7 @@ fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
     };
     s.step(
         Step::new(&title, &text)
-            .formula(
-                r"\max_i \lVert d\mathbf{x}_i \rVert \le 10^{-4}\ \text{px},\quad \max_i |da_7\, G_i + da_8| \le 10^{-3}",
-                format!(
-                    r"\text{{{}}}",
-                    m.status.word()
-                ),
-            )
+            .formula(test, format!(r"\text{{{}}}", m.status.word()))
             .value("status", m.status.word())
             .value("iterations", k),
     );

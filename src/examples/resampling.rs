@@ -71,6 +71,56 @@ fn fields() -> Vec<Field> {
     ]
 }
 
+/// Why there is no bicubic value at `(c, r)`, and where in the patch (first
+/// pixel `first`, last pixel `last`) one would be.
+fn no_bicubic_text(at: [f64; 2], first: [f64; 2], last: [f64; 2]) -> String {
+    let need = |x: f64| (x.floor() - 1.0, x.floor() + 2.0);
+    let ((c0, c1), (r0, r1)) = (need(at[0]), need(at[1]));
+    let missing = |lo: f64, hi: f64, from: f64, to: f64, what: &str| -> Option<String> {
+        let out: Vec<String> = [lo, lo + 1.0, hi - 1.0, hi]
+            .iter()
+            .filter(|x| **x < from || **x > to)
+            .map(|x| num(*x))
+            .collect::<std::collections::BTreeSet<_>>()
+            .into_iter()
+            .collect();
+        (!out.is_empty()).then(|| format!("{what} {}", out.join(" and ")))
+    };
+    let gaps: Vec<String> = [
+        missing(c0, c1, first[0], last[0], "column"),
+        missing(r0, r1, first[1], last[1], "row"),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    let mut text = format!(
+        "No bicubic value here: Lecture 7's cubic convolution takes the 16 pixels around the position, columns {} to {} and rows {} to {} for ({}, {}), but the patch covers columns {}–{} and rows {}–{} only ({} missing).",
+        num(c0),
+        num(c1),
+        num(r0),
+        num(r1),
+        num(at[0]),
+        num(at[1]),
+        num(first[0]),
+        num(last[0]),
+        num(first[1]),
+        num(last[1]),
+        gaps.join(", ")
+    );
+    // The lecture's case: the position inside the cell between the patch's
+    // second and third pixels, so that the 4×4 patch is its neighbourhood.
+    if last[0] - first[0] >= 3.0 && last[1] - first[1] >= 3.0 {
+        let inside =
+            |x: f64, lo: f64, hi: f64| x.floor().clamp(lo + 1.0, hi - 2.0) + (x - x.floor());
+        text.push_str(&format!(
+            " The lecture's formula Q = [f(1+t) … f(2−t)]·P·[f(1+s) … f(2−s)]ᵀ puts the position between P22, P23, P32 and P33, the middle of a 4×4 patch: with this patch, c = {} and r = {} (the same fractions) give a bicubic value.",
+            num(inside(at[0], first[0], last[0])),
+            num(inside(at[1], first[1], last[1]))
+        ));
+    }
+    text
+}
+
 struct Printed {
     nearest: (f64, f64, f64),
     i1: f64,
@@ -333,20 +383,13 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 .value("bicubic", b.value),
             );
         }
-        None => s.note(
-            NoteKind::Warning,
-            format!(
-                "No bicubic value: cubic convolution needs the 4×4 pixels from column {} to {} and row {} to {}, and the patch (columns {}–{}, rows {}–{}) does not hold them all. Move the position at least one pixel away from the patch's edge.",
-                num(c.floor() - 1.0),
-                num(c.floor() + 2.0),
-                num(r.floor() - 1.0),
-                num(r.floor() + 2.0),
-                num(fc),
-                num(last_c),
-                num(fr),
-                num(last_r)
-            ),
-        ).about(&["bicubic"]),
+        None => {
+            s.note(
+                NoteKind::Warning,
+                no_bicubic_text([c, r], [fc, fr], [last_c, last_r]),
+            )
+            .about(&["bicubic"]);
+        }
     }
     s.result = Record::new()
         .with("nearest_c", nc)
