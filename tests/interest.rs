@@ -258,7 +258,11 @@ fn example_14_moravec_reproduced() {
         matrix(t.get("sums").unwrap()),
         [[47.0, 361.0], [153.0, 171.0]]
     );
-    assert!(has_note(&s, NoteKind::Convention, "agree with the seed"));
+    assert!(has_note(
+        &s,
+        NoteKind::Convention,
+        "agree with the course notes"
+    ));
     assert!(has_note(&s, NoteKind::Convention, "MINIMUM"));
     assert!(s.steps[0]
         .substituted

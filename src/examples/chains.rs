@@ -262,7 +262,7 @@ fn chain_code_fields() -> Vec<Field> {
         field(
             "from",
             "Start coding from",
-            "The seed's Example 17 starts at the left end; its exercise at the right end. A closed boundary is walked the other way round.",
+            "The course notes' Example 17 starts at the left end; its exercise at the right end. A closed boundary is walked the other way round.",
             Kind::Choice { options: FROM },
             Value::from("start"),
         ),
@@ -824,7 +824,7 @@ fn conn_note(s: &mut Solution, conn: Connectivity) {
     if conn == Connectivity::Four {
         s.note(
             NoteKind::Convention,
-            "The seed's figure of the 4-connectivity numbering is lost; it is taken here as 1 = east, 2 = north, 3 = west, 4 = south, counter-clockwise from east like the 8-connectivity figure. Its differential code counts turns of 90° (mod 4).",
+            "The course notes' figure of the 4-connectivity numbering is lost; it is taken here as 1 = east, 2 = north, 3 = west, 4 = south, counter-clockwise from east like the 8-connectivity figure. Its differential code counts turns of 90° (mod 4).",
         ).about(&["code", "differential"]);
     }
 }
@@ -854,7 +854,7 @@ fn shape_summary_step(sh: &chain::Shape) -> Step {
         .map_or(r"\text{no value (}m = 0\text{)}".to_string(), num);
     Step::new(
         "Shape of the closed boundary",
-        "The descriptors of seed 000 for this boundary (the example “Boundary descriptors” shows each step): the diameter D between the two farthest pixels (the major axis), the width m across it (the minor axis), the basic rectangle D × m, and the eccentricity D / m.",
+        "The descriptors of the worked examples for this boundary (the example “Boundary descriptors” shows each step): the diameter D between the two farthest pixels (the major axis), the width m across it (the minor axis), the basic rectangle D × m, and the eccentricity D / m.",
     )
     .formula(
         r"D = \max_{i,j} \lVert p_i - p_j \rVert,\quad m = t_{\max} - t_{\min},\quad E = \frac{D}{m}",
@@ -1015,7 +1015,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
     conn_note(&mut s, conn);
     s.note(
         NoteKind::Convention,
-        "Differential code as the seed computes it: each digit minus the one before, plus the number of directions when negative. An open edge of n digits gives n − 1 elements; a closed boundary gives n, the first from its first and last digits.",
+        "Differential code as the course notes compute it: each digit minus the one before, plus the number of directions when negative. An open edge of n digits gives n − 1 elements; a closed boundary gives n, the first from its first and last digits.",
     ).about(&["differential", "differences"]);
     let ex17_pixels = is_pixel_input(inputs, EX17_START, &EX17_CODE, "8");
     let ex17 = ex17_pixels || is_code_input(inputs, &EX17_CODE, "8");
@@ -1029,7 +1029,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             format!(
-                "Seed 000, Example 17. Its figure is lost; the edge shown is rebuilt from the printed code, starting at {} (any start pixel gives the same code). The printed code, the differences and the differential code are reproduced digit for digit.",
+                "Worked examples, Example 17: its figure is lost; the edge shown is rebuilt from the printed code, starting at {} (any start pixel gives the same code). The printed code, the differences and the differential code are reproduced digit for digit.",
                 pixel_text(EX17_START)
             ),
         ).about(&["code", "differential", "differences"]);
@@ -1040,7 +1040,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Convention,
                 format!(
-                    "Seed 000, exercise after Example 17: the same edge coded from its right end. The seed prints no answer; it is {} with differential code {}. Each digit is the opposite of a forward digit, in reverse order, and the differential code is the forward one reversed with every element negated (mod 8).",
+                    "Worked examples, the exercise after Example 17: the same edge coded from its right end. The course notes print no answer; it is {} with differential code {}. Each digit is the opposite of a forward digit, in reverse order, and the differential code is the forward one reversed with every element negated (mod 8).",
                     join(code),
                     join(&d.code)
                 ),
@@ -1052,7 +1052,7 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             format!(
-                "Seed 000, figure c: the 4-connectivity chain code printed for a sample edge. The figure is lost; the edge shown is the one this code walks from the start pixel {}.",
+                "Worked examples, figure c: the 4-connectivity chain code printed for a sample edge. The figure is lost; the edge shown is the one this code walks from the start pixel {}.",
                 start(inputs).map(pixel_text).unwrap_or_default()
             ),
         ).about(&["code"]);
@@ -1149,12 +1149,12 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         );
         s.note(
             NoteKind::Convention,
-            "Seed 000, Example 18 (b). Its figure is lost; the curve shown is a rebuilt one with the seed's counts, 4 horizontal, 4 vertical and 9 diagonal steps (only the counts matter for the length).",
+            "Worked examples, Example 18 (b): its figure is lost; the curve shown is a rebuilt one with the course notes' counts, 4 horizontal, 4 vertical and 9 diagonal steps (only the counts matter for the length).",
         ).about(&["horizontal", "vertical", "diagonal"]);
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed prints 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal).",
+                "The course notes print 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal).",
                 num(8.0 + 9.0 * std::f64::consts::SQRT_2)
             ),
         )
@@ -1164,7 +1164,7 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         s.textbook = Some(Record::new().with("length", 23.0).with("pixel_count", 24.0));
         s.note(
             NoteKind::Convention,
-            "Seed 000, Example 18 (a). Its figure is lost; the curve shown is a rebuilt 4-connected edge with the seed's 24 pixels (only the count matters for the length): 24 − 1 = 23, as printed.",
+            "Worked examples, Example 18 (a): its figure is lost; the curve shown is a rebuilt 4-connected edge with the course notes' 24 pixels (only the count matters for the length): 24 − 1 = 23, as printed.",
         ).about(&["length", "pixel_count"]);
     }
     Ok(s)
@@ -1327,7 +1327,7 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
     conn_note(&mut s, conn);
     s.note(
         NoteKind::Convention,
-        "Distances are measured between pixel centres (a pixel's own size is not added), as the boundary length is. The seed does not fix where the minor axis crosses the major one; it is drawn through the centre of the basic rectangle. The diameter and the rectangle only depend on the outermost pixels, so a filled region and its boundary give the same values.",
+        "Distances are measured between pixel centres (a pixel's own size is not added), as the boundary length is. The course notes do not fix where the minor axis crosses the major one; it is drawn through the centre of the basic rectangle. The diameter and the rectangle only depend on the outermost pixels, so a filled region and its boundary give the same values.",
     ).about(&["diameter", "major_axis", "minor_axis_length", "basic_rectangle"]);
     Ok(s)
 }

@@ -47,7 +47,10 @@ const EX7_PRINTED: [[f64; 4]; 4] = [
 const EX5_PRINTED: [f64; 6] = [-0.5, -0.59, -0.09, 0.69, 0.97, 0.37];
 
 const RHO_FROM: &[(&str, &str)] = &[
-    ("printed", "The seed's printed ρ (as the example does)"),
+    (
+        "printed",
+        "The course notes' printed ρ (as the example does)",
+    ),
     ("exact", "Exact ρ, computed from the example's arrays"),
 ];
 
@@ -240,7 +243,7 @@ fn subpixel_1d_fields() -> Vec<Field> {
         vector(
             "rho",
             "Correlation coefficients ρ",
-            "ρ at the three positions (the seed's printed values of Example 5).",
+            "ρ at the three positions (the printed values of Example 5).",
             &[0.69, 0.97, 0.37],
             3,
             3,
@@ -275,7 +278,7 @@ fn subpixel_2d_fields() -> Vec<Field> {
         matrix(
             "rho",
             "Correlation coefficients ρ",
-            "3×3: one row per r, one column per c (the seed's printed values of Example 7).",
+            "3×3: one row per r, one column per c (the printed values of Example 7).",
             rows_of(&[
                 [-0.3334, 0.2394, -0.3921],
                 [0.0585, 0.9665, 0.0806],
@@ -721,7 +724,7 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         format!(
-            "Positions count from 1, as the seed does: sub-window k covers search values k … k+{}, and its centre is at column c = k + {} (the positions Example 8 uses).",
+            "Positions count from 1, as the course notes do: sub-window k covers search values k … k+{}, and its centre is at column c = k + {} (the positions Example 8 uses).",
             n - 1,
             num(half)
         ),
@@ -801,7 +804,7 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
     s.note(
         NoteKind::Rounding,
         format!(
-            "The seed's means Ā = 4.57 and B̄ = 2.57, 3.57, 4.14, 4, 4, 4 are the exact {} and {} rounded to two decimals; ρ2 = −0.59, ρ3 = −0.09 and ρ6 = 0.37 match the exact values to the printed two decimals.",
+            "The course notes' means Ā = 4.57 and B̄ = 2.57, 3.57, 4.14, 4, 4, 4 are the exact {} and {} rounded to two decimals; ρ2 = −0.59, ρ3 = −0.09 and ρ6 = 0.37 match the exact values to the printed two decimals.",
             num(mean_a),
             means.iter().map(|m| num(*m)).collect::<Vec<_>>().join(", ")
         ),
@@ -829,7 +832,7 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
     s.note(
         NoteKind::Rounding,
         format!(
-            "ρ5 is printed as 0.97; the exact {} rounds to {} (the seed cut the third decimal off). The best match, sub-window 5, is the same.",
+            "ρ5 is printed as 0.97; the exact {} rounds to {} (the course notes cut the third decimal off). The best match, sub-window 5, is the same.",
             num(r5),
             fmt_sig(round_to(r5, 2), 2)
         ),
@@ -973,14 +976,14 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed prints Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Its sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
+            "The course notes print Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Its sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
             num(n.mean_a)
         ),
     ).about(&["mean_a"]);
     s.note(
         NoteKind::Rounding,
         format!(
-            "With the rounded means 58.8 and 59.1 the three sums come out as {}, {} and {} — the seed's 1149.22, 843.56 and 2604.89. The exact sums {}, {} and {} agree to the printed two decimals: deviations from a mean add up to zero, so moving a mean by δ changes a sum of squares only by n·δ² (here 9 × {}² = {}).",
+            "With the rounded means 58.8 and 59.1 the three sums come out as {}, {} and {} — the course notes' 1149.22, 843.56 and 2604.89. The exact sums {}, {} and {} agree to the printed two decimals: deviations from a mean add up to zero, so moving a mean by δ changes a sum of squares only by n·δ² (here 9 × {}² = {}).",
             fmt_sig(seed_dadb, 8),
             fmt_sig(seed_da2, 8),
             fmt_sig(seed_db2, 8),
@@ -994,14 +997,14 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed writes the third sum without the squares, (52 − 59.1) + (37 − 59.1) + …, which adds up to {} (deviations sum to zero); its value 2604.89 is the sum of the squares, (52 − 59.1)² + (37 − 59.1)² + ….",
+            "The course notes write the third sum without the squares, (52 − 59.1) + (37 − 59.1) + …, which adds up to {} (deviations sum to zero); its value 2604.89 is the sum of the squares, (52 − 59.1)² + (37 − 59.1)² + ….",
             fmt_sig(plain, 2)
         ),
     ).about(&["sum_db2"]);
     s.note(
         NoteKind::Rounding,
         format!(
-            "ρ = {} is the seed's 0.7753 to four decimals.",
+            "ρ = {} is the course notes' 0.7753 to four decimals.",
             rho_text(n.rho)
         ),
     )
@@ -1202,7 +1205,7 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
 
     s.note(
         NoteKind::Convention,
-        "Positions count from 1 row by row, as the seed does (position 10 of a 4×4 surface is row 3, column 2); c is the column (to the right) and r the row (down) of the search array, also from 1.",
+        "Positions count from 1 row by row, as the course notes do (position 10 of a 4×4 surface is row 3, column 2); c is the column (to the right) and r the row (down) of the search array, also from 1.",
     ).about(&["best_position", "best_c", "best_r"]);
     if tw % 2 == 0 || th % 2 == 0 {
         s.note(
@@ -1404,7 +1407,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             s.step(
                 Step::new(
                     "How far the peak moves",
-                    "The same parabola through the seed's printed ρ (0.69, 0.97, 0.37) peaks elsewhere; the difference is what the printed ρ4 = 0.69 (exact 0.6731) and the rounding cost.",
+                    "The same parabola through the printed ρ (0.69, 0.97, 0.37) peaks elsewhere; the difference is what the printed ρ4 = 0.69 (exact 0.6731) and the rounding cost.",
                 )
                 .formula(
                     r"\Delta c = c_{\max}^{\text{exact}} - c_{\max}^{\text{printed}}",
@@ -1423,7 +1426,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         }
         s.note(
             NoteKind::Convention,
-            "ρ comes from Example 5's arrays computed exactly, not from the values the seed prints; the printed values shown beside are the seed's answer from its printed ρ.",
+            "ρ comes from Example 5's arrays computed exactly, not from the values the course notes print; the printed values shown beside are the course notes' answer from their printed ρ.",
         ).about(&["coefficients", "c_max"]);
     }
     let seed = is_seed(&subpixel_1d_fields(), inputs);
@@ -1437,7 +1440,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "From the printed ρ the coefficients are exactly a0 = {}, a1 = {}, a2 = {} and c = {}, which the seed prints as −25.91, 6.88, −0.44 and 7.82.",
+                "From the printed ρ the coefficients are exactly a0 = {}, a1 = {}, a2 = {} and c = {}, which the course notes print as −25.91, 6.88, −0.44 and 7.82.",
                 num(pa[0]),
                 num(pa[1]),
                 num(pa[2]),
@@ -1446,7 +1449,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         ).about(&["coefficients", "c_max"]);
         s.note(
             NoteKind::Erratum,
-            "The seed writes the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Its result c = 7.82 is right for 6.88.",
+            "The course notes write the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Its result c = 7.82 is right for 6.88.",
         ).about(&[]);
     }
     if seed {
@@ -1456,7 +1459,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Erratum,
                 format!(
-                    "These are the seed's printed ρ of Example 5, including ρ4 = 0.69, whose exact value is {} (Example 5). With the exact ρ ({}, {}, {}) the peak is at c = {}, {} px from {}: choose “exact” to chain from Example 5.",
+                    "These are the printed ρ of Example 5, including ρ4 = 0.69, whose exact value is {} (Example 5). With the exact ρ ({}, {}, {}) the peak is at c = {}, {} px from {}: choose “exact” to chain from Example 5.",
                     num(ye[0]),
                     num(ye[0]),
                     num(ye[1]),
@@ -1700,7 +1703,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
     extremum_notes_2d(&mut s, &q, c, r);
     s.note(
         NoteKind::Convention,
-        "The least-squares fit is computed in coordinates centred on the middle of the neighbourhood (u = c − c̄, v = r − r̄): the same surface as the seed's nine equations in c and r, but a well-conditioned system for any c and r. The coefficients are then written in the seed's form.",
+        "The least-squares fit is computed in coordinates centred on the middle of the neighbourhood (u = c − c̄, v = r − r̄): the same surface as the course notes' nine equations in c and r, but a well-conditioned system for any c and r. The coefficients are then written in the course notes' form.",
     ).about(&[]);
 
     let printed = quadric_peak([2.0, 3.0, 4.0], [3.0, 4.0, 5.0], EX9_PRINTED_RHO)?;
@@ -1711,7 +1714,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             s.step(
                 Step::new(
                     "How far the peak moves",
-                    "The same fit to the seed's printed ρ (four decimals) peaks at a slightly different place; the difference is what rounding the coefficients of Example 7 costs.",
+                    "The same fit to the printed ρ (four decimals) peaks at a slightly different place; the difference is what rounding the coefficients of Example 7 costs.",
                 )
                 .formula(
                     r"\Delta = \sqrt{(c^{\text{exact}} - c^{\text{printed}})^2 + (r^{\text{exact}} - r^{\text{printed}})^2}",
@@ -1736,7 +1739,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         }
         s.note(
             NoteKind::Convention,
-            "ρ comes from Example 7's arrays computed exactly, not from the four-decimal values the seed prints; the printed values shown beside are the seed's answer from its printed ρ.",
+            "ρ comes from Example 7's arrays computed exactly, not from the four-decimal values the course notes print; the printed values shown beside are the course notes' answer from their printed ρ.",
         ).about(&["coefficients", "c_max", "r_max"]);
     }
     let seed = is_seed(&subpixel_2d_fields(), inputs);
@@ -1753,7 +1756,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "From the printed ρ the least-squares coefficients are a0 = {}, a1 = {}, a2 = {}, a3 = {}, a4 = {}, a5 = {}: the seed's values to three decimals.",
+                "From the printed ρ the least-squares coefficients are a0 = {}, a1 = {}, a2 = {}, a3 = {}, a4 = {}, a5 = {}: the course notes' values to three decimals.",
                 num(pa[0]),
                 num(pa[1]),
                 num(pa[2]),
@@ -1766,7 +1769,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed's c = 3.012 and r = 4.075 come from its coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {} (c: {}; r: {}): about {} px from the printed point, beyond its three decimals.",
+                    "The course notes' c = 3.012 and r = 4.075 come from its coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {} (c: {}; r: {}): about {} px from the printed point, beyond its three decimals.",
                     fmt_sig(rc, 5),
                     fmt_sig(rr, 5),
                     num(p[0]),
@@ -1783,7 +1786,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
     if seed {
         s.note(
             NoteKind::Erratum,
-            "The seed's third equation is labelled ρ(3+1, 4+1) and written with c = 4, r = 5, but its value −0.3921 is ρ at c = 4, r = 3, the upper right neighbour: it should read ρ(3+1, 4−1) = a0 + a1(4) + a2(3) + a3(4)(3) + a4(4)² + a5(3)². The ninth equation is the real ρ(3+1, 4+1) = −0.1268. The seed's coefficients fit the corrected equation (see the coefficients above), so only the label and the written terms are wrong; this solution uses the corrected one.",
+            "The course notes' third equation is labelled ρ(3+1, 4+1) and written with c = 4, r = 5, but its value −0.3921 is ρ at c = 4, r = 3, the upper right neighbour: it should read ρ(3+1, 4−1) = a0 + a1(4) + a2(3) + a3(4)(3) + a4(4)² + a5(3)². The ninth equation is the real ρ(3+1, 4+1) = −0.1268. The course notes' coefficients fit the corrected equation (see the coefficients above), so only the label and the written terms are wrong; this solution uses the corrected one.",
         ).about(&[]);
         let ((ce, re, rhoe), _) = example_7_exact()?;
         let e = quadric_peak(ce, re, rhoe)?;
@@ -1876,7 +1879,7 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
     s.step(
         Step::new(
             "Coefficients in c and r",
-            "Expanding u = c − c̄ and v = r − r̄ gives the coefficients of the seed's form.",
+            "Expanding u = c − c̄ and v = r − r̄ gives the coefficients of the course notes' form.",
         )
         .formula(
             r"a_1 = b_1 - b_3 \bar r - 2 b_4 \bar c,\ a_2 = b_2 - b_3 \bar c - 2 b_5 \bar r,\ a_3 = b_3,\ a_4 = b_4,\ a_5 = b_5,\ a_0 = \rho(0, 0)",

@@ -774,7 +774,7 @@ fn lsm_1d(inputs: &Record) -> Result<Solution> {
         .with("sigma0", m.sigma0());
     s.note(
         NoteKind::Convention,
-        "Positions count from 1 as in the seed; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
+        "Positions count from 1 as in the course notes; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
     ).about(&["c"]);
     if seed_inputs(&lsm_1d_fields(), inputs, &["template", "search", "c0"]) {
         ex10_notes(&mut s, &m, radiometric);
@@ -857,7 +857,7 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed prints dX = [−0.295, 0.156, −0.053]; exactly dc = {}, da = {} (= 5/32), db = {} (= −3/56). The last rounds to −0.054: the seed cut it off instead of rounding.",
+                "The course notes print dX = [−0.295, 0.156, −0.053]; exactly dc = {}, da = {} (= 5/32), db = {} (= −3/56). The last rounds to −0.054: the course notes cut it off instead of rounding.",
                 num(dc),
                 num(da),
                 num(db)
@@ -879,7 +879,7 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed prints dc = −0.2945; exactly dc = AᵀdL / AᵀA = −11.5 / 39 = {}, which rounds to −0.2949. It then uses −0.295, so c = 8 − 0.295 = 7.705 (exactly {}).",
+                "The course notes print dc = −0.2945; exactly dc = AᵀdL / AᵀA = −11.5 / 39 = {}, which rounds to −0.2949. It then uses −0.295, so c = 8 − 0.295 = 7.705 (exactly {}).",
                 num(dc),
                 num(8.0 + dc)
             ),
@@ -888,7 +888,7 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
     s.note(
         NoteKind::Convention,
         format!(
-            "The seed stops after the first iteration (\"iterated until the increment approaches zero\"). Iterated to the end, c = {} after {} iterations{}, {} px from the first iteration's {}: the first step alone stops well short of the optimum.",
+            "The course notes stop after the first iteration (\"iterated until the increment approaches zero\"). Iterated to the end, c = {} after {} iterations{}, {} px from the first iteration's {}: the first step alone stops well short of the optimum.",
             num(m.params.a[2] + 1.0),
             m.iterations.len(),
             if radiometric {
@@ -989,7 +989,7 @@ fn lsm_2d(inputs: &Record) -> Result<Solution> {
         .with("sigma0", m.sigma0());
     s.note(
         NoteKind::Convention,
-        "Columns c (to the right) and rows r (downward) count from 1 as in the seed; (c, r) is the search-window position of the template's centre pixel.",
+        "Columns c (to the right) and rows r (downward) count from 1 as in the course notes; (c, r) is the search-window position of the template's centre pixel.",
     ).about(&["c", "r"]);
     if seed_inputs(
         &lsm_2d_fields(),
@@ -1058,8 +1058,8 @@ fn first_iteration_2d(
         }
     }
     let how = match gradients {
-        Gradients::SearchWindow => "Central differences of the resampled search window: the outer neighbours of the edge pixels come from the one-pixel border around the patch (the formula the seed states).",
-        Gradients::PatchEdge => "Central differences inside the patch only: an edge pixel stands in for its neighbour outside the patch (what the seed's printed matrix does).",
+        Gradients::SearchWindow => "Central differences of the resampled search window: the outer neighbours of the edge pixels come from the one-pixel border around the patch (the formula the course notes state).",
+        Gradients::PatchEdge => "Central differences inside the patch only: an edge pixel stands in for its neighbour outside the patch (what the printed matrix does).",
     };
     let gain = if a0 == 1.0 { "" } else { r"a^0\," };
     s.step(
@@ -1136,7 +1136,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Erratum,
         format!(
-            "The printed design matrix does not follow its own formula ∂G_s/∂c = (G_s(c+1, r) − G_s(c−1, r))/2 at {} of its 18 gradient entries: {}. At every patch-edge pixel the seed used the edge pixel itself for the neighbour outside the 3×3 patch (e.g. row 1 writes (65 − 47)/2 where the search window has 45 left of 47, giving (65 − 45)/2 = 10). Choose gradients = patch-edge to reproduce the printed matrix.",
+            "The printed design matrix does not follow its own formula ∂G_s/∂c = (G_s(c+1, r) − G_s(c−1, r))/2 at {} of its 18 gradient entries: {}. At every patch-edge pixel the course notes used the edge pixel itself for the neighbour outside the 3×3 patch (e.g. row 1 writes (65 − 47)/2 where the search window has 45 left of 47, giving (65 − 45)/2 = 10). Choose gradients = patch-edge to reproduce the printed matrix.",
             diffs.len(),
             diffs.join("; ")
         ),
@@ -1172,7 +1172,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Convention,
         format!(
-            "The seed stops after the first iteration (c = 3.194, r = 4.086, a = 1.138, b = −25.372). Iterated: search-window reading {}; patch-edge reading {}. The gain and offset move far beyond their first step, and with the patch-edge gradients (too small at the edge pixels) every step overshoots, so that reading zig-zags towards the optimum and needs many more iterations.",
+            "The course notes stop after the first iteration (c = 3.194, r = 4.086, a = 1.138, b = −25.372). Iterated: search-window reading {}; patch-edge reading {}. The gain and offset move far beyond their first step, and with the patch-edge gradients (too small at the edge pixels) every step overshoots, so that reading zig-zags towards the optimum and needs many more iterations.",
             end(sw_run),
             end(pe_run)
         ),
@@ -1236,8 +1236,8 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
     );
     s.step(
         Step::new(
-            "Observation equation and initial values (seed 003)",
-            "One equation per template pixel, linearised at the current parameters; G_p, G_q are the central-difference gradients of the resampled search patch along the window's columns and rows. Initial values as seed 003 says: translations zero, the diagonal of the affine part 1, gain 1, offset 0.",
+            "Observation equation and initial values (Lecture 21)",
+            "One equation per template pixel, linearised at the current parameters; G_p, G_q are the central-difference gradients of the resampled search patch along the window's columns and rows. Initial values as Lecture 21 says: translations zero, the diagonal of the affine part 1, gain 1, offset 0.",
         )
         .formula(
             r"T - (a_7 G + a_8) + V = a_7G_p(u\,da_1 + v\,da_2 + da_3) + a_7G_q(u\,da_4 + v\,da_5 + da_6) + G\,da_7 + da_8",
@@ -1351,7 +1351,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
         .with("expected_sigma0", expected);
     s.note(
         NoteKind::Convention,
-        "Seed 003 writes the affine and the radiometric parts as two stacked systems of 2m rows with zero blocks (its second block's unknowns are misprinted as Δa5 … Δa8). Both parts describe the same grey values, so here they form one observation per pixel, T = a7·S(p, q) + a8, with all eight unknowns in one m × 8 design matrix — the formulation of seed 000's Examples 10–11.",
+        "Lecture 21 writes the affine and the radiometric parts as two stacked systems of 2m rows with zero blocks (its second block's unknowns are misprinted as Δa5 … Δa8). Both parts describe the same grey values, so here they form one observation per pixel, T = a7·S(p, q) + a8, with all eight unknowns in one m × 8 design matrix — the formulation of worked examples 10–11.",
     ).about(&["parameters"]);
     s.note(
         NoteKind::Convention,

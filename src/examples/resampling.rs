@@ -37,7 +37,7 @@ pub fn entries() -> Vec<Entry> {
         title: "Resampling: nearest, bilinear, bicubic",
         topic: TOPIC,
         source: "Worked examples, Example 12; Lecture 7: Image processing",
-        summary: "The grey value at a fractional pixel position: nearest neighbour, bilinear interpolation along the rows then between them, and seed 004's cubic convolution.",
+        summary: "The grey value at a fractional pixel position: nearest neighbour, bilinear interpolation along the rows then between them, and Lecture 7's cubic convolution.",
         fields,
         solve: Some(solve),
     }]
@@ -67,7 +67,7 @@ fn fields() -> Vec<Field> {
             .help("Fractional image row; pixel centres are at whole numbers."),
         Field::number("cubic_a", "Cubic convolution parameter a", SEED_A)
             .range(-3.0, 0.0)
-            .help("Seed 004's kernel 1 − 2|x|² + |x|³, 4 − 8|x| + 5|x|² − |x|³ is a = −1; Keys' a = −0.5 reproduces linear ramps exactly."),
+            .help("Lecture 7's kernel 1 − 2|x|² + |x|³, 4 − 8|x| + 5|x|² − |x|³ is a = −1; Keys' a = −0.5 reproduces linear ramps exactly."),
     ]
 }
 
@@ -341,7 +341,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 Step::new(
                     "Bicubic: weights",
                     &format!(
-                        "Seed 004's cubic convolution uses the 4×4 pixels from column {} and row {}. With s = c − [c] and t = r − [r] the kernel gives four weights per direction (they sum to 1).",
+                        "Lecture 7's cubic convolution uses the 4×4 pixels from column {} and row {}. With s = c − [c] and t = r − [r] the kernel gives four weights per direction (they sum to 1).",
                         num(bc0),
                         num(br0)
                     ),
@@ -424,7 +424,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             format!(
-                "The cubic kernel uses a = {} instead of seed 004's a = −1.",
+                "The cubic kernel uses a = {} instead of Lecture 7's a = −1.",
                 num(a)
             ),
         )
@@ -432,7 +432,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
     } else {
         s.note(
             NoteKind::Convention,
-            "Seed 004's cubic kernel (a = −1) passes through the samples, but it does not reproduce a linear ramp between them: on grey values rising by g per pixel it is off by s(1 − s)(1 − 2s)·g at the fraction s, up to 0.096·g. Keys' a = −0.5 (choose it above) reproduces ramps exactly.",
+            "Lecture 7's cubic kernel (a = −1) passes through the samples, but it does not reproduce a linear ramp between them: on grey values rising by g per pixel it is off by s(1 − s)(1 − 2s)·g at the fraction s, up to 0.096·g. Keys' a = −0.5 (choose it above) reproduces ramps exactly.",
         ).about(&["bicubic"]);
     }
     if let Some((which, p)) = seed_case(&patch, fc, fr, c, r) {
@@ -450,26 +450,26 @@ fn solve(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Convention,
                 format!(
-                    "For the lower row the seed interpolates from the right pixel: I2 = 74 + 0.56·(78 − 74) = 76.24, with 1 − dc = 0.56. That is the same as 78 + 0.44·(74 − 78) = {} from the left, as I1 is done.",
+                    "For the lower row the course notes interpolate from the right pixel: I2 = 74 + 0.56·(78 − 74) = 76.24, with 1 − dc = 0.56. That is the same as 78 + 0.44·(74 − 78) = {} from the left, as I1 is done.",
                     num(bl.i2)
                 ),
             ).about(&["i2"]);
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed's I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36). The whole grey value 75 is right.",
+                    "The course notes' I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36). The whole grey value 75 is right.",
                     num(bl.value)
                 ),
             ).about(&["bilinear"]);
         } else {
             s.note(
                 NoteKind::Erratum,
-                "Harmless: the seed writes the position as c = 523.72m, with a stray unit m (metres); it is a pixel column.",
+                "Harmless: the course notes write the position as c = 523.72m, with a stray unit m (metres); it is a pixel column.",
             );
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed prints I = 55.12 + 0.24·(59.76 − 55.12) = {} as 56.234, rounded to three decimals; every value of Example 12b is right.",
+                    "The course notes print I = 55.12 + 0.24·(59.76 − 55.12) = {} as 56.234, rounded to three decimals; every value of Example 12b is right.",
                     num(bl.value)
                 ),
             ).about(&["bilinear"]);

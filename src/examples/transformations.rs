@@ -793,7 +793,7 @@ fn example4(inputs: &Record, model: Model) -> Result<Solution> {
     label_results(&mut s, &model.param_names(), "mm");
     s.note(
         NoteKind::Convention,
-        "Points are entered as the seed's table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the seed's printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
+        "Points are entered as the course notes' table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
     );
     condition_note(&mut s, &fit);
     if is_seed(&fiducial_fields(), inputs) {
@@ -865,7 +865,7 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
         s.note(
             NoteKind::Rounding,
             format!(
-                "Beyond its printed precision: {}. The seed rounded these to two decimals and printed a third, zero, decimal that it does not have.",
+                "Beyond its printed precision: {}. The course notes rounded these to two decimals and printed a third, zero, decimal that they do not have.",
                 to_two.join("; ")
             ),
         ).about(&["parameters"]);
@@ -912,7 +912,7 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed's table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, its printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
+            "The course notes' table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, its printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
             num(g(0)),
             num(g(1)),
             num(g(2)),
@@ -938,7 +938,7 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
     rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &SIM_PRINTED_V);
     s.note(
         NoteKind::Convention,
-        "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
+        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
     ).about(&["sigma0", "std_devs"]);
     Ok(())
 }
@@ -968,7 +968,7 @@ fn seed_notes_affine(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()
     rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &AFF_PRINTED_V);
     s.note(
         NoteKind::Convention,
-        "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
+        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
     ).about(&["sigma0", "std_devs"]);
     Ok(())
 }
@@ -1065,7 +1065,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
         ).about(&["parameters", "residuals", "point_residuals"]),
         Model::Polynomial2 | Model::Polynomial3 => s.note(
             NoteKind::Convention,
-            "The seed's polynomial Σᵢ Σⱼ a_ij·u^(i−1)·v^(j−1), i, j = 1 … n (n at most 3), runs over a square of exponents and would include u²v² (and for order 3 up to u³v³). Here a polynomial of order k has every term u^p·v^q with p + q ≤ k (the usual definition): 6 terms per coordinate for k = 2, 10 for k = 3; a_ij multiplies u^(i−1)·v^(j−1) as in the seed. Coordinates are used as given (not centred or scaled), so that the parameters are the table's; the condition number is reported.",
+            "The course notes' polynomial Σᵢ Σⱼ a_ij·u^(i−1)·v^(j−1), i, j = 1 … n (n at most 3), runs over a square of exponents and would include u²v² (and for order 3 up to u³v³). Here a polynomial of order k has every term u^p·v^q with p + q ≤ k (the usual definition): 6 terms per coordinate for k = 2, 10 for k = 3; a_ij multiplies u^(i−1)·v^(j−1) as in the course notes. Coordinates are used as given (not centred or scaled), so that the parameters are the table's; the condition number is reported.",
         ).about(&["parameters"]),
         Model::Helmert => s.note(
             NoteKind::Convention,
