@@ -976,7 +976,7 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
     s.note(
         NoteKind::Erratum,
         format!(
-            "The course notes print Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Its sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
+            "The course notes print Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Their sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
             num(n.mean_a)
         ),
     ).about(&["mean_a"]);
