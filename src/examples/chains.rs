@@ -1245,7 +1245,7 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
     s.step(
         Step::new(
             "Basic rectangle",
-            "The box with sides along the two axes that just encloses the boundary: from one end of the major axis to the other, and from t_min to t_max across it.",
+            "The box with sides along the two axes that just encloses the boundary: from one end of the major axis to the other, and from the smallest to the largest distance across it.",
         )
         .formula(
             r"p_a + s\,u + t\,v,\quad s \in \{0, D\},\ t \in \{t_{\min}, t_{\max}\}",
@@ -1320,7 +1320,7 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
     if sh.eccentricity.is_none() {
         s.note(
             NoteKind::Warning,
-            "All boundary pixels lie on one straight line, so the minor axis has length 0 and the eccentricity has no value (null).",
+            "All boundary pixels lie on one straight line, so the minor axis has length 0 and the eccentricity has no value.",
         ).about(&["minor_axis_length", "eccentricity"]);
     }
     regions_note(&mut s, &e);

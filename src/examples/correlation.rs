@@ -250,7 +250,7 @@ fn subpixel_1d_fields() -> Vec<Field> {
         )
         .when("rho_from", PRINTED),
         rho_from_field(
-            "printed: use the positions and ρ above; exact: take them from Example 5's arrays computed exactly (the fields above are then not used).",
+            "“Printed” uses the positions and ρ above; “Exact” takes them from Example 5's arrays computed exactly (the fields above are then not used).",
         ),
     ]
 }
@@ -288,7 +288,7 @@ fn subpixel_2d_fields() -> Vec<Field> {
         )
         .when("rho_from", PRINTED),
         rho_from_field(
-            "printed: use c, r and ρ above; exact: take them from Example 7's arrays computed exactly (the fields above are then not used).",
+            "“Printed” uses c, r and ρ above; “Exact” takes them from Example 7's arrays computed exactly (the fields above are then not used).",
         ),
     ]
 }
@@ -759,7 +759,7 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
         s.note(
             NoteKind::Warning,
             format!(
-                "Sub-window{} {} {} no variance (all values equal): ρ is 0/0 there and is given as null (no value).",
+                "Sub-window{} {} {} no variance (all values equal): ρ is 0/0 there and has no value.",
                 if flat.len() > 1 { "s" } else { "" },
                 flat.join(", "),
                 if flat.len() > 1 { "have" } else { "has" }
@@ -947,7 +947,7 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
     if !flat.is_empty() {
         s.note(
             NoteKind::Warning,
-            format!("{flat} The correlation coefficient is 0/0 and is given as null."),
+            format!("{flat} The correlation coefficient is 0/0 and has no value."),
         )
         .about(&["rho"]);
     }
@@ -1229,7 +1229,7 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
                 s.note(
                     NoteKind::Warning,
                     format!(
-                        "{flat} window{} of the search array {} no variance (all values equal): ρ is 0/0 there and is given as null.",
+                        "{flat} window{} of the search array {} no variance (all values equal): ρ is 0/0 there and has no value.",
                         if flat > 1 { "s" } else { "" },
                         if flat > 1 { "have" } else { "has" }
                     ),

@@ -149,7 +149,7 @@ fn image_fields() -> Vec<Field> {
         threshold(),
         Field::number("q_min", "Least roundness q", 0.5)
             .range(0.0, 1.0)
-            .help("Förstner's roundness test q ≥ q_min on top of Lecture 21's threshold; 0 switches it off (Lecture 21 alone)."),
+            .help("Förstner's roundness test (q at least this) on top of Lecture 21's threshold; 0 switches it off (Lecture 21 alone)."),
     ]
 }
 
@@ -525,12 +525,12 @@ fn singular_notes(s: &mut Solution, m: &Measures) {
     if m.trace == 0.0 {
         s.note(
             NoteKind::Warning,
-            "The window is flat: every gradient is zero, so N = 0. N⁻¹, trace N⁻¹, q and λmax(Σuv) have no value (null); w = 0. The position cannot be determined in any direction.",
+            "The window is flat: every gradient is zero, so N = 0. N⁻¹, trace N⁻¹, q and λmax(Σuv) have no value; w = 0. The position cannot be determined in any direction.",
         ).about(&["n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     } else if m.singular {
         s.note(
             NoteKind::Warning,
-            "det N = 0: the gradients all point along one direction (a straight edge), so λmin(N) = 0 and q = 0. N⁻¹, trace N⁻¹ and λmax(Σuv) have no value (null, i.e. infinite); w = 0. The position is fixed across the edge only.",
+            "det N = 0: the gradients all point along one direction (a straight edge), so λmin(N) = 0 and q = 0. N⁻¹, trace N⁻¹ and λmax(Σuv) have no value (they are infinite); w = 0. The position is fixed across the edge only.",
         ).about(&["det_n", "n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     }
 }
@@ -892,11 +892,11 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
     singular_notes(&mut s, &f.measures);
     s.note(
         NoteKind::Convention,
-        "Gradients by the worked examples' central differences; σn is not given in the course documents (default 2 grey values, a little above this pattern's noise). The roundness test q ≥ q_min is Förstner's, not Lecture 21's: with q_min = 0 (Lecture 21 alone) some windows on the noisy edges pass too, because noise along an edge makes λmin(N) small but not zero.",
+        "Gradients by the worked examples' central differences; σn is not given in the course documents (default 2 grey values, a little above this pattern's noise). The roundness test (q at least the least roundness) is Förstner's, not Lecture 21's: with a least roundness of 0 (Lecture 21 alone) some windows on the noisy edges pass too, because noise along an edge makes λmin(N) small but not zero.",
     ).about(&["points", "q"]);
     s.note(
         NoteKind::Convention,
-        "The map is null where the window does not fit inside the image (a border of half the window).",
+        "The map has no value where the window does not fit inside the image (a border of half the window).",
     );
     Ok(s)
 }

@@ -1136,7 +1136,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Erratum,
         format!(
-            "The printed design matrix does not follow its own formula ∂G_s/∂c = (G_s(c+1, r) − G_s(c−1, r))/2 at {} of its 18 gradient entries: {}. At every patch-edge pixel the course notes used the edge pixel itself for the neighbour outside the 3×3 patch (e.g. row 1 writes (65 − 47)/2 where the search window has 45 left of 47, giving (65 − 45)/2 = 10). Choose gradients = patch-edge to reproduce the printed matrix.",
+            "The printed design matrix does not follow its own formula ∂G_s/∂c = (G_s(c+1, r) − G_s(c−1, r))/2 at {} of its 18 gradient entries: {}. At every patch-edge pixel the course notes used the edge pixel itself for the neighbour outside the 3×3 patch (e.g. row 1 writes (65 − 47)/2 where the search window has 45 left of 47, giving (65 − 45)/2 = 10). Choose “Patch edge” under “Gradients at the patch edge” to reproduce the printed matrix.",
             diffs.len(),
             diffs.join("; ")
         ),
@@ -1153,7 +1153,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Rounding,
         format!(
-            "The printed dX = [0.194, 0.086, 0.138, −5.372] is the patch-edge reading rounded to three decimals (exactly [{}]). The stated formula gives dX = [{}].",
+            "The printed dX = [0.194, 0.086, 0.138, −5.372] is what the patch-edge gradients give, rounded to three decimals (exactly [{}]). The stated formula gives dX = [{}].",
             fmt_inc(pe_run),
             fmt_inc(sw_run)
         ),
@@ -1172,7 +1172,7 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Convention,
         format!(
-            "The course notes stop after the first iteration (c = 3.194, r = 4.086, a = 1.138, b = −25.372). Iterated: search-window reading {}; patch-edge reading {}. The gain and offset move far beyond their first step, and with the patch-edge gradients (too small at the edge pixels) every step overshoots, so that reading zig-zags towards the optimum and needs many more iterations.",
+            "The course notes stop after the first iteration (c = 3.194, r = 4.086, a = 1.138, b = −25.372). Iterated: with the search-window gradients (the stated formula) {}; with the patch-edge gradients (the printed matrix) {}. The gain and offset move far beyond their first step, and with the patch-edge gradients (too small at the edge pixels) every step overshoots, so that run zig-zags towards the optimum and needs many more iterations.",
             end(sw_run),
             end(pe_run)
         ),
@@ -1293,7 +1293,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
         .collect();
     let mut step = Step::new(
         "Estimates beside the truth",
-        "The standard deviations are σ0·√q_ii from the last iteration's Qxx = N⁻¹.",
+        "The standard deviations are σ0·√qᵢᵢ from the last iteration's Qxx = N⁻¹.",
     )
     .formula(
         r"\sigma_{a_j} = \sigma_0\sqrt{q_{jj}}",

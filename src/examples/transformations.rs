@@ -709,7 +709,7 @@ fn condition_note(s: &mut Solution, fit: &Fit) {
     if fit.adjustment.redundancy == 0 {
         s.note(
             NoteKind::Warning,
-            "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 is reported as null). Add points to get them.",
+            "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 has no value). Add points to get them.",
         ).about(&["sigma0", "std_devs"]);
     }
 }
