@@ -8,7 +8,7 @@ use super::fields::{Field, Kind, MAX_DIM, MAX_LEN};
 use super::Entry;
 use crate::chain::{self, Boundary, Connectivity, Path, Pixel};
 use crate::error::{Error, Result};
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step, Value};
 
 const TOPIC: &str = "Chain codes and boundaries";
 /// How far from the origin a pixel may lie.
@@ -1154,8 +1154,9 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The course notes print 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal).",
-                num(8.0 + 9.0 * std::f64::consts::SQRT_2)
+                "The course notes print 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal; {}).",
+                num(8.0 + 9.0 * std::f64::consts::SQRT_2),
+                exact_minus_printed(8.0 + 9.0 * std::f64::consts::SQRT_2, 20.7, "")
             ),
         )
         .about(&["length"]);

@@ -10,7 +10,9 @@ use crate::matching::{
     self, Gradients, Iteration, Matching, Model, Param, Params, Settings, Status,
 };
 use crate::raster::Grid;
-use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{
+    exact_minus_printed, fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value,
+};
 
 const TOPIC: &str = "Least-squares matching";
 /// Largest 1-D template or search window.
@@ -879,9 +881,11 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The course notes print dc = −0.2945; exactly dc = AᵀdL / AᵀA = −11.5 / 39 = {}, which rounds to −0.2949. It then uses −0.295, so c = 8 − 0.295 = 7.705 (exactly {}).",
+                "The course notes print dc = −0.2945; exactly dc = AᵀdL / AᵀA = −11.5 / 39 = {}, which rounds to −0.2949 ({}). They then use −0.295, so c = 8 − 0.295 = 7.705 (exactly {}; {}).",
                 num(dc),
-                num(8.0 + dc)
+                exact_minus_printed(dc, -0.2945, "px"),
+                num(8.0 + dc),
+                exact_minus_printed(8.0 + dc, 7.705, "px")
             ),
         ).about(&["first_dc", "c_after_first"]);
     }

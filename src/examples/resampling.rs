@@ -9,7 +9,7 @@ use super::Entry;
 use crate::error::{Error, Result};
 use crate::raster::Grid;
 use crate::resample::{self, SEED_A};
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step, Value};
 
 const TOPIC: &str = "Resampling";
 /// The largest pixel position accepted for the patch's first pixel.
@@ -457,8 +457,9 @@ fn solve(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The course notes' I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36). The whole grey value 75 is right.",
-                    num(bl.value)
+                    "The course notes' I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36; {}). The whole grey value 75 is right.",
+                    num(bl.value),
+                    exact_minus_printed(bl.value, 75.35, "")
                 ),
             ).about(&["bilinear"]);
         } else {
