@@ -177,8 +177,20 @@ fn notes_answer_and_mode_fields_cross_as_plain_data() {
         Some("gsd_cm")
     );
 
-    // `when` is { key, values } or null
+    // `when` is { key, values } or null; `document` names the course document
     let cat: Array = catalog().unwrap().dyn_into().unwrap();
+    let gsd = cat
+        .iter()
+        .find(|e| get(e, "id").as_string().as_deref() == Some("gsd"))
+        .unwrap();
+    assert_eq!(
+        get(&gsd, "source").as_string().as_deref(),
+        Some("Worked examples, Example 2")
+    );
+    assert!(get(&gsd, "document")
+        .as_string()
+        .unwrap()
+        .starts_with("Course notes 000 — Point coordinates on digital images"));
     let chain = cat
         .iter()
         .find(|e| get(e, "id").as_string().as_deref() == Some("chain-code"))
