@@ -1449,7 +1449,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         ).about(&["coefficients", "c_max"]);
         s.note(
             NoteKind::Erratum,
-            "The course notes write the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Its result c = 7.82 is right for 6.88.",
+            "The course notes write the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Their result c = 7.82 is right for 6.88.",
         ).about(&[]);
     }
     if seed {
@@ -1769,7 +1769,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The course notes' c = 3.012 and r = 4.075 come from its coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {} (c: {}; r: {}): about {} px from the printed point, beyond its three decimals.",
+                    "The course notes' c = 3.012 and r = 4.075 come from their coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {} (c: {}; r: {}): about {} px from the printed point, beyond its three decimals.",
                     fmt_sig(rc, 5),
                     fmt_sig(rr, 5),
                     num(p[0]),

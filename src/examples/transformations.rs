@@ -859,7 +859,7 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 fine.join(", ")
             ),
         )
-        .about(&["parameters"]);
+        .about(&[what]);
     }
     if !to_two.is_empty() {
         s.note(
@@ -868,7 +868,7 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 "Beyond its printed precision: {}. The course notes rounded these to two decimals and printed a third, zero, decimal that they do not have.",
                 to_two.join("; ")
             ),
-        ).about(&["parameters"]);
+        ).about(&[what]);
     }
     if !other.is_empty() {
         s.note(
@@ -878,7 +878,7 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 other.join("; ")
             ),
         )
-        .about(&["parameters"]);
+        .about(&[what]);
     }
 }
 
@@ -912,7 +912,7 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
     s.note(
         NoteKind::Erratum,
         format!(
-            "The course notes' table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, its printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
+            "The course notes' table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, their printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
             num(g(0)),
             num(g(1)),
             num(g(2)),
