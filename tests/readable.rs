@@ -542,3 +542,39 @@ fn convergence_tests_name_the_parameters_estimated() {
         st.text
     );
 }
+
+/// Words a student would not know: the internal names of the course
+/// documents, and "null" for a value that does not exist.
+fn jargon(text: &str) -> Option<&'static str> {
+    let lower = text.to_lowercase();
+    let lower = lower.replace("random seed", "");
+    ["seed 00", "the seed", "seed's", "null"]
+        .into_iter()
+        .find(|w| lower.contains(w))
+}
+
+#[test]
+fn catalog_and_solutions_speak_a_students_words() {
+    for e in catalog() {
+        for t in [e.title, e.source, e.summary] {
+            assert_eq!(jargon(t), None, "{}: {t}", e.id);
+        }
+        for f in &e.inputs {
+            assert_eq!(jargon(f.label), None, "{}.{}: {}", e.id, f.key, f.label);
+            assert_eq!(jargon(f.help), None, "{}.{}: {}", e.id, f.key, f.help);
+            for o in f.options.iter().flatten() {
+                assert_eq!(jargon(o.label), None, "{}.{}: {}", e.id, f.key, o.label);
+                assert!(!o.label.contains('_'), "{}.{}: {}", e.id, f.key, o.label);
+            }
+        }
+    }
+    for s in seed_solutions().into_iter().chain(variants()) {
+        for st in &s.steps {
+            assert_eq!(jargon(&st.title), None, "{}: {}", s.id, st.title);
+            assert_eq!(jargon(&st.text), None, "{}: {}", s.id, st.text);
+        }
+        for n in &s.notes {
+            assert_eq!(jargon(&n.text), None, "{}: {}", s.id, n.text);
+        }
+    }
+}

@@ -500,7 +500,7 @@ fn crop_note(s: &mut Solution, border: Border, region: filter::Region, window: &
         };
         s.note(
             NoteKind::Convention,
-            format!("Output for every pixel of the window; values outside it are made up by {how}. The seeds keep only the interior."),
+            format!("Output for every pixel of the window; values outside it are made up by {how}. The course documents keep only the interior."),
         ).about(&["output_first_c", "output_first_r"]);
     }
 }

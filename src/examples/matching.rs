@@ -1221,7 +1221,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
     s.step(
         Step::new(
             "The generated pair",
-            "A smooth texture (six sinusoids, wavelengths 7–16 px, drawn from the seed) fills the search window. The template is that window seen through the chosen transformation — resampled bilinearly at p = a1·u + a2·v + a3, q = a4·u + a5·v + a6 — then scaled by the gain and shifted by the offset; noise is added to both. u, v count from the template's centre, p, q from the search window's centre.",
+            "A smooth texture (six sinusoids, wavelengths 7–16 px, drawn with the random seed) fills the search window. The template is that window seen through the chosen transformation — resampled bilinearly at p = a1·u + a2·v + a3, q = a4·u + a5·v + a6 — then scaled by the gain and shifted by the offset; noise is added to both. u, v count from the template's centre, p, q from the search window's centre.",
         )
         .formula(
             r"\begin{bmatrix} a_1 & a_2 \\ a_4 & a_5 \end{bmatrix} = s\begin{bmatrix} \cos\theta & -\sin\theta \\ \sin\theta & \cos\theta \end{bmatrix}\begin{bmatrix} 1 & k \\ 0 & 1 \end{bmatrix},\quad T(u,v) = a_7\,S(p,q) + a_8 + n",
