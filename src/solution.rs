@@ -230,6 +230,29 @@ pub enum NoteKind {
 pub struct Note {
     pub kind: NoteKind,
     pub text: String,
+    /// The result or textbook keys the note concerns (possibly none): the
+    /// page places the note beside them, and shows a printed value that
+    /// differs under an "erratum" or "convention" note as such.
+    pub keys: Vec<String>,
+}
+
+impl Note {
+    /// True when the note names `key`.
+    pub fn concerns(&self, key: &str) -> bool {
+        self.keys.iter().any(|k| k == key)
+    }
+}
+
+/// The note just added by [`Solution::note`], to name its keys.
+pub struct NoteKeys<'a>(&'a mut Vec<Note>);
+
+impl NoteKeys<'_> {
+    /// Names the result or textbook keys the note concerns.
+    pub fn about(self, keys: &[&str]) {
+        if let Some(n) = self.0.last_mut() {
+            n.keys.extend(keys.iter().map(|k| k.to_string()));
+        }
+    }
 }
 
 /// One step of a worked solution.
@@ -278,6 +301,9 @@ pub struct Solution {
     pub result: Record,
     pub textbook: Option<Record>,
     pub notes: Vec<Note>,
+    /// The one to three result keys that are the answer of the example,
+    /// for the answer line at the top of the page.
+    pub answer: Vec<String>,
     /// What each result key means: `{ key: { label, unit } }` (unit may be
     /// null), for tables a student can read. Keys without one show as is.
     pub labels: Record,
@@ -293,6 +319,7 @@ impl Solution {
             result: Record::new(),
             textbook: None,
             notes: Vec::new(),
+            answer: Vec::new(),
             labels: Record::new(),
         }
     }
@@ -321,11 +348,15 @@ impl Solution {
     pub fn step(&mut self, step: Step) {
         self.steps.push(step);
     }
-    pub fn note(&mut self, kind: NoteKind, text: impl Into<String>) {
+    /// Adds a note; chain [`Note::about`] to name the keys it concerns:
+    /// `s.note(NoteKind::Rounding, "…").about(&["gsd_cm"]);`
+    pub fn note(&mut self, kind: NoteKind, text: impl Into<String>) -> NoteKeys<'_> {
         self.notes.push(Note {
             kind,
             text: text.into(),
+            keys: Vec::new(),
         });
+        NoteKeys(&mut self.notes)
     }
     /// Final check before a solution leaves the core: no NaN or infinity in
     /// the result or the step values (a bug if it happens, reported as such).
@@ -378,6 +409,21 @@ pub fn fmt_sig(x: f64, sig: usize) -> String {
     s
 }
 
+/// The one way a note states how an exact value and a printed one differ:
+/// `"exact − printed = +0.065 mm"` (the sign always shown, a real minus).
+/// The page's table shows the same difference, exact − printed; a test
+/// recomputes every such statement from `result` and `textbook`.
+pub fn exact_minus_printed(exact: f64, printed: f64, unit: &str) -> String {
+    let d = exact - printed;
+    let sign = if d < 0.0 { "−" } else { "+" };
+    let unit = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    format!("exact − printed = {sign}{}{unit}", num(d.abs()))
+}
+
 /// [`fmt_sig`] with 7 significant digits: what the steps show.
 pub fn num(x: f64) -> String {
     fmt_sig(x, 7)
@@ -406,6 +452,19 @@ mod tests {
         assert_eq!(num(-0.0), "0");
         assert_eq!(num(195.0), "195");
         assert_eq!(tex(-12.42), "(-12.42)");
+    }
+
+    #[test]
+    fn differences_are_exact_minus_printed() {
+        assert_eq!(
+            exact_minus_printed(8.255, 8.19, "mm"),
+            "exact − printed = +0.065 mm"
+        );
+        assert_eq!(
+            exact_minus_printed(1349.055118, 1353.8, "px"),
+            "exact − printed = −4.744882 px"
+        );
+        assert_eq!(exact_minus_printed(0.5, 0.5, ""), "exact − printed = +0");
     }
 
     #[test]

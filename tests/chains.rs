@@ -780,7 +780,9 @@ fn bad_inputs_name_the_field() {
     assert!(e.starts_with("start: the start pixel must be whole"), "{e}");
     let e = err(
         "chain-code",
-        Record::new().with("start", Value::numbers(&[1.0])),
+        Record::new()
+            .with("given", "code")
+            .with("start", Value::numbers(&[1.0])),
     );
     assert!(e.starts_with("start: needs at least 2"), "{e}");
     let e = err("chain-code", Record::new().with("connectivity", "6"));
@@ -796,9 +798,26 @@ fn bad_inputs_name_the_field() {
     assert!(e.contains("at most 512 × 512 can be traced"), "{e}");
     let e = err(
         "chain-code",
-        Record::new().with("code", Value::Number(f64::NAN)),
+        Record::new()
+            .with("given", "code")
+            .with("code", Value::Number(f64::NAN)),
     );
     assert!(e.starts_with("code:"), "{e}");
+    // with the pixels given, the code and start fields do not apply: ignored
+    let s = solve(
+        "chain-code",
+        &Record::new()
+            .with("code", Value::Number(f64::NAN))
+            .with("start", Value::numbers(&[1.0])),
+    )
+    .unwrap();
+    assert_eq!(
+        s.result.get("code"),
+        solve("chain-code", &Record::new())
+            .unwrap()
+            .result
+            .get("code")
+    );
 }
 
 #[test]

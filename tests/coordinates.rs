@@ -309,8 +309,10 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
             // every built entry solves with its defaults, and each
             // default's text parses back to the default
             let solved = solve(e.id, &Record::new()).unwrap();
-            // every result the page lists has a human label
-            for (key, _) in solved.result.iter() {
+            // every result and every printed value (intermediates too)
+            // the page lists has a human label
+            let printed = solved.textbook.iter().flat_map(|t| t.keys());
+            for key in solved.result.keys().chain(printed) {
                 assert!(
                     solved.labels.get(key).is_some(),
                     "{}: result {key} has no label",

@@ -211,7 +211,7 @@ fn example_6_ncc_2d_exact_values_and_the_two_slips() {
     assert_eq!(num(printed(&s, "sum_db2")), 2604.89);
     assert_eq!(num(printed(&s, "rho")), 0.7753);
     assert!(
-        has_note(&s, NoteKind::Erratum, "prints Ā = 58.5"),
+        has_note(&s, NoteKind::Erratum, "print Ā = 58.5"),
         "{}",
         notes(&s)
     );

@@ -939,9 +939,14 @@ fn bad_inputs_name_the_field_and_say_what_is_wrong() {
         "custom_kernel: is 17×17; at most 15×15 is allowed"
     );
     assert_eq!(
-        err("filter-window", r().with("custom_divisor", 0.0)),
+        err(
+            "filter-window",
+            r().with("kernel", "custom").with("custom_divisor", 0.0)
+        ),
         "custom_divisor: must be greater than 0 (got 0)"
     );
+    // with another kernel the custom fields do not apply: ignored
+    assert!(solve("filter-window", &r().with("custom_divisor", 0.0)).is_ok());
     // selections and choices
     assert_eq!(
         err("filter-window", r().with("select_c", 6.0)),

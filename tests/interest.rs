@@ -258,14 +258,18 @@ fn example_14_moravec_reproduced() {
         matrix(t.get("sums").unwrap()),
         [[47.0, 361.0], [153.0, 171.0]]
     );
-    assert!(has_note(&s, NoteKind::Convention, "agree with the seed"));
+    assert!(has_note(
+        &s,
+        NoteKind::Convention,
+        "agree with the course notes"
+    ));
     assert!(has_note(&s, NoteKind::Convention, "MINIMUM"));
     assert!(s.steps[0]
         .substituted
         .contains(r"(9 - 10)^2 + (14 - 15)^2 \\ &\quad + (15 - 12)^2 + (11 - 5)^2 = 47"));
     assert!(s.steps[1]
         .substituted
-        .contains(r"\frac{47 + 361 + 153 + 171}{4} = 183"));
+        .contains(r"\sum S = 47 + 361 + 153 + 171 = 732,\quad \bar S = \frac{732}{4} = 183"));
 }
 
 #[test]

@@ -320,7 +320,7 @@ fn example_11_patch_edge_reading_reproduces_the_printed_matrix() {
     assert!(has_note(
         &s,
         NoteKind::Rounding,
-        "patch-edge reading rounded"
+        "patch-edge gradients give, rounded"
     ));
     assert!(has_note(&s, NoteKind::Convention, "zig-zags"));
 }

@@ -142,3 +142,85 @@ fn parse_inputs_returns_typed_inputs_and_per_field_errors() {
     let s = solve("gsd", get(&p, "inputs")).unwrap();
     assert!((num(&s, &["result", "gsd_cm"]) - 26.736_842).abs() < 1e-6);
 }
+
+#[wasm_bindgen_test]
+fn notes_answer_and_mode_fields_cross_as_plain_data() {
+    // every note carries `keys` (an array, possibly empty); `answer` lists result keys
+    let s = solve("photo-to-pixel", JsValue::UNDEFINED).unwrap();
+    let notes: Array = get(&s, "notes").dyn_into().unwrap();
+    let mut erratum_keys = None;
+    for n in notes.iter() {
+        let keys: Array = get(&n, "keys").dyn_into().expect("keys is an array");
+        if get(&n, "kind").as_string().as_deref() == Some("erratum") {
+            erratum_keys = Some(
+                keys.iter()
+                    .map(|k| k.as_string().unwrap())
+                    .collect::<Vec<_>>(),
+            );
+        }
+    }
+    assert_eq!(erratum_keys, Some(vec!["dr_px".to_string()]));
+    let answer: Array = get(&s, "answer").dyn_into().expect("answer is an array");
+    assert_eq!(
+        answer
+            .iter()
+            .map(|k| k.as_string().unwrap())
+            .collect::<Vec<_>>(),
+        ["c", "r"]
+    );
+    let s = solve("gsd", JsValue::UNDEFINED).unwrap();
+    assert_eq!(
+        Array::from(&get(&s, "answer"))
+            .get(0)
+            .as_string()
+            .as_deref(),
+        Some("gsd_cm")
+    );
+
+    // `when` is { key, values } or null; `document` names the course document
+    let cat: Array = catalog().unwrap().dyn_into().unwrap();
+    let gsd = cat
+        .iter()
+        .find(|e| get(e, "id").as_string().as_deref() == Some("gsd"))
+        .unwrap();
+    assert_eq!(
+        get(&gsd, "source").as_string().as_deref(),
+        Some("Worked examples, Example 2")
+    );
+    assert!(get(&gsd, "document")
+        .as_string()
+        .unwrap()
+        .starts_with("Course notes 000 — Point coordinates on digital images"));
+    let chain = cat
+        .iter()
+        .find(|e| get(e, "id").as_string().as_deref() == Some("chain-code"))
+        .unwrap();
+    let inputs: Array = get(&chain, "inputs").dyn_into().unwrap();
+    let field = |key: &str| {
+        inputs
+            .iter()
+            .find(|f| get(f, "key").as_string().as_deref() == Some(key))
+            .unwrap()
+    };
+    let when = get(&field("code"), "when");
+    assert_eq!(get(&when, "key").as_string().as_deref(), Some("given"));
+    let values: Array = get(&when, "values").dyn_into().unwrap();
+    assert_eq!(values.length(), 1);
+    assert_eq!(values.get(0).as_string().as_deref(), Some("code"));
+    assert!(get(&field("given"), "when").is_null());
+
+    // a field that does not apply never blocks: chain-code from pixels with an empty code
+    let p = parse_inputs("chain-code", obj(r#"{"given": "pixels", "code": ""}"#)).unwrap();
+    assert_eq!(
+        Object::keys(get(&p, "errors").unchecked_ref::<Object>()).length(),
+        0
+    );
+    let s = solve("chain-code", get(&p, "inputs")).unwrap();
+    assert_eq!(Array::from(&get(&get(&s, "result"), "code")).length(), 16);
+    // where it applies, the same text is an error at its field
+    let p = parse_inputs("chain-code", obj(r#"{"given": "code", "code": ""}"#)).unwrap();
+    assert!(get(&get(&p, "errors"), "code")
+        .as_string()
+        .unwrap()
+        .starts_with("code:"));
+}

@@ -8,7 +8,7 @@ use super::fields::{Field, Kind, MAX_DIM, MAX_LEN};
 use super::Entry;
 use crate::chain::{self, Boundary, Connectivity, Path, Pixel};
 use crate::error::{Error, Result};
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step, Value};
 
 const TOPIC: &str = "Chain codes and boundaries";
 /// How far from the origin a pixel may lie.
@@ -102,7 +102,7 @@ pub fn entries() -> Vec<Entry> {
             id: "chain-code",
             title: "Freeman chain code",
             topic: TOPIC,
-            source: "Seed 000, Example 17 and the exercise",
+            source: "Worked examples, Example 17 and the exercise",
             summary: "The chain code and differential chain code of a digital edge or closed boundary, from its pixels, from a code, or traced around drawn regions.",
             fields: chain_code_fields,
             solve: Some(chain_code),
@@ -111,7 +111,7 @@ pub fn entries() -> Vec<Entry> {
             id: "boundary-length",
             title: "Boundary length",
             topic: TOPIC,
-            source: "Seed 000, Example 18",
+            source: "Worked examples, Example 18",
             summary: "The length of a digital edge: pixels minus one when 4-connected; axial steps 1 and diagonal steps √2 when 8-connected.",
             fields: boundary_length_fields,
             solve: Some(boundary_length),
@@ -120,7 +120,7 @@ pub fn entries() -> Vec<Entry> {
             id: "boundary-shape",
             title: "Boundary descriptors",
             topic: TOPIC,
-            source: "Seed 000, boundary descriptors",
+            source: "Worked examples, boundary descriptors",
             summary: "Diameter, major and minor axis, basic rectangle and eccentricity of the outer boundary of a drawn region.",
             fields: boundary_shape_fields,
             solve: Some(boundary_shape),
@@ -143,6 +143,7 @@ fn field(
         help,
         kind,
         default: d,
+        when: None,
     }
 }
 
@@ -242,20 +243,26 @@ fn connectivity_field() -> Field {
     )
 }
 
+/// The fields of the pixel modes (`pixels`) and of the code mode (`code`,
+/// `start`): each applies only when `given` chooses it.
+const PIXEL_MODES: &[&str] = &["pixels", "region"];
+const CODE_MODE: &[&str] = &["code"];
+
 fn chain_code_fields() -> Vec<Field> {
     vec![
         given_field("pixels"),
         pixels_field(
             &decoded(EX17_START, &EX17_CODE, Connectivity::Eight),
             "The edge's pixels in order, one [c, r] per row (column to the right, row downward). Repeat the first pixel at the end for a closed boundary. With “regions”: any pixels, in any order.",
-        ),
-        code_field(&EX17_CODE),
-        start_field(EX17_START),
+        )
+        .when("given", PIXEL_MODES),
+        code_field(&EX17_CODE).when("given", CODE_MODE),
+        start_field(EX17_START).when("given", CODE_MODE),
         connectivity_field(),
         field(
             "from",
             "Start coding from",
-            "The seed's Example 17 starts at the left end; its exercise at the right end. A closed boundary is walked the other way round.",
+            "The course notes' Example 17 starts at the left end; its exercise at the right end. A closed boundary is walked the other way round.",
             Kind::Choice { options: FROM },
             Value::from("start"),
         ),
@@ -268,9 +275,10 @@ fn boundary_length_fields() -> Vec<Field> {
         pixels_field(
             &decoded(EX18B_START, &EX18B_CODE, Connectivity::Eight),
             "The edge's pixels in order, one [c, r] per row (column to the right, row downward). Repeat the first pixel at the end for a closed boundary. With “regions”: any pixels, in any order.",
-        ),
-        code_field(&EX18B_CODE),
-        start_field(EX18B_START),
+        )
+        .when("given", PIXEL_MODES),
+        code_field(&EX18B_CODE).when("given", CODE_MODE),
+        start_field(EX18B_START).when("given", CODE_MODE),
         connectivity_field(),
     ]
 }
@@ -676,13 +684,14 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
                 g.index + 2,
                 pixel_text(g.to)
             ),
-        );
+        ).about(&["code", "differential", "length", "breaks"]);
     }
     if path.gaps.len() > LIST {
         s.note(
             NoteKind::Warning,
             format!("… and {} more breaks.", path.gaps.len() - LIST),
-        );
+        )
+        .about(&["breaks"]);
     }
     for r in path.revisits.iter().take(LIST) {
         s.note(
@@ -693,13 +702,14 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
                 pixel_text(r.pixel),
                 r.first + 1
             ),
-        );
+        ).about(&["branches"]);
     }
     if path.revisits.len() > LIST {
         s.note(
             NoteKind::Warning,
             format!("… and {} more repeated pixels.", path.revisits.len() - LIST),
-        );
+        )
+        .about(&["branches"]);
     }
     if !path.closed && path.gaps.is_empty() {
         if let (Some(&a), Some(&b)) = (path.pixels.first(), path.pixels.last()) {
@@ -711,7 +721,7 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
                         pixel_text(b),
                         pixel_text(a)
                     ),
-                );
+                ).about(&["closed"]);
             }
         }
     }
@@ -719,7 +729,7 @@ fn problems(s: &mut Solution, path: &Path, conn: Connectivity) {
         s.note(
             NoteKind::Warning,
             "A single pixel has no steps: its chain code and differential code are empty and its length is 0.",
-        );
+        ).about(&["code", "differential", "length"]);
     }
 }
 
@@ -806,7 +816,7 @@ fn regions_note(s: &mut Solution, e: &Edge) {
                 starts.join(", "),
                 if e.regions.len() > LIST + 1 { ", …" } else { "" }
             ),
-        );
+        ).about(&["regions"]);
     }
 }
 
@@ -814,8 +824,8 @@ fn conn_note(s: &mut Solution, conn: Connectivity) {
     if conn == Connectivity::Four {
         s.note(
             NoteKind::Convention,
-            "The seed's figure of the 4-connectivity numbering is lost; it is taken here as 1 = east, 2 = north, 3 = west, 4 = south, counter-clockwise from east like the 8-connectivity figure. Its differential code counts turns of 90° (mod 4).",
-        );
+            "The course notes' figure of the 4-connectivity numbering is lost; it is taken here as 1 = east, 2 = north, 3 = west, 4 = south, counter-clockwise from east like the 8-connectivity figure. Its differential code counts turns of 90° (mod 4).",
+        ).about(&["code", "differential"]);
     }
 }
 
@@ -844,7 +854,7 @@ fn shape_summary_step(sh: &chain::Shape) -> Step {
         .map_or(r"\text{no value (}m = 0\text{)}".to_string(), num);
     Step::new(
         "Shape of the closed boundary",
-        "The descriptors of seed 000 for this boundary (the example “Boundary descriptors” shows each step): the diameter D between the two farthest pixels (the major axis), the width m across it (the minor axis), the basic rectangle D × m, and the eccentricity D / m.",
+        "The descriptors of the worked examples for this boundary (the example “Boundary descriptors” shows each step): the diameter D between the two farthest pixels (the major axis), the width m across it (the minor axis), the basic rectangle D × m, and the eccentricity D / m.",
     )
     .formula(
         r"D = \max_{i,j} \lVert p_i - p_j \rVert,\quad m = t_{\max} - t_{\min},\quad E = \frac{D}{m}",
@@ -878,9 +888,9 @@ fn label_results(s: &mut Solution, conn: Connectivity) {
         ("branches", "Repeated pixels [k, first k, c, r]", ""),
         ("regions", "Regions", ""),
         ("length", "Length L", "px"),
-        ("horizontal", "Horizontal steps n_h", ""),
-        ("vertical", "Vertical steps n_v", ""),
-        ("diagonal", "Diagonal steps n_d", ""),
+        ("horizontal", "Horizontal steps", ""),
+        ("vertical", "Vertical steps", ""),
+        ("diagonal", "Diagonal steps", ""),
         ("pixel_count", "Pixels N", ""),
         ("diameter", "Diameter D", "px"),
         ("major_axis", "Major axis (end pixels [c, r])", ""),
@@ -1005,8 +1015,8 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
     conn_note(&mut s, conn);
     s.note(
         NoteKind::Convention,
-        "Differential code as the seed computes it: each digit minus the one before, plus the number of directions when negative. An open edge of n digits gives n − 1 elements; a closed boundary gives n, the first from its first and last digits.",
-    );
+        "Differential code as the course notes compute it: each digit minus the one before, plus the number of directions when negative. An open edge of n digits gives n − 1 elements; a closed boundary gives n, the first from its first and last digits.",
+    ).about(&["differential", "differences"]);
     let ex17_pixels = is_pixel_input(inputs, EX17_START, &EX17_CODE, "8");
     let ex17 = ex17_pixels || is_code_input(inputs, &EX17_CODE, "8");
     if ex17 && !from_end {
@@ -1019,10 +1029,10 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             format!(
-                "Seed 000, Example 17. Its figure is lost; the edge shown is rebuilt from the printed code, starting at {} (any start pixel gives the same code). The printed code, the differences and the differential code are reproduced digit for digit.",
+                "Worked examples, Example 17: its figure is lost; the edge shown is rebuilt from the printed code, starting at {} (any start pixel gives the same code). The printed code, the differences and the differential code are reproduced digit for digit.",
                 pixel_text(EX17_START)
             ),
-        );
+        ).about(&["code", "differential", "differences"]);
     }
     if ex17 && from_end {
         if let Some(code) = &p.code {
@@ -1030,11 +1040,11 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Convention,
                 format!(
-                    "Seed 000, exercise after Example 17: the same edge coded from its right end. The seed prints no answer; it is {} with differential code {}. Each digit is the opposite of a forward digit, in reverse order, and the differential code is the forward one reversed with every element negated (mod 8).",
+                    "Worked examples, the exercise after Example 17: the same edge coded from its right end. The course notes print no answer; it is {} with differential code {}. Each digit is the opposite of a forward digit, in reverse order, and the differential code is the forward one reversed with every element negated (mod 8).",
                     join(code),
                     join(&d.code)
                 ),
-            );
+            ).about(&["code", "differential"]);
         }
     }
     if is_code_input(inputs, &FIG_C_CODE, "4") && !from_end {
@@ -1042,10 +1052,10 @@ fn chain_code(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             format!(
-                "Seed 000, figure c: the 4-connectivity chain code printed for a sample edge. The figure is lost; the edge shown is the one this code walks from the start pixel {}.",
+                "Worked examples, figure c: the 4-connectivity chain code printed for a sample edge. The figure is lost; the edge shown is the one this code walks from the start pixel {}.",
                 start(inputs).map(pixel_text).unwrap_or_default()
             ),
-        );
+        ).about(&["code"]);
     }
     Ok(s)
 }
@@ -1122,7 +1132,8 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Convention,
             "A closed boundary's length includes the step from the last pixel back to the first.",
-        );
+        )
+        .about(&["length"]);
     }
     let b = is_pixel_input(inputs, EX18B_START, &EX18B_CODE, "8")
         || is_code_input(inputs, &EX18B_CODE, "8");
@@ -1138,22 +1149,24 @@ fn boundary_length(inputs: &Record) -> Result<Solution> {
         );
         s.note(
             NoteKind::Convention,
-            "Seed 000, Example 18 (b). Its figure is lost; the curve shown is a rebuilt one with the seed's counts, 4 horizontal, 4 vertical and 9 diagonal steps (only the counts matter for the length).",
-        );
+            "Worked examples, Example 18 (b): its figure is lost; the curve shown is a rebuilt one with the course notes' counts, 4 horizontal, 4 vertical and 9 diagonal steps (only the counts matter for the length).",
+        ).about(&["horizontal", "vertical", "diagonal"]);
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed prints 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal).",
-                num(8.0 + 9.0 * std::f64::consts::SQRT_2)
+                "The course notes print 4 + 4 + 9√2 = 20.7; exactly it is {} (rounded to one decimal; {}).",
+                num(8.0 + 9.0 * std::f64::consts::SQRT_2),
+                exact_minus_printed(8.0 + 9.0 * std::f64::consts::SQRT_2, 20.7, "")
             ),
-        );
+        )
+        .about(&["length"]);
     }
     if a {
         s.textbook = Some(Record::new().with("length", 23.0).with("pixel_count", 24.0));
         s.note(
             NoteKind::Convention,
-            "Seed 000, Example 18 (a). Its figure is lost; the curve shown is a rebuilt 4-connected edge with the seed's 24 pixels (only the count matters for the length): 24 − 1 = 23, as printed.",
-        );
+            "Worked examples, Example 18 (a): its figure is lost; the curve shown is a rebuilt 4-connected edge with the course notes' 24 pixels (only the count matters for the length): 24 − 1 = 23, as printed.",
+        ).about(&["length", "pixel_count"]);
     }
     Ok(s)
 }
@@ -1233,7 +1246,7 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
     s.step(
         Step::new(
             "Basic rectangle",
-            "The box with sides along the two axes that just encloses the boundary: from one end of the major axis to the other, and from t_min to t_max across it.",
+            "The box with sides along the two axes that just encloses the boundary: from one end of the major axis to the other, and from the smallest to the largest distance across it.",
         )
         .formula(
             r"p_a + s\,u + t\,v,\quad s \in \{0, D\},\ t \in \{t_{\min}, t_{\max}\}",
@@ -1308,15 +1321,15 @@ fn boundary_shape(inputs: &Record) -> Result<Solution> {
     if sh.eccentricity.is_none() {
         s.note(
             NoteKind::Warning,
-            "All boundary pixels lie on one straight line, so the minor axis has length 0 and the eccentricity has no value (null).",
-        );
+            "All boundary pixels lie on one straight line, so the minor axis has length 0 and the eccentricity has no value.",
+        ).about(&["minor_axis_length", "eccentricity"]);
     }
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);
     s.note(
         NoteKind::Convention,
-        "Distances are measured between pixel centres (a pixel's own size is not added), as the boundary length is. The seed does not fix where the minor axis crosses the major one; it is drawn through the centre of the basic rectangle. The diameter and the rectangle only depend on the outermost pixels, so a filled region and its boundary give the same values.",
-    );
+        "Distances are measured between pixel centres (a pixel's own size is not added), as the boundary length is. The course notes do not fix where the minor axis crosses the major one; it is drawn through the centre of the basic rectangle. The diameter and the rectangle only depend on the outermost pixels, so a filled region and its boundary give the same values.",
+    ).about(&["diameter", "major_axis", "minor_axis_length", "basic_rectangle"]);
     Ok(s)
 }
 

@@ -5,7 +5,7 @@ use super::fields::{is_seed, Field, Inputs};
 use super::Entry;
 use crate::coords::{self, Frame};
 use crate::error::Result;
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step};
+use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step};
 
 const TOPIC: &str = "Coordinates";
 /// The largest scan resolution accepted (dpi).
@@ -21,7 +21,7 @@ pub fn entries() -> Vec<Entry> {
             id: "pixel-to-photo",
             title: "Pixel to image coordinates",
             topic: TOPIC,
-            source: "Seed 000, Example 1",
+            source: "Worked examples, Example 1",
             summary: "From a pixel's column and row to its image coordinates in mm, relative to the image centre.",
             fields: pixel_to_photo_fields,
             solve: Some(pixel_to_photo),
@@ -30,7 +30,7 @@ pub fn entries() -> Vec<Entry> {
             id: "gsd",
             title: "Ground sample distance",
             topic: TOPIC,
-            source: "Seed 000, Example 2",
+            source: "Worked examples, Example 2",
             summary: "The ground size of one scanned pixel, from the scan resolution, focal length and flying height.",
             fields: gsd_fields,
             solve: Some(gsd),
@@ -39,7 +39,7 @@ pub fn entries() -> Vec<Entry> {
             id: "photo-to-pixel",
             title: "Image to pixel coordinates",
             topic: TOPIC,
-            source: "Seed 000, Example 3",
+            source: "Worked examples, Example 3",
             summary: "From image coordinates in mm to the pixel's column and row.",
             fields: photo_to_pixel_fields,
             solve: Some(photo_to_pixel),
@@ -174,20 +174,23 @@ fn pixel_rounding_note(s: &mut Solution, dpi: f64, exact: f64, printed: f64) {
     s.note(
         NoteKind::Rounding,
         format!(
-            "The seed rounds the pixel size 25.4/{} = {} mm to {} mm ({}) and computes on with the rounded value; every length it derives from the pixel size is off by about the same proportion.",
+            "The course notes round the pixel size 25.4/{} = {} mm to {} mm ({}; {}) and compute on with the rounded value; every length derived from the pixel size is off by about the same proportion.",
             num(dpi),
             num(exact),
             num(printed),
+            exact_minus_printed(exact, printed, "mm"),
             percent(printed, exact)
         ),
-    );
+    )
+    .about(&["pixel_size_mm"]);
 }
 
 fn convention_note(s: &mut Solution) {
     s.note(
         NoteKind::Convention,
-        "Pixel coordinates are taken as continuous with the origin at the top-left corner of the image, so the centre is (C/2, R/2), as the seed does. If whole numbers counted pixel centres from 0, the centre would be ((C−1)/2, (R−1)/2), half a pixel away.",
-    );
+        "Pixel coordinates are taken as continuous with the origin at the top-left corner of the image, so the centre is (C/2, R/2), as the course notes do. If whole numbers counted pixel centres from 0, the centre would be ((C−1)/2, (R−1)/2), half a pixel away.",
+    )
+    .about(&["c0", "r0"]);
 }
 
 fn pixel_to_photo(inputs: &Record) -> Result<Solution> {
@@ -256,7 +259,8 @@ fn pixel_to_photo(inputs: &Record) -> Result<Solution> {
     label_results(&mut s);
     convention_note(&mut s);
     if !o.inside {
-        s.note(NoteKind::Warning, outside_note(c, r, frame));
+        s.note(NoteKind::Warning, outside_note(c, r, frame))
+            .about(&["x_mm", "y_mm"]);
     }
     if is_seed(&pixel_to_photo_fields(), inputs) {
         let (p, x, y) = (0.042, 8.19, 9.24);
@@ -274,15 +278,16 @@ fn pixel_to_photo(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "So the seed's x = 195 × 0.042 = {x} mm and y = 220 × 0.042 = {y} mm fall short of the exact {} mm and {} mm by {} mm and {} mm — about {} and {} pixels at this resolution, far beyond the printed precision.",
+                "So the printed x = 195 × 0.042 = {x} mm and y = 220 × 0.042 = {y} mm fall short of the exact {} mm and {} mm (x: {}; y: {}) — about {} and {} pixels at this resolution, far beyond the printed precision.",
                 num(o.x_mm),
                 num(o.y_mm),
-                num(o.x_mm - x),
-                num(o.y_mm - y),
+                exact_minus_printed(o.x_mm, x, "mm"),
+                exact_minus_printed(o.y_mm, y, "mm"),
                 crate::solution::fmt_sig((o.x_mm - x) / o.pixel_size_mm, 2),
                 crate::solution::fmt_sig((o.y_mm - y) / o.pixel_size_mm, 2),
             ),
-        );
+        )
+        .about(&["x_mm", "y_mm"]);
     }
     Ok(s)
 }
@@ -360,23 +365,27 @@ fn gsd(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed rounds the scale number 1920/0.152 = {} to {m}; harmless on its own ({}).",
+                "The course notes round the scale number 1920/0.152 = {} to {m} ({}); harmless on its own ({}).",
                 num(g.scale_denominator),
+                exact_minus_printed(g.scale_denominator, m, ""),
                 percent(m, g.scale_denominator)
             ),
-        );
+        )
+        .about(&["scale_denominator"]);
         pixel_rounding_note(&mut s, dpi, g.pixel_size_mm, p);
         s.note(
             NoteKind::Rounding,
             format!(
-                "With both rounded values the seed gets 0.028 × 12632 = {} mm ≈ {mm} mm = {cm} cm instead of the exact {} mm = {} cm: {} mm ({}) short, almost all of it from the pixel size.",
+                "With both rounded values the course notes get 0.028 × 12632 = {} mm ≈ {mm} mm = {cm} cm instead of the exact {} mm = {} cm ({}; {}; {}), almost all of it from the pixel size.",
                 num(p * m),
                 num(g.gsd_mm),
                 num(gsd_cm),
-                num(g.gsd_mm - mm),
+                exact_minus_printed(g.gsd_mm, mm, "mm"),
+                exact_minus_printed(gsd_cm, cm, "cm"),
                 percent(mm, g.gsd_mm)
             ),
-        );
+        )
+        .about(&["gsd_mm", "gsd_cm"]);
     }
     Ok(s)
 }
@@ -444,7 +453,8 @@ fn photo_to_pixel(inputs: &Record) -> Result<Solution> {
     label_results(&mut s);
     convention_note(&mut s);
     if !o.inside {
-        s.note(NoteKind::Warning, outside_note(o.c, o.r, frame));
+        s.note(NoteKind::Warning, outside_note(o.c, o.r, frame))
+            .about(&["c", "r"]);
     }
     if is_seed(&photo_to_pixel_fields(), inputs) {
         let (p, dc, dr, c, r) = (0.042, -295.7, -603.8, 604.3, 1353.8);
@@ -462,23 +472,26 @@ fn photo_to_pixel(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Erratum,
             format!(
-                "The seed writes the row offset as r_p = −25.36/0.042 = {dr} and then adds +603.8 (750 + 603.8). Its −603.8 is y/p; the row offset is −y/p = +{}, since rows count downward. The seed also names both offsets c_p and r_p, the same symbols as the final pixel coordinates.",
-                num(-dr)
+                "A sign slip: the course notes write the row offset as r_p = −25.36/0.042 = {dr} and then add +603.8 (750 + 603.8). Their −603.8 is y/p; the row offset is −y/p = +{} (exact +{} with the exact pixel size), since rows count downward. The notes also name both offsets c_p and r_p, the same symbols as the final pixel coordinates.",
+                num(-dr),
+                num(o.dr_px)
             ),
-        );
+        )
+        .about(&["dr_px"]);
         s.note(
             NoteKind::Rounding,
             format!(
-                "From the rounded pixel size the seed's offsets {dc} and {} px are {} and {} px too large in size, so its c = {c} and r = {r} are off by {} and {} px from the exact {} and {}.",
+                "From the rounded pixel size the printed offsets {dc} and {} px are {} and {} px too large in size, so the printed c = {c} and r = {r} differ from the exact {} and {} (c: {}; r: {}).",
                 -dr,
                 num(dc.abs() - o.dc_px.abs()),
                 num(dr.abs() - o.dr_px.abs()),
-                num(c - o.c),
-                num(r - o.r),
                 num(o.c),
-                num(o.r)
+                num(o.r),
+                exact_minus_printed(o.c, c, "px"),
+                exact_minus_printed(o.r, r, "px")
             ),
-        );
+        )
+        .about(&["dc_px", "c", "r"]);
     }
     Ok(s)
 }

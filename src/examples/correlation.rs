@@ -12,7 +12,9 @@ use crate::correlation::{
 };
 use crate::error::{Error, Result};
 use crate::raster::Grid;
-use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{
+    exact_minus_printed, fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value,
+};
 
 const TOPIC: &str = "Correlation";
 /// Sub-windows shown with their full computation (the rest are in the
@@ -45,7 +47,10 @@ const EX7_PRINTED: [[f64; 4]; 4] = [
 const EX5_PRINTED: [f64; 6] = [-0.5, -0.59, -0.09, 0.69, 0.97, 0.37];
 
 const RHO_FROM: &[(&str, &str)] = &[
-    ("printed", "The seed's printed ρ (as the example does)"),
+    (
+        "printed",
+        "The course notes' printed ρ (as the example does)",
+    ),
     ("exact", "Exact ρ, computed from the example's arrays"),
 ];
 
@@ -55,7 +60,7 @@ pub fn entries() -> Vec<Entry> {
             id: "ncc-1d",
             title: "1-D correlation matching",
             topic: TOPIC,
-            source: "Seed 000, Example 5",
+            source: "Worked examples, Example 5",
             summary: "The normalized correlation coefficient of a template with every sub-window of a 1-D search array, and the best match.",
             fields: ncc_1d_fields,
             solve: Some(ncc_1d),
@@ -64,7 +69,7 @@ pub fn entries() -> Vec<Entry> {
             id: "ncc-2d",
             title: "2-D correlation coefficient",
             topic: TOPIC,
-            source: "Seed 000, Example 6",
+            source: "Worked examples, Example 6",
             summary: "The normalized correlation coefficient of two equal-size arrays, with their means and the three sums.",
             fields: ncc_2d_fields,
             solve: Some(ncc_2d),
@@ -73,7 +78,7 @@ pub fn entries() -> Vec<Entry> {
             id: "ncc-surface",
             title: "Correlation surface",
             topic: TOPIC,
-            source: "Seed 000, Example 7",
+            source: "Worked examples, Example 7",
             summary: "The correlation coefficient of a 2-D template at every position of a search array, and the best position with its centre pixel.",
             fields: ncc_surface_fields,
             solve: Some(ncc_surface),
@@ -82,7 +87,7 @@ pub fn entries() -> Vec<Entry> {
             id: "subpixel-1d",
             title: "Subpixel peak in 1-D",
             topic: TOPIC,
-            source: "Seed 000, Example 8",
+            source: "Worked examples, Example 8",
             summary: "A parabola through the best correlation coefficient and its two neighbours, and the location of its maximum.",
             fields: subpixel_1d_fields,
             solve: Some(subpixel_1d),
@@ -91,7 +96,7 @@ pub fn entries() -> Vec<Entry> {
             id: "subpixel-2d",
             title: "Subpixel peak in 2-D",
             topic: TOPIC,
-            source: "Seed 000, Example 9",
+            source: "Worked examples, Example 9",
             summary: "A six-term quadratic surface fitted by least squares to the 3×3 correlation coefficients around the best one, and the location of its maximum.",
             fields: subpixel_2d_fields,
             solve: Some(subpixel_2d),
@@ -115,6 +120,7 @@ fn vector(
         help,
         kind: Kind::Vector { min_len, max_len },
         default: Value::numbers(default),
+        when: None,
     }
 }
 
@@ -134,6 +140,7 @@ fn matrix(
             cols: shape.map(|s| s.1),
         },
         default: Value::matrix(&default),
+        when: None,
     }
 }
 
@@ -144,6 +151,7 @@ fn rho_from_field(help: &'static str) -> Field {
         help,
         kind: Kind::Choice { options: RHO_FROM },
         default: Value::Text("printed".to_string()),
+        when: None,
     }
 }
 
@@ -218,6 +226,9 @@ fn ncc_surface_fields() -> Vec<Field> {
     ]
 }
 
+/// The subpixel fields that only the "printed" mode uses.
+const PRINTED: &[&str] = &["printed"];
+
 fn subpixel_1d_fields() -> Vec<Field> {
     vec![
         vector(
@@ -227,17 +238,19 @@ fn subpixel_1d_fields() -> Vec<Field> {
             &[7.0, 8.0, 9.0],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         vector(
             "rho",
             "Correlation coefficients ρ",
-            "ρ at the three positions (the seed's printed values of Example 5).",
+            "ρ at the three positions (the printed values of Example 5).",
             &[0.69, 0.97, 0.37],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         rho_from_field(
-            "printed: use the positions and ρ above; exact: take them from Example 5's arrays computed exactly (the fields above are then not used).",
+            "“Printed” uses the positions and ρ above; “Exact” takes them from Example 5's arrays computed exactly (the fields above are then not used).",
         ),
     ]
 }
@@ -251,7 +264,8 @@ fn subpixel_2d_fields() -> Vec<Field> {
             &[2.0, 3.0, 4.0],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         vector(
             "r",
             "Rows r",
@@ -259,20 +273,22 @@ fn subpixel_2d_fields() -> Vec<Field> {
             &[3.0, 4.0, 5.0],
             3,
             3,
-        ),
+        )
+        .when("rho_from", PRINTED),
         matrix(
             "rho",
             "Correlation coefficients ρ",
-            "3×3: one row per r, one column per c (the seed's printed values of Example 7).",
+            "3×3: one row per r, one column per c (the printed values of Example 7).",
             rows_of(&[
                 [-0.3334, 0.2394, -0.3921],
                 [0.0585, 0.9665, 0.0806],
                 [-0.2321, 0.2904, -0.1268],
             ]),
             Some((3, 3)),
-        ),
+        )
+        .when("rho_from", PRINTED),
         rho_from_field(
-            "printed: use c, r and ρ above; exact: take them from Example 7's arrays computed exactly (the fields above are then not used).",
+            "“Printed” uses c, r and ρ above; “Exact” takes them from Example 7's arrays computed exactly (the fields above are then not used).",
         ),
     ]
 }
@@ -457,6 +473,41 @@ fn rho_formula(n: &Ncc) -> String {
     )
 }
 
+/// A mean with its sum written out on a chain of its own:
+/// `\sum A = 48 + 50 + … = 529,\quad \bar A = \frac{529}{9} = 58.77778`.
+/// The page breaks a long chain at its top-level `+` and `\quad`, never
+/// inside a fraction, so the written-out sum stays outside the fraction.
+fn tex_mean(sum_sym: &str, mean_sym: &str, xs: &[f64], mean: f64) -> String {
+    let total: f64 = xs.iter().sum();
+    format!(
+        r"{sum_sym} = {} = {},\quad {mean_sym} = \frac{{{}}}{{{}}} = {}",
+        tex_sum_terms(xs),
+        num(total),
+        num(total),
+        xs.len(),
+        num(mean)
+    )
+}
+
+/// The three sums of a correlation coefficient written out, each on a chain
+/// of its own, then `rho = \frac{v1}{\sqrt{v2 × v3}} = ρ` with the values only.
+fn tex_rho_chain(rho_sym: &str, a: &[f64], b: &[f64], n: &Ncc) -> String {
+    let quotient = match n.rho {
+        Some(_) => rho_formula(n).trim_start_matches(r"\rho = ").to_string(),
+        None => rho_text(None),
+    };
+    format!(
+        r"\sum (A - \bar A)(B - \bar B) = {} = {},\quad \sum (A - \bar A)^2 = {} = {},\quad \sum (B - \bar B)^2 = {} = {},\quad {rho_sym} = {}",
+        tex_dev_terms(a, n.mean_a, Some((b, n.mean_b))),
+        num(n.sum_dadb),
+        tex_dev_terms(a, n.mean_a, None),
+        num(n.sum_da2),
+        tex_dev_terms(b, n.mean_b, None),
+        num(n.sum_db2),
+        quotient
+    )
+}
+
 const RHO_SYMBOLIC: &str = r"\rho = \frac{\sum (A - \bar A)(B - \bar B)}{\sqrt{\sum (A - \bar A)^2 \, \sum (B - \bar B)^2}}";
 
 fn ncc_values(step: Step, n: &Ncc) -> Step {
@@ -521,9 +572,8 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar A = \frac{1}{n}\sum A_j,\quad \sum (A_j - \bar A)^2",
             format!(
-                r"\bar A = \frac{{{}}}{{{n}}} = {},\quad \sum (A_j - \bar A)^2 = {} = {}",
-                tex_sum_terms(&template),
-                num(mean_a),
+                r"{},\quad \sum (A_j - \bar A)^2 = {} = {}",
+                tex_mean(r"\sum A_j", r"\bar A", &template, mean_a),
                 tex_dev_terms(&template, mean_a, None),
                 num(sum_da2)
             ),
@@ -577,26 +627,19 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
         }
         let step = Step::new(&format!("Sub-window {}", k + 1), &text)
             .formula(
-                &format!(r"\bar B_{{{0}}} = \frac{{1}}{{n}}\sum B_j,\quad {RHO_SYMBOLIC}", k + 1),
+                &format!(
+                    r"\bar B_{{{0}}} = \frac{{1}}{{n}}\sum B_j,\quad {RHO_SYMBOLIC}",
+                    k + 1
+                ),
                 format!(
-                    r"\bar B_{{{k1}}} = \frac{{{}}}{{{n}}} = {},\quad \rho_{{{k1}}} = \frac{{{}}}{{\sqrt{{[{}][{}]}}}} = {}",
-                    tex_sum_terms(sub),
-                    num(w.mean_b),
-                    tex_dev_terms(&template, w.mean_a, Some((sub, w.mean_b))),
-                    tex_dev_terms(&template, w.mean_a, None),
-                    tex_dev_terms(sub, w.mean_b, None),
-                    if w.rho.is_some() {
-                        format!(
-                            r"\frac{{{}}}{{\sqrt{{{} \times {}}}}} = {}",
-                            num(w.sum_dadb),
-                            num(w.sum_da2),
-                            num(w.sum_db2),
-                            rho_text(w.rho)
-                        )
-                    } else {
-                        rho_text(None)
-                    },
-                    k1 = k + 1
+                    r"{},\quad {}",
+                    tex_mean(
+                        &format!(r"\sum B_{{{}}}", k + 1),
+                        &format!(r"\bar B_{{{}}}", k + 1),
+                        sub,
+                        w.mean_b
+                    ),
+                    tex_rho_chain(&format!(r"\rho_{{{}}}", k + 1), &template, sub, w)
                 ),
             )
             .value("k", (k + 1) as f64)
@@ -681,11 +724,11 @@ fn ncc_1d(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         format!(
-            "Positions count from 1, as the seed does: sub-window k covers search values k … k+{}, and its centre is at column c = k + {} (the positions Example 8 uses).",
+            "Positions count from 1, as the course notes do: sub-window k covers search values k … k+{}, and its centre is at column c = k + {} (the positions Example 8 uses).",
             n - 1,
             num(half)
         ),
-    );
+    ).about(&["centres", "best_c", "best"]);
     flat_notes_1d(&mut s, &profile);
     if is_seed(&ncc_1d_fields(), inputs) {
         seed_notes_5(&mut s, &profile);
@@ -702,7 +745,7 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
         s.note(
             NoteKind::Warning,
             "The template has no variance (all its values are equal): the correlation coefficient is 0/0 at every position, so no ρ has a value and there is no best match.",
-        );
+        ).about(&["rho", "best"]);
         return;
     }
     let flat: Vec<String> = profile
@@ -716,17 +759,18 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
         s.note(
             NoteKind::Warning,
             format!(
-                "Sub-window{} {} {} no variance (all values equal): ρ is 0/0 there and is given as null (no value).",
+                "Sub-window{} {} {} no variance (all values equal): ρ is 0/0 there and has no value.",
                 if flat.len() > 1 { "s" } else { "" },
                 flat.join(", "),
                 if flat.len() > 1 { "have" } else { "has" }
             ),
-        );
+        ).about(&["rho"]);
         if profile.best.is_none() {
             s.note(
                 NoteKind::Warning,
                 "No sub-window has a correlation coefficient, so there is no best match.",
-            );
+            )
+            .about(&["best"]);
         }
     }
     if profile.ties > 1 {
@@ -736,7 +780,7 @@ fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
                 "{} positions share the largest correlation coefficient; the first of them is taken as the best.",
                 profile.ties
             ),
-        );
+        ).about(&["best"]);
     }
 }
 
@@ -760,11 +804,11 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
     s.note(
         NoteKind::Rounding,
         format!(
-            "The seed's means Ā = 4.57 and B̄ = 2.57, 3.57, 4.14, 4, 4, 4 are the exact {} and {} rounded to two decimals; ρ2 = −0.59, ρ3 = −0.09 and ρ6 = 0.37 match the exact values to the printed two decimals.",
+            "The course notes' means Ā = 4.57 and B̄ = 2.57, 3.57, 4.14, 4, 4, 4 are the exact {} and {} rounded to two decimals; ρ2 = −0.59, ρ3 = −0.09 and ρ6 = 0.37 match the exact values to the printed two decimals.",
             num(mean_a),
             means.iter().map(|m| num(*m)).collect::<Vec<_>>().join(", ")
         ),
-    );
+    ).about(&["mean_template", "mean_subwindows"]);
     s.note(
         NoteKind::Rounding,
         format!(
@@ -772,27 +816,27 @@ fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
             num(r1),
             fmt_sig(round_to(r1, 2), 3)
         ),
-    );
+    ).about(&["rho"]);
     s.note(
         NoteKind::Erratum,
         format!(
-            "ρ4 is printed as 0.69, but B4 = [1, 1, 3, 8, 8, 6, 1] gives Σ(A−Ā)(B−B̄) = {}, Σ(A−Ā)² = {}, Σ(B−B̄)² = {} and ρ4 = {} ≈ {}: the printed value is {} too high, more than rounding. Example 8 uses the printed 0.69.",
+            "ρ4 is printed as 0.69, but B4 = [1, 1, 3, 8, 8, 6, 1] gives Σ(A−Ā)(B−B̄) = {}, Σ(A−Ā)² = {}, Σ(B−B̄)² = {} and ρ4 = {} ≈ {}: the printed value is too high by more than rounding (ρ4: {}). Example 8 uses the printed 0.69.",
             num(dadb4),
             num(da2),
             num(db24),
             num(r4),
             fmt_sig(round_to(r4, 2), 2),
-            fmt_sig(0.69 - r4, 2)
+            exact_minus_printed(r4, 0.69, "")
         ),
-    );
+    ).about(&["rho"]);
     s.note(
         NoteKind::Rounding,
         format!(
-            "ρ5 is printed as 0.97; the exact {} rounds to {} (the seed cut the third decimal off). The best match, sub-window 5, is the same.",
+            "ρ5 is printed as 0.97; the exact {} rounds to {} (the course notes cut the third decimal off). The best match, sub-window 5, is the same.",
             num(r5),
             fmt_sig(round_to(r5, 2), 2)
         ),
-    );
+    ).about(&["rho", "best"]);
 }
 
 // ---------------------------------------------------------------- Example 6
@@ -806,7 +850,6 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
     let b = grid(inputs, "b")?;
     let n = correlation::ncc_grid(&a, &b)?;
     let (av, bv) = (a.data(), b.data());
-    let count = av.len();
     let mut s = Solution::new("ncc-2d", "2-D correlation coefficient", inputs.clone());
     s.step(
         Step::new(
@@ -820,11 +863,9 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar A = \frac{1}{mn}\sum_{i,j} A_{ij},\quad \bar B = \frac{1}{mn}\sum_{i,j} B_{ij}",
             format!(
-                r"\bar A = \frac{{{}}}{{{count}}} = {},\quad \bar B = \frac{{{}}}{{{count}}} = {}",
-                tex_sum_terms(av),
-                num(n.mean_a),
-                tex_sum_terms(bv),
-                num(n.mean_b)
+                r"{},\quad {}",
+                tex_mean(r"\sum A", r"\bar A", av, n.mean_a),
+                tex_mean(r"\sum B", r"\bar B", bv, n.mean_b)
             ),
         )
         .value("mean_a", n.mean_a)
@@ -906,8 +947,9 @@ fn ncc_2d(inputs: &Record) -> Result<Solution> {
     if !flat.is_empty() {
         s.note(
             NoteKind::Warning,
-            format!("{flat} The correlation coefficient is 0/0 and is given as null."),
-        );
+            format!("{flat} The correlation coefficient is 0/0 and has no value."),
+        )
+        .about(&["rho"]);
     }
     if is_seed(&ncc_2d_fields(), inputs) {
         seed_notes_6(&mut s, &n, av, bv);
@@ -934,14 +976,14 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed prints Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Its sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
+            "The course notes print Ā = 58.5, but the nine values sum to 529 and 529/9 = {}. Their sums then use 58.8 (the mean rounded to one decimal), so 58.5 is a typo in the printed mean only.",
             num(n.mean_a)
         ),
-    );
+    ).about(&["mean_a"]);
     s.note(
         NoteKind::Rounding,
         format!(
-            "With the rounded means 58.8 and 59.1 the three sums come out as {}, {} and {} — the seed's 1149.22, 843.56 and 2604.89. The exact sums {}, {} and {} agree to the printed two decimals: deviations from a mean add up to zero, so moving a mean by δ changes a sum of squares only by n·δ² (here 9 × {}² = {}).",
+            "With the rounded means 58.8 and 59.1 the three sums come out as {}, {} and {} — the course notes' 1149.22, 843.56 and 2604.89. The exact sums {}, {} and {} agree to the printed two decimals: deviations from a mean add up to zero, so moving a mean by δ changes a sum of squares only by n·δ² (here 9 × {}² = {}).",
             fmt_sig(seed_dadb, 8),
             fmt_sig(seed_da2, 8),
             fmt_sig(seed_db2, 8),
@@ -951,21 +993,22 @@ fn seed_notes_6(s: &mut Solution, n: &Ncc, av: &[f64], bv: &[f64]) {
             fmt_sig(ma - n.mean_a, 3),
             fmt_sig(9.0 * (ma - n.mean_a).powi(2), 2)
         ),
-    );
+    ).about(&["mean_b", "sum_dadb", "sum_da2", "sum_db2"]);
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed writes the third sum without the squares, (52 − 59.1) + (37 − 59.1) + …, which adds up to {} (deviations sum to zero); its value 2604.89 is the sum of the squares, (52 − 59.1)² + (37 − 59.1)² + ….",
+            "The course notes write the third sum without the squares, (52 − 59.1) + (37 − 59.1) + …, which adds up to {} (deviations sum to zero); its value 2604.89 is the sum of the squares, (52 − 59.1)² + (37 − 59.1)² + ….",
             fmt_sig(plain, 2)
         ),
-    );
+    ).about(&["sum_db2"]);
     s.note(
         NoteKind::Rounding,
         format!(
-            "ρ = {} is the seed's 0.7753 to four decimals.",
+            "ρ = {} is the course notes' 0.7753 to four decimals.",
             rho_text(n.rho)
         ),
-    );
+    )
+    .about(&["rho"]);
 }
 
 // ---------------------------------------------------------------- Example 7
@@ -991,10 +1034,9 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar T = \frac{1}{mn}\sum T_{ij},\quad \sum (T_{ij} - \bar T)^2",
             format!(
-                r"\bar T = \frac{{{}}}{{{}}} = {},\quad \sum (T_{{ij}} - \bar T)^2 = {}",
-                tex_sum_terms(template.data()),
-                template.data().len(),
-                num(t_mean),
+                r"{},\quad \sum (T_{{ij}} - \bar T)^2 = {} = {}",
+                tex_mean(r"\sum T_{ij}", r"\bar T", template.data(), t_mean),
+                tex_dev_terms(template.data(), t_mean, None),
                 num(t_da2)
             ),
         )
@@ -1046,14 +1088,9 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
             .formula(
                 &format!(r"\bar B = \frac{{1}}{{mn}}\sum B_{{ij}},\quad {RHO_SYMBOLIC}"),
                 format!(
-                    r"\bar B = \frac{{{}}}{{{}}} = {},\quad \rho = \frac{{{}}}{{\sqrt{{[{}][{}]}}}} = {}",
-                    tex_sum_terms(wv),
-                    wv.len(),
-                    num(bw.mean_b),
-                    tex_dev_terms(template.data(), bw.mean_a, Some((wv, bw.mean_b))),
-                    tex_dev_terms(template.data(), bw.mean_a, None),
-                    tex_dev_terms(wv, bw.mean_b, None),
-                    rho_formula(bw).trim_start_matches(r"\rho = ")
+                    r"{},\quad {}",
+                    tex_mean(r"\sum B_{ij}", r"\bar B", wv, bw.mean_b),
+                    tex_rho_chain(r"\rho", template.data(), wv, bw)
                 ),
             )
             .value("position", (br * w + bc + 1) as f64)
@@ -1168,13 +1205,13 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
 
     s.note(
         NoteKind::Convention,
-        "Positions count from 1 row by row, as the seed does (position 10 of a 4×4 surface is row 3, column 2); c is the column (to the right) and r the row (down) of the search array, also from 1.",
-    );
+        "Positions count from 1 row by row, as the course notes do (position 10 of a 4×4 surface is row 3, column 2); c is the column (to the right) and r the row (down) of the search array, also from 1.",
+    ).about(&["best_position", "best_c", "best_r"]);
     if tw % 2 == 0 || th % 2 == 0 {
         s.note(
             NoteKind::Warning,
             "The template has an even number of columns or rows, so its centre lies between pixels: the centre c, r of the best window ends in .5.",
-        );
+        ).about(&["best_c", "best_r"]);
     }
     {
         let template_flat = surface
@@ -1185,18 +1222,18 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Warning,
                 "The template has no variance (all its values are equal): ρ is 0/0 at every position, so the surface has no values and there is no best position.",
-            );
+            ).about(&["rho", "best_position"]);
         } else {
             let flat = surface.windows.iter().filter(|w| w.rho.is_none()).count();
             if flat > 0 {
                 s.note(
                     NoteKind::Warning,
                     format!(
-                        "{flat} window{} of the search array {} no variance (all values equal): ρ is 0/0 there and is given as null.",
+                        "{flat} window{} of the search array {} no variance (all values equal): ρ is 0/0 there and has no value.",
                         if flat > 1 { "s" } else { "" },
                         if flat > 1 { "have" } else { "has" }
                     ),
-                );
+                ).about(&["rho"]);
             }
         }
     }
@@ -1207,7 +1244,8 @@ fn ncc_surface(inputs: &Record) -> Result<Solution> {
                 "{} positions share the largest ρ; the first in row-by-row order is taken.",
                 surface.ties
             ),
-        );
+        )
+        .about(&["best_position"]);
     }
     if is_seed(&ncc_surface_fields(), inputs) {
         seed_notes_7(&mut s, &rho_rows);
@@ -1249,7 +1287,8 @@ fn seed_notes_7(s: &mut Solution, rho_rows: &[Vec<Option<f64>>]) {
         s.note(
             NoteKind::Rounding,
             "All 16 printed coefficients are the exact ones rounded to four decimals.",
-        );
+        )
+        .about(&["rho"]);
     } else {
         s.note(
             NoteKind::Rounding,
@@ -1259,7 +1298,7 @@ fn seed_notes_7(s: &mut Solution, rho_rows: &[Vec<Option<f64>>]) {
                 off.len(),
                 off.join("; ")
             ),
-        );
+        ).about(&["rho"]);
     }
 }
 
@@ -1340,7 +1379,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Warning,
                 "With ρ taken from Example 5 computed exactly, the positions and ρ fields are not used.",
-            );
+            ).about(&["positions", "rho"]);
         }
         (x, y)
     } else {
@@ -1368,7 +1407,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             s.step(
                 Step::new(
                     "How far the peak moves",
-                    "The same parabola through the seed's printed ρ (0.69, 0.97, 0.37) peaks elsewhere; the difference is what the printed ρ4 = 0.69 (exact 0.6731) and the rounding cost.",
+                    "The same parabola through the printed ρ (0.69, 0.97, 0.37) peaks elsewhere; the difference is what the printed ρ4 = 0.69 (exact 0.6731) and the rounding cost.",
                 )
                 .formula(
                     r"\Delta c = c_{\max}^{\text{exact}} - c_{\max}^{\text{printed}}",
@@ -1387,8 +1426,8 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         }
         s.note(
             NoteKind::Convention,
-            "ρ comes from Example 5's arrays computed exactly, not from the values the seed prints; the printed values shown beside are the seed's answer from its printed ρ.",
-        );
+            "ρ comes from Example 5's arrays computed exactly, not from the values the course notes print; the printed values shown beside are the course notes' answer from their printed ρ.",
+        ).about(&["coefficients", "c_max"]);
     }
     let seed = is_seed(&subpixel_1d_fields(), inputs);
     if seed || exact_mode {
@@ -1401,17 +1440,17 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "From the printed ρ the coefficients are exactly a0 = {}, a1 = {}, a2 = {} and c = {}, which the seed prints as −25.91, 6.88, −0.44 and 7.82.",
+                "From the printed ρ the coefficients are exactly a0 = {}, a1 = {}, a2 = {} and c = {}, which the course notes print as −25.91, 6.88, −0.44 and 7.82.",
                 num(pa[0]),
                 num(pa[1]),
                 num(pa[2]),
                 num(pc)
             ),
-        );
+        ).about(&["coefficients", "c_max"]);
         s.note(
             NoteKind::Erratum,
-            "The seed writes the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Its result c = 7.82 is right for 6.88.",
-        );
+            "The course notes write the peak condition as 66.8 + (2)(−0.44)c = 0; a1 is 6.88 (66.8 would put the peak at c = 75.9). Their result c = 7.82 is right for 6.88.",
+        ).about(&[]);
     }
     if seed {
         let (xe, ye, _) = example_5_exact()?;
@@ -1420,7 +1459,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Erratum,
                 format!(
-                    "These are the seed's printed ρ of Example 5, including ρ4 = 0.69, whose exact value is {} (Example 5). With the exact ρ ({}, {}, {}) the peak is at c = {}, {} px from {}: choose “exact” to chain from Example 5.",
+                    "These are the printed ρ of Example 5, including ρ4 = 0.69, whose exact value is {} (Example 5). With the exact ρ ({}, {}, {}) the peak is at c = {}, {} px from {}: choose “exact” to chain from Example 5.",
                     num(ye[0]),
                     num(ye[0]),
                     num(ye[1]),
@@ -1429,7 +1468,7 @@ fn subpixel_1d(inputs: &Record) -> Result<Solution> {
                     fmt_sig(ce[0] - cp, 2),
                     num(cp)
                 ),
-            );
+            ).about(&["rho"]);
         }
     }
     label_results(&mut s);
@@ -1538,17 +1577,17 @@ fn extremum_notes_1d(s: &mut Solution, p: &Parabola, x: [f64; 3]) {
                         num(lo),
                         num(hi)
                     ),
-                );
+                ).about(&["c_max"]);
             }
         }
         Extremum::Minimum { .. } => s.note(
             NoteKind::Warning,
-            "The fitted parabola opens upward (a2 > 0): its stationary point is a minimum, so there is no subpixel peak and c_max is null.",
-        ),
+            "The fitted parabola opens upward (a2 > 0): its stationary point is a minimum, so there is no subpixel peak and no peak column.",
+        ).about(&["c_max", "coefficients"]),
         _ => s.note(
             NoteKind::Warning,
-            "The three values lie on a straight line (a2 = 0): the parabola has no maximum, so c_max is null.",
-        ),
+            "The three values lie on a straight line (a2 = 0): the parabola has no maximum, so there is no peak column.",
+        ).about(&["c_max", "coefficients"]),
     }
 }
 
@@ -1632,7 +1671,8 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Warning,
                 "With ρ taken from Example 7 computed exactly, the c, r and ρ fields are not used.",
-            );
+            )
+            .about(&["c", "r", "rho"]);
         }
         (c, r, rho)
     } else {
@@ -1663,8 +1703,8 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
     extremum_notes_2d(&mut s, &q, c, r);
     s.note(
         NoteKind::Convention,
-        "The least-squares fit is computed in coordinates centred on the middle of the neighbourhood (u = c − c̄, v = r − r̄): the same surface as the seed's nine equations in c and r, but a well-conditioned system for any c and r. The coefficients are then written in the seed's form.",
-    );
+        "The least-squares fit is computed in coordinates centred on the middle of the neighbourhood (u = c − c̄, v = r − r̄): the same surface as the course notes' nine equations in c and r, but a well-conditioned system for any c and r. The coefficients are then written in the course notes' form.",
+    ).about(&[]);
 
     let printed = quadric_peak([2.0, 3.0, 4.0], [3.0, 4.0, 5.0], EX9_PRINTED_RHO)?;
     let printed_at = printed.extremum.maximum();
@@ -1674,7 +1714,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             s.step(
                 Step::new(
                     "How far the peak moves",
-                    "The same fit to the seed's printed ρ (four decimals) peaks at a slightly different place; the difference is what rounding the coefficients of Example 7 costs.",
+                    "The same fit to the printed ρ (four decimals) peaks at a slightly different place; the difference is what rounding the coefficients of Example 7 costs.",
                 )
                 .formula(
                     r"\Delta = \sqrt{(c^{\text{exact}} - c^{\text{printed}})^2 + (r^{\text{exact}} - r^{\text{printed}})^2}",
@@ -1699,8 +1739,8 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         }
         s.note(
             NoteKind::Convention,
-            "ρ comes from Example 7's arrays computed exactly, not from the four-decimal values the seed prints; the printed values shown beside are the seed's answer from its printed ρ.",
-        );
+            "ρ comes from Example 7's arrays computed exactly, not from the four-decimal values the course notes print; the printed values shown beside are the course notes' answer from their printed ρ.",
+        ).about(&["coefficients", "c_max", "r_max"]);
     }
     let seed = is_seed(&subpixel_2d_fields(), inputs);
     if seed || exact_mode {
@@ -1716,7 +1756,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "From the printed ρ the least-squares coefficients are a0 = {}, a1 = {}, a2 = {}, a3 = {}, a4 = {}, a5 = {}: the seed's values to three decimals.",
+                "From the printed ρ the least-squares coefficients are a0 = {}, a1 = {}, a2 = {}, a3 = {}, a4 = {}, a5 = {}: the course notes' values to three decimals.",
                 num(pa[0]),
                 num(pa[1]),
                 num(pa[2]),
@@ -1724,28 +1764,30 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                 num(pa[4]),
                 num(pa[5])
             ),
-        );
+        ).about(&["coefficients"]);
         if let (Some((rc, rr)), Some(p)) = (from_rounded, printed_at) {
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed's c = 3.012 and r = 4.075 come from its coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {}: about {} px from the printed point, beyond its three decimals.",
+                    "The course notes' c = 3.012 and r = 4.075 come from their coefficients rounded to three decimals (they give c = {}, r = {}). From the unrounded coefficients the maximum is at c = {}, r = {}, which to three decimals is {}, {} (c: {}; r: {}): about {} px from the printed point, beyond its three decimals.",
                     fmt_sig(rc, 5),
                     fmt_sig(rr, 5),
                     num(p[0]),
                     num(p[1]),
                     format_args!("{:.3}", p[0]),
                     format_args!("{:.3}", p[1]),
+                    exact_minus_printed(p[0], 3.012, "px"),
+                    exact_minus_printed(p[1], 4.075, "px"),
                     fmt_sig(((p[0] - 3.012).powi(2) + (p[1] - 4.075).powi(2)).sqrt(), 1)
                 ),
-            );
+            ).about(&["c_max", "r_max"]);
         }
     }
     if seed {
         s.note(
             NoteKind::Erratum,
-            "The seed's third equation is labelled ρ(3+1, 4+1) and written with c = 4, r = 5, but its value −0.3921 is ρ at c = 4, r = 3, the upper right neighbour: it should read ρ(3+1, 4−1) = a0 + a1(4) + a2(3) + a3(4)(3) + a4(4)² + a5(3)². The ninth equation is the real ρ(3+1, 4+1) = −0.1268. The seed's coefficients fit the corrected equation (see the coefficients above), so only the label and the written terms are wrong; this solution uses the corrected one.",
-        );
+            "The course notes' third equation is labelled ρ(3+1, 4+1) and written with c = 4, r = 5, but its value −0.3921 is ρ at c = 4, r = 3, the upper right neighbour: it should read ρ(3+1, 4−1) = a0 + a1(4) + a2(3) + a3(4)(3) + a4(4)² + a5(3)². The ninth equation is the real ρ(3+1, 4+1) = −0.1268. The course notes' coefficients fit the corrected equation (see the coefficients above), so only the label and the written terms are wrong; this solution uses the corrected one.",
+        ).about(&[]);
         let ((ce, re, rhoe), _) = example_7_exact()?;
         let e = quadric_peak(ce, re, rhoe)?;
         if let (Some(ea), Some(pa)) = (e.extremum.maximum(), printed_at) {
@@ -1758,7 +1800,7 @@ fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                     num(ea[1]),
                     fmt_sig(d, 2)
                 ),
-            );
+            ).about(&["rho"]);
         }
     }
     label_results(&mut s);
@@ -1837,7 +1879,7 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
     s.step(
         Step::new(
             "Coefficients in c and r",
-            "Expanding u = c − c̄ and v = r − r̄ gives the coefficients of the seed's form.",
+            "Expanding u = c − c̄ and v = r − r̄ gives the coefficients of the course notes' form.",
         )
         .formula(
             r"a_1 = b_1 - b_3 \bar r - 2 b_4 \bar c,\ a_2 = b_2 - b_3 \bar c - 2 b_5 \bar r,\ a_3 = b_3,\ a_4 = b_4,\ a_5 = b_5,\ a_0 = \rho(0, 0)",
@@ -1921,20 +1963,20 @@ fn extremum_notes_2d(s: &mut Solution, q: &Quadric, c: [f64; 3], r: [f64; 3]) {
                         num(at[0]),
                         num(at[1])
                     ),
-                );
+                ).about(&["c_max", "r_max"]);
             }
         }
         Extremum::Minimum { .. } => s.note(
             NoteKind::Warning,
-            "The fitted surface is not concave: it curves upward, its stationary point is a minimum, so there is no subpixel peak (c_max and r_max are null).",
-        ),
+            "The fitted surface is not concave: it curves upward, its stationary point is a minimum, so there is no subpixel peak (no peak column or row).",
+        ).about(&["c_max", "r_max", "coefficients"]),
         Extremum::Saddle { .. } => s.note(
             NoteKind::Warning,
-            "The fitted surface is not concave: 4·a4·a5 − a3² < 0 makes its stationary point a saddle, so there is no subpixel peak (c_max and r_max are null).",
-        ),
+            "The fitted surface is not concave: 4·a4·a5 − a3² < 0 makes its stationary point a saddle, so there is no subpixel peak (no peak column or row).",
+        ).about(&["c_max", "r_max", "coefficients"]),
         Extremum::Degenerate => s.note(
             NoteKind::Warning,
-            "The fitted surface is not concave: 4·a4·a5 − a3² = 0 (flat in some direction), so it has no single maximum (c_max and r_max are null).",
-        ),
+            "The fitted surface is not concave: 4·a4·a5 − a3² = 0 (flat in some direction), so it has no single maximum (no peak column or row).",
+        ).about(&["c_max", "r_max", "coefficients"]),
     }
 }

@@ -58,6 +58,27 @@ pub struct Field {
     pub kind: Kind,
     /// The seed's value.
     pub default: Value,
+    /// `Some`: the field applies only in some modes (see [`When`]).
+    pub when: Option<When>,
+}
+
+/// A field that applies only when field `key`'s value (a choice's text) is
+/// one of `values`. A field that does not apply is never an error: `solve`
+/// ignores its value and `parse_inputs` does not check it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct When {
+    pub key: &'static str,
+    pub values: &'static [&'static str],
+}
+
+impl When {
+    /// True when `value` (the controlling field's value) is one of `values`.
+    pub fn holds(&self, value: Option<&Value>) -> bool {
+        match value {
+            Some(Value::Text(t)) => self.values.contains(&t.trim()),
+            _ => false,
+        }
+    }
 }
 
 impl Field {
@@ -74,7 +95,14 @@ impl Field {
                 min_exclusive: false,
             },
             default: Value::Number(default),
+            when: None,
         }
+    }
+
+    /// Makes the field apply only when field `key` is one of `values`.
+    pub fn when(mut self, key: &'static str, values: &'static [&'static str]) -> Self {
+        self.when = Some(When { key, values });
+        self
     }
 
     /// Sets the help text.
@@ -160,6 +188,7 @@ impl Field {
                 columns: None,
             },
             default: Value::matrix(default),
+            when: None,
         }
     }
 
@@ -185,6 +214,7 @@ impl Field {
             help: "",
             kind: Kind::Choice { options },
             default: Value::from(default),
+            when: None,
         }
     }
 
@@ -559,12 +589,30 @@ pub fn validate(fields: &[Field], raw: &Record) -> Result<Record> {
     let mut out = Record::new();
     for f in fields {
         let v = match raw.get(f.key) {
+            // A field that does not apply keeps a valid value and otherwise
+            // takes its default: it is never an error.
+            Some(v) if !applies(fields, f, raw) => f.check(v).unwrap_or_else(|_| f.default.clone()),
             Some(v) => f.check(v)?,
             None => f.default.clone(),
         };
         out.set(f.key, v);
     }
     Ok(out)
+}
+
+/// True when field `f` applies to `inputs` (typed, or texts: a choice's text
+/// is the same either way); a missing controlling field takes its default.
+pub fn applies(fields: &[Field], f: &Field, inputs: &Record) -> bool {
+    let Some(when) = f.when else {
+        return true;
+    };
+    let control = inputs.get(when.key).or_else(|| {
+        fields
+            .iter()
+            .find(|g| g.key == when.key)
+            .map(|g| &g.default)
+    });
+    when.holds(control)
 }
 
 /// Typed access to validated inputs (see [`validate`]).
@@ -604,8 +652,11 @@ impl Inputs<'_> {
 }
 
 /// True when every input equals the field's seed default.
+/// A field that does not apply (see [`When`]) is not compared.
 pub fn is_seed(fields: &[Field], inputs: &Record) -> bool {
-    fields.iter().all(|f| inputs.get(f.key) == Some(&f.default))
+    fields
+        .iter()
+        .all(|f| !applies(fields, f, inputs) || inputs.get(f.key) == Some(&f.default))
 }
 
 /// The JSON shape of a field in `catalog()`.
@@ -627,6 +678,7 @@ pub struct FieldInfo {
     pub options: Option<Vec<ChoiceInfo>>,
     pub default: Value,
     pub default_text: String,
+    pub when: Option<When>,
 }
 
 #[derive(Serialize)]
@@ -654,6 +706,7 @@ impl From<&Field> for FieldInfo {
             options: None,
             default: f.default.clone(),
             default_text: f.format(&f.default),
+            when: f.when,
         };
         match &f.kind {
             Kind::Number {
@@ -761,6 +814,7 @@ mod tests {
                 cols: None,
             },
             default: Value::matrix(&[vec![1.0, 2.0], vec![3.0, 4.5]]),
+            when: None,
         };
         let text = f.format(&f.default);
         assert_eq!(text, "1, 2; 3, 4.5");

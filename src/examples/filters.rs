@@ -54,11 +54,11 @@ const KERNELS: &[(&str, &str)] = &[
     ("laplacian-8", "Laplacian, 8 neighbours (centre −8)"),
     (
         "laplacian-004",
-        "Seed 004's Laplacian as printed (centre 1)",
+        "Lecture 7's Laplacian as printed (centre 1)",
     ),
     ("log", "Laplacian of Gaussian (5×5)"),
-    ("sharpen", "Sharpening (seed 004, 1/9)"),
-    ("high-pass", "High-pass (seed 004, 1/9)"),
+    ("sharpen", "Sharpening (Lecture 7, 1/9)"),
+    ("high-pass", "High-pass (Lecture 7, 1/9)"),
     ("median", "3×3 median"),
     ("custom", "Custom kernel"),
 ];
@@ -66,7 +66,10 @@ const KERNELS: &[(&str, &str)] = &[
 const OPERATORS: &[(&str, &str)] = &[("prewitt", "Prewitt"), ("sobel", "Sobel")];
 
 const BORDERS: &[(&str, &str)] = &[
-    ("crop", "Crop: only where the kernel fits (as the seeds do)"),
+    (
+        "crop",
+        "Crop: only where the kernel fits (as the course documents do)",
+    ),
     ("replicate", "Replicate the edge pixel"),
     ("reflect", "Reflect about the edge pixel"),
     ("zero", "Zero outside"),
@@ -78,7 +81,7 @@ pub fn entries() -> Vec<Entry> {
             id: "filter-window",
             title: "Filtering a window",
             topic: TOPIC,
-            source: "Seed 000, Examples 15–16; seed 004",
+            source: "Worked examples, Examples 15–16; Lecture 7: Image processing",
             summary: "A window of grey values under a smoothing, sharpening or Laplacian kernel (or the median), each output pixel's sum written out.",
             fields: filter_fields,
             solve: Some(filter_window),
@@ -87,7 +90,7 @@ pub fn entries() -> Vec<Entry> {
             id: "edge-window",
             title: "Prewitt and Sobel edges",
             topic: TOPIC,
-            source: "Seed 000, Example 15",
+            source: "Worked examples, Example 15",
             summary: "The responses to the Prewitt or Sobel kernels in both directions and the edge magnitude √(Gx² + Gy²).",
             fields: edge_fields,
             solve: Some(edge_window),
@@ -110,6 +113,7 @@ pub(super) fn matrix_field(key: &'static str, label: &'static str, default: &[Ve
             cols: None,
         },
         default: Value::matrix(default),
+        when: None,
     }
 }
 
@@ -126,6 +130,7 @@ pub(super) fn choice_field(
         help: "",
         kind: Kind::Choice { options },
         default: Value::from(default),
+        when: None,
     }
 }
 
@@ -173,7 +178,7 @@ fn to_rows<const N: usize>(m: &[[f64; N]]) -> Vec<Vec<f64>> {
 
 fn window_field() -> Field {
     matrix_field("window", "Window of grey values", &to_rows(&EXAMPLE_15)).help(
-        "Rows of grey values. Example 15: the default. Example 16: 1 2 1 1 1; 1 1 9 2 1; 1 9 9 8 1; 1 1 8 1 2; 2 1 1 1 1. Seed 004: 5 6 7 8 9; 11 10 20 30 9; 31 50 60 70 9; 40 30 20 10 9; 58 95 105 106 98.",
+        "Rows of grey values. Example 15: the default. Example 16: 1 2 1 1 1; 1 1 9 2 1; 1 9 9 8 1; 1 1 8 1 2; 2 1 1 1 1. Lecture 7: 5 6 7 8 9; 11 10 20 30 9; 31 50 60 70 9; 40 30 20 10 9; 58 95 105 106 98.",
     )
 }
 
@@ -190,7 +195,7 @@ fn select_fields() -> [Field; 2] {
 
 fn border_field() -> Field {
     choice_field("border", "At the window's edge", BORDERS, "crop").help(
-        "Crop keeps only the pixels where the whole kernel lies inside the window, as the seeds do; the other policies give an output for every pixel by inventing values outside.",
+        "Crop keeps only the pixels where the whole kernel lies inside the window, as the course documents do; the other policies give an output for every pixel by inventing values outside.",
     )
 }
 
@@ -199,16 +204,18 @@ fn filter_fields() -> Vec<Field> {
     vec![
         window_field(),
         choice_field("kernel", "Kernel", KERNELS, "mean")
-            .help("Example 15 uses the mean and the Gaussian, Example 16 the 8-neighbour Laplacian, seed 004 the mean."),
+            .help("Example 15 uses the mean and the Gaussian, Example 16 the 8-neighbour Laplacian, Lecture 7 the mean."),
         matrix_field(
             "custom_kernel",
             "Custom kernel (numerators)",
             &[vec![0.0, -1.0, 0.0], vec![-1.0, 5.0, -1.0], vec![0.0, -1.0, 0.0]],
         )
-        .help("Used when the kernel is Custom: an odd number of rows and of columns, at most 15×15; applied as written (no flip)."),
+        .help("Used when the kernel is Custom: an odd number of rows and of columns, at most 15×15; applied as written (no flip).")
+        .when("kernel", &["custom"]),
         Field::number("custom_divisor", "Custom kernel divisor", 1.0)
             .positive(1e12)
-            .help("The custom kernel's numerators are divided by this (16 for a 1/16 kernel)."),
+            .help("The custom kernel's numerators are divided by this (16 for a 1/16 kernel).")
+            .when("kernel", &["custom"]),
         sc,
         sr,
         border_field(),
@@ -423,19 +430,19 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
         Some(e) if (sum - e).abs() > 1e-12 => s.note(
             NoteKind::Erratum,
             format!(
-                "Seed 004 prints its Laplacian as [−1 −1 −1; −1 1 −1; −1 −1 −1]. Its weights sum to {}, not 0, so a flat area of grey value g comes out as {}·g instead of 0 and the filter is no edge detector. The centre must be 8: [−1 −1 −1; −1 8 −1; −1 −1 −1] sums to 0 and is seed 000's 8-neighbour Laplacian with the sign turned (the same page's high-pass kernel is it divided by 9).",
+                "Lecture 7 prints its Laplacian as [−1 −1 −1; −1 1 −1; −1 −1 −1]. Its weights sum to {}, not 0, so a flat area of grey value g comes out as {}·g instead of 0 and the filter is no edge detector. The centre must be 8: [−1 −1 −1; −1 8 −1; −1 −1 −1] sums to 0 and is the worked examples' 8-neighbour Laplacian with the sign turned (the same page's high-pass kernel is it divided by 9).",
                 num(sum),
                 num(sum)
             ),
-        ),
+        ).about(&["kernel", "kernel_sum"]),
         Some(1.0) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 1, as a smoothing (or sharpening) kernel's must: a flat area keeps its grey value.",
-        ),
+        ).about(&["kernel_sum"]),
         Some(_) => s.note(
             NoteKind::Convention,
             "The kernel's weights sum to 0, as a derivative kernel's must: a flat area gives 0.",
-        ),
+        ).about(&["kernel_sum"]),
         None => {
             if (sum - 1.0).abs() > 1e-12 && sum.abs() > 1e-12 {
                 s.note(
@@ -445,7 +452,7 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                         num(sum),
                         num(sum)
                     ),
-                );
+                ).about(&["kernel_sum"]);
             } else {
                 s.note(
                     NoteKind::Convention,
@@ -458,7 +465,7 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
                             "a flat area keeps its grey value, as under a smoothing kernel."
                         }
                     ),
-                );
+                ).about(&["kernel_sum"]);
             }
         }
     }
@@ -467,7 +474,7 @@ fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
 fn correlation_note(s: &mut Solution) {
     s.note(
         NoteKind::Convention,
-        "Kernels are applied as written: the kernel's top-left weight multiplies the window's top-left pixel (correlation). The seeds say \"convolve\" but their sums do exactly this; a true convolution would first turn the kernel by 180°, which changes nothing for symmetric kernels and only the sign of the Prewitt and Sobel responses.",
+        "Kernels are applied as written: the kernel's top-left weight multiplies the window's top-left pixel (correlation). The course documents say \"convolve\" but their sums do exactly this; a true convolution would first turn the kernel by 180°, which changes nothing for symmetric kernels and only the sign of the Prewitt and Sobel responses.",
     );
 }
 
@@ -476,7 +483,7 @@ fn crop_note(s: &mut Solution, border: Border, region: filter::Region, window: &
         s.note(
             NoteKind::Convention,
             format!(
-                "Output only where the whole kernel lies inside the window, as the seeds do: the {}×{} interior of the {}×{} window, from row {} column {} on.",
+                "Output only where the whole kernel lies inside the window, as the course documents do: the {}×{} interior of the {}×{} window, from row {} column {} on.",
                 region.height,
                 region.width,
                 window.height(),
@@ -484,7 +491,7 @@ fn crop_note(s: &mut Solution, border: Border, region: filter::Region, window: &
                 region.r0 + 1,
                 region.c0 + 1
             ),
-        );
+        ).about(&["output_first_c", "output_first_r"]);
     } else {
         let how = match border {
             Border::Replicate => "repeating the nearest edge pixel",
@@ -493,8 +500,8 @@ fn crop_note(s: &mut Solution, border: Border, region: filter::Region, window: &
         };
         s.note(
             NoteKind::Convention,
-            format!("Output for every pixel of the window; values outside it are made up by {how}. The seeds keep only the interior."),
-        );
+            format!("Output for every pixel of the window; values outside it are made up by {how}. The course documents keep only the interior."),
+        ).about(&["output_first_c", "output_first_r"]);
     }
 }
 
@@ -595,7 +602,7 @@ fn filter_window(inputs: &Record) -> Result<Solution> {
             s.step(
                 Step::new(
                     "The median",
-                    "No weights: the output is the middle value of the nine grey values under the 3×3 window, sorted (seed 004: \"selecting median instead of mean\"). Unlike the mean it is always a grey value of the data.",
+                    "No weights: the output is the middle value of the nine grey values under the 3×3 window, sorted (Lecture 7: \"selecting median instead of mean\"). Unlike the mean it is always a grey value of the data.",
                 )
                 .formula(r"g(r, c) = \operatorname{median}\{ f(r + j, c + i) : |i|, |j| \le 1 \}", String::new()),
             );
@@ -681,11 +688,21 @@ fn filter_window(inputs: &Record) -> Result<Solution> {
     if name == "log" {
         s.note(
             NoteKind::Convention,
-            "The seed describes the Laplacian of Gaussian in words (smooth with the Gaussian, then apply the Laplacian) without a kernel. It is built here from the seed's own kernels: the 3×3 Gaussian 1/16·[1 2 1; 2 4 2; 1 2 1] convolved with the 4-neighbour Laplacian [0 1 0; 1 −4 1; 0 1 0], one 5×5 kernel that sums to 0.",
-        );
+            "The course notes describe the Laplacian of Gaussian in words (smooth with the Gaussian, then apply the Laplacian) without a kernel. It is built here from the course notes' own kernels: the 3×3 Gaussian 1/16·[1 2 1; 2 4 2; 1 2 1] convolved with the 4-neighbour Laplacian [0 1 0; 1 −4 1; 0 1 0], one 5×5 kernel that sums to 0.",
+        ).about(&["kernel"]);
     }
     if border == Border::Crop {
         seed_filter_cases(&mut s, &window, name, filtered.region, sc, sr);
+        if s.textbook
+            .as_ref()
+            .is_some_and(|t| t.get("pixel_results").is_some())
+        {
+            s.label(
+                "pixel_results",
+                "Each output pixel worked out (printed with more decimals)",
+                "",
+            );
+        }
     }
     Ok(s)
 }
@@ -728,44 +745,44 @@ fn seed_filter_cases(
         s.textbook = Some(textbook(&EX15_MEAN_GRID, Some(&EX15_MEAN_PIXELS)));
         s.note(
             NoteKind::Erratum,
-            "Pixel (r4, c2): the seed's sum reads 1/9(9+24+7+1+13+14+13+18+17) — the 10 at (r4, c1) is copied as 1. With it the sum is 125 and the mean 125/9 = 13.89, not 116/9 = 12.89 (printed 12.88, and 12.9 in the output grid instead of 13.9).",
-        );
+            "Pixel (r4, c2): the course notes' sum reads 1/9(9+24+7+1+13+14+13+18+17) — the 10 at (r4, c1) is copied as 1. With it the sum is 125 and the mean 125/9 = 13.89, not 116/9 = 12.89 (printed 12.88, and 12.9 in the output grid instead of 13.9).",
+        ).about(&["output", "pixel_results", "selected"]);
         s.note(
             NoteKind::Rounding,
-            "The seed cuts the means off after two decimals instead of rounding: 113/9 = 12.556 at (r3, c2) is printed 12.55 and 95/9 = 10.556 at (r3, c4) 10.55 (rounded: 12.56 and 10.56); its slipped 116/9 = 12.889 is printed 12.88. The output grid then cuts these again to 12.5 and 10.5, where 12.6 and 10.6 are right.",
-        );
+            "The course notes cut the means off after two decimals instead of rounding: 113/9 = 12.556 at (r3, c2) is printed 12.55 and 95/9 = 10.556 at (r3, c4) 10.55 (rounded: 12.56 and 10.56); its slipped 116/9 = 12.889 is printed 12.88. The output grid then cuts these again to 12.5 and 10.5, where 12.6 and 10.6 are right.",
+        ).about(&["output", "pixel_results"]);
         s.note(
             NoteKind::Erratum,
-            "Harmless: for pixel (r2, c4) the seed lists the middle row as 9 + 9 + 10 instead of 10 + 9 + 9; the total 80 and the mean 8.89 are right.",
-        );
+            "Harmless: for pixel (r2, c4) the course notes list the middle row as 9 + 9 + 10 instead of 10 + 9 + 9; the total 80 and the mean 8.89 are right.",
+        ).about(&["pixel_results"]);
     } else if same_window(window, &EXAMPLE_15) && kernel == "gaussian-3" {
         s.textbook = Some(textbook(&EX15_GAUSS_GRID, Some(&EX15_GAUSS_PIXELS)));
         s.note(
             NoteKind::Rounding,
-            "Every Gaussian sum of the seed is right. Four of its per-pixel values are printed with one decimal where the others have two: 145/16 = 9.0625 as 9.1, 229/16 = 14.3125 as 14.3 (twice) and 230/16 = 14.375 as 14.4. The output grid prints 164/16 = 10.25 at (r2, c3) as 10.2, where rounding half up gives 10.3.",
-        );
+            "Every Gaussian sum of the course notes is right. Four of its per-pixel values are printed with one decimal where the others have two: 145/16 = 9.0625 as 9.1, 229/16 = 14.3125 as 14.3 (twice) and 230/16 = 14.375 as 14.4. The output grid prints 164/16 = 10.25 at (r2, c3) as 10.2, where rounding half up gives 10.3.",
+        ).about(&["output", "pixel_results"]);
         s.note(
             NoteKind::Erratum,
-            "Harmless: several of the seed's Gaussian sums list their terms out of kernel order (at (r2, c4): 9×4 for the centre before 2×9 + 2×10 for its right and left neighbours); every total is right.",
+            "Harmless: several of the course notes' Gaussian sums list their terms out of kernel order (at (r2, c4): 9×4 for the centre before 2×9 + 2×10 for its right and left neighbours); every total is right.",
         );
     } else if same_window(window, &EXAMPLE_16) && kernel == "laplacian-8" {
         s.textbook = Some(textbook(&EX16_GRID, None));
         s.note(
             NoteKind::Convention,
-            "Every value of Example 16 is reproduced. The seed writes the centre term as −9×8 where the centre grey value 9 is multiplied by the kernel's −8: the same product.",
-        );
+            "Every value of Example 16 is reproduced. The course notes write the centre term as −9×8 where the centre grey value 9 is multiplied by the kernel's −8: the same product.",
+        ).about(&["output"]);
     } else if same_window(window, &SEED_004) && kernel == "mean" {
         if (sc, sr) == (2, 2) {
             s.textbook = Some(Record::new().with("selected", 33.0));
         }
         s.note(
             NoteKind::Rounding,
-            "Seed 004 works out only the centre pixel (row 3, column 3): (10 + 20 + 30 + 50 + 60 + 70 + 30 + 20 + 10)/9 = 300/9 = 33.33, printed as 33.",
-        );
+            "Lecture 7 works out only the centre pixel (row 3, column 3): (10 + 20 + 30 + 50 + 60 + 70 + 30 + 20 + 10)/9 = 300/9 = 33.33, printed as 33.",
+        ).about(&["selected"]);
         s.note(
             NoteKind::Convention,
-            "Seed 004's formula g(i, j) = Σ Σ f(m, n)·PSF(i − m, j − n) is a true convolution (the kernel turned by 180°); for the symmetric mean kernel that is the same as applying it as written.",
-        );
+            "Lecture 7's formula g(i, j) = Σ Σ f(m, n)·PSF(i − m, j − n) is a true convolution (the kernel turned by 180°); for the symmetric mean kernel that is the same as applying it as written.",
+        ).about(&["kernel"]);
     }
 }
 
@@ -822,7 +839,7 @@ fn edge_window(inputs: &Record) -> Result<Solution> {
     s.step(
         Step::new(
             &format!("The {title} kernels"),
-            "The first kernel takes the top row minus the bottom row, the second the right column minus the left one; the seed calls their responses Gx and Gy.",
+            "The first kernel takes the top row minus the bottom row, the second the right column minus the left one; the course notes call their responses Gx and Gy.",
         )
         .formula(
             &format!(r"\mathrm{{{nx}}},\quad \mathrm{{{ny}}}"),
@@ -939,8 +956,8 @@ fn edge_window(inputs: &Record) -> Result<Solution> {
     correlation_note(&mut s);
     s.note(
         NoteKind::Convention,
-        format!("The seed's names are kept: Gx is the response to {nx} (top row minus bottom row, a change along the rows, upward) and Gy to {ny} (right column minus left, a change along the columns). The Förstner operator's g′x is the other way round: a difference along the columns."),
-    );
+        format!("The course notes' names are kept: Gx is the response to {nx} (top row minus bottom row, a change along the rows, upward) and Gy to {ny} (right column minus left, a change along the columns). The Förstner operator's g′x is the other way round: a difference along the columns."),
+    ).about(&["gx", "gy"]);
     crop_note(&mut s, border, g.region, &window);
     if border == Border::Crop && same_window(&window, &EXAMPLE_15) {
         let (tx, ty, tm) = if op == "sobel" {
@@ -962,9 +979,9 @@ fn edge_window(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "Every {title} value of Example 15 is reproduced: the responses exactly, the magnitudes within the one or two decimals the seed prints."
+                "Every {title} value of Example 15 is reproduced: the responses exactly, the magnitudes within the one or two decimals the course notes print."
             ),
-        );
+        ).about(&["magnitude", "selected_magnitude"]);
     }
     Ok(s)
 }

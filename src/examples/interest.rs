@@ -24,8 +24,8 @@ pub fn entries() -> Vec<Entry> {
             id: "forstner-window",
             title: "Förstner operator",
             topic: TOPIC,
-            source: "Seed 000, Example 13; seed 003",
-            summary: "Gradients by central differences, the matrix N, its inverse, weight w, roundness q, and seed 003's precision test with the error ellipse.",
+            source: "Worked examples, Example 13; Lecture 21: Image matching",
+            summary: "Gradients by central differences, the matrix N, its inverse, weight w, roundness q, and Lecture 21's precision test with the error ellipse.",
             fields: forstner_fields,
             solve: Some(forstner_window),
         },
@@ -33,7 +33,7 @@ pub fn entries() -> Vec<Entry> {
             id: "moravec-window",
             title: "Moravec operator",
             topic: TOPIC,
-            source: "Seed 000, Example 14",
+            source: "Worked examples, Example 14",
             summary: "Four directional differences at each interior pixel, squared and summed, averaged over the window.",
             fields: moravec_fields,
             solve: Some(moravec_window),
@@ -42,7 +42,7 @@ pub fn entries() -> Vec<Entry> {
             id: "forstner-image",
             title: "Förstner operator on a test pattern",
             topic: TOPIC,
-            source: "Seed 003; seed 000, Example 13",
+            source: "Lecture 21: Image matching; Worked examples, Example 13",
             summary: "Move a window over a generated 64×64 pattern (corners, edges, a flat area, noise): N, w, q and the error ellipse there, and the interest points of the whole image after thresholding and suppression.",
             fields: image_fields,
             solve: Some(forstner_image),
@@ -64,6 +64,7 @@ fn window_field(default: Value, help: &'static str) -> Field {
             cols: None,
         },
         default,
+        when: None,
     }
 }
 
@@ -84,21 +85,23 @@ fn sigma_n(default: f64) -> Field {
     Field::number("sigma_n", "Noise σn of the grey values", default)
         .unit("grey values")
         .positive(1000.0)
-        .help("Standard deviation of the image noise; seed 003's Σuv = σn²·N⁻¹. The seeds give no value.")
+        .help("Standard deviation of the image noise; Lecture 21's Σuv = σn²·N⁻¹. The course documents give no value.")
 }
 
 fn threshold() -> Field {
     Field::number("threshold_px", "Threshold T on the position", 0.5)
         .unit("px")
         .positive(100.0)
-        .help("Seed 003: a point is accepted when λmax(Σuv) ≤ T² (T = 0.5 px in the seed).")
+        .help(
+            "Lecture 21: a point is accepted when λmax(Σuv) ≤ T² (T = 0.5 px in the course notes).",
+        )
 }
 
 fn forstner_fields() -> Vec<Field> {
     vec![
         window_field(
             example_13(),
-            "At least 3×3 (5×5 or 7×7 in the seed); gradients are computed at the interior pixels.",
+            "At least 3×3 (5×5 or 7×7 in the course notes); gradients are computed at the interior pixels.",
         ),
         sigma_n(1.0),
         threshold(),
@@ -113,7 +116,7 @@ fn moravec_fields() -> Vec<Field> {
             [11.0, 14.0, 15.0, 13.0],
             [12.0, 19.0, 18.0, 22.0],
         ]),
-        "At least 3×3 (4×4 or 8×8 in the seed); differences are computed at the interior pixels.",
+        "At least 3×3 (4×4 or 8×8 in the course notes); differences are computed at the interior pixels.",
     )]
 }
 
@@ -137,7 +140,7 @@ fn image_fields() -> Vec<Field> {
             .help("Row of the window's centre pixel, counted from 1 at the top."),
         Field::integer("window_size", "Window size", 5.0)
             .range(3.0, 9.0)
-            .help("Odd: 5×5 or 7×7 in the seed."),
+            .help("Odd: 5×5 or 7×7 in the course notes."),
         Field::number("noise", "Noise added to the pattern", 2.0)
             .unit("grey values")
             .range(0.0, 50.0)
@@ -146,7 +149,7 @@ fn image_fields() -> Vec<Field> {
         threshold(),
         Field::number("q_min", "Least roundness q", 0.5)
             .range(0.0, 1.0)
-            .help("Förstner's roundness test q ≥ q_min on top of seed 003's threshold; 0 switches it off (seed 003 alone)."),
+            .help("Förstner's roundness test (q at least this) on top of Lecture 21's threshold; 0 switches it off (Lecture 21 alone)."),
     ]
 }
 
@@ -266,7 +269,7 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
     s.step(
         Step::new(
             "Gradient table: central differences",
-            "At every interior pixel of the window, row by row as the seed lays it out: g′x = (g(c+1, r) − g(c−1, r))/2 across the columns and g′y = (g(c, r+1) − g(c, r−1))/2 down the rows. Table rows are [c, r, g, g′x, g′y, g′x·g′y, (g′x)², (g′y)²], positions from 1.",
+            "At every interior pixel of the window, row by row as the course notes lay it out: g′x = (g(c+1, r) − g(c−1, r))/2 across the columns and g′y = (g(c, r+1) − g(c, r−1))/2 down the rows. Table rows are [c, r, g, g′x, g′y, g′x·g′y, (g′x)², (g′y)²], positions from 1.",
         )
         .formula(
             r"g'_x = \frac{g(c+1,r) - g(c-1,r)}{2},\quad g'_y = \frac{g(c,r+1) - g(c,r-1)}{2}",
@@ -279,7 +282,7 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
     s.step(
         Step::new(
             "Gradient table: products, squares and sums",
-            "The rest of the seed's table: the product and the squares at each pixel, then the column sums.",
+            "The rest of the course notes' table: the product and the squares at each pixel, then the column sums.",
         )
         .formula(
             r"\sum g'_x,\ \sum g'_y,\ \sum g'_x g'_y,\ \sum (g'_x)^2,\ \sum (g'_y)^2",
@@ -408,7 +411,7 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
     let mm = m.m as f64;
     s.step(
         Step::new(
-            "Seed 003: precision of the position",
+            "Lecture 21: precision of the position",
             "The gradient covariance is Σ∇g∇g = N/m (m pixels), its smallest eigenvalue λmin(N)/m; the largest eigenvalue of the shift's covariance Σuv = σn²·N⁻¹ is then σn²/λmin(N) — m cancels. The point is accepted when λmax(Σuv) ≤ T².",
         )
         .formula(
@@ -431,9 +434,9 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
         .value("accepted", p.accepted),
     );
     let case_text = match p.case {
-        Case::Corner => "Both semi-axes are within T: a corner, a distinct point (seed 003's small circle).",
-        Case::Edge => "Only across the edge is the position within T; along it the ellipse is long (seed 003's edge case).",
-        Case::Flat => "Neither direction is within T: a flat, homogeneous area (seed 003's large ellipse).",
+        Case::Corner => "Both semi-axes are within T: a corner, a distinct point (Lecture 21's small circle).",
+        Case::Edge => "Only across the edge is the position within T; along it the ellipse is long (Lecture 21's edge case).",
+        Case::Flat => "Neither direction is within T: a flat, homogeneous area (Lecture 21's large ellipse).",
     };
     s.step(
         Step::new(
@@ -504,7 +507,7 @@ fn label_results(s: &mut Solution) {
             "Direction of the major axis (from +c toward +r)",
             "°",
         ),
-        ("case", "Seed 003's case", ""),
+        ("case", "Lecture 21's case", ""),
         ("window", "The window", "grey values"),
         ("candidates", "Pixels that pass the threshold", ""),
         ("points", "Interest points [c, r, λmax(Σuv)]", ""),
@@ -522,13 +525,13 @@ fn singular_notes(s: &mut Solution, m: &Measures) {
     if m.trace == 0.0 {
         s.note(
             NoteKind::Warning,
-            "The window is flat: every gradient is zero, so N = 0. N⁻¹, trace N⁻¹, q and λmax(Σuv) have no value (null); w = 0. The position cannot be determined in any direction.",
-        );
+            "The window is flat: every gradient is zero, so N = 0. N⁻¹, trace N⁻¹, q and λmax(Σuv) have no value; w = 0. The position cannot be determined in any direction.",
+        ).about(&["n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     } else if m.singular {
         s.note(
             NoteKind::Warning,
-            "det N = 0: the gradients all point along one direction (a straight edge), so λmin(N) = 0 and q = 0. N⁻¹, trace N⁻¹ and λmax(Σuv) have no value (null, i.e. infinite); w = 0. The position is fixed across the edge only.",
-        );
+            "det N = 0: the gradients all point along one direction (a straight edge), so λmin(N) = 0 and q = 0. N⁻¹, trace N⁻¹ and λmax(Σuv) have no value (they are infinite); w = 0. The position is fixed across the edge only.",
+        ).about(&["det_n", "n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     }
 }
 
@@ -545,21 +548,31 @@ fn forstner_window(inputs: &Record) -> Result<Solution> {
     singular_notes(&mut s, &f.measures);
     s.note(
         NoteKind::Convention,
-        "Gradients are seed 000's central differences, at the interior pixels only (the border pixels are neighbours). Seed 003 computes them with a Sobel operator instead; the rest of the operator is the same.",
-    );
+        "Gradients are the worked examples' central differences, at the interior pixels only (the border pixels are neighbours). Lecture 21 computes them with a Sobel operator instead; the rest of the operator is the same.",
+    ).about(&["gx", "gy"]);
     if is_seed(&forstner_fields(), inputs) {
         example_13_notes(&mut s, &f);
     } else {
         s.note(
             NoteKind::Convention,
-            "The seeds give no noise level σn; the Example 13 default is 1 grey value.",
-        );
+            "The course documents give no noise level σn; the Example 13 default is 1 grey value.",
+        )
+        .about(&["lambda_max_shift", "accepted"]);
     }
     Ok(s)
 }
 
 fn example_13_notes(s: &mut Solution, f: &Forstner) {
     let m = &f.measures;
+    for (key, label) in [
+        ("sum_gx", "Sum of the column gradients Σg′x"),
+        ("sum_gy", "Sum of the row gradients Σg′y"),
+        ("sum_gxgy", "Sum of the products Σg′x·g′y"),
+        ("sum_gx2", "Sum of the squares Σg′x²"),
+        ("sum_gy2", "Sum of the squares Σg′y²"),
+    ] {
+        s.label(key, label, "");
+    }
     let (printed_b, printed_det, printed_tr) = (-22.75, 8891.9375, 0.02);
     s.textbook = Some(
         Record::new()
@@ -582,7 +595,7 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed's table is right row by row, and its sum of g′x·g′y is {}; but the N it prints has {} off the diagonal. The determinant and inverse it prints follow from the slip: 82 × 114.75 − 22.75² = {} instead of 82 × 114.75 − 22.25² = {}, and 1/{} in front of N⁻¹ instead of 1/{}.",
+            "The course notes' table is right row by row, and its sum of g′x·g′y is {}; but the N it prints has {} off the diagonal. The determinant and inverse it prints follow from the slip: 82 × 114.75 − 22.75² = {} instead of 82 × 114.75 − 22.25² = {}, and 1/{} in front of N⁻¹ instead of 1/{}.",
             num(f.sums.gxgy),
             num(printed_b),
             num(82.0 * 114.75 - printed_b * printed_b),
@@ -590,11 +603,11 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
             num(printed_det),
             num(m.det)
         ),
-    );
+    ).about(&["n", "det_n", "n_inverse"]);
     s.note(
         NoteKind::Rounding,
         format!(
-            "The seed gives trace N⁻¹ = {printed_tr}: the exact value is 196.75/{} = {}, and even its own determinant gives 196.75/{} = {}. Rounded to one significant digit, both slips disappear in a rounding of {} %.",
+            "The course notes give trace N⁻¹ = {printed_tr}: the exact value is 196.75/{} = {}, and even its own determinant gives 196.75/{} = {}. Rounded to one significant digit, both slips disappear in a rounding of {} %.",
             num(m.det),
             opt_num(m.trace_inverse),
             num(printed_det),
@@ -604,18 +617,18 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
                 2
             )
         ),
-    );
+    ).about(&["trace_n_inverse"]);
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed's rule \"the window is classified as an interest point if the trace exceeds a certain threshold\" is backwards. trace N⁻¹ = σu² + σv² (up to σn²) is the size of the error ellipse: a distinct point has a SMALL trace N⁻¹, and a flat window has an infinite one — the rule as printed would pick exactly the homogeneous areas. Förstner accepts a window when the weight w = 1/trace N⁻¹ = det N/trace N exceeds a threshold (here w = {}); seed 003 accepts when λmax(Σuv) ≤ T².",
+            "The course notes' rule \"the window is classified as an interest point if the trace exceeds a certain threshold\" is backwards. trace N⁻¹ = σu² + σv² (up to σn²) is the size of the error ellipse: a distinct point has a SMALL trace N⁻¹, and a flat window has an infinite one — the rule as printed would pick exactly the homogeneous areas. Förstner accepts a window when the weight w = 1/trace N⁻¹ = det N/trace N exceeds a threshold (here w = {}); Lecture 21 accepts when λmax(Σuv) ≤ T².",
             num(m.w)
         ),
-    );
+    ).about(&["accepted"]);
     s.note(
         NoteKind::Convention,
-        "The seeds give no noise level σn; the default is 1 grey value, with seed 003's T = 0.5 px.",
-    );
+        "The course documents give no noise level σn; the default is 1 grey value, with Lecture 21's T = 0.5 px.",
+    ).about(&["lambda_max_shift", "accepted"]);
 }
 
 fn moravec_window(inputs: &Record) -> Result<Solution> {
@@ -667,8 +680,10 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\bar S = \frac{1}{n} \sum S(c, r)",
             format!(
-                r"\bar S = \frac{{{}}}{{{}}} = {}",
+                r"\sum S = {} = {},\quad \bar S = \frac{{{}}}{{{}}} = {}",
                 sums.join(" + "),
+                num(mv.pixels.iter().map(|p| p.sum).sum::<f64>()),
+                num(mv.pixels.iter().map(|p| p.sum).sum::<f64>()),
                 n,
                 num(mv.mean)
             ),
@@ -682,8 +697,8 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
     label_results(&mut s);
     s.note(
         NoteKind::Convention,
-        "This is the Moravec operator as seed 000 defines it: differences across the pixel (c+1 against c−1), all four directions summed, averaged over the window. Moravec's original operator sums squared differences of neighbouring pixels along each direction and keeps the MINIMUM over the four directions, so that an edge (strong in one direction only) scores low; the seed's average responds to edges as strongly as to corners.",
-    );
+        "This is the Moravec operator as the worked examples define it: differences across the pixel (c+1 against c−1), all four directions summed, averaged over the window. Moravec's original operator sums squared differences of neighbouring pixels along each direction and keeps the MINIMUM over the four directions, so that an edge (strong in one direction only) scores low; the course notes' average responds to edges as strongly as to corners.",
+    ).about(&["sums", "mean"]);
     if is_seed(&moravec_fields(), inputs) {
         s.textbook = Some(
             Record::new()
@@ -695,8 +710,8 @@ fn moravec_window(inputs: &Record) -> Result<Solution> {
         );
         s.note(
             NoteKind::Convention,
-            "All four sums (47, 361, 153, 171) and the mean 183 agree with the seed. The seed writes the row difference at P(c2, r3) as (11 − 15) and lists the other diagonal before the main one at every pixel; the squares are the same.",
-        );
+            "All four sums (47, 361, 153, 171) and the mean 183 agree with the course notes. The course notes write the row difference at P(c2, r3) as (11 − 15) and list the other diagonal before the main one at every pixel; the squares are the same.",
+        ).about(&["sums", "mean"]);
     }
     Ok(s)
 }
@@ -798,7 +813,7 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
         Step::new(
             "The three cases on the image",
             &format!(
-                "Seed 003's three cases, each at a fixed place of the pattern with the same window size, σn and T: {}. The figure draws their ellipses on the image beside the moving window's.",
+                "Lecture 21's three cases, each at a fixed place of the pattern with the same window size, σn and T: {}. The figure draws their ellipses on the image beside the moving window's.",
                 lines.join("; ")
             ),
         )
@@ -843,7 +858,7 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
         Step::new(
             "Non-maximum suppression",
             &format!(
-                "Seed 003 step 4: within each {0}×{0} neighbourhood only the candidate with the smallest λmax(Σuv) is kept (the most precise position). {1} interest points remain. Rows are [c, r, λmax(Σuv)].",
+                "Lecture 21 step 4: within each {0}×{0} neighbourhood only the candidate with the smallest λmax(Σuv) is kept (the most precise position). {1} interest points remain. Rows are [c, r, λmax(Σuv)].",
                 2 * det.radius + 1,
                 det.points.len()
             ),
@@ -877,11 +892,11 @@ fn forstner_image(inputs: &Record) -> Result<Solution> {
     singular_notes(&mut s, &f.measures);
     s.note(
         NoteKind::Convention,
-        "Gradients by seed 000's central differences; σn is not given in the seeds (default 2 grey values, a little above this pattern's noise). The roundness test q ≥ q_min is Förstner's, not seed 003's: with q_min = 0 (seed 003 alone) some windows on the noisy edges pass too, because noise along an edge makes λmin(N) small but not zero.",
-    );
+        "Gradients by the worked examples' central differences; σn is not given in the course documents (default 2 grey values, a little above this pattern's noise). The roundness test (q at least the least roundness) is Förstner's, not Lecture 21's: with a least roundness of 0 (Lecture 21 alone) some windows on the noisy edges pass too, because noise along an edge makes λmin(N) small but not zero.",
+    ).about(&["points", "q"]);
     s.note(
         NoteKind::Convention,
-        "The map is null where the window does not fit inside the image (a border of half the window).",
+        "The map has no value where the window does not fit inside the image (a border of half the window).",
     );
     Ok(s)
 }

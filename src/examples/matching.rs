@@ -10,7 +10,9 @@ use crate::matching::{
     self, Gradients, Iteration, Matching, Model, Param, Params, Settings, Status,
 };
 use crate::raster::Grid;
-use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{
+    exact_minus_printed, fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value,
+};
 
 const TOPIC: &str = "Least-squares matching";
 /// Largest 1-D template or search window.
@@ -59,7 +61,7 @@ pub fn entries() -> Vec<Entry> {
             id: "lsm-1d",
             title: "1-D least-squares matching",
             topic: TOPIC,
-            source: "Seed 000, Example 10",
+            source: "Worked examples, Example 10",
             summary: "Refines the best correlation position of Example 5 to a subpixel shift (and optionally a gain and offset) by iterated least squares.",
             fields: lsm_1d_fields,
             solve: Some(lsm_1d),
@@ -68,7 +70,7 @@ pub fn entries() -> Vec<Entry> {
             id: "lsm-2d",
             title: "2-D least-squares matching",
             topic: TOPIC,
-            source: "Seed 000, Example 11",
+            source: "Worked examples, Example 11",
             summary: "Refines the best correlation position of Example 7 to a subpixel shift with a gain and offset by iterated least squares.",
             fields: lsm_2d_fields,
             solve: Some(lsm_2d),
@@ -77,7 +79,7 @@ pub fn entries() -> Vec<Entry> {
             id: "lsm-affine",
             title: "Affine + radiometric least-squares matching",
             topic: TOPIC,
-            source: "Seed 003",
+            source: "Lecture 21: Image matching",
             summary: "A generated patch pair with a known shift, rotation, scale, shear, gain and offset, recovered by eight-parameter least-squares matching.",
             fields: lsm_affine_fields,
             solve: Some(lsm_affine),
@@ -97,6 +99,7 @@ fn vector(key: &'static str, label: &'static str, default: &[f64]) -> Field {
             max_len: MAX_1D,
         },
         default: Value::numbers(default),
+        when: None,
     }
 }
 
@@ -110,6 +113,7 @@ fn matrix(key: &'static str, label: &'static str, default: &[Vec<f64>]) -> Field
             cols: None,
         },
         default: Value::matrix(default),
+        when: None,
     }
 }
 
@@ -120,6 +124,7 @@ fn flag(key: &'static str, label: &'static str, default: bool) -> Field {
         help: "",
         kind: Kind::Flag,
         default: Value::Bool(default),
+        when: None,
     }
 }
 
@@ -188,6 +193,7 @@ fn lsm_2d_fields() -> Vec<Field> {
                 options: GRADIENT_OPTIONS,
             },
             default: Value::Text("search-window".to_string()),
+            when: None,
         },
         max_iterations(),
     ]
@@ -531,24 +537,66 @@ fn table_step(m: &Matching, syms: &[&str], origin: f64) -> Step {
 }
 
 /// The closing step and, unless converged, a warning note.
+/// The convergence test in the parameters actually estimated (`syms`, see
+/// [`symbols`]), and whether it has a radiometric part.
+fn convergence_test(syms: &[&str]) -> (&'static str, bool) {
+    let has = |s: &str| syms.contains(&s);
+    if has("a_1") {
+        (
+            r"\max_i \lVert d\mathbf{x}_i \rVert \le 10^{-4}\ \text{px},\quad \max_i |da_7\, G_i + da_8| \le 10^{-3}",
+            true,
+        )
+    } else {
+        match (has("r"), has("a")) {
+            (true, true) => (
+                r"\sqrt{dc^2 + dr^2} \le 10^{-4}\ \text{px},\quad \max_i |da\, G_i + db| \le 10^{-3}",
+                true,
+            ),
+            (true, false) => (r"\sqrt{dc^2 + dr^2} \le 10^{-4}\ \text{px}", false),
+            (false, true) => (
+                r"|dc| \le 10^{-4}\ \text{px},\quad \max_i |da\, G_i + db| \le 10^{-3}",
+                true,
+            ),
+            (false, false) => (r"|dc| \le 10^{-4}\ \text{px}", false),
+        }
+    }
+}
+
+/// A symbol such as `a_7` as prose writes it: `a₇`.
+fn prose_symbol(s: &str) -> String {
+    const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+    s.replace('_', "")
+        .chars()
+        .map(|c| c.to_digit(10).map_or(c, |d| SUB[d as usize]))
+        .collect()
+}
+
 fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
     let k = m.iterations.len();
     let last = m.iterations.last();
     let incs = last.map_or(String::new(), |it| {
         syms.iter()
             .zip(&it.increments)
-            .map(|(s, d)| format!("d{s} = {}", fmt_sig(*d, 3)))
+            .map(|(s, d)| format!("d{} = {}", prose_symbol(s), fmt_sig(*d, 3)))
             .collect::<Vec<_>>()
             .join(", ")
     });
+    let (test, radiometric) = convergence_test(syms);
     let (title, text) = match &m.status {
         Status::Converged => (
             "Converged".to_string(),
             format!(
-                "Converged in {k} iteration{}: the last increments ({incs}) move no template pixel by more than {} px and change no modelled grey value by more than {}.",
+                "Converged in {k} iteration{}: the last increments ({incs}) move no template pixel by more than {} px{}.",
                 if k == 1 { "" } else { "s" },
                 matching::POSITION_TOL,
-                matching::GREY_TOL
+                if radiometric {
+                    format!(
+                        " and change no modelled grey value by more than {}",
+                        matching::GREY_TOL
+                    )
+                } else {
+                    String::new()
+                }
             ),
         ),
         Status::NotConverged => (
@@ -572,18 +620,13 @@ fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
     };
     s.step(
         Step::new(&title, &text)
-            .formula(
-                r"\max_i \lVert d\mathbf{x}_i \rVert \le 10^{-4}\ \text{px},\quad \max_i |da_7\, G_i + da_8| \le 10^{-3}",
-                format!(
-                    r"\text{{{}}}",
-                    m.status.word()
-                ),
-            )
+            .formula(test, format!(r"\text{{{}}}", m.status.word()))
             .value("status", m.status.word())
             .value("iterations", k),
     );
     if m.status != Status::Converged {
-        s.note(NoteKind::Warning, text);
+        s.note(NoteKind::Warning, text)
+            .about(&["converged", "status"]);
     }
     let clamped: Vec<(usize, usize)> = m
         .iterations
@@ -602,7 +645,7 @@ fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
                 first.0,
                 last.0
             ),
-        );
+        ).about(&["iterations"]);
     }
 }
 
@@ -733,8 +776,8 @@ fn lsm_1d(inputs: &Record) -> Result<Solution> {
         .with("sigma0", m.sigma0());
     s.note(
         NoteKind::Convention,
-        "Positions count from 1 as in the seed; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
-    );
+        "Positions count from 1 as in the course notes; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
+    ).about(&["c"]);
     if seed_inputs(&lsm_1d_fields(), inputs, &["template", "search", "c0"]) {
         ex10_notes(&mut s, &m, radiometric);
     }
@@ -816,33 +859,40 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed prints dX = [−0.295, 0.156, −0.053]; exactly dc = {}, da = {} (= 5/32), db = {} (= −3/56). The last rounds to −0.054: the seed cut it off instead of rounding.",
+                "The course notes print dX = [−0.295, 0.156, −0.053]; exactly dc = {}, da = {} (= 5/32), db = {} (= −3/56). The last rounds to −0.054: the course notes cut it off instead of rounding.",
                 num(dc),
                 num(da),
                 num(db)
             ),
-        );
+        ).about(&["first_dc", "first_da", "first_db"]);
         s.note(
             NoteKind::Convention,
             "With a⁰ = 1 and b⁰ = 0 the gradient column is orthogonal to the columns G_s and 1 (Σ∂G·G_s = 0 and Σ∂G = 0 here), so the first dc is the same as without radiometry.",
-        );
+        ).about(&["first_da", "first_db"]);
     } else {
         printed = printed
             .with("first_dc", -0.2945)
             .with("c_after_first", 7.705);
+        s.label(
+            "c_after_first",
+            "Position c after the first iteration",
+            "px",
+        );
         s.note(
             NoteKind::Rounding,
             format!(
-                "The seed prints dc = −0.2945; exactly dc = AᵀdL / AᵀA = −11.5 / 39 = {}, which rounds to −0.2949. It then uses −0.295, so c = 8 − 0.295 = 7.705 (exactly {}).",
+                "The course notes print dc = −0.2945; exactly dc = AᵀdL / AᵀA = −11.5 / 39 = {}, which rounds to −0.2949 ({}). They then use −0.295, so c = 8 − 0.295 = 7.705 (exactly {}; {}).",
                 num(dc),
-                num(8.0 + dc)
+                exact_minus_printed(dc, -0.2945, "px"),
+                num(8.0 + dc),
+                exact_minus_printed(8.0 + dc, 7.705, "px")
             ),
-        );
+        ).about(&["first_dc", "c_after_first"]);
     }
     s.note(
         NoteKind::Convention,
         format!(
-            "The seed stops after the first iteration (\"iterated until the increment approaches zero\"). Iterated to the end, c = {} after {} iterations{}, {} px from the first iteration's {}: the first step alone stops well short of the optimum.",
+            "The course notes stop after the first iteration (\"iterated until the increment approaches zero\"). Iterated to the end, c = {} after {} iterations{}, {} px from the first iteration's {}: the first step alone stops well short of the optimum.",
             num(m.params.a[2] + 1.0),
             m.iterations.len(),
             if radiometric {
@@ -857,7 +907,7 @@ fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
             num(m.params.a[2] + 1.0 - (8.0 + dc)),
             num(8.0 + dc)
         ),
-    );
+    ).about(&["c", "iterations"]);
     s.textbook = Some(printed);
 }
 
@@ -943,8 +993,8 @@ fn lsm_2d(inputs: &Record) -> Result<Solution> {
         .with("sigma0", m.sigma0());
     s.note(
         NoteKind::Convention,
-        "Columns c (to the right) and rows r (downward) count from 1 as in the seed; (c, r) is the search-window position of the template's centre pixel.",
-    );
+        "Columns c (to the right) and rows r (downward) count from 1 as in the course notes; (c, r) is the search-window position of the template's centre pixel.",
+    ).about(&["c", "r"]);
     if seed_inputs(
         &lsm_2d_fields(),
         inputs,
@@ -1012,8 +1062,8 @@ fn first_iteration_2d(
         }
     }
     let how = match gradients {
-        Gradients::SearchWindow => "Central differences of the resampled search window: the outer neighbours of the edge pixels come from the one-pixel border around the patch (the formula the seed states).",
-        Gradients::PatchEdge => "Central differences inside the patch only: an edge pixel stands in for its neighbour outside the patch (what the seed's printed matrix does).",
+        Gradients::SearchWindow => "Central differences of the resampled search window: the outer neighbours of the edge pixels come from the one-pixel border around the patch (the formula the course notes state).",
+        Gradients::PatchEdge => "Central differences inside the patch only: an edge pixel stands in for its neighbour outside the patch (what the printed matrix does).",
     };
     let gain = if a0 == 1.0 { "" } else { r"a^0\," };
     s.step(
@@ -1090,11 +1140,11 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Erratum,
         format!(
-            "The printed design matrix does not follow its own formula ∂G_s/∂c = (G_s(c+1, r) − G_s(c−1, r))/2 at {} of its 18 gradient entries: {}. At every patch-edge pixel the seed used the edge pixel itself for the neighbour outside the 3×3 patch (e.g. row 1 writes (65 − 47)/2 where the search window has 45 left of 47, giving (65 − 45)/2 = 10). Choose gradients = patch-edge to reproduce the printed matrix.",
+            "The printed design matrix does not follow its own formula ∂G_s/∂c = (G_s(c+1, r) − G_s(c−1, r))/2 at {} of its 18 gradient entries: {}. At every patch-edge pixel the course notes used the edge pixel itself for the neighbour outside the 3×3 patch (e.g. row 1 writes (65 − 47)/2 where the search window has 45 left of 47, giving (65 − 45)/2 = 10). Choose “Patch edge” under “Gradients at the patch edge” to reproduce the printed matrix.",
             diffs.len(),
             diffs.join("; ")
         ),
-    );
+    ).about(&["first_dc", "first_dr", "first_da", "first_db"]);
     let fmt_inc = |run: &Matching| -> String {
         run.iterations.first().map_or("–".to_string(), |it| {
             it.increments
@@ -1107,11 +1157,11 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Rounding,
         format!(
-            "The printed dX = [0.194, 0.086, 0.138, −5.372] is the patch-edge reading rounded to three decimals (exactly [{}]). The stated formula gives dX = [{}].",
+            "The printed dX = [0.194, 0.086, 0.138, −5.372] is what the patch-edge gradients give, rounded to three decimals (exactly [{}]). The stated formula gives dX = [{}].",
             fmt_inc(pe_run),
             fmt_inc(sw_run)
         ),
-    );
+    ).about(&["first_dc", "first_dr", "first_da", "first_db"]);
     let end = |run: &Matching| -> String {
         format!(
             "{} after {} iterations: c = {}, r = {}, a = {}, b = {}",
@@ -1126,11 +1176,11 @@ fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Rec
     s.note(
         NoteKind::Convention,
         format!(
-            "The seed stops after the first iteration (c = 3.194, r = 4.086, a = 1.138, b = −25.372). Iterated: search-window reading {}; patch-edge reading {}. The gain and offset move far beyond their first step, and with the patch-edge gradients (too small at the edge pixels) every step overshoots, so that reading zig-zags towards the optimum and needs many more iterations.",
+            "The course notes stop after the first iteration (c = 3.194, r = 4.086, a = 1.138, b = −25.372). Iterated: with the search-window gradients (the stated formula) {}; with the patch-edge gradients (the printed matrix) {}. The gain and offset move far beyond their first step, and with the patch-edge gradients (too small at the edge pixels) every step overshoots, so that run zig-zags towards the optimum and needs many more iterations.",
             end(sw_run),
             end(pe_run)
         ),
-    );
+    ).about(&["c", "r", "a", "b"]);
     Ok(())
 }
 
@@ -1171,7 +1221,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
     s.step(
         Step::new(
             "The generated pair",
-            "A smooth texture (six sinusoids, wavelengths 7–16 px, drawn from the seed) fills the search window. The template is that window seen through the chosen transformation — resampled bilinearly at p = a1·u + a2·v + a3, q = a4·u + a5·v + a6 — then scaled by the gain and shifted by the offset; noise is added to both. u, v count from the template's centre, p, q from the search window's centre.",
+            "A smooth texture (six sinusoids, wavelengths 7–16 px, drawn with the random seed) fills the search window. The template is that window seen through the chosen transformation — resampled bilinearly at p = a1·u + a2·v + a3, q = a4·u + a5·v + a6 — then scaled by the gain and shifted by the offset; noise is added to both. u, v count from the template's centre, p, q from the search window's centre.",
         )
         .formula(
             r"\begin{bmatrix} a_1 & a_2 \\ a_4 & a_5 \end{bmatrix} = s\begin{bmatrix} \cos\theta & -\sin\theta \\ \sin\theta & \cos\theta \end{bmatrix}\begin{bmatrix} 1 & k \\ 0 & 1 \end{bmatrix},\quad T(u,v) = a_7\,S(p,q) + a_8 + n",
@@ -1190,8 +1240,8 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
     );
     s.step(
         Step::new(
-            "Observation equation and initial values (seed 003)",
-            "One equation per template pixel, linearised at the current parameters; G_p, G_q are the central-difference gradients of the resampled search patch along the window's columns and rows. Initial values as seed 003 says: translations zero, the diagonal of the affine part 1, gain 1, offset 0.",
+            "Observation equation and initial values (Lecture 21)",
+            "One equation per template pixel, linearised at the current parameters; G_p, G_q are the central-difference gradients of the resampled search patch along the window's columns and rows. Initial values as Lecture 21 says: translations zero, the diagonal of the affine part 1, gain 1, offset 0.",
         )
         .formula(
             r"T - (a_7 G + a_8) + V = a_7G_p(u\,da_1 + v\,da_2 + da_3) + a_7G_q(u\,da_4 + v\,da_5 + da_6) + G\,da_7 + da_8",
@@ -1247,7 +1297,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
         .collect();
     let mut step = Step::new(
         "Estimates beside the truth",
-        "The standard deviations are σ0·√q_ii from the last iteration's Qxx = N⁻¹.",
+        "The standard deviations are σ0·√qᵢᵢ from the last iteration's Qxx = N⁻¹.",
     )
     .formula(
         r"\sigma_{a_j} = \sigma_0\sqrt{q_{jj}}",
@@ -1305,12 +1355,12 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
         .with("expected_sigma0", expected);
     s.note(
         NoteKind::Convention,
-        "Seed 003 writes the affine and the radiometric parts as two stacked systems of 2m rows with zero blocks (its second block's unknowns are misprinted as Δa5 … Δa8). Both parts describe the same grey values, so here they form one observation per pixel, T = a7·S(p, q) + a8, with all eight unknowns in one m × 8 design matrix — the formulation of seed 000's Examples 10–11.",
-    );
+        "Lecture 21 writes the affine and the radiometric parts as two stacked systems of 2m rows with zero blocks (its second block's unknowns are misprinted as Δa5 … Δa8). Both parts describe the same grey values, so here they form one observation per pixel, T = a7·S(p, q) + a8, with all eight unknowns in one m × 8 design matrix — the formulation of worked examples 10–11.",
+    ).about(&["parameters"]);
     s.note(
         NoteKind::Convention,
         "The template is made from the search window with the same bilinear interpolation the matching uses, so without noise the model fits exactly and the estimates return the true values. Real images also carry the interpolation's own error: for a template sampled from a smooth continuous texture instead, the least-squares optimum itself lies up to about 0.1 px from the true shift (measured in this project's tests).",
-    );
+    ).about(&["parameters", "sigma0"]);
     if m.converged() {
         if let Some(sd) = &sd {
             let off: Vec<String> = (0..8)
@@ -1329,7 +1379,7 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
                         "The run converged, but {} lie more than five standard deviations from the truth: it found another optimum. The start (identity, zero shift) is outside the pull-in range for this transformation.",
                         off.join(", ")
                     ),
-                );
+                ).about(&["parameters"]);
             }
         }
     }

@@ -9,6 +9,7 @@
 //! `fn solve(inputs: &Record) -> Result<Solution>` in its topic file, list it
 //! in that file's `entries()`, and remove it from [`coming`].
 
+pub mod answers;
 pub mod chains;
 pub mod coordinates;
 pub mod correlation;
@@ -79,7 +80,7 @@ fn coming() -> Vec<Entry> {
         "utm",
         "UTM coordinates",
         "Map projection",
-        "Seed 004",
+        "Lecture 7: Image processing",
     )]
 }
 
@@ -117,6 +118,8 @@ pub struct EntryInfo {
     pub title: &'static str,
     pub topic: &'static str,
     pub source: &'static str,
+    /// The course document(s) `source` refers to, named in full.
+    pub document: String,
     pub summary: &'static str,
     pub status: &'static str,
     pub inputs: Vec<FieldInfo>,
@@ -131,6 +134,7 @@ pub fn catalog() -> Vec<EntryInfo> {
             title: e.title,
             topic: e.topic,
             source: e.source,
+            document: answers::document(e.source),
             summary: e.summary,
             status: if e.solve.is_some() { "ready" } else { "coming" },
             inputs: (e.fields)().iter().map(FieldInfo::from).collect(),
@@ -146,7 +150,15 @@ pub fn solve(id: &str, inputs: &Record) -> Result<Solution> {
         .solve
         .ok_or_else(|| Error::NotBuilt { id: id.to_string() })?;
     let used = fields::validate(&(entry.fields)(), inputs)?;
-    solver(&used)?.checked()
+    let mut solution = solver(&used)?;
+    if solution.answer.is_empty() {
+        solution.answer = answers::keys(id)
+            .iter()
+            .filter(|k| solution.result.get(k).is_some())
+            .map(|k| k.to_string())
+            .collect();
+    }
+    solution.checked()
 }
 
 /// Texts parsed into typed inputs, and a message for each field that failed.
@@ -181,6 +193,8 @@ pub fn parse_inputs(id: &str, texts: &Record) -> Result<Parsed> {
         };
         match parsed {
             Ok(value) => out.inputs.set(key, value),
+            // A field that does not apply in the chosen mode never blocks.
+            Err(_) if !fields::applies(&fields, field, texts) => {}
             Err(e) => out.errors.set(key, Value::Text(e.to_string())),
         }
     }

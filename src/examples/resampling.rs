@@ -9,7 +9,7 @@ use super::Entry;
 use crate::error::{Error, Result};
 use crate::raster::Grid;
 use crate::resample::{self, SEED_A};
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step, Value};
 
 const TOPIC: &str = "Resampling";
 /// The largest pixel position accepted for the patch's first pixel.
@@ -36,8 +36,8 @@ pub fn entries() -> Vec<Entry> {
         id: "resample",
         title: "Resampling: nearest, bilinear, bicubic",
         topic: TOPIC,
-        source: "Seed 000, Example 12; seed 004",
-        summary: "The grey value at a fractional pixel position: nearest neighbour, bilinear interpolation along the rows then between them, and seed 004's cubic convolution.",
+        source: "Worked examples, Example 12; Lecture 7: Image processing",
+        summary: "The grey value at a fractional pixel position: nearest neighbour, bilinear interpolation along the rows then between them, and Lecture 7's cubic convolution.",
         fields,
         solve: Some(solve),
     }]
@@ -67,8 +67,58 @@ fn fields() -> Vec<Field> {
             .help("Fractional image row; pixel centres are at whole numbers."),
         Field::number("cubic_a", "Cubic convolution parameter a", SEED_A)
             .range(-3.0, 0.0)
-            .help("Seed 004's kernel 1 − 2|x|² + |x|³, 4 − 8|x| + 5|x|² − |x|³ is a = −1; Keys' a = −0.5 reproduces linear ramps exactly."),
+            .help("Lecture 7's kernel 1 − 2|x|² + |x|³, 4 − 8|x| + 5|x|² − |x|³ is a = −1; Keys' a = −0.5 reproduces linear ramps exactly."),
     ]
+}
+
+/// Why there is no bicubic value at `(c, r)`, and where in the patch (first
+/// pixel `first`, last pixel `last`) one would be.
+fn no_bicubic_text(at: [f64; 2], first: [f64; 2], last: [f64; 2]) -> String {
+    let need = |x: f64| (x.floor() - 1.0, x.floor() + 2.0);
+    let ((c0, c1), (r0, r1)) = (need(at[0]), need(at[1]));
+    let missing = |lo: f64, hi: f64, from: f64, to: f64, what: &str| -> Option<String> {
+        let out: Vec<String> = [lo, lo + 1.0, hi - 1.0, hi]
+            .iter()
+            .filter(|x| **x < from || **x > to)
+            .map(|x| num(*x))
+            .collect::<std::collections::BTreeSet<_>>()
+            .into_iter()
+            .collect();
+        (!out.is_empty()).then(|| format!("{what} {}", out.join(" and ")))
+    };
+    let gaps: Vec<String> = [
+        missing(c0, c1, first[0], last[0], "column"),
+        missing(r0, r1, first[1], last[1], "row"),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    let mut text = format!(
+        "No bicubic value here: Lecture 7's cubic convolution takes the 16 pixels around the position, columns {} to {} and rows {} to {} for ({}, {}), but the patch covers columns {}–{} and rows {}–{} only ({} missing).",
+        num(c0),
+        num(c1),
+        num(r0),
+        num(r1),
+        num(at[0]),
+        num(at[1]),
+        num(first[0]),
+        num(last[0]),
+        num(first[1]),
+        num(last[1]),
+        gaps.join(", ")
+    );
+    // The lecture's case: the position inside the cell between the patch's
+    // second and third pixels, so that the 4×4 patch is its neighbourhood.
+    if last[0] - first[0] >= 3.0 && last[1] - first[1] >= 3.0 {
+        let inside =
+            |x: f64, lo: f64, hi: f64| x.floor().clamp(lo + 1.0, hi - 2.0) + (x - x.floor());
+        text.push_str(&format!(
+            " The lecture's formula Q = [f(1+t) … f(2−t)]·P·[f(1+s) … f(2−s)]ᵀ puts the position between P22, P23, P32 and P33, the middle of a 4×4 patch: with this patch, c = {} and r = {} (the same fractions) give a bicubic value.",
+            num(inside(at[0], first[0], last[0])),
+            num(inside(at[1], first[1], last[1]))
+        ));
+    }
+    text
 }
 
 struct Printed {
@@ -291,7 +341,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 Step::new(
                     "Bicubic: weights",
                     &format!(
-                        "Seed 004's cubic convolution uses the 4×4 pixels from column {} and row {}. With s = c − [c] and t = r − [r] the kernel gives four weights per direction (they sum to 1).",
+                        "Lecture 7's cubic convolution uses the 4×4 pixels from column {} and row {}. With s = c − [c] and t = r − [r] the kernel gives four weights per direction (they sum to 1).",
                         num(bc0),
                         num(br0)
                     ),
@@ -333,20 +383,13 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 .value("bicubic", b.value),
             );
         }
-        None => s.note(
-            NoteKind::Warning,
-            format!(
-                "No bicubic value: cubic convolution needs the 4×4 pixels from column {} to {} and row {} to {}, and the patch (columns {}–{}, rows {}–{}) does not hold them all. Move the position at least one pixel away from the patch's edge.",
-                num(c.floor() - 1.0),
-                num(c.floor() + 2.0),
-                num(r.floor() - 1.0),
-                num(r.floor() + 2.0),
-                num(fc),
-                num(last_c),
-                num(fr),
-                num(last_r)
-            ),
-        ),
+        None => {
+            s.note(
+                NoteKind::Warning,
+                no_bicubic_text([c, r], [fc, fr], [last_c, last_r]),
+            )
+            .about(&["bicubic"]);
+        }
     }
     s.result = Record::new()
         .with("nearest_c", nc)
@@ -376,20 +419,21 @@ fn solve(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Pixel centres are at whole column and row numbers, so column 547.44 lies 0.44 of a pixel right of pixel 547's centre. Nearest neighbour rounds halves up (547.5 → 548).",
-    );
+    ).about(&["nearest_c", "nearest_r", "nearest"]);
     if a != SEED_A {
         s.note(
             NoteKind::Convention,
             format!(
-                "The cubic kernel uses a = {} instead of seed 004's a = −1.",
+                "The cubic kernel uses a = {} instead of Lecture 7's a = −1.",
                 num(a)
             ),
-        );
+        )
+        .about(&["bicubic"]);
     } else {
         s.note(
             NoteKind::Convention,
-            "Seed 004's cubic kernel (a = −1) passes through the samples, but it does not reproduce a linear ramp between them: on grey values rising by g per pixel it is off by s(1 − s)(1 − 2s)·g at the fraction s, up to 0.096·g. Keys' a = −0.5 (choose it above) reproduces ramps exactly.",
-        );
+            "Lecture 7's cubic kernel (a = −1) passes through the samples, but it does not reproduce a linear ramp between them: on grey values rising by g per pixel it is off by s(1 − s)(1 − 2s)·g at the fraction s, up to 0.096·g. Keys' a = −0.5 (choose it above) reproduces ramps exactly.",
+        ).about(&["bicubic"]);
     }
     if let Some((which, p)) = seed_case(&patch, fc, fr, c, r) {
         s.textbook = Some(
@@ -406,29 +450,30 @@ fn solve(inputs: &Record) -> Result<Solution> {
             s.note(
                 NoteKind::Convention,
                 format!(
-                    "For the lower row the seed interpolates from the right pixel: I2 = 74 + 0.56·(78 − 74) = 76.24, with 1 − dc = 0.56. That is the same as 78 + 0.44·(74 − 78) = {} from the left, as I1 is done.",
+                    "For the lower row the course notes interpolate from the right pixel: I2 = 74 + 0.56·(78 − 74) = 76.24, with 1 − dc = 0.56. That is the same as 78 + 0.44·(74 − 78) = {} from the left, as I1 is done.",
                     num(bl.i2)
                 ),
-            );
+            ).about(&["i2"]);
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed's I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36). The whole grey value 75 is right.",
-                    num(bl.value)
+                    "The course notes' I = 75.08 + 0.2784 = {} is printed 75.35: cut off, not rounded (75.36; {}). The whole grey value 75 is right.",
+                    num(bl.value),
+                    exact_minus_printed(bl.value, 75.35, "")
                 ),
-            );
+            ).about(&["bilinear"]);
         } else {
             s.note(
                 NoteKind::Erratum,
-                "Harmless: the seed writes the position as c = 523.72m, with a stray unit m (metres); it is a pixel column.",
+                "Harmless: the course notes write the position as c = 523.72m, with a stray unit m (metres); it is a pixel column.",
             );
             s.note(
                 NoteKind::Rounding,
                 format!(
-                    "The seed prints I = 55.12 + 0.24·(59.76 − 55.12) = {} as 56.234, rounded to three decimals; every value of Example 12b is right.",
+                    "The course notes print I = 55.12 + 0.24·(59.76 − 55.12) = {} as 56.234, rounded to three decimals; every value of Example 12b is right.",
                     num(bl.value)
                 ),
-            );
+            ).about(&["bilinear"]);
         }
     }
     Ok(s)

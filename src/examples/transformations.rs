@@ -72,7 +72,7 @@ pub fn entries() -> Vec<Entry> {
             id: "fiducial-similarity",
             title: "Fiducials: similarity transformation",
             topic: TOPIC,
-            source: "Seed 000, Example 4a",
+            source: "Worked examples, Example 4(a)",
             summary: "Pixel to photo coordinates through the four fiducials: a similarity transformation (scale, rotation, shift) by least squares.",
             fields: fiducial_fields,
             solve: Some(fiducial_similarity),
@@ -81,7 +81,7 @@ pub fn entries() -> Vec<Entry> {
             id: "fiducial-affine",
             title: "Fiducials: affine transformation",
             topic: TOPIC,
-            source: "Seed 000, Example 4b",
+            source: "Worked examples, Example 4(b)",
             summary: "Pixel to photo coordinates through the four fiducials: an affine transformation (two scales, shear, rotation, shift) by least squares.",
             fields: fiducial_fields,
             solve: Some(fiducial_affine),
@@ -90,7 +90,7 @@ pub fn entries() -> Vec<Entry> {
             id: "transform-fit",
             title: "2-D transformations by least squares",
             topic: TOPIC,
-            source: "Seed 004, Table 9.5.1",
+            source: "Lecture 7: Image processing, Table 9.5.1",
             summary: "Any model of the transform table — Helmert, affine, pseudo-affine, projective, second-order conformal, polynomials — fitted to your control points.",
             fields: transform_fit_fields,
             solve: Some(transform_fit),
@@ -136,7 +136,8 @@ fn transform_fit_fields() -> Vec<Field> {
             &row_axis_up(&FIDUCIALS),
         )
         .columns(&["u", "v", "x", "y"])
-        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm."),
+        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm.")
+        .when("point_set", &["table"]),
     ]
 }
 
@@ -579,7 +580,8 @@ fn inverse_step(
             s.note(
                 NoteKind::Warning,
                 format!("The fitted transformation cannot be inverted: {e}."),
-            );
+            )
+            .about(&["inverse_parameters"]);
             return Ok(None);
         }
     };
@@ -702,13 +704,13 @@ fn condition_note(s: &mut Solution, fit: &Fit) {
                 fmt_sig(c, 3),
                 fmt_sig(ILL_CONDITIONED, 1)
             ),
-        );
+        ).about(&["parameters", "condition"]);
     }
     if fit.adjustment.redundancy == 0 {
         s.note(
             NoteKind::Warning,
-            "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 is reported as null). Add points to get them.",
-        );
+            "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 has no value). Add points to get them.",
+        ).about(&["sigma0", "std_devs"]);
     }
 }
 
@@ -791,7 +793,7 @@ fn example4(inputs: &Record, model: Model) -> Result<Solution> {
     label_results(&mut s, &model.param_names(), "mm");
     s.note(
         NoteKind::Convention,
-        "Points are entered as the seed's table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the seed's printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
+        "Points are entered as the course notes' table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
     );
     condition_note(&mut s, &fit);
     if is_seed(&fiducial_fields(), inputs) {
@@ -856,16 +858,17 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 },
                 fine.join(", ")
             ),
-        );
+        )
+        .about(&[what]);
     }
     if !to_two.is_empty() {
         s.note(
             NoteKind::Rounding,
             format!(
-                "Beyond its printed precision: {}. The seed rounded these to two decimals and printed a third, zero, decimal that it does not have.",
+                "Beyond its printed precision: {}. The course notes rounded these to two decimals and printed a third, zero, decimal that they do not have.",
                 to_two.join("; ")
             ),
-        );
+        ).about(&[what]);
     }
     if !other.is_empty() {
         s.note(
@@ -874,7 +877,8 @@ fn rounding_notes(s: &mut Solution, what: &str, names: &[String], exact: &[f64],
                 "These printed values are not the exact ones rounded: {}.",
                 other.join("; ")
             ),
-        );
+        )
+        .about(&[what]);
     }
 }
 
@@ -891,7 +895,7 @@ fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f64]) {
             format_args!("{:.1} %", (0.043 - a) / a * 100.0),
             fmt_sig((0.043 - a) * 5305.0, 2)
         ),
-    );
+    ).about(&["residuals"]);
 }
 
 fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
@@ -908,7 +912,7 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
     s.note(
         NoteKind::Erratum,
         format!(
-            "The seed's table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, its printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
+            "The course notes' table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, their printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
             num(g(0)),
             num(g(1)),
             num(g(2)),
@@ -927,15 +931,15 @@ fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Resul
                 num(g(1)),
                 fmt_sig(rot, 2)
             ),
-        );
+        ).about(&["parameters", "rotation_deg"]);
     }
     printed_residual_note(s, fit, &SIM_PRINTED_X);
     let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
     rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &SIM_PRINTED_V);
     s.note(
         NoteKind::Convention,
-        "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
-    );
+        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
+    ).about(&["sigma0", "std_devs"]);
     Ok(())
 }
 
@@ -964,8 +968,8 @@ fn seed_notes_affine(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()
     rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &AFF_PRINTED_V);
     s.note(
         NoteKind::Convention,
-        "The seed prints neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
-    );
+        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
+    ).about(&["sigma0", "std_devs"]);
     Ok(())
 }
 
@@ -1047,7 +1051,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
     s.note(
         NoteKind::Convention,
         "Table 9.5.1 maps image (u, v) to map (x, y); here (u, v) is any source system and (x, y) any target. Parameters are listed in the table's order; residuals V = A·X − L as [vx1, vy1, vx2, vy2, …]. The default points are Example 4's fiducials with the row axis turned up (u = c, v = −r); with v = r the conformal models (Helmert, second-order conformal) cannot fit, since they allow no reflection.",
-    );
+    ).about(&["parameter_names"]);
     if model == Model::Projective {
         s.note(
             NoteKind::Convention,
@@ -1057,16 +1061,16 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
     match model {
         Model::Projective => s.note(
             NoteKind::Erratum,
-            "Table 9.5.1 prints the projective denominator as a7·u + a8 + 1. It must be a7·u + a8·v + 1: as printed, a8 + 1 is one constant, the model would have only 7 independent parameters and could not represent a tilt about the u axis. The corrected form is solved here, in its linearised form a1·u + a2·v + a3 − a7·u·x − a8·v·x = x (and likewise for y), which is linear in a1 … a8 and needs no initial values; its residuals V are those of the linearised equations (D·(x̂ − x)), the coordinate residuals x̂ − x are in point_residuals.",
-        ),
+            "Table 9.5.1 prints the projective denominator as a7·u + a8 + 1. It must be a7·u + a8·v + 1: as printed, a8 + 1 is one constant, the model would have only 7 independent parameters and could not represent a tilt about the u axis. The corrected form is solved here, in its linearised form a1·u + a2·v + a3 − a7·u·x − a8·v·x = x (and likewise for y), which is linear in a1 … a8 and needs no initial values; its residuals V are those of the linearised equations (D·(x̂ − x)), the coordinate residuals x̂ − x are given separately (residuals of the points).",
+        ).about(&["parameters", "residuals", "point_residuals"]),
         Model::Polynomial2 | Model::Polynomial3 => s.note(
             NoteKind::Convention,
-            "The seed's polynomial Σᵢ Σⱼ a_ij·u^(i−1)·v^(j−1), i, j = 1 … n (n at most 3), runs over a square of exponents and would include u²v² (and for order 3 up to u³v³). Here a polynomial of order k has every term u^p·v^q with p + q ≤ k (the usual definition): 6 terms per coordinate for k = 2, 10 for k = 3; a_ij multiplies u^(i−1)·v^(j−1) as in the seed. Coordinates are used as given (not centred or scaled), so that the parameters are the table's; the condition number is reported.",
-        ),
+            "The course notes' polynomial Σᵢ Σⱼ a_ij·u^(i−1)·v^(j−1), i, j = 1 … n (n at most 3), runs over a square of exponents and would include u²v² (and for order 3 up to u³v³). Here a polynomial of order k has every term u^p·v^q with p + q ≤ k (the usual definition): 6 terms per coordinate for k = 2, 10 for k = 3; a_ij multiplies u^(i−1)·v^(j−1) as in the course notes. Coordinates are used as given (not centred or scaled), so that the parameters are the table's; the condition number is reported.",
+        ).about(&["parameters"]),
         Model::Helmert => s.note(
             NoteKind::Convention,
             "The table's Helmert transformation x = a·u + b·v + c, y = −b·u + a·v + d is Example 4's similarity with b of the other sign (Example 4: x = a·x′ − b·y′ + c).",
-        ),
+        ).about(&["parameter_names"]),
         _ => {}
     }
     condition_note(&mut s, &fit);
@@ -1105,7 +1109,7 @@ fn transform_fit(inputs: &Record) -> Result<Solution> {
                 format!(
                     "With Example 4's fiducials this is {which}; its printed values are shown in this table's parameter names and order. See that example for why its shifts (printed −115.030, 115.040 / 115.030) differ from the exact ones beyond their third decimal: they were rounded to two."
                 ),
-            );
+            ).about(&["parameters", "residuals"]);
         }
     }
     Ok(s)
