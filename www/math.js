@@ -183,10 +183,15 @@ function termsOf(piece) {
         cut(i);
         start = i;
       }
+    } else if ((t.ch === "=" || (t.cmd && RELATION_COMMANDS.includes(t.cmd))) && paren === 0 && i > start) {
+      // a relation inside a row of a block ("σa = 0.00996 √… = 1.9 × 10⁻⁶")
+      cut(i);
+      start = i;
     } else if (t.cmd === ";" && paren === 0) {
       cut(i);
       start = i + t.length;
-    } else if (t.ch === "," && paren === 1 && /^,\\ /.test(piece.slice(i, i + 3)) && bracketOpen(piece.slice(0, i))) {
+    } else if (t.ch === "," && /^,\\ /.test(piece.slice(i, i + 3)) && (paren === 0 || (paren === 1 && bracketOpen(piece.slice(0, i))))) {
+      // ",\ " between the items of a list, or between equations in a row
       cut(i + 1);
       start = i + 3;
     }
@@ -457,9 +462,10 @@ function tooWide(term) {
 /** The alternatives of a wide term: aligned rows, or blocks of columns. */
 function refit(term) {
   const tex = term.dataset.tex;
-  const aligned = /^\\begin\{aligned\}([\s\S]*)\\end\{aligned\}(\s*[,.;]?)$/.exec(tex.trim());
+  const aligned = /^(\\(?:small|footnotesize|scriptsize)\s*)?\\begin\{aligned\}([\s\S]*)\\end\{aligned\}(\s*[,.;]?)$/.exec(tex.trim());
   if (aligned) {
-    const rows = splitTop(aligned[1], "\\\\").map((r) => r.replace(/&/g, "").trim()).filter(Boolean);
+    const size = aligned[1] ? `${aligned[1].trim()} ` : "";
+    const rows = splitTop(aligned[2], "\\\\").map((r) => r.replace(/&/g, "").trim()).filter(Boolean).map((r) => size + r);
     const rowsNode = document.createElement("span");
     rowsNode.className = "formula-piece formula-rows formula-refit";
     rows.forEach((row, k) => rowsNode.append(...(k ? [" ", lineNode(termsOf(row))] : [lineNode(termsOf(row))])));
@@ -478,12 +484,33 @@ function refit(term) {
     for (;;) {
       const node = blocksNode(grid, per);
       term.replaceWith(node);
-      if (per === 1 || ![...node.querySelectorAll(".formula-term")].some(tooWide)) return node;
+      if (![...node.querySelectorAll(".formula-term")].some(tooWide)) return node;
+      if (per === 1) {
+        if (grid.env !== "array") return node;
+        // a table too wide even one column at a time: one line per row, "key: header = cell"
+        const lines = rowLinesNode(grid);
+        node.replaceWith(lines);
+        return lines;
+      }
       node.replaceWith(term);
       per = Math.max(1, Math.min(per - 1, Math.floor(per * 0.8)));
     }
   }
   return null;
+}
+
+/** A table as one line per data row: its first cell, then "header = cell" for the others. */
+function rowLinesNode(grid) {
+  const rows = gridRows(grid.body);
+  const [head, ...data] = rows;
+  const node = document.createElement("span");
+  node.className = "formula-piece formula-rows formula-refit";
+  data.forEach((row, k) => {
+    const terms = [`${row.cells[0]}{:}`];
+    row.cells.slice(1).forEach((cell, j) => terms.push(`${head.cells[j + 1] ?? ""} = ${cell}${j < row.cells.length - 2 ? "," : ""}`));
+    node.append(...(k ? [" ", lineNode(terms)] : [lineNode(terms)]));
+  });
+  return node;
 }
 
 function blocksNode(grid, per) {
@@ -535,7 +562,13 @@ function fitOne(formula) {
   if (formula.clientWidth === 0) return; // not laid out (hidden)
   for (const term of [...formula.querySelectorAll(".formula-term")]) {
     if (!tooWide(term)) continue;
-    const node = refit(term);
+    let node = null;
+    try {
+      node = refit(term);
+    } catch (e) {
+      // a rearrangement KaTeX cannot read: the term stays whole, scrolling
+      console.warn("formula could not be rearranged", e);
+    }
     const still = node ? [...node.querySelectorAll(".formula-term")].filter(tooWide) : [term];
     still.forEach(scrollable);
   }

@@ -1070,7 +1070,7 @@ fn first_iteration_2d(
         Step::new("Design matrix A (iteration 1)", how)
             .formula(
                 &format!(
-                    r"A_i = \left[{gain}\tfrac{{G_s(c+1,r) - G_s(c-1,r)}}{{2}},\ {gain}\tfrac{{G_s(c,r+1) - G_s(c,r-1)}}{{2}},\ G_s(c,r),\ 1\right]"
+                    r"A_i = [{gain}\tfrac{{G_s(c+1,r) - G_s(c-1,r)}}{{2}},\ {gain}\tfrac{{G_s(c,r+1) - G_s(c,r-1)}}{{2}},\ G_s(c,r),\ 1]"
                 ),
                 format!(r"A = {} = {}", bmatrix(&rows), numeric(&it.a)),
             )
