@@ -75,7 +75,8 @@ export function shader(m) {
 export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, shade = shader(m), digits = cell >= GRID.comfortable ? DIGITS : DIGITS - 1, muted = null, valueDy = 0 } = {}) {
   const rows = m.length;
   const cols = m[0].length;
-  if (title) text(ctx, title, x0, y0 - GRID.title / 2 - GRID.axis, { weight: "bold", size: FONT_SIZE });
+  const texts = []; // the boxes of the numbers written (for label placement)
+  if (title) texts.push(text(ctx, title, x0, y0 - GRID.title / 2 - GRID.axis, { weight: "bold", size: FONT_SIZE }));
   for (let r = 0; r < rows; r++) {
     for (let c = 0; c < cols; c++) {
       const v = m[r][c];
@@ -83,11 +84,13 @@ export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, sha
       ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
       if (cell >= GRID.numbersFrom && Number.isFinite(v)) {
         const size = cell < 30 ? 9.5 : cell < 40 ? FONT_SIZE_SMALL : FONT_SIZE;
-        text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
-          align: "center",
-          size,
-          color: muted && muted(c, r) ? COLORS.muted : COLORS.ink,
-        });
+        texts.push(
+          text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
+            align: "center",
+            size,
+            color: muted && muted(c, r) ? COLORS.muted : COLORS.ink,
+          }),
+        );
       }
     }
   }
@@ -96,13 +99,13 @@ export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, sha
   if (first) {
     const step = Math.max(1, Math.ceil(28 / cell));
     for (let c = 0; c < cols; c += step) {
-      text(ctx, String(first.c + c), x0 + (c + 0.5) * cell, y0 - GRID.axis / 2, { align: "center", size: 10, color: COLORS.muted });
+      texts.push(text(ctx, String(first.c + c), x0 + (c + 0.5) * cell, y0 - GRID.axis / 2, { align: "center", size: 10, color: COLORS.muted }));
     }
     for (let r = 0; r < rows; r += step) {
-      text(ctx, String(first.r + r), x0 - 4, y0 + (r + 0.5) * cell, { align: "right", size: 10, color: COLORS.muted });
+      texts.push(text(ctx, String(first.r + r), x0 - 4, y0 + (r + 0.5) * cell, { align: "right", size: 10, color: COLORS.muted }));
     }
   }
-  return { x0, y0, cell, rows, cols, w: cols * cell, h: rows * cell };
+  return { x0, y0, cell, rows, cols, w: cols * cell, h: rows * cell, texts };
 }
 
 /** Outlines cells [c, c+w) × [r, r+h) of a grid. */
