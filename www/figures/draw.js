@@ -242,7 +242,9 @@ export class Labels {
     this.ctx = ctx;
     this.bounds = { x: margin, y: margin, w: width - 2 * margin, h: height - 2 * margin };
     this.obstacles = [];
-    this.items = [];
+    this.items = []; // added, not placed yet
+    this.placed = [];
+    this.drawn = 0; // how many of the placed ones are drawn
   }
 
   /** A copy with the same obstacles and labels (to try a placement without committing to it). */
@@ -251,6 +253,8 @@ export class Labels {
     c.bounds = { ...this.bounds };
     c.obstacles = [...this.obstacles];
     c.items = [...this.items];
+    c.placed = [...this.placed];
+    c.drawn = this.drawn;
     return c;
   }
 
@@ -270,9 +274,12 @@ export class Labels {
     return this.avoid({ x: x - r, y: y - r, w: 2 * r, h: 2 * r }, pad);
   }
 
-  /** A line of the given half-width (an arrow's shaft; its head with `head`). */
-  avoidLine(x0, y0, x1, y1, halfWidth = 1.5) {
-    if ([x0, y0, x1, y1].every(Number.isFinite)) this.obstacles.push({ seg: [x0, y0, x1, y1], pad: halfWidth });
+  /**
+   * A line of the given half-width; `tag` names it for labels that may cover
+   * it (their `ignore`), e.g. the arrow a digit belongs to.
+   */
+  avoidLine(x0, y0, x1, y1, halfWidth = 1.5, tag = null) {
+    if ([x0, y0, x1, y1].every(Number.isFinite)) this.obstacles.push({ seg: [x0, y0, x1, y1], pad: halfWidth, tag });
     return this;
   }
 
@@ -292,7 +299,8 @@ export class Labels {
    * tried after `candidates`); `optional`: leave it out rather than cover something;
    * `shorter`: shorter forms of the text, tried (at every spot) when the text
    * itself fits nowhere; `within`: a box it must stay in (default the canvas); `pad`: the halo's
-   * margin beside the text (LABEL_PAD; half of it above and below).
+   * margin beside the text (LABEL_PAD; half of it above and below); `ignore`:
+   * the tag of lines it may cover.
    */
   add(str, x, y, options = {}) {
     this.items.push({ str: String(str), x, y, ...options });
@@ -314,29 +322,37 @@ export class Labels {
     return { x: cx - w / 2, y: cy - h / 2, w, h };
   }
 
-  /** Spots beside a line: its middle first, then out towards its ends, either side. */
+  /**
+   * Spots beside a line: its middle first, then out towards its ends, either
+   * side, then a little farther out, then beyond its ends.
+   */
   static along([x0, y0, x1, y1], w, h, gap) {
     const len = Math.hypot(x1 - x0, y1 - y0) || 1;
-    const nx = -(y1 - y0) / len;
-    const ny = (x1 - x0) / len;
+    const ux = (x1 - x0) / len;
+    const uy = (y1 - y0) / len;
+    const nx = -uy;
+    const ny = ux;
     // distance of a box's centre from the line so that the box just clears it
     const d = (w / 2) * Math.abs(nx) + (h / 2) * Math.abs(ny) + gap;
     const out = [];
-    for (const t of [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8]) {
-      for (const side of [-1, 1]) {
-        const cx = x0 + (x1 - x0) * t + side * nx * d;
-        const cy = y0 + (y1 - y0) * t + side * ny * d;
-        out.push({ x: cx - w / 2, y: cy - h / 2, w, h });
+    const box = (cx, cy) => ({ x: cx - w / 2, y: cy - h / 2, w, h });
+    for (const far of [0, h]) {
+      for (const t of [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9]) {
+        for (const side of [-1, 1]) out.push(box(x0 + (x1 - x0) * t + side * nx * (d + far), y0 + (y1 - y0) * t + side * ny * (d + far)));
       }
     }
+    // beyond either end, on the line's extension
+    const e = (w / 2) * Math.abs(ux) + (h / 2) * Math.abs(uy) + gap;
+    out.push(box(x1 + ux * e, y1 + uy * e), box(x0 - ux * e, y0 - uy * e));
     return out;
   }
 
-  /** How many obstacles box b covers, and how much of the box ones. */
-  cost(b) {
+  /** How many obstacles box b covers (but those tagged `ignore`), and how much of the box ones. */
+  cost(b, ignore = null) {
     let hits = 0;
     let area = 0;
     for (const o of this.obstacles) {
+      if (ignore !== null && o.tag === ignore) continue;
       if (o.box) {
         const a = overlapArea(b, o.box);
         if (a > 0) {
@@ -351,10 +367,15 @@ export class Labels {
     return { hits, area };
   }
 
-  /** Places every label (without drawing); returns [{ str, box, hits, …options }]. */
+  /**
+   * Places the labels added since the last call (without drawing them); they
+   * then count as obstacles for labels added later — so a figure can place
+   * some labels, add more obstacles, and place others. Returns the labels
+   * placed so far: [{ str, box, hits, …options }].
+   */
   place() {
-    const placed = [];
-    for (const item of this.items) {
+    const placed = this.placed;
+    for (const item of this.items.splice(0)) {
       const size = item.size ?? FONT_SIZE;
       const f = font(size, item.weight ?? "normal", item.style ?? "normal");
       const pad = item.pad ?? LABEL_PAD;
@@ -376,7 +397,7 @@ export class Labels {
         for (const b of [...boxes, ...shifted]) {
           const out = !inside(b, within);
           const onLabel = placed.some((p) => overlaps(p.box, b));
-          const { hits, area } = this.cost(b);
+          const { hits, area } = this.cost(b, item.ignore ?? null);
           const score = (out ? 1e9 : 0) + (onLabel ? 1e7 : 0) + hits * 1e4 + area;
           if (!best || score < best.score) best = { box: b, str, score, hits, out, onLabel };
           if (score === 0) break;
@@ -392,9 +413,10 @@ export class Labels {
     return placed;
   }
 
-  /** Places and draws every label; returns the placed labels. */
+  /** Places and draws every label not drawn yet; returns the placed labels. */
   draw() {
-    const placed = this.place();
+    const placed = this.place().slice(this.drawn);
+    this.drawn = this.placed.length;
     for (const p of placed) {
       const { box } = p;
       const size = p.size ?? FONT_SIZE;
@@ -410,6 +432,6 @@ export class Labels {
       this.ctx.canvas,
       placed.map((p) => ({ text: p.str, x: p.box.x, y: p.box.y, w: p.box.w, h: p.box.h, hits: p.hits })),
     );
-    return placed;
+    return this.placed;
   }
 }
