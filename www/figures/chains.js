@@ -249,19 +249,21 @@ function drawSteps(ctx, L, m, labels) {
     const ax1 = x1 - ux * shrink + nx * off;
     const ay1 = y1 - uy * shrink + ny * off;
     arrow(ctx, ax0, ay0, ax1, ay1, { color: INK.path, width, size: head });
-    labels.avoidLine(ax0, ay0, ax1, ay1, width / 2 + head * Math.sin(Math.PI / 7), `step ${k}`);
+    labels.avoidArrow(ax0, ay0, ax1, ay1, { width, size: head, tag: `step ${k}` });
     if (showDigits) {
       const mx = (ax0 + ax1) / 2;
       const my = (ay0 + ay1) / 2;
       const d = 0.24 * L.cell;
-      const spot = (t) => ({ cx: mx + nx * t, cy: my + ny * t });
+      const along = 0.22 * L.cell;
+      const spot = (t, s = 0) => ({ cx: mx + nx * t + ux * s, cy: my + ny * t + uy * s });
       labels.add(String(m.code[k]), mx, my, {
         size: L.cell >= 26 ? FONT_SIZE : FONT_SIZE_SMALL,
         weight: "bold",
         color: INK.path,
         pad: 1,
         ignore: `step ${k}`,
-        candidates: [spot(d), spot(-d), spot(1.6 * d), spot(-1.6 * d), spot(0)],
+        // left of the arrow, right of it, a little along it either way, farther out
+        candidates: [spot(d), spot(-d), spot(d, -along), spot(d, along), spot(-d, -along), spot(-d, along), spot(1.6 * d), spot(-1.6 * d), spot(0)],
       });
     }
   }
@@ -306,11 +308,19 @@ function drawProblems(ctx, L, m, labels) {
   }
 }
 
-function drawEnds(ctx, L, m, labels) {
+/** The start ring and the end dot: [x, y, radius] each (the end null for a closed path). */
+function endMarks(L, m) {
   const ps = m.code ? m.path : m.raw;
-  if (!ps.length) return;
+  if (!ps.length) return null;
   const r = Math.max(4, 0.34 * L.cell);
-  const [sx, sy] = centre(L, ps[0]);
+  const end = !m.closed && ps.length > 1 ? [...centre(L, ps[ps.length - 1]), Math.max(3, 0.18 * L.cell)] : null;
+  return { start: [...centre(L, ps[0]), r], end };
+}
+
+function drawEnds(ctx, L, m, labels) {
+  const marks = endMarks(L, m);
+  if (!marks) return;
+  const [sx, sy, r] = marks.start;
   ctx.save();
   ctx.strokeStyle = INK.start;
   ctx.lineWidth = 2.5;
@@ -318,15 +328,12 @@ function drawEnds(ctx, L, m, labels) {
   ctx.arc(sx, sy, r, 0, 2 * Math.PI);
   ctx.stroke();
   ctx.restore();
-  labels.avoidDot(sx, sy, r, 1.5);
   const spots = ["S", "N", "SW", "SE", "NW", "NE", "W", "E"];
-  labels.add("start", sx, sy, { color: INK.start, weight: "bold", size: FONT_SIZE_SMALL, gap: r + 1, candidates: spots });
-  if (!m.closed && ps.length > 1) {
-    const [ex, ey] = centre(L, ps[ps.length - 1]);
-    const er = Math.max(3, 0.18 * L.cell);
+  labels.add("start", sx, sy, { color: INK.start, weight: "bold", size: FONT_SIZE_SMALL, gap: r + 3, candidates: spots });
+  if (marks.end) {
+    const [ex, ey, er] = marks.end;
     dot(ctx, ex, ey, er, COLORS.ink);
-    labels.avoidDot(ex, ey, er, 1.5);
-    labels.add("end", ex, ey, { color: COLORS.ink, weight: "bold", size: FONT_SIZE_SMALL, gap: r + 1, candidates: spots });
+    labels.add("end", ex, ey, { color: COLORS.ink, weight: "bold", size: FONT_SIZE_SMALL, gap: er + 3, candidates: spots });
   }
 }
 
@@ -406,8 +413,13 @@ function drawFigure(ctx, width, height, solution) {
   // every label stays on the grid and off the arrows, the axes and each other
   const labels = new Labels(ctx, width, height);
   labels.bounds = { x: L.left, y: L.top, w: L.cell * L.cols, h: L.cell * L.rows };
+  const marks = endMarks(L, m);
+  if (marks) labels.avoidDot(...marks.start, 1.5);
+  if (marks?.end) labels.avoidDot(...marks.end, 1.5);
   if (m.code) drawSteps(ctx, L, m, labels);
   else drawBrokenPath(ctx, L, m);
+  // the digits belong to the path: placed before the shape's lines (which they may touch)
+  labels.place();
   const axisLabels = drawShape(ctx, L, m.res, labels);
   drawEnds(ctx, L, m, labels);
   drawProblems(ctx, L, m, labels);

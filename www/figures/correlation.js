@@ -263,7 +263,7 @@ function draw1d(ctx, width, height, solution, state) {
       const pad = L.cell >= 30 ? LABEL_PAD : 1;
       const lh = size * LINE_HEIGHT + pad;
       // below a negative bar's end, or just above the axis, or lower down
-      const spots = r >= 0 ? ["N", { at: "N", dy: -6 }, { at: "N", dy: -12 }] : ["S", { cx, cy: L.yZero - 2 - lh / 2 }, { at: "S", dy: lh }, { at: "S", dy: 2 * lh }];
+      const spots = r >= 0 ? ["N", { at: "N", dy: -6 }, { at: "N", dy: -12 }] : ["S", { cx, cy: L.yZero - 2 - lh / 2 }, { at: "S", dy: lh }, { at: "S", dy: 2 * lh }, { at: "S", dy: 3 * lh }];
       labels.add(formatNumber(r, 2), cx, end, {
         size,
         pad,

@@ -269,9 +269,10 @@ export class Labels {
     return this.avoid({ x: Math.min(x, x + w), y: Math.min(y, y + h), w: Math.abs(w), h: Math.abs(h) }, pad);
   }
 
-  /** A dot of radius r (plus pad). */
+  /** A dot (or ring) of radius r, plus pad. */
   avoidDot(x, y, r, pad = 1) {
-    return this.avoid({ x: x - r, y: y - r, w: 2 * r, h: 2 * r }, pad);
+    if ([x, y, r].every(Number.isFinite)) this.obstacles.push({ circle: [x, y, r + pad] });
+    return this;
   }
 
   /**
@@ -280,6 +281,16 @@ export class Labels {
    */
   avoidLine(x0, y0, x1, y1, halfWidth = 1.5, tag = null) {
     if ([x0, y0, x1, y1].every(Number.isFinite)) this.obstacles.push({ seg: [x0, y0, x1, y1], pad: halfWidth, tag });
+    return this;
+  }
+
+  /** An arrow drawn by arrow(): its shaft and, at (x1, y1), its head. */
+  avoidArrow(x0, y0, x1, y1, { width = 1.5, size = ARROW_HEAD, tag = null } = {}) {
+    this.avoidLine(x0, y0, x1, y1, width / 2 + 0.5, tag);
+    const len = Math.hypot(x1 - x0, y1 - y0) || 1;
+    const hx = x1 - ((x1 - x0) / len) * size * 0.55;
+    const hy = y1 - ((y1 - y0) / len) * size * 0.55;
+    if ([hx, hy].every(Number.isFinite)) this.obstacles.push({ circle: [hx, hy, size * 0.55], tag });
     return this;
   }
 
@@ -297,8 +308,8 @@ export class Labels {
    * `gap`: the distance of a compass spot from the anchor; `along`: [x0, y0, x1, y1],
    * a line the label should sit beside (spots on both sides, from its middle out,
    * tried after `candidates`); `optional`: leave it out rather than cover something;
-   * `shorter`: shorter forms of the text, tried (at every spot) when the text
-   * itself fits nowhere; `within`: a box it must stay in (default the canvas); `pad`: the halo's
+   * `shorter`: shorter forms of the text (strings, or { text, size } for a
+   * smaller size too), tried (at every spot) when the text itself fits nowhere; `within`: a box it must stay in (default the canvas); `pad`: the halo's
    * margin beside the text (LABEL_PAD; half of it above and below); `ignore`:
    * the tag of lines it may cover.
    */
@@ -336,14 +347,14 @@ export class Labels {
     const d = (w / 2) * Math.abs(nx) + (h / 2) * Math.abs(ny) + gap;
     const out = [];
     const box = (cx, cy) => ({ x: cx - w / 2, y: cy - h / 2, w, h });
-    for (const far of [0, h]) {
-      for (const t of [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9]) {
+    const e = (w / 2) * Math.abs(ux) + (h / 2) * Math.abs(uy) + gap;
+    for (const far of [0, h, 2 * h]) {
+      for (const t of [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0, 1]) {
         for (const side of [-1, 1]) out.push(box(x0 + (x1 - x0) * t + side * nx * (d + far), y0 + (y1 - y0) * t + side * ny * (d + far)));
       }
+      // beyond either end, on the line's extension
+      out.push(box(x1 + ux * (e + far), y1 + uy * (e + far)), box(x0 - ux * (e + far), y0 - uy * (e + far)));
     }
-    // beyond either end, on the line's extension
-    const e = (w / 2) * Math.abs(ux) + (h / 2) * Math.abs(uy) + gap;
-    out.push(box(x1 + ux * e, y1 + uy * e), box(x0 - ux * e, y0 - uy * e));
     return out;
   }
 
@@ -358,6 +369,14 @@ export class Labels {
         if (a > 0) {
           hits += 1;
           area += a;
+        }
+      } else if (o.circle) {
+        const [cx, cy, r] = o.circle;
+        const dx = cx - Math.min(Math.max(cx, b.x), b.x + b.w);
+        const dy = cy - Math.min(Math.max(cy, b.y), b.y + b.h);
+        if (dx * dx + dy * dy < r * r) {
+          hits += 1;
+          area += 4;
         }
       } else if (segmentHitsBox(...o.seg, grow(b, o.pad))) {
         hits += 1;
@@ -376,15 +395,17 @@ export class Labels {
   place() {
     const placed = this.placed;
     for (const item of this.items.splice(0)) {
-      const size = item.size ?? FONT_SIZE;
-      const f = font(size, item.weight ?? "normal", item.style ?? "normal");
       const pad = item.pad ?? LABEL_PAD;
-      const h = size * LINE_HEIGHT + pad;
       const gap = item.gap ?? 4;
       const within = item.within ?? this.bounds;
       let best = null;
-      // the text, then its shorter forms, each at every spot
-      for (const str of [item.str, ...(item.shorter ?? [])]) {
+      // the text, then its shorter (or smaller) forms, each at every spot
+      const forms = [item.str, ...(item.shorter ?? [])].map((v) => (typeof v === "string" ? { text: v } : v));
+      for (const form of forms) {
+        const str = form.text;
+        const size = form.size ?? item.size ?? FONT_SIZE;
+        const f = font(size, item.weight ?? "normal", item.style ?? "normal");
+        const h = size * LINE_HEIGHT + pad;
         const w = measure(this.ctx, str, f) + 2 * pad;
         const boxes = (item.candidates ?? (item.along ? [] : ["C"])).map((c) => Labels.spot(c, item.x, item.y, w, h, gap));
         if (item.along) boxes.push(...Labels.along(item.along, w, h, gap));
@@ -399,14 +420,15 @@ export class Labels {
           const onLabel = placed.some((p) => overlaps(p.box, b));
           const { hits, area } = this.cost(b, item.ignore ?? null);
           const score = (out ? 1e9 : 0) + (onLabel ? 1e7 : 0) + hits * 1e4 + area;
-          if (!best || score < best.score) best = { box: b, str, score, hits, out, onLabel };
+          if (globalThis.__labelsDebug === str) console.log("cand", JSON.stringify(b), out, onLabel, hits, area, JSON.stringify(this.obstacles.filter((o) => (o.box ? overlapArea(b, o.box) > 0 : o.seg ? segmentHitsBox(...o.seg, grow(b, o.pad)) : false))));
+          if (!best || score < best.score) best = { box: b, str, size, score, hits, out, onLabel };
           if (score === 0) break;
         }
         if (best.score === 0) break;
       }
       if (globalThis.__labelsDebug) console.log("label", item.str, JSON.stringify(best));
       if (!best || ((best.out || best.onLabel || best.hits) && item.optional)) continue;
-      const p = { ...item, str: best.str, box: best.box, hits: best.hits };
+      const p = { ...item, str: best.str, size: best.size, box: best.box, hits: best.hits };
       placed.push(p);
       this.obstacles.push({ box: best.box });
     }

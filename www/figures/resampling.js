@@ -162,10 +162,10 @@ function draw(ctx, width, d) {
   // below the centre, lower down (clear of a weight line), then outwards
   const below = [0, 0.12, 0.22, 0.3].map((f) => ({ at: "S", dy: f * L.cell }));
   const corners = [
-    [d.bl.c, d.bl.r, [...below, "SW", "W", "NW", "SE"]],
-    [d.bl.c + 1, d.bl.r, [...below, "SE", "E", "NE", "SW"]],
-    [d.bl.c, d.bl.r + 1, [...below, "SW", "W", "NW", "SE"]],
-    [d.bl.c + 1, d.bl.r + 1, [...below, "SE", "E", "NE", "SW"]],
+    [d.bl.c, d.bl.r, [...below, "W", "SW", "NW", "SE"]],
+    [d.bl.c + 1, d.bl.r, [...below, "E", "SE", "NE", "SW"]],
+    [d.bl.c, d.bl.r + 1, [...below, "W", "SW", "NW", "SE"]],
+    [d.bl.c + 1, d.bl.r + 1, [...below, "E", "SE", "NE", "SW"]],
   ];
   const weightLabels = [];
   corners.forEach(([c, r, spots], i) => {
@@ -202,7 +202,7 @@ function draw(ctx, width, d) {
   const iStyle = { size: FONT_SIZE_SMALL, color: COLORS.imageSystem, weight: "bold", gap: R.marker + 2 };
   const withLabels = (short) => {
     const all = labels.copy();
-    for (const [str, x, y, spots, number] of weightLabels) all.add(short ? number : str, x, y, { size: 10, weight: "bold", color: COLORS.highlight, gap: 4, candidates: spots });
+    for (const [str, x, y, spots, number] of weightLabels) all.add(short ? number : str, x, y, { size: 10, weight: "bold", color: COLORS.highlight, gap: 3, pad: 1.5, candidates: spots, shorter: short ? [{ text: number, size: 9 }] : [] });
     all.add("I₁", ix, iy1, { ...iStyle, candidates: ["NE", "NW", "E", "W", "N", { at: "NE", dx: 4 }] });
     all.add("I₂", ix, iy2, { ...iStyle, candidates: ["SE", "SW", "E", "W", "S", { at: "SE", dx: 4 }] });
     return all;
