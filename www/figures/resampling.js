@@ -202,9 +202,9 @@ function draw(ctx, width, d) {
   const iStyle = { size: FONT_SIZE_SMALL, color: COLORS.imageSystem, weight: "bold", gap: R.marker + 2 };
   const withLabels = (short) => {
     const all = labels.copy();
-    for (const [str, x, y, spots, number] of weightLabels) all.add(short ? number : str, x, y, { size: 10, weight: "bold", color: COLORS.highlight, gap: 3, pad: 1.5, candidates: spots, shorter: short ? [{ text: number, size: 9 }] : [] });
-    all.add("I₁", ix, iy1, { ...iStyle, candidates: ["NE", "NW", "E", "W", "N", { at: "NE", dx: 4 }] });
-    all.add("I₂", ix, iy2, { ...iStyle, candidates: ["SE", "SW", "E", "W", "S", { at: "SE", dx: 4 }] });
+    for (const [str, x, y, spots, number] of weightLabels) all.add(short ? number : str, x, y, { size: 10, weight: "bold", color: COLORS.highlight, gap: 3, pad: 1.5, candidates: spots, farther: R.dot + 3, shorter: short ? [{ text: number, size: 9 }] : [] });
+    all.add("I₁", ix, iy1, { ...iStyle, candidates: ["NE", "NW", "E", "W", "N", "SE", "SW"], farther: R.dot + 3 });
+    all.add("I₂", ix, iy2, { ...iStyle, candidates: ["SE", "SW", "E", "W", "S", "NE", "NW"], farther: R.dot + 3 });
     return all;
   };
   // the weights as "w=0.426" where they all fit, else all as plain numbers
