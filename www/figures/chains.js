@@ -266,7 +266,7 @@ function drawSteps(ctx, L, m, labels) {
         pad: 1,
         ignore: `step ${k}`,
         // left of the arrow, right of it, a little along it either way, farther out
-        candidates: [spot(d), spot(-d), spot(d, -along), spot(d, along), spot(-d, -along), spot(-d, along), spot(1.6 * d), spot(-1.6 * d), spot(0)],
+        candidates: [spot(d), spot(-d), spot(d, -along), spot(d, along), spot(-d, -along), spot(-d, along), spot(1.6 * d), spot(-1.6 * d), spot(0), spot(2.4 * d), spot(-2.4 * d)],
       });
     }
   }

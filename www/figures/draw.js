@@ -169,8 +169,10 @@ export function finite(value, fallback = 0) {
 // (dots, bars, lines, arrows, other texts); `draw()` puts each label, in the
 // order added, at its first candidate that stays inside the canvas and covers
 // nothing, and writes it on a halo. When every candidate collides, the one
-// that covers least is taken (never one outside the canvas or over another
-// label, if any is left); an `optional` label is then left out instead.
+// that covers least is taken (inside the canvas if any is); an `optional`
+// label is then left out instead. A label is never put over another label:
+// one that fits nowhere else is left out (its figure's text alternative and
+// the text beside the figure carry every number).
 // The boxes placed are recorded on the canvas (`canvas.labelBoxes`, and as
 // JSON in its `data-label-boxes`) so tests can check that none overlap.
 
@@ -436,7 +438,8 @@ export class Labels {
         if (best.score === 0) break;
       }
       if (globalThis.__labelsDebug) console.log("label", item.str, JSON.stringify(best));
-      if (!best || ((best.out || best.onLabel || best.hits) && item.optional)) continue;
+      // never over another label: one that fits nowhere else is left out
+      if (!best || best.onLabel || ((best.out || best.hits) && item.optional)) continue;
       const p = { ...item, str: best.str, size: best.size, box: best.box, hits: best.hits };
       placed.push(p);
       this.obstacles.push({ box: best.box });
