@@ -99,6 +99,23 @@ export function textWidth(str, size = FONT_SIZE, weight = "normal") {
   return scratch.measureText(str).width;
 }
 
+/** Splits `str` at spaces into lines no wider than `max` CSS px (a longer word keeps its own line). */
+export function wrapWords(str, max, size = FONT_SIZE, weight = "normal") {
+  const lines = [];
+  let cur = "";
+  for (const word of String(str).split(" ")) {
+    const next = cur ? `${cur} ${word}` : word;
+    if (cur && textWidth(next, size, weight) > max) {
+      lines.push(cur);
+      cur = word;
+    } else {
+      cur = next;
+    }
+  }
+  if (cur) lines.push(cur);
+  return lines;
+}
+
 /**
  * Writes one line of text; with `halo` a translucent white box behind it keeps
  * it readable over lines. Returns its box {x, y, w, h}.
