@@ -626,17 +626,18 @@ function drawParabola(ctx, width, height, solution) {
   const X = (c) => m.left + ((c - cLo) / (cHi - cLo)) * (width - m.left - m.right);
   const Y = (r) => m.top + ((yHi - r) / (yHi - yLo)) * (height - m.top - m.bottom);
   // axes
+  const labels = new Labels(ctx, width, height);
   line(ctx, m.left, height - m.bottom, width - m.right, height - m.bottom, { color: COLORS.ink });
   line(ctx, m.left, m.top, m.left, height - m.bottom, { color: COLORS.ink });
-  text(ctx, "c (column)", width - m.right, height - 8, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
-  text(ctx, "ρ", m.left - 8, m.top - 10, { color: COLORS.muted, weight: "bold", align: "right" });
+  labels.avoid(text(ctx, "c (column)", width - m.right, height - 8, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" }));
+  labels.avoid(text(ctx, "ρ", m.left - 8, m.top - 10, { color: COLORS.muted, weight: "bold", align: "right" }));
   for (const v of niceTicks(yLo, yHi)) {
     line(ctx, m.left - 4, Y(v), m.left, Y(v), { color: COLORS.ink });
-    text(ctx, formatNumber(v, 3), m.left - 6, Y(v), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
+    labels.avoid(text(ctx, formatNumber(v, 3), m.left - 6, Y(v), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" }));
   }
   for (const c of d.x) {
     line(ctx, X(c), height - m.bottom, X(c), height - m.bottom + 4, { color: COLORS.ink });
-    text(ctx, formatNumber(c, 6), X(c), height - m.bottom + 6, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "center", baseline: "top" });
+    labels.avoid(text(ctx, formatNumber(c, 6), X(c), height - m.bottom + 6, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "center", baseline: "top" }));
   }
   // the curve
   ctx.save();
@@ -646,19 +647,34 @@ function drawParabola(ctx, width, height, solution) {
   samples.forEach((c, i) => (i ? ctx.lineTo(X(c), Y(f(c))) : ctx.moveTo(X(c), Y(f(c)))));
   ctx.stroke();
   ctx.restore();
+  // labels off the curve, the dots, the peak's line and each other
+  labels.avoidPath(
+    samples.map((c) => [X(c), Y(f(c))]),
+    1.5,
+  );
+  labels.avoidLine(m.left, height - m.bottom, width - m.right, height - m.bottom, 1).avoidLine(m.left, m.top, m.left, height - m.bottom, 1);
   d.x.forEach((c, i) => {
     dot(ctx, X(c), Y(d.y[i]), 5, COLORS.ink);
-    text(ctx, `ρ = ${formatNumber(d.y[i], RHO_DIGITS)}`, X(c) + 7, Y(d.y[i]) + 12, { color: COLORS.ink, size: FONT_SIZE_SMALL, halo: true });
+    labels.avoidDot(X(c), Y(d.y[i]), 5);
   });
   if (isNum(d.printedC)) {
     line(ctx, X(d.printedC), m.top, X(d.printedC), height - m.bottom, { color: COLORS.muted, dash: DASH });
-    text(ctx, `peak from the printed ρ: ${formatNumber(d.printedC, 6)}`, X(d.printedC) - 4, height - m.bottom - 4, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right", baseline: "bottom", halo: true });
+    labels.avoidLine(X(d.printedC), m.top, X(d.printedC), height - m.bottom, 1);
   }
   if (isNum(d.cMax)) {
     line(ctx, X(d.cMax), Y(d.rhoMax), X(d.cMax), height - m.bottom, { color: COLORS.highlight, dash: DASH, width: 1.5 });
     dot(ctx, X(d.cMax), Y(d.rhoMax), 5.5, COLORS.highlight);
-    text(ctx, `peak c = ${formatNumber(d.cMax, 6)}`, X(d.cMax) + 6, Y(d.rhoMax) - 12, { color: COLORS.highlight, weight: "bold", halo: true });
-  } else {
+    labels.avoidLine(X(d.cMax), Y(d.rhoMax), X(d.cMax), height - m.bottom, 1).avoidDot(X(d.cMax), Y(d.rhoMax), 5.5);
+  }
+  d.x.forEach((c, i) => {
+    labels.add(`ρ = ${formatNumber(d.y[i], RHO_DIGITS)}`, X(c), Y(d.y[i]), { color: COLORS.ink, size: FONT_SIZE_SMALL, gap: 7, candidates: ["SE", "SW", "NE", "NW", "E", "W", "S", "N"], farther: 10 });
+  });
+  if (isNum(d.cMax)) labels.add(`peak c = ${formatNumber(d.cMax, 6)}`, X(d.cMax), Y(d.rhoMax), { color: COLORS.highlight, weight: "bold", gap: 8, candidates: ["NE", "N", "NW", "E", "W"], farther: 10 });
+  if (isNum(d.printedC)) {
+    labels.add(`peak from the printed ρ: ${formatNumber(d.printedC, 6)}`, X(d.printedC), height - m.bottom - 4, { color: COLORS.muted, size: FONT_SIZE_SMALL, gap: 4, candidates: ["NW", "NE"], farther: 16 });
+  }
+  labels.draw();
+  if (!isNum(d.cMax)) {
     textBlock(ctx, [{ text: d.extremum === "minimum" ? "Opens upward: a minimum, no peak" : "A straight line: no peak", weight: "bold", color: COLORS.point }], m.left + 10, m.top);
   }
 }
