@@ -498,7 +498,9 @@ const imageSpec = {
     const cands = stepValue(solution, "candidates");
     if (isMatrix(cands)) for (const p of cands) dot(ctx, X(p[0] - 0.5), Y(p[1] - 0.5), Math.max(1.2, L.cell * 0.16), COLORS.highlight);
     const pts = Array.isArray(r.points) ? r.points : [];
+    const labels = new Labels(ctx, width, height);
     for (const p of pts) {
+      labels.avoidDot(X(p[0] - 0.5), Y(p[1] - 0.5), Math.max(4, L.cell * 0.9), 2);
       ctx.save();
       ctx.strokeStyle = "#ffffff";
       ctx.lineWidth = 4;
@@ -523,6 +525,7 @@ const imageSpec = {
     ctx.lineWidth = 2;
     ctx.strokeRect(X(c0 - half), Y(r0 - half), size * L.cell, size * L.cell);
     ctx.restore();
+    labels.avoidRect(X(c0 - half), Y(r0 - half), size * L.cell, size * L.cell, 2);
     const T = finite(inp.threshold_px, 0.5);
     const cx = X(c0 + 0.5);
     const cy = Y(r0 + 0.5);
@@ -539,7 +542,9 @@ const imageSpec = {
       ctx.strokeRect(X(ref.c - 1 - half), Y(ref.r - 1 - half), size * L.cell, size * L.cell);
       ctx.restore();
       drawEllipse(ctx, rx, ry, rT / T, ref, rT * IMAGE.clip * 0.7);
-      text(ctx, ref.case, rx, Y(ref.r - 1 - half) - 4, { align: "center", baseline: "bottom", size: FONT_SIZE_SMALL, weight: "bold", halo: true });
+      labels.avoidDot(rx, ry, rT * IMAGE.clip * 0.7, 0); // the ellipse at most (it is clipped there)
+      // the case's name beside its window (above first), off the interest points and the other names
+      labels.add(ref.case, rx, ry, { size: FONT_SIZE_SMALL, weight: "bold", gap: (size * L.cell) / 2 + 2, candidates: ["N", "S", "W", "E", "NW", "NE", "SW", "SE"], farther: rT * IMAGE.clip * 0.7 - (size * L.cell) / 2, within: { x: X(0), y: Y(0), w: L.side * L.cell, h: L.side * L.cell } });
     }
     drawEllipse(ctx, cx, cy, rT / T, r, rT * IMAGE.clip);
     ctx.save();
@@ -550,6 +555,8 @@ const imageSpec = {
     ctx.arc(cx, cy, rT, 0, 2 * Math.PI);
     ctx.stroke();
     ctx.restore();
+    labels.avoidDot(cx, cy, rT, 1);
+    labels.draw();
     const magnification = rT / T / L.cell;
     let y = L.y0 + L.side * L.cell + 14;
     const lh = FONT_SIZE * LINE_HEIGHT + 2;
