@@ -448,13 +448,11 @@ export class Labels {
           const onLabel = placed.some((p) => overlaps(p.box, b));
           const { hits, area } = this.cost(b, item.ignore ?? null);
           const score = (out ? 1e9 : 0) + (onLabel ? 1e7 : 0) + hits * 1e4 + area;
-          if (globalThis.__labelsDebug === str) console.log("cand", JSON.stringify(b), out, onLabel, hits, area, JSON.stringify(this.obstacles.filter((o) => (o.box ? overlapArea(b, o.box) > 0 : o.seg ? segmentHitsBox(...o.seg, grow(b, o.pad)) : false))));
           if (!best || score < best.score) best = { box: b, str, size, score, hits, out, onLabel };
           if (score === 0) break;
         }
         if (best.score === 0) break;
       }
-      if (globalThis.__labelsDebug) console.log("label", item.str, JSON.stringify(best));
       // never over another label: one that fits nowhere else is left out
       if (!best || best.onLabel || ((best.out || best.hits) && item.optional)) continue;
       const p = { ...item, str: best.str, size: best.size, box: best.box, hits: best.hits };
