@@ -190,8 +190,12 @@ export function finite(value, fallback = 0) {
 // label is then left out instead. A label is never put over another label:
 // one that fits nowhere else is left out (its figure's text alternative and
 // the text beside the figure carry every number).
+// Each candidate is also tried shifted into the canvas. A figure may place
+// some labels (`place()`), register more marks and add more labels: marks
+// registered later do not move labels already placed.
 // The boxes placed are recorded on the canvas (`canvas.labelBoxes`, and as
-// JSON in its `data-label-boxes`) so tests can check that none overlap.
+// JSON in its `data-label-boxes`: { text, x, y, w, h, hits }, hits = how many
+// registered marks the label covers) so tests can check that none overlap.
 
 /** Unit offsets of the compass spots ("C" = centred on the anchor). */
 const COMPASS = Object.freeze({
@@ -205,9 +209,6 @@ const COMPASS = Object.freeze({
   W: [-1, 0],
   NW: [-1, -1],
 });
-
-/** The eight spots around an anchor, right and above first. */
-export const AROUND = Object.freeze(["NE", "E", "N", "SE", "S", "NW", "W", "SW"]);
 
 /** Whether the segment (x0, y0)–(x1, y1) passes through box b (Liang–Barsky). */
 export function segmentHitsBox(x0, y0, x1, y1, b) {
