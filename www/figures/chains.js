@@ -16,7 +16,7 @@
 // an L-shape.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, arrow, dot, finite, line, text, textWidth } from "./draw.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, dot, finite, line, text, textWidth } from "./draw.js";
 
 /** Layout (CSS px) and the smallest grid shown (cells). */
 const LAYOUT = Object.freeze({ margin: 12, axis: 24, maxCell: 44, minCols: 13, minRows: 9, infoGap: 10, labelMinCell: 15, axisLabelMinPx: 18 });
@@ -218,14 +218,19 @@ function fillCells(ctx, L, pixels, color) {
   ctx.restore();
 }
 
-/** The steps of the path as arrows with their digits; out-and-back steps are kept apart by a sideways offset. */
-function drawSteps(ctx, L, m) {
+/**
+ * The steps of the path as arrows with their digits (placed by `labels`:
+ * left of the travel direction, else right of it); out-and-back steps are
+ * kept apart by a sideways offset.
+ */
+function drawSteps(ctx, L, m, labels) {
   const n = m.path.length;
   if (n < 2 || !m.code) return;
   const steps = m.code.length;
   const off = 0.14 * L.cell;
   const showDigits = L.cell >= LAYOUT.labelMinCell;
   const head = Math.max(4, Math.min(10, L.cell * 0.28));
+  const width = L.cell >= 20 ? 2.2 : 1.3;
   for (let k = 0; k < steps; k++) {
     const a = m.path[k];
     const b = m.path[(k + 1) % n];
@@ -239,11 +244,30 @@ function drawSteps(ctx, L, m) {
     const shrink = 0.1 * L.cell;
     const ux = (x1 - x0) / len;
     const uy = (y1 - y0) / len;
-    arrow(ctx, x0 + ux * shrink + nx * off, y0 + uy * shrink + ny * off, x1 - ux * shrink + nx * off, y1 - uy * shrink + ny * off, { color: INK.path, width: L.cell >= 20 ? 2.2 : 1.3, size: head });
+    const ax0 = x0 + ux * shrink + nx * off;
+    const ay0 = y0 + uy * shrink + ny * off;
+    const ax1 = x1 - ux * shrink + nx * off;
+    const ay1 = y1 - uy * shrink + ny * off;
+    arrow(ctx, ax0, ay0, ax1, ay1, { color: INK.path, width, size: head });
+    labels.avoidArrow(ax0, ay0, ax1, ay1, { width, size: head, tag: `step ${k}` });
     if (showDigits) {
-      const mx = (x0 + x1) / 2 + nx * (off + 0.24 * L.cell);
-      const my = (y0 + y1) / 2 + ny * (off + 0.24 * L.cell);
-      text(ctx, String(m.code[k]), mx, my, { size: L.cell >= 26 ? FONT_SIZE : FONT_SIZE_SMALL, weight: "bold", color: INK.path, align: "center", halo: true });
+      const mx = (ax0 + ax1) / 2;
+      const my = (ay0 + ay1) / 2;
+      // far enough from the arrow for the digit's box to clear it
+      const size = L.cell >= 26 ? FONT_SIZE : FONT_SIZE_SMALL;
+      const half = [textWidth(String(m.code[k]), size, "bold") / 2 + 1, (size * LINE_HEIGHT + 1) / 2];
+      const d = Math.max(0.24 * L.cell, Math.abs(nx) * half[0] + Math.abs(ny) * half[1] + width / 2 + 1);
+      const along = 0.22 * L.cell;
+      const spot = (t, s = 0) => ({ cx: mx + nx * t + ux * s, cy: my + ny * t + uy * s });
+      labels.add(String(m.code[k]), mx, my, {
+        size,
+        weight: "bold",
+        color: INK.path,
+        pad: 1,
+        ignore: `step ${k}`,
+        // left of the arrow, right of it, a little along it either way, farther out
+        candidates: [spot(d), spot(-d), spot(d, -along), spot(d, along), spot(-d, -along), spot(-d, along), spot(1.6 * d), spot(-1.6 * d), spot(0), spot(2.4 * d), spot(-2.4 * d)],
+      });
     }
   }
 }
@@ -259,7 +283,7 @@ function drawBrokenPath(ctx, L, m) {
   }
 }
 
-function drawProblems(ctx, L, m) {
+function drawProblems(ctx, L, m, labels) {
   for (const b of m.breaks) {
     if (b.length < 5) continue;
     const [x0, y0] = centre(L, [b[1], b[2]]);
@@ -267,8 +291,9 @@ function drawProblems(ctx, L, m) {
     line(ctx, x0, y0, x1, y1, { color: INK.broken, width: 2, dash: DASH });
     const mx = (x0 + x1) / 2;
     const my = (y0 + y1) / 2;
-    text(ctx, "✕", mx, my, { color: INK.broken, weight: "bold", align: "center" });
-    text(ctx, `break ${b[0]}→${b[0] + 1}`, mx, my + Math.max(12, 0.6 * L.cell), { color: INK.broken, weight: "bold", size: FONT_SIZE_SMALL, align: "center", halo: true });
+    labels.avoid(text(ctx, "✕", mx, my, { color: INK.broken, weight: "bold", align: "center" }));
+    labels.avoidLine(x0, y0, x1, y1, 1);
+    labels.add(`break ${b[0]}→${b[0] + 1}`, mx, my, { color: INK.broken, weight: "bold", size: FONT_SIZE_SMALL, gap: 8, candidates: ["S", "N", "E", "W", "SE", "NE", "SW", "NW"] });
   }
   for (const b of m.branches) {
     if (b.length < 4) continue;
@@ -280,15 +305,25 @@ function drawProblems(ctx, L, m) {
     ctx.arc(x, y, Math.max(6, 0.48 * L.cell), 0, 2 * Math.PI);
     ctx.stroke();
     ctx.restore();
-    text(ctx, `branch: pixel ${b[0]} = pixel ${b[1]}`, x, y - 0.5 * L.cell - 8, { color: INK.broken, weight: "bold", size: FONT_SIZE_SMALL, align: "center", halo: true });
+    const ring = Math.max(6, 0.48 * L.cell);
+    labels.avoidDot(x, y, ring, 1.5);
+    labels.add(`branch: pixel ${b[0]} = pixel ${b[1]}`, x, y, { color: INK.broken, weight: "bold", size: FONT_SIZE_SMALL, gap: ring + 3, candidates: ["N", "S", "NE", "SE", "NW", "SW", "E", "W"] });
   }
 }
 
-function drawEnds(ctx, L, m) {
+/** The start ring and the end dot: [x, y, radius] each (the end null for a closed path). */
+function endMarks(L, m) {
   const ps = m.code ? m.path : m.raw;
-  if (!ps.length) return;
+  if (!ps.length) return null;
   const r = Math.max(4, 0.34 * L.cell);
-  const [sx, sy] = centre(L, ps[0]);
+  const end = !m.closed && ps.length > 1 ? [...centre(L, ps[ps.length - 1]), Math.max(3, 0.18 * L.cell)] : null;
+  return { start: [...centre(L, ps[0]), r], end };
+}
+
+function drawEnds(ctx, L, m, labels) {
+  const marks = endMarks(L, m);
+  if (!marks) return;
+  const [sx, sy, r] = marks.start;
   ctx.save();
   ctx.strokeStyle = INK.start;
   ctx.lineWidth = 2.5;
@@ -296,18 +331,21 @@ function drawEnds(ctx, L, m) {
   ctx.arc(sx, sy, r, 0, 2 * Math.PI);
   ctx.stroke();
   ctx.restore();
-  text(ctx, "start", sx, sy + r + 8, { color: INK.start, weight: "bold", size: FONT_SIZE_SMALL, align: "center", halo: true });
-  if (!m.closed && ps.length > 1) {
-    const [ex, ey] = centre(L, ps[ps.length - 1]);
-    dot(ctx, ex, ey, Math.max(3, 0.18 * L.cell), COLORS.ink);
-    text(ctx, "end", ex, ey + r + 8, { color: COLORS.ink, weight: "bold", size: FONT_SIZE_SMALL, align: "center", halo: true });
+  const spots = ["S", "N", "SW", "SE", "NW", "NE", "W", "E"];
+  labels.add("start", sx, sy, { color: INK.start, weight: "bold", size: FONT_SIZE_SMALL, gap: r + 3, candidates: spots });
+  if (marks.end) {
+    const [ex, ey, er] = marks.end;
+    dot(ctx, ex, ey, er, COLORS.ink);
+    labels.add("end", ex, ey, { color: COLORS.ink, weight: "bold", size: FONT_SIZE_SMALL, gap: er + 3, candidates: spots });
   }
 }
 
 const toCanvas = (L, p) => [L.left + (p[0] - L.c0 + 0.5) * L.cell, L.top + (p[1] - L.r0 + 0.5) * L.cell];
 
-function drawShape(ctx, L, res) {
-  if (typeof res.diameter !== "number") return;
+/** Draws the axes and the basic rectangle; returns the axes' labels [text, line, colour]. */
+function drawShape(ctx, L, res, labels) {
+  if (typeof res.diameter !== "number") return [];
+  const axisLabels = [];
   const rect = pixelList(res.basic_rectangle);
   if (rect.length === 4) {
     ctx.save();
@@ -323,6 +361,11 @@ function drawShape(ctx, L, res) {
     ctx.closePath();
     ctx.stroke();
     ctx.restore();
+    labels.avoidPath(
+      rect.map((p) => toCanvas(L, p)),
+      1,
+      true,
+    );
   }
   const major = pixelList(res.major_axis);
   if (major.length === 2) {
@@ -331,15 +374,18 @@ function drawShape(ctx, L, res) {
     line(ctx, x0, y0, x1, y1, { color: INK.major, width: 3 });
     dot(ctx, x0, y0, 4, INK.major);
     dot(ctx, x1, y1, 4, INK.major);
-    text(ctx, `D = ${fmt(res.diameter, 4)}`, (x0 + x1) / 2, (y0 + y1) / 2 - 12, { color: "#9a4a00", weight: "bold", align: "center", halo: true });
+    labels.avoidLine(x0, y0, x1, y1, 2).avoidDot(x0, y0, 4).avoidDot(x1, y1, 4);
+    axisLabels.push([`D = ${fmt(res.diameter, 4)}`, [x0, y0, x1, y1], "#9a4a00"]);
   }
   const minor = pixelList(res.minor_axis);
   if (minor.length === 2 && finite(res.minor_axis_length) > 0) {
     const [x0, y0] = toCanvas(L, minor[0]);
     const [x1, y1] = toCanvas(L, minor[1]);
     line(ctx, x0, y0, x1, y1, { color: INK.minor, width: 2.5 });
-    text(ctx, `m = ${fmt(res.minor_axis_length, 4)}`, x1, y1 + (y1 >= y0 ? 12 : -12), { color: INK.minor, weight: "bold", align: "center", halo: true });
+    labels.avoidLine(x0, y0, x1, y1, 2);
+    axisLabels.push([`m = ${fmt(res.minor_axis_length, 4)}`, [x0, y0, x1, y1], INK.minor]);
   }
+  return axisLabels;
 }
 
 function figureHeight(width, solution) {
@@ -367,11 +413,24 @@ function drawFigure(ctx, width, height, solution) {
     ctx.restore();
   }
   fillCells(ctx, L, m.code ? m.path : m.raw, INK.pathFill);
-  if (m.code) drawSteps(ctx, L, m);
+  // every label stays on the grid and off the arrows, the axes and each other
+  const labels = new Labels(ctx, width, height);
+  labels.bounds = { x: L.left, y: L.top, w: L.cell * L.cols, h: L.cell * L.rows };
+  const marks = endMarks(L, m);
+  if (marks) labels.avoidDot(...marks.start, 1.5);
+  if (marks?.end) labels.avoidDot(...marks.end, 1.5);
+  if (m.code) drawSteps(ctx, L, m, labels);
   else drawBrokenPath(ctx, L, m);
-  drawShape(ctx, L, m.res);
-  drawEnds(ctx, L, m);
-  drawProblems(ctx, L, m);
+  // the digits belong to the path: placed before the shape's lines (which they may touch)
+  labels.place();
+  const axisLabels = drawShape(ctx, L, m.res, labels);
+  drawEnds(ctx, L, m, labels);
+  drawProblems(ctx, L, m, labels);
+  // each axis named beside it, as near its middle as the path allows
+  for (const [str, along, color] of axisLabels) {
+    labels.add(str, (along[0] + along[2]) / 2, (along[1] + along[3]) / 2, { color, weight: "bold", size: L.cell >= 26 ? FONT_SIZE : FONT_SIZE_SMALL, gap: 3, along, shorter: [str.replace(/ = /, "=")] });
+  }
+  labels.draw();
   const lh = FONT_SIZE * LINE_HEIGHT;
   let y = L.gridBottom + LAYOUT.infoGap + 14 + lh / 2;
   for (const l of infoBlock(width, solution, m)) {

@@ -399,7 +399,7 @@ function drawGsd(ctx, width, height, solution) {
   ctx.fillRect(cx - halfF, yGround - 5, 2 * halfF, 10);
   ctx.strokeRect(cx - halfF, yGround - 5, 2 * halfF, 10);
   ctx.restore();
-  text(ctx, "ground", m.left, yGround - 8, { color: COLORS.ground, size: FONT_SIZE_SMALL, baseline: "bottom" });
+  text(ctx, "ground", dimX + 8, yGround - 4, { color: COLORS.ground, size: FONT_SIZE_SMALL, baseline: "bottom", halo: true }); // right of the H dimension arrow
   const gsdY = yGround + GSD.hatch + 6;
   text(ctx, labels.gsd, cx, gsdY, { color: COLORS.ink, weight: "bold", align: "center", baseline: "top", halo: true });
   text(ctx, "the pixel's footprint on the ground", cx, gsdY + FONT_SIZE * LINE_HEIGHT + 1, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "center", baseline: "top", halo: true });

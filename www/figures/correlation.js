@@ -11,7 +11,7 @@
 //   subpixel-2d: the fitted quadric as contours over the 3×3 ρ, with its peak.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, dot, finite, line, text, textBlock, blockSize } from "./draw.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, line, text, textBlock, blockSize } from "./draw.js";
 
 /** Digits shown for ρ, means and sums in the figures. */
 const RHO_DIGITS = 4;
@@ -229,24 +229,51 @@ function draw1d(ctx, width, height, solution, state) {
   text(ctx, "−1", X(0) - 3, Y(-1), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
   text(ctx, "0.7", X(0) - 3, Y(THRESHOLD), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
   const barW = Math.max(1, Math.min(L.cell * 0.7, 26));
+  const labels = new Labels(ctx, width, height);
+  const bars = [];
   d.rho.forEach((r, i) => {
     const cx = X(i + n / 2);
     if (!isNum(r)) {
-      text(ctx, "×", cx, L.yZero, { color: COLORS.muted, align: "center", size: FONT_SIZE_SMALL });
+      labels.avoid(text(ctx, "×", cx, L.yZero, { color: COLORS.muted, align: "center", size: FONT_SIZE_SMALL }));
       return;
     }
     ctx.fillStyle = i === d.best ? COLORS.highlight : r >= 0 ? "rgba(217, 119, 6, 0.45)" : "rgba(29, 95, 191, 0.55)";
-    ctx.fillRect(cx - barW / 2, Math.min(Y(r), L.yZero), barW, Math.abs(Y(r) - L.yZero));
-    if (i === k) outline(ctx, cx - barW / 2 - 2, Math.min(Y(r), L.yZero) - 2, barW + 4, Math.abs(Y(r) - L.yZero) + 4, SELECT, 2);
-    if (L.cell >= 30 && d.rho.length <= 40) {
-      text(ctx, formatNumber(r, 2), cx, r >= 0 ? Y(r) - 8 : L.yZero - 8, { color: COLORS.ink, size: FONT_SIZE_SMALL, align: "center", halo: true });
+    const top = Math.min(Y(r), L.yZero);
+    const h = Math.abs(Y(r) - L.yZero);
+    ctx.fillRect(cx - barW / 2, top, barW, h);
+    labels.avoidRect(cx - barW / 2, top, barW, h, 1);
+    if (i === k) {
+      outline(ctx, cx - barW / 2 - 2, top - 2, barW + 4, h + 4, SELECT, 2);
+      labels.avoidRect(cx - barW / 2 - 3, top - 3, barW + 6, h + 6);
     }
+    bars.push({ i, r, cx });
   });
+  labels.avoidLine(X(0), Y(THRESHOLD), X(L.n), Y(THRESHOLD), 1);
   if (d.best !== null) {
     const cx = X(d.best + n / 2);
-    text(ctx, "best", cx, L.yZero + ONE_D.barsH / 2 + 2, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL, align: "center", baseline: "top" });
+    labels.add("best", cx, L.yZero + ONE_D.barsH / 2 + 2, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL, candidates: ["S"], gap: 0 });
   }
-
+  // each bar's ρ beside its end (a negative one also just above the axis);
+  // the best and the selected bars first, the others only where they fit
+  if (d.rho.length <= 40) {
+    const size = L.cell >= 30 ? FONT_SIZE_SMALL : 10;
+    const order = [...bars].sort((a, b) => (b.i === d.best) - (a.i === d.best) || (b.i === k) - (a.i === k) || a.i - b.i);
+    for (const { i, r, cx } of order) {
+      const end = Y(r);
+      const pad = L.cell >= 30 ? LABEL_PAD : 1;
+      const lh = size * LINE_HEIGHT + pad;
+      // below a negative bar's end, or just above the axis, or lower down
+      const spots = r >= 0 ? ["N", { at: "N", dy: -6 }, { at: "N", dy: -12 }] : ["S", { cx, cy: L.yZero - 2 - lh / 2 }, { at: "S", dy: lh }, { at: "S", dy: 2 * lh }, { at: "S", dy: 3 * lh }];
+      labels.add(formatNumber(r, 2), cx, end, {
+        size,
+        pad,
+        gap: 3,
+        candidates: spots,
+        optional: !(i === d.best || i === k),
+      });
+    }
+  }
+  labels.draw();
 }
 
 function select1d(solution, p) {
@@ -270,7 +297,8 @@ function describe1d(solution, state) {
   if (!d.rho.length) return "No positions.";
   const k = selected1d(d, state);
   const best = d.best === null ? "No position has a correlation coefficient." : `The best match is position ${d.best + 1} with ρ = ${fmt(d.rho[d.best], RHO_DIGITS)}.`;
-  return `The template of ${d.template.length} values slides along the search array of ${d.search.length}; bars show ρ at each of ${d.rho.length} positions. ${best} Selected: ${lines1d(d, k).map((l) => l.text).join("; ")}.`;
+  const all = d.rho.map((r, i) => `${i + 1}: ${isNum(r) ? formatNumber(r, 2) : "no value"}`).join(", ");
+  return `The template of ${d.template.length} values slides along the search array of ${d.search.length}; bars show ρ at each of ${d.rho.length} positions (${all}). ${best} Selected: ${lines1d(d, k).map((l) => l.text).join("; ")}.`;
 }
 
 const ncc1d = {
@@ -339,11 +367,43 @@ function draw2d(ctx, width, height, solution, state) {
   ctx.fillRect(cx, cy, L.plotSize / 2, L.plotSize / 2);
   line(ctx, cx - L.plotSize / 2, cy, cx + L.plotSize / 2, cy, { color: COLORS.muted });
   line(ctx, cx, cy - L.plotSize / 2, cx, cy + L.plotSize / 2, { color: COLORS.muted });
-  text(ctx, "A − Ā", cx + L.plotSize / 2 + 4, cy, { color: COLORS.muted, size: FONT_SIZE_SMALL });
-  text(ctx, "B − B̄", cx + 4, cy - L.plotSize / 2 - 2, { color: COLORS.muted, size: FONT_SIZE_SMALL, baseline: "bottom" });
-  text(ctx, "product > 0", cx + L.plotSize / 2 - 4, cy - L.plotSize / 2 + 10, { color: COLORS.highlight, size: FONT_SIZE_SMALL, align: "right", halo: true });
-  text(ctx, "product < 0", cx - L.plotSize / 2 + 4, cy - L.plotSize / 2 + 10, { color: COLORS.pixelSystem, size: FONT_SIZE_SMALL, halo: true });
-  pts.forEach(([x, y], i) => dot(ctx, cx + x * s, cy - y * s, i === sel ? 6 : 4, i === sel ? SELECT : COLORS.ink));
+  const labels = new Labels(ctx, width, height);
+  labels.avoid(text(ctx, "A − Ā", cx + L.plotSize / 2 + 4, cy, { color: COLORS.muted, size: FONT_SIZE_SMALL }));
+  labels.avoid(text(ctx, "B − B̄", cx + 4, cy - L.plotSize / 2 - 2, { color: COLORS.muted, size: FONT_SIZE_SMALL, baseline: "bottom" }));
+  labels.avoidLine(cx - L.plotSize / 2, cy, cx + L.plotSize / 2, cy, 1);
+  labels.avoidLine(cx, cy - L.plotSize / 2, cx, cy + L.plotSize / 2, 1);
+  pts.forEach(([x, y], i) => {
+    const r = i === sel ? 6 : 4;
+    dot(ctx, cx + x * s, cy - y * s, r, i === sel ? SELECT : COLORS.ink);
+    labels.avoidDot(cx + x * s, cy - y * s, r, 2);
+  });
+  // each quadrant pair named in a corner of one of its quadrants where no point is
+  const half = L.plotSize / 2;
+  const inset = 3;
+  const corner = (sx, sy) => ({ at: sy < 0 ? (sx > 0 ? "SW" : "SE") : sx > 0 ? "NW" : "NE", dx: 0, dy: 0, x: cx + sx * (half - inset), y: cy + sy * (half - inset) });
+  const quadrantLabel = (str, color, spots) => {
+    // spots: [sx, sy] corners (outer corners of the quadrants), tried in order
+    const [first, ...rest] = spots.map(([sx, sy]) => corner(sx, sy));
+    labels.add(str, first.x, first.y, {
+      color,
+      size: FONT_SIZE_SMALL,
+      gap: 0,
+      candidates: [first, ...rest].map((c) => ({ at: c.at, dx: c.x - first.x, dy: c.y - first.y })),
+    });
+  };
+  quadrantLabel("product > 0", COLORS.highlight, [
+    [1, -1],
+    [-1, 1],
+    [1, -0.55],
+    [-1, 0.55],
+  ]);
+  quadrantLabel("product < 0", COLORS.pixelSystem, [
+    [-1, -1],
+    [1, 1],
+    [-1, -0.55],
+    [1, 0.55],
+  ]);
+  labels.draw();
   const lines = [{ text: isNum(d.rho) ? `ρ = ${fmt(d.res.sum_dadb)} / √(${fmt(d.res.sum_da2)} × ${fmt(d.res.sum_db2)}) = ${fmt(d.rho, RHO_DIGITS)}` : "ρ: no value (an array without variance: 0/0)", weight: "bold" }];
   if (sel !== null) {
     const [x, y] = pts[sel];
@@ -566,17 +626,18 @@ function drawParabola(ctx, width, height, solution) {
   const X = (c) => m.left + ((c - cLo) / (cHi - cLo)) * (width - m.left - m.right);
   const Y = (r) => m.top + ((yHi - r) / (yHi - yLo)) * (height - m.top - m.bottom);
   // axes
+  const labels = new Labels(ctx, width, height);
   line(ctx, m.left, height - m.bottom, width - m.right, height - m.bottom, { color: COLORS.ink });
   line(ctx, m.left, m.top, m.left, height - m.bottom, { color: COLORS.ink });
-  text(ctx, "c (column)", width - m.right, height - 8, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
-  text(ctx, "ρ", m.left - 8, m.top - 10, { color: COLORS.muted, weight: "bold", align: "right" });
+  labels.avoid(text(ctx, "c (column)", width - m.right, height - 8, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" }));
+  labels.avoid(text(ctx, "ρ", m.left - 8, m.top - 10, { color: COLORS.muted, weight: "bold", align: "right" }));
   for (const v of niceTicks(yLo, yHi)) {
     line(ctx, m.left - 4, Y(v), m.left, Y(v), { color: COLORS.ink });
-    text(ctx, formatNumber(v, 3), m.left - 6, Y(v), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" });
+    labels.avoid(text(ctx, formatNumber(v, 3), m.left - 6, Y(v), { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right" }));
   }
   for (const c of d.x) {
     line(ctx, X(c), height - m.bottom, X(c), height - m.bottom + 4, { color: COLORS.ink });
-    text(ctx, formatNumber(c, 6), X(c), height - m.bottom + 6, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "center", baseline: "top" });
+    labels.avoid(text(ctx, formatNumber(c, 6), X(c), height - m.bottom + 6, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "center", baseline: "top" }));
   }
   // the curve
   ctx.save();
@@ -586,19 +647,34 @@ function drawParabola(ctx, width, height, solution) {
   samples.forEach((c, i) => (i ? ctx.lineTo(X(c), Y(f(c))) : ctx.moveTo(X(c), Y(f(c)))));
   ctx.stroke();
   ctx.restore();
+  // labels off the curve, the dots, the peak's line and each other
+  labels.avoidPath(
+    samples.map((c) => [X(c), Y(f(c))]),
+    1.5,
+  );
+  labels.avoidLine(m.left, height - m.bottom, width - m.right, height - m.bottom, 1).avoidLine(m.left, m.top, m.left, height - m.bottom, 1);
   d.x.forEach((c, i) => {
     dot(ctx, X(c), Y(d.y[i]), 5, COLORS.ink);
-    text(ctx, `ρ = ${formatNumber(d.y[i], RHO_DIGITS)}`, X(c) + 7, Y(d.y[i]) + 12, { color: COLORS.ink, size: FONT_SIZE_SMALL, halo: true });
+    labels.avoidDot(X(c), Y(d.y[i]), 5);
   });
   if (isNum(d.printedC)) {
     line(ctx, X(d.printedC), m.top, X(d.printedC), height - m.bottom, { color: COLORS.muted, dash: DASH });
-    text(ctx, `peak from the printed ρ: ${formatNumber(d.printedC, 6)}`, X(d.printedC) - 4, height - m.bottom - 4, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right", baseline: "bottom", halo: true });
+    labels.avoidLine(X(d.printedC), m.top, X(d.printedC), height - m.bottom, 1);
   }
   if (isNum(d.cMax)) {
     line(ctx, X(d.cMax), Y(d.rhoMax), X(d.cMax), height - m.bottom, { color: COLORS.highlight, dash: DASH, width: 1.5 });
     dot(ctx, X(d.cMax), Y(d.rhoMax), 5.5, COLORS.highlight);
-    text(ctx, `peak c = ${formatNumber(d.cMax, 6)}`, X(d.cMax) + 6, Y(d.rhoMax) - 12, { color: COLORS.highlight, weight: "bold", halo: true });
-  } else {
+    labels.avoidLine(X(d.cMax), Y(d.rhoMax), X(d.cMax), height - m.bottom, 1).avoidDot(X(d.cMax), Y(d.rhoMax), 5.5);
+  }
+  d.x.forEach((c, i) => {
+    labels.add(`ρ = ${formatNumber(d.y[i], RHO_DIGITS)}`, X(c), Y(d.y[i]), { color: COLORS.ink, size: FONT_SIZE_SMALL, gap: 7, candidates: ["SE", "SW", "NE", "NW", "E", "W", "S", "N"], farther: 10 });
+  });
+  if (isNum(d.cMax)) labels.add(`peak c = ${formatNumber(d.cMax, 6)}`, X(d.cMax), Y(d.rhoMax), { color: COLORS.highlight, weight: "bold", gap: 8, candidates: ["NE", "N", "NW", "E", "W"], farther: 10 });
+  if (isNum(d.printedC)) {
+    labels.add(`peak from the printed ρ: ${formatNumber(d.printedC, 6)}`, X(d.printedC), height - m.bottom - 4, { color: COLORS.muted, size: FONT_SIZE_SMALL, gap: 4, candidates: ["NW", "NE"], farther: 16 });
+  }
+  labels.draw();
+  if (!isNum(d.cMax)) {
     textBlock(ctx, [{ text: d.extremum === "minimum" ? "Opens upward: a minimum, no peak" : "A straight line: no peak", weight: "bold", color: COLORS.point }], m.left + 10, m.top);
   }
 }

@@ -99,6 +99,23 @@ export function textWidth(str, size = FONT_SIZE, weight = "normal") {
   return scratch.measureText(str).width;
 }
 
+/** Splits `str` at spaces into lines no wider than `max` CSS px (a longer word keeps its own line). */
+export function wrapWords(str, max, size = FONT_SIZE, weight = "normal") {
+  const lines = [];
+  let cur = "";
+  for (const word of String(str).split(" ")) {
+    const next = cur ? `${cur} ${word}` : word;
+    if (cur && textWidth(next, size, weight) > max) {
+      lines.push(cur);
+      cur = word;
+    } else {
+      cur = next;
+    }
+  }
+  if (cur) lines.push(cur);
+  return lines;
+}
+
 /**
  * Writes one line of text; with `halo` a translucent white box behind it keeps
  * it readable over lines. Returns its box {x, y, w, h}.
@@ -161,4 +178,321 @@ export function inside(a, b) {
 /** A finite number or the fallback. */
 export function finite(value, fallback = 0) {
   return typeof value === "number" && Number.isFinite(value) ? value : fallback;
+}
+
+// ---------------------------------------------------------------------------
+// Label placement: a figure registers its labels (each with an anchor and a
+// few candidate spots, best first) and the things a label must not cover
+// (dots, bars, lines, arrows, other texts); `draw()` puts each label, in the
+// order added, at its first candidate that stays inside the canvas and covers
+// nothing, and writes it on a halo. When every candidate collides, the one
+// that covers least is taken (inside the canvas if any is); an `optional`
+// label is then left out instead. A label is never put over another label:
+// one that fits nowhere else is left out (its figure's text alternative and
+// the text beside the figure carry every number).
+// Each candidate is also tried shifted into the canvas. A figure may place
+// some labels (`place()`), register more marks and add more labels: marks
+// registered later do not move labels already placed.
+// The boxes placed are recorded on the canvas (`canvas.labelBoxes`, and as
+// JSON in its `data-label-boxes`: { text, x, y, w, h, hits }, hits = how many
+// registered marks the label covers) so tests can check that none overlap.
+
+/** Unit offsets of the compass spots ("C" = centred on the anchor). */
+const COMPASS = Object.freeze({
+  C: [0, 0],
+  N: [0, -1],
+  NE: [1, -1],
+  E: [1, 0],
+  SE: [1, 1],
+  S: [0, 1],
+  SW: [-1, 1],
+  W: [-1, 0],
+  NW: [-1, -1],
+});
+
+/** Whether the segment (x0, y0)–(x1, y1) passes through box b (Liang–Barsky). */
+export function segmentHitsBox(x0, y0, x1, y1, b) {
+  let t0 = 0;
+  let t1 = 1;
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const clip = (p, q) => {
+    if (p === 0) return q >= 0;
+    const r = q / p;
+    if (p < 0) {
+      if (r > t1) return false;
+      if (r > t0) t0 = r;
+    } else {
+      if (r < t0) return false;
+      if (r < t1) t1 = r;
+    }
+    return true;
+  };
+  return clip(-dx, x0 - b.x) && clip(dx, b.x + b.w - x0) && clip(-dy, y0 - b.y) && clip(dy, b.y + b.h - y0) && t0 <= t1;
+}
+
+function overlapArea(a, b) {
+  const w = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x);
+  const h = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y);
+  return w > 0 && h > 0 ? w * h : 0;
+}
+
+const grow = (b, d) => ({ x: b.x - d, y: b.y - d, w: b.w + 2 * d, h: b.h + 2 * d });
+
+/** Resets a canvas's record of placed labels (the figure plumbing calls it before each drawing). */
+export function clearLabelBoxes(canvas) {
+  if (!canvas) return;
+  canvas.labelBoxes = [];
+  if (canvas.dataset) delete canvas.dataset.labelBoxes;
+}
+
+function recordLabelBoxes(canvas, boxes) {
+  if (!canvas || !boxes.length) return;
+  canvas.labelBoxes = [...(canvas.labelBoxes ?? []), ...boxes];
+  if (canvas.dataset) canvas.dataset.labelBoxes = JSON.stringify(canvas.labelBoxes);
+}
+
+export class Labels {
+  /**
+   * @param ctx the figure's context (CSS px)
+   * @param width, height the canvas size in CSS px (labels stay inside it)
+   * @param options.margin free space kept along the canvas edges
+   */
+  constructor(ctx, width, height, { margin = 1 } = {}) {
+    this.ctx = ctx;
+    this.bounds = { x: margin, y: margin, w: width - 2 * margin, h: height - 2 * margin };
+    this.obstacles = [];
+    this.items = []; // added, not placed yet
+    this.placed = [];
+    this.drawn = 0; // how many of the placed ones are drawn
+  }
+
+  /** A copy with the same obstacles and labels (to try a placement without committing to it). */
+  copy() {
+    const c = new Labels(this.ctx, 0, 0);
+    c.bounds = { ...this.bounds };
+    c.obstacles = [...this.obstacles];
+    c.items = [...this.items];
+    c.placed = [...this.placed];
+    c.drawn = this.drawn;
+    return c;
+  }
+
+  /** A box {x, y, w, h} no label may cover (e.g. text() or textBlock()'s return value). */
+  avoid(box, pad = 0) {
+    if (box && [box.x, box.y, box.w, box.h].every(Number.isFinite)) this.obstacles.push({ box: grow(box, pad) });
+    return this;
+  }
+
+  /** A rectangle given by its corner and size. */
+  avoidRect(x, y, w, h, pad = 0) {
+    return this.avoid({ x: Math.min(x, x + w), y: Math.min(y, y + h), w: Math.abs(w), h: Math.abs(h) }, pad);
+  }
+
+  /** A dot (or ring) of radius r, plus pad. */
+  avoidDot(x, y, r, pad = 1) {
+    if ([x, y, r].every(Number.isFinite)) this.obstacles.push({ circle: [x, y, r + pad] });
+    return this;
+  }
+
+  /**
+   * A line of the given half-width; `tag` names it for labels that may cover
+   * it (their `ignore`), e.g. the arrow a digit belongs to.
+   */
+  avoidLine(x0, y0, x1, y1, halfWidth = 1.5, tag = null) {
+    if ([x0, y0, x1, y1].every(Number.isFinite)) this.obstacles.push({ seg: [x0, y0, x1, y1], pad: halfWidth, tag });
+    return this;
+  }
+
+  /** An arrow drawn by arrow(): its shaft and, at (x1, y1), its head. */
+  avoidArrow(x0, y0, x1, y1, { width = 1.5, size = ARROW_HEAD, tag = null } = {}) {
+    this.avoidLine(x0, y0, x1, y1, width / 2 + 0.5, tag);
+    const len = Math.hypot(x1 - x0, y1 - y0) || 1;
+    const hx = x1 - ((x1 - x0) / len) * size * 0.55;
+    const hy = y1 - ((y1 - y0) / len) * size * 0.55;
+    if ([hx, hy].every(Number.isFinite)) this.obstacles.push({ circle: [hx, hy, size * 0.55], tag });
+    return this;
+  }
+
+  /** A polyline [[x, y], …]; `closed` joins the last point to the first. */
+  avoidPath(points, halfWidth = 1.5, closed = false) {
+    for (let i = 0; i + 1 < points.length; i++) this.avoidLine(...points[i], ...points[i + 1], halfWidth);
+    if (closed && points.length > 2) this.avoidLine(...points[points.length - 1], ...points[0], halfWidth);
+    return this;
+  }
+
+  /**
+   * A label at anchor (x, y). Options: color, size, weight, style, halo (true);
+   * `candidates`: compass spots ("NE", "S", …, "C") or objects { at, dx, dy } —
+   * the spot plus an offset — or { cx, cy } (the label's centre), tried in order;
+   * `gap`: the distance of a compass spot from the anchor; `farther`: also try
+   * the compass spots this much farther out (after all the others); `along`: [x0, y0, x1, y1],
+   * a line the label should sit beside (spots on both sides, from its middle out,
+   * tried after `candidates`); `optional`: leave it out rather than cover something;
+   * `shorter`: shorter forms of the text (strings, or { text, size } for a
+   * smaller size too), tried (at every spot) when the text itself fits nowhere; `within`: a box it must stay in (default the canvas); `pad`: the halo's
+   * margin beside the text (LABEL_PAD; half of it above and below); `ignore`:
+   * the tag of lines it may cover.
+   */
+  add(str, x, y, options = {}) {
+    this.items.push({ str: String(str), x, y, ...options });
+    return this;
+  }
+
+  /** The box of a label of size (w, h) at a candidate spot. */
+  static spot(c, x, y, w, h, gap) {
+    if (typeof c === "object" && Number.isFinite(c.cx)) return { x: c.cx - w / 2, y: c.cy - h / 2, w, h };
+    const name = typeof c === "string" ? c : c.at ?? "C";
+    const [ux, uy] = COMPASS[name] ?? [0, 0];
+    const g = ux && uy ? gap * 0.75 : gap;
+    let cx = x + ux * (g + w / 2);
+    let cy = y + uy * (g + h / 2);
+    if (typeof c === "object") {
+      cx += c.dx ?? 0;
+      cy += c.dy ?? 0;
+    }
+    return { x: cx - w / 2, y: cy - h / 2, w, h };
+  }
+
+  /**
+   * Spots beside a line: its middle first, then out towards its ends, either
+   * side, then a little farther out, then beyond its ends.
+   */
+  static along([x0, y0, x1, y1], w, h, gap) {
+    const len = Math.hypot(x1 - x0, y1 - y0) || 1;
+    const ux = (x1 - x0) / len;
+    const uy = (y1 - y0) / len;
+    const nx = -uy;
+    const ny = ux;
+    // distance of a box's centre from the line so that the box just clears it
+    const d = (w / 2) * Math.abs(nx) + (h / 2) * Math.abs(ny) + gap;
+    const out = [];
+    const box = (cx, cy) => ({ x: cx - w / 2, y: cy - h / 2, w, h });
+    const e = (w / 2) * Math.abs(ux) + (h / 2) * Math.abs(uy) + gap;
+    for (const far of [0, h, 2 * h]) {
+      for (const t of [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0, 1]) {
+        for (const side of [-1, 1]) out.push(box(x0 + (x1 - x0) * t + side * nx * (d + far), y0 + (y1 - y0) * t + side * ny * (d + far)));
+      }
+      // beyond either end, on the line's extension
+      out.push(box(x1 + ux * (e + far), y1 + uy * (e + far)), box(x0 - ux * (e + far), y0 - uy * (e + far)));
+    }
+    return out;
+  }
+
+  /** How many obstacles box b covers (but those tagged `ignore`), and how much of the box ones. */
+  cost(b, ignore = null) {
+    let hits = 0;
+    let area = 0;
+    for (const o of this.obstacles) {
+      if (ignore !== null && o.tag === ignore) continue;
+      if (o.box) {
+        const a = overlapArea(b, o.box);
+        if (a > 0) {
+          hits += 1;
+          area += a;
+        }
+      } else if (o.circle) {
+        const [cx, cy, r] = o.circle;
+        const dx = cx - Math.min(Math.max(cx, b.x), b.x + b.w);
+        const dy = cy - Math.min(Math.max(cy, b.y), b.y + b.h);
+        if (dx * dx + dy * dy < r * r) {
+          hits += 1;
+          area += 4;
+        }
+      } else if (segmentHitsBox(...o.seg, grow(b, o.pad))) {
+        hits += 1;
+        area += 4;
+      }
+    }
+    return { hits, area };
+  }
+
+  /**
+   * Places the labels added since the last call (without drawing them); they
+   * then count as obstacles for labels added later — so a figure can place
+   * some labels, add more obstacles, and place others. Returns the labels
+   * placed so far: [{ str, box, hits, …options }].
+   */
+  place() {
+    const placed = this.placed;
+    for (const item of this.items.splice(0)) {
+      const pad = item.pad ?? LABEL_PAD;
+      const gap = item.gap ?? 4;
+      const within = item.within ?? this.bounds;
+      let best = null;
+      // the text, then its shorter (or smaller) forms, each at every spot
+      const forms = [item.str, ...(item.shorter ?? [])].map((v) => (typeof v === "string" ? { text: v } : v));
+      for (const form of forms) {
+        const str = form.text;
+        const size = form.size ?? item.size ?? FONT_SIZE;
+        const f = font(size, item.weight ?? "normal", item.style ?? "normal");
+        const h = size * LINE_HEIGHT + pad;
+        const w = measure(this.ctx, str, f) + 2 * pad;
+        const spots = item.candidates ?? (item.along ? [] : ["C"]);
+        // with `farther`, the compass spots again, that much farther out
+        const far = item.farther
+          ? spots
+              .map((c) => (typeof c === "string" ? { at: c } : c))
+              .filter((c) => c.at && c.at !== "C")
+              .map((c) => ({ ...c, dx: (c.dx ?? 0) + COMPASS[c.at][0] * item.farther, dy: (c.dy ?? 0) + COMPASS[c.at][1] * item.farther }))
+          : [];
+        const boxes = [...spots, ...far].map((c) => Labels.spot(c, item.x, item.y, w, h, gap));
+        if (item.along) boxes.push(...Labels.along(item.along, w, h, gap));
+        // the same spots shifted into the canvas, for labels near its edges
+        const shifted = boxes.map((b) => ({
+          ...b,
+          x: Math.min(Math.max(b.x, within.x), within.x + within.w - b.w),
+          y: Math.min(Math.max(b.y, within.y), within.y + within.h - b.h),
+        }));
+        for (const b of [...boxes, ...shifted]) {
+          const out = !inside(b, within);
+          const onLabel = placed.some((p) => overlaps(p.box, b));
+          const { hits, area } = this.cost(b, item.ignore ?? null);
+          const score = (out ? 1e9 : 0) + (onLabel ? 1e7 : 0) + hits * 1e4 + area;
+          if (!best || score < best.score) best = { box: b, str, size, score, hits, out, onLabel };
+          if (score === 0) break;
+        }
+        if (best.score === 0) break;
+      }
+      // never over another label: one that fits nowhere else is left out
+      if (!best || best.onLabel || ((best.out || best.hits) && item.optional)) continue;
+      const p = { ...item, str: best.str, size: best.size, box: best.box, hits: best.hits };
+      placed.push(p);
+      this.obstacles.push({ box: best.box });
+    }
+    return placed;
+  }
+
+  /** Places and draws every label not drawn yet; returns the placed labels. */
+  draw() {
+    const placed = this.place().slice(this.drawn);
+    this.drawn = this.placed.length;
+    for (const p of placed) {
+      const { box } = p;
+      const size = p.size ?? FONT_SIZE;
+      // a label put farther from its line than beside it gets a dotted leader to it
+      if (p.along) {
+        const [x0, y0, x1, y1] = p.along;
+        const bx = box.x + box.w / 2;
+        const by = box.y + box.h / 2;
+        const len2 = (x1 - x0) ** 2 + (y1 - y0) ** 2 || 1;
+        const t = Math.min(1, Math.max(0, ((bx - x0) * (x1 - x0) + (by - y0) * (y1 - y0)) / len2));
+        const [px, py] = [x0 + t * (x1 - x0), y0 + t * (y1 - y0)];
+        const [qx, qy] = [Math.min(Math.max(px, box.x), box.x + box.w), Math.min(Math.max(py, box.y), box.y + box.h)];
+        if (Math.hypot(px - qx, py - qy) > (p.gap ?? 4) + 6) line(this.ctx, qx, qy, px, py, { color: p.color ?? COLORS.ink, width: 1, dash: DOTS });
+      }
+      if (p.halo !== false) {
+        this.ctx.save();
+        this.ctx.fillStyle = COLORS.halo;
+        this.ctx.fillRect(box.x, box.y, box.w, box.h);
+        this.ctx.restore();
+      }
+      text(this.ctx, p.str, box.x + box.w / 2, box.y + box.h / 2, { color: p.color ?? COLORS.ink, size, weight: p.weight ?? "normal", style: p.style ?? "normal", align: "center" });
+    }
+    recordLabelBoxes(
+      this.ctx.canvas,
+      placed.map((p) => ({ text: p.str, x: p.box.x, y: p.box.y, w: p.box.w, h: p.box.h, hits: p.hits })),
+    );
+    return this.placed;
+  }
 }

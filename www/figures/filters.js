@@ -9,7 +9,7 @@
 // keys move the selection.
 
 import { formatNumber } from "../format.js";
-import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, blockSize, line, text, textBlock } from "./draw.js";
+import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, line, text, textBlock, textWidth, wrapWords } from "./draw.js";
 
 /** Layout constants (CSS px). */
 export const GRID = Object.freeze({
@@ -75,7 +75,8 @@ export function shader(m) {
 export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, shade = shader(m), digits = cell >= GRID.comfortable ? DIGITS : DIGITS - 1, muted = null, valueDy = 0 } = {}) {
   const rows = m.length;
   const cols = m[0].length;
-  if (title) text(ctx, title, x0, y0 - GRID.title / 2 - GRID.axis, { weight: "bold", size: FONT_SIZE });
+  const texts = []; // the boxes of the numbers written (for label placement)
+  if (title) texts.push(text(ctx, title, x0, y0 - GRID.title / 2 - GRID.axis, { weight: "bold", size: FONT_SIZE }));
   for (let r = 0; r < rows; r++) {
     for (let c = 0; c < cols; c++) {
       const v = m[r][c];
@@ -83,11 +84,13 @@ export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, sha
       ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
       if (cell >= GRID.numbersFrom && Number.isFinite(v)) {
         const size = cell < 30 ? 9.5 : cell < 40 ? FONT_SIZE_SMALL : FONT_SIZE;
-        text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
-          align: "center",
-          size,
-          color: muted && muted(c, r) ? COLORS.muted : COLORS.ink,
-        });
+        texts.push(
+          text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
+            align: "center",
+            size,
+            color: muted && muted(c, r) ? COLORS.muted : COLORS.ink,
+          }),
+        );
       }
     }
   }
@@ -96,13 +99,13 @@ export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, sha
   if (first) {
     const step = Math.max(1, Math.ceil(28 / cell));
     for (let c = 0; c < cols; c += step) {
-      text(ctx, String(first.c + c), x0 + (c + 0.5) * cell, y0 - GRID.axis / 2, { align: "center", size: 10, color: COLORS.muted });
+      texts.push(text(ctx, String(first.c + c), x0 + (c + 0.5) * cell, y0 - GRID.axis / 2, { align: "center", size: 10, color: COLORS.muted }));
     }
     for (let r = 0; r < rows; r += step) {
-      text(ctx, String(first.r + r), x0 - 4, y0 + (r + 0.5) * cell, { align: "right", size: 10, color: COLORS.muted });
+      texts.push(text(ctx, String(first.r + r), x0 - 4, y0 + (r + 0.5) * cell, { align: "right", size: 10, color: COLORS.muted }));
     }
   }
-  return { x0, y0, cell, rows, cols, w: cols * cell, h: rows * cell };
+  return { x0, y0, cell, rows, cols, w: cols * cell, h: rows * cell, texts };
 }
 
 /** Outlines cells [c, c+w) × [r, r+h) of a grid. */
@@ -187,7 +190,7 @@ function edgeData(solution) {
     outputs: [
       { name: "Gx", m: res.gx, value: res.selected_gx },
       { name: "Gy", m: res.gy, value: res.selected_gy },
-      { name: "|G| = √(Gx² + Gy²)", m: res.magnitude, value: res.selected_magnitude, unsigned: true },
+      { name: "|G| = √(Gx² + Gy²)", short: "|G|", m: res.magnitude, value: res.selected_magnitude, unsigned: true },
     ],
     magnitude: res.selected_magnitude,
   };
@@ -258,8 +261,13 @@ function layout(width, d) {
   if (d.median) first.push({ kind: "median", item: null, mat: [[1, 1, 1], [1, 1, 1], [1, 1, 1]] });
   const second = d.outputs.map((o) => ({ kind: "output", item: o, mat: o.m }));
   const colsOf = (row) => row.reduce((a, p) => a + p.mat[0].length, 0);
-  const lines = sumLines(d);
   const sumSize = FONT_SIZE_SMALL;
+  // the sum's lines, each wrapped (indented) where it is wider than the canvas
+  const maxW = width - 2 * m - 12;
+  const lines = sumLines(d).flatMap((l) => {
+    if (textWidth(l.text, sumSize, l.weight ?? "normal") <= maxW) return [l];
+    return wrapWords(l.text.trim(), maxW - textWidth("    ", sumSize), sumSize, l.weight ?? "normal").map((t, i) => ({ ...l, text: i ? `    ${t}` : t }));
+  });
   const sumH = lines.length * sumSize * LINE_HEIGHT + 10;
   const fixed = 2 * m + GRID.sumGap + sumH + GRID.legendRoom;
   // the largest cell that fits the width and keeps the figure within its height
@@ -300,6 +308,12 @@ function layout(width, d) {
   return { cell, panels, gridsBottom, lines, sumSize, height };
 }
 
+/** A panel's title, or its short form where the title would leave the canvas. */
+function fitTitle(p, width) {
+  const { name, short } = p.item;
+  return short && p.x + textWidth(name, FONT_SIZE, "bold") > width - 4 ? short : name;
+}
+
 function drawFigure(ctx, width, d) {
   const L = layout(width, d);
   const sel = { c: d.sel.c - 1, r: d.sel.r - 1 };
@@ -332,7 +346,7 @@ function drawFigure(ctx, width, d) {
         );
       }
     } else if (p.kind === "kernel") {
-      drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: p.item.name });
+      drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width) });
       signed = signed || p.mat.flat().some((v) => v < 0);
     } else if (p.kind === "median") {
       const blank = p.mat.map((r) => r.map(() => NaN));
@@ -342,7 +356,7 @@ function drawFigure(ctx, width, d) {
       const i = d.outputs.indexOf(p.item);
       const shade = outShade[i] ?? shader(p.mat);
       if (shade.signed) signed = true;
-      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: p.item.name, first: d.first, shade: p.item.unsigned ? shader(p.mat) : shade });
+      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width), first: d.first, shade: p.item.unsigned ? shader(p.mat) : shade });
       geo[`output${i}`] = g;
       const oc = sel.c - (d.first.c - 1);
       const or = sel.r - (d.first.r - 1);
@@ -350,13 +364,7 @@ function drawFigure(ctx, width, d) {
     }
   });
   const y = L.gridsBottom + GRID.sumGap;
-  const box = blockSize(ctx, L.lines, { size: L.sumSize });
-  if (box.w <= width - 2 * GRID.margin) {
-    textBlock(ctx, L.lines, GRID.margin, y, { size: L.sumSize });
-  } else {
-    // too long for the canvas: the lines without the box, cut at the edge
-    L.lines.forEach((l, i) => text(ctx, l.text, GRID.margin, y + 8 + i * L.sumSize * LINE_HEIGHT, { size: L.sumSize, color: l.color ?? COLORS.ink, weight: l.weight ?? "normal" }));
-  }
+  textBlock(ctx, L.lines, GRID.margin, y, { size: L.sumSize });
   legend(ctx, GRID.margin, L.height - GRID.margin - 6, signed);
   return { L, geo };
 }

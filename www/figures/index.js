@@ -61,7 +61,7 @@
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
-import { COLORS, font, FONT_SIZE } from "./draw.js";
+import { COLORS, clearLabelBoxes, font, FONT_SIZE } from "./draw.js";
 
 /**
  * The figure module of each topic (the catalog's `topic`), loaded when an
@@ -146,6 +146,7 @@ function paint(panel, solution, shared = { selected: null }) {
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
   const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null };
+  clearLabelBoxes(canvas);
   try {
     spec.draw(ctx, width, height, solution, state);
     canvas.setAttribute("aria-label", spec.describe(solution, state));
@@ -158,6 +159,7 @@ function paint(panel, solution, shared = { selected: null }) {
     ctx.fillStyle = COLORS.ink;
     ctx.font = font(FONT_SIZE);
     ctx.fillText("The figure could not be drawn for these values.", 10, 24);
+    clearLabelBoxes(canvas);
     canvas.setAttribute("aria-label", "The figure could not be drawn for these values.");
   }
   panel.drawn = { width, dpr };

@@ -7,21 +7,21 @@
 //     and N as above.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, arrow, dot, finite, line, text, textBlock, textWidth } from "./draw.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, dot, finite, line, text, textBlock, textWidth } from "./draw.js";
 
 /** Layout constants (CSS px). */
 const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26 });
 const ELLIPSE = Object.freeze({ height: 290, panelMin: 200, clip: 2.6, margin: 14 });
-const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, maxShown: 4, overviewMin: 26, overviewMax: 48 });
+const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, compactPanel: 150, maxShown: 4, overviewMin: 26, overviewMax: 48, key: 20 });
 const IMAGE = Object.freeze({ margin: 14, maxSide: 620, tRadiusCells: 1, clip: 3 });
 /** Digits in figure labels. */
 const DIGITS = 4;
 /** The four Moravec directions, in the order of the core's `diffs`. */
 const DIRECTIONS = Object.freeze([
-  { name: "row", from: [-1, 0], to: [1, 0], color: "#1d5fbf" },
-  { name: "column", from: [0, -1], to: [0, 1], color: "#b3400a" },
-  { name: "main diagonal", from: [-1, -1], to: [1, 1], color: "#2f7d32" },
-  { name: "other diagonal", from: [1, -1], to: [-1, 1], color: "#8f1d8f" },
+  { name: "row", glyph: "→", from: [-1, 0], to: [1, 0], color: "#1d5fbf" },
+  { name: "column", glyph: "↓", from: [0, -1], to: [0, 1], color: "#b3400a" },
+  { name: "main diagonal", glyph: "↘", from: [-1, -1], to: [1, 1], color: "#2f7d32" },
+  { name: "other diagonal", glyph: "↙", from: [1, -1], to: [-1, 1], color: "#8f1d8f" },
 ]);
 
 const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
@@ -260,13 +260,20 @@ function overviewLayout(width, win) {
   return { cell, x0: Math.floor((width - cols * cell) / 2), y0: MORAVEC.panelGap + 18, h: win.length * cell + 18 + MORAVEC.panelGap };
 }
 
+/**
+ * The panels of the shown pixels, as many per row as fit; on a narrow canvas
+ * (where the named lines would put one panel per row) the compact form names
+ * each direction by its arrow (→ ↓ ↘ ↙, with a key above the panels).
+ */
 function moravecLayout(width, count) {
-  const perRow = Math.max(1, Math.min(count, Math.floor((width + MORAVEC.panelGap) / (MORAVEC.minPanel + MORAVEC.panelGap))));
+  const fit = (minPanel) => Math.max(1, Math.min(count, Math.floor((width + MORAVEC.panelGap) / (minPanel + MORAVEC.panelGap))));
+  const compact = count > 1 && fit(MORAVEC.minPanel) === 1 && fit(MORAVEC.compactPanel) > 1;
+  const perRow = fit(compact ? MORAVEC.compactPanel : MORAVEC.minPanel);
   const panelW = (width - MORAVEC.panelGap * (perRow + 1)) / perRow;
   const cell = Math.min(MORAVEC.maxCell, (panelW - 20) / 3);
   const textH = MORAVEC.textLines * FONT_SIZE_SMALL * LINE_HEIGHT + 10;
   const panelH = 3 * cell + textH + 18;
-  return { perRow, panelW, cell, panelH, rows: Math.ceil(count / perRow) };
+  return { compact, perRow, panelW, cell, panelH, rows: Math.ceil(count / perRow), keyH: compact ? MORAVEC.key : 0 };
 }
 
 function drawOverview(ctx, width, m) {
@@ -307,7 +314,7 @@ const moravecSpec = {
     const m = moravecPixels(solution, state);
     const L = moravecLayout(width, Math.max(m.shown.length, 1));
     const top = m.selected ? overviewLayout(width, m.win).h : 0;
-    return top + L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20;
+    return top + L.keyH + L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20;
   },
   describe(solution, state) {
     const m = moravecPixels(solution, state);
@@ -341,17 +348,31 @@ const moravecSpec = {
     const m = moravecPixels(solution, state);
     const { shown, win, total } = m;
     if (!win) return;
-    const top = m.selected ? drawOverview(ctx, width, m) : 0;
     const L = moravecLayout(width, Math.max(shown.length, 1));
+    const labels = new Labels(ctx, width, height);
+    let top = m.selected ? drawOverview(ctx, width, m) : 0;
+    if (L.compact) {
+      // the key to the arrows of the compact lines
+      let x = MORAVEC.panelGap;
+      const y = top + MORAVEC.panelGap + L.keyH / 2 - 4;
+      DIRECTIONS.forEach((dir) => {
+        const b = text(ctx, `${dir.glyph} ${dir.name}`, x, y, { size: FONT_SIZE_SMALL, color: dir.color });
+        labels.avoid(b);
+        x = b.x + b.w + 10;
+      });
+      top += L.keyH;
+    }
     const flat = win.flat();
     const lo = Math.min(...flat);
     const hi = Math.max(...flat);
+    const lh = FONT_SIZE_SMALL * LINE_HEIGHT;
     shown.forEach((p, i) => {
       const px = MORAVEC.panelGap + (i % L.perRow) * (L.panelW + MORAVEC.panelGap);
       const py = top + MORAVEC.panelGap + Math.floor(i / L.perRow) * (L.panelH + MORAVEC.panelGap);
       const gx0 = px + (L.panelW - 3 * L.cell) / 2;
       const gy0 = py + 16;
-      text(ctx, `P(c${p.c}, r${p.r}) = ${fmt(p.g)}`, px + L.panelW / 2, py + 6, { align: "center", weight: "bold", size: FONT_SIZE_SMALL });
+      labels.avoid(text(ctx, `P(c${p.c}, r${p.r}) = ${fmt(p.g)}`, px + L.panelW / 2, py + 6, { align: "center", weight: "bold", size: FONT_SIZE_SMALL }));
+      labels.avoidRect(gx0, gy0, 3 * L.cell, L.cell); // the grid's top row
       for (let dr = -1; dr <= 1; dr++) {
         for (let dc = -1; dc <= 1; dc++) {
           const v = win[p.r - 1 + dr]?.[p.c - 1 + dc];
@@ -362,25 +383,40 @@ const moravecSpec = {
           ctx.strokeStyle = dr === 0 && dc === 0 ? COLORS.frameStroke : COLORS.grid;
           ctx.lineWidth = dr === 0 && dc === 0 ? 2 : 1;
           ctx.strokeRect(x + 0.5, y + 0.5, L.cell - 1, L.cell - 1);
-          text(ctx, fmt(v), x + 3, y + 3, { size: 9.5, baseline: "top", halo: true });
+          // the neighbours' values in their corners (no arrow reaches there)
+          if (dr || dc) labels.avoid(text(ctx, fmt(v), x + 3, y + 3, { size: 9.5, baseline: "top", halo: true }));
         }
       }
       const centre = (d) => [gx0 + (d[0] + 1.5) * L.cell, gy0 + (d[1] + 1.5) * L.cell];
+      const [cx, cy] = centre([0, 0]);
       DIRECTIONS.forEach((dir, k) => {
         const [x0, y0] = centre(dir.from);
         const [x1, y1] = centre(dir.to);
         const shrink = 0.28;
-        arrow(ctx, x0 + (x1 - x0) * shrink, y0 + (y1 - y0) * shrink, x1 - (x1 - x0) * shrink, y1 - (y1 - y0) * shrink, { color: dir.color, width: 2, size: 6 });
+        const [ax0, ay0, ax1, ay1] = [x0 + (x1 - x0) * shrink, y0 + (y1 - y0) * shrink, x1 - (x1 - x0) * shrink, y1 - (y1 - y0) * shrink];
+        arrow(ctx, ax0, ay0, ax1, ay1, { color: dir.color, width: 2, size: 6 });
+        // the label in the middle may cover where the arrows cross, not their ends
+        labels.avoidDot(ax0, ay0, 2).avoidDot(ax1, ay1, 6);
+        labels.avoidLine(ax0, ay0, ax1, ay1, 1, "crossing");
         const diff = p.diffs[k];
         const a = win[p.r - 1 + dir.to[1]]?.[p.c - 1 + dir.to[0]];
         const b = win[p.r - 1 + dir.from[1]]?.[p.c - 1 + dir.from[0]];
         const sub = typeof b === "number" && b < 0 ? `(${fmt(b)})` : fmt(b);
-        text(ctx, `${dir.name}: (${fmt(a)} − ${sub})² = ${fmt(diff * diff)}`, px + 8, gy0 + 3 * L.cell + 12 + k * FONT_SIZE_SMALL * LINE_HEIGHT, { size: FONT_SIZE_SMALL, color: dir.color });
+        const what = L.compact ? dir.glyph : `${dir.name}:`;
+        labels.avoid(text(ctx, `${what} (${fmt(a)} − ${sub})² = ${fmt(diff * diff)}`, px + 8, gy0 + 3 * L.cell + 12 + k * lh, { size: FONT_SIZE_SMALL, color: dir.color }));
       });
-      text(ctx, `sum = ${fmt(p.sum)}`, px + 8, gy0 + 3 * L.cell + 14 + 4 * FONT_SIZE_SMALL * LINE_HEIGHT, { size: FONT_SIZE_SMALL, weight: "bold" });
+      labels.avoid(text(ctx, `sum = ${fmt(p.sum)}`, px + 8, gy0 + 3 * L.cell + 14 + 4 * lh, { size: FONT_SIZE_SMALL, weight: "bold" }));
+      // the centre pixel's value on top of the arrows' crossing (or in a corner)
+      labels.add(fmt(win[p.r - 1]?.[p.c - 1]), cx, cy, {
+        size: 10.5,
+        weight: "bold",
+        ignore: "crossing",
+        candidates: ["C", { cx: cx - L.cell / 2 + 10, cy: cy - L.cell / 2 + 9 }],
+      });
     });
     const note = m.selected ? ` (${total} pixels)` : "";
-    text(ctx, `mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { size: FONT_SIZE, weight: "bold" });
+    labels.add(`mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { weight: "bold", candidates: ["E"], gap: 0 });
+    labels.draw();
   },
 };
 
@@ -462,7 +498,9 @@ const imageSpec = {
     const cands = stepValue(solution, "candidates");
     if (isMatrix(cands)) for (const p of cands) dot(ctx, X(p[0] - 0.5), Y(p[1] - 0.5), Math.max(1.2, L.cell * 0.16), COLORS.highlight);
     const pts = Array.isArray(r.points) ? r.points : [];
+    const labels = new Labels(ctx, width, height);
     for (const p of pts) {
+      labels.avoidDot(X(p[0] - 0.5), Y(p[1] - 0.5), Math.max(4, L.cell * 0.9), 2);
       ctx.save();
       ctx.strokeStyle = "#ffffff";
       ctx.lineWidth = 4;
@@ -487,6 +525,7 @@ const imageSpec = {
     ctx.lineWidth = 2;
     ctx.strokeRect(X(c0 - half), Y(r0 - half), size * L.cell, size * L.cell);
     ctx.restore();
+    labels.avoidRect(X(c0 - half), Y(r0 - half), size * L.cell, size * L.cell, 2);
     const T = finite(inp.threshold_px, 0.5);
     const cx = X(c0 + 0.5);
     const cy = Y(r0 + 0.5);
@@ -503,7 +542,9 @@ const imageSpec = {
       ctx.strokeRect(X(ref.c - 1 - half), Y(ref.r - 1 - half), size * L.cell, size * L.cell);
       ctx.restore();
       drawEllipse(ctx, rx, ry, rT / T, ref, rT * IMAGE.clip * 0.7);
-      text(ctx, ref.case, rx, Y(ref.r - 1 - half) - 4, { align: "center", baseline: "bottom", size: FONT_SIZE_SMALL, weight: "bold", halo: true });
+      labels.avoidDot(rx, ry, rT * IMAGE.clip * 0.7, 0); // the ellipse at most (it is clipped there)
+      // the case's name beside its window (above first), off the interest points and the other names
+      labels.add(ref.case, rx, ry, { size: FONT_SIZE_SMALL, weight: "bold", gap: (size * L.cell) / 2 + 2, candidates: ["N", "S", "W", "E", "NW", "NE", "SW", "SE"], farther: rT * IMAGE.clip * 0.7 - (size * L.cell) / 2, within: { x: X(0), y: Y(0), w: L.side * L.cell, h: L.side * L.cell } });
     }
     drawEllipse(ctx, cx, cy, rT / T, r, rT * IMAGE.clip);
     ctx.save();
@@ -514,6 +555,8 @@ const imageSpec = {
     ctx.arc(cx, cy, rT, 0, 2 * Math.PI);
     ctx.stroke();
     ctx.restore();
+    labels.avoidDot(cx, cy, rT, 1);
+    labels.draw();
     const magnification = rT / T / L.cell;
     let y = L.y0 + L.side * L.cell + 14;
     const lh = FONT_SIZE * LINE_HEIGHT + 2;

@@ -8,7 +8,7 @@
 //     parameters against the iteration number.
 
 import { formatNumber } from "../format.js";
-import { COLORS, FONT_SIZE_SMALL, dot, finite, line, text } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, dot, finite, line, text, textWidth, wrapWords } from "./draw.js";
 
 const TEMPLATE_COLOR = COLORS.imageSystem; // orange-brown
 const PATCH_COLOR = COLORS.pixelSystem; // blue
@@ -102,8 +102,12 @@ function profileDraw(ctx, w, h, solution, state) {
   line(ctx, X(c), y0, X(c), y1, { color: COLORS.highlight, dash: [3, 3] });
   const gain = tv.a ? `, a = ${f(a)}, b = ${f(b)}` : "";
   text(ctx, `iteration ${k + 1} of ${n}: c = ${f(c)}${gain}`, x0 + 4, 12, { weight: "bold" });
-  text(ctx, "● template G_t", x0 + 4, 27, { color: TEMPLATE_COLOR, size: FONT_SIZE_SMALL });
-  text(ctx, tv.a ? "● a·G_s + b resampled at the template's pixels" : "● G_s resampled at the template's pixels", x0 + 104, 27, { color: PATCH_COLOR, size: FONT_SIZE_SMALL });
+  const key = text(ctx, "● template G_t", x0 + 4, 27, { color: TEMPLATE_COLOR, size: FONT_SIZE_SMALL });
+  // the patch's key in full where it fits, else shorter
+  const patchKeys = tv.a ? ["● a·G_s + b resampled at the template's pixels", "● a·G_s + b, resampled"] : ["● G_s resampled at the template's pixels", "● G_s, resampled"];
+  const kx = Math.max(x0 + 104, key.x + key.w + 12);
+  const patchKey = patchKeys.find((t) => kx + textWidth(t, FONT_SIZE_SMALL) <= w - 4) ?? patchKeys[patchKeys.length - 1];
+  text(ctx, patchKey, kx, 27, { color: PATCH_COLOR, size: FONT_SIZE_SMALL });
 }
 
 function profileDescribe(solution, state) {
@@ -147,7 +151,27 @@ function gridsHeight(width, solution) {
   const rows = template.length || 1;
   const cols = template[0]?.length || 1;
   const { gh } = gridLayout(width, rows, cols);
-  return gh + GRID_TITLE + 68;
+  // the notes' lines differ little between iterations: room for the longest
+  const n = Math.max(1, iterations(solution));
+  let lines = 0;
+  for (let k = 1; k <= n; k++) lines = Math.max(lines, gridNotes(width, gridsData(solution, { slider: k })).length);
+  return gh + GRID_TITLE + 36 + 16 * lines;
+}
+
+/** The grids' left edge. */
+function gridsLeft(w, rows, cols) {
+  const { gw } = gridLayout(w, rows, cols);
+  return Math.max(8, (w - (3 * gw + 2 * GRID_GAP)) / 2);
+}
+
+/** The notes under the grids, wrapped to the canvas width. */
+function gridNotes(w, { template, diff }) {
+  const left = gridsLeft(w, template.length || 1, template[0]?.length || 1);
+  const max = w - left - 8;
+  const d = diff.flat().map((v) => finite(v));
+  const dmax = Math.max(1e-9, ...d.map((v) => Math.abs(v)));
+  const rms = Math.sqrt(d.reduce((sum, v) => sum + v * v, 0) / Math.max(1, d.length));
+  return [...wrapWords("dL = template − (a·Gₛ + b); grey scales stretched per grid", max, FONT_SIZE_SMALL), ...wrapWords(`dL: orange positive, blue negative, up to ±${f(dmax)}; rms ${f(rms)}`, max, FONT_SIZE_SMALL)];
 }
 
 function drawGrid(ctx, m, x, y, cell, color, digits) {
@@ -170,8 +194,7 @@ function gridsDraw(ctx, w, h, solution, state) {
   const cols = template[0]?.length ?? 0;
   if (!rows || !cols) return;
   const { cell, gw } = gridLayout(w, rows, cols);
-  const total = 3 * gw + 2 * GRID_GAP;
-  const left = Math.max(8, (w - total) / 2);
+  const left = gridsLeft(w, rows, cols);
   const top = GRID_TITLE + 20;
   const range = (m) => {
     const v = m.flat().filter(Number.isFinite);
@@ -192,10 +215,9 @@ function gridsDraw(ctx, w, h, solution, state) {
     text(ctx, titles[g], x, top - 10, { size: FONT_SIZE_SMALL, color: COLORS.muted });
     if (m.length) drawGrid(ctx, m, x, top, cell, color, digits);
   });
-  const rms = Math.sqrt(diff.flat().reduce((s, v) => s + v * v, 0) / Math.max(1, diff.flat().length));
   const below = top + rows * cell + 14;
-  text(ctx, "dL = template − (a·Gₛ + b); grey scales stretched per grid", left, below, { size: FONT_SIZE_SMALL, color: COLORS.muted });
-  text(ctx, `dL: orange positive, blue negative, up to ±${f(dmax)}; rms ${f(rms)}`, left, below + 16, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+  const notes = gridNotes(w, { template, diff });
+  notes.forEach((t, i) => text(ctx, t, left, below + 16 * i, { size: FONT_SIZE_SMALL, color: COLORS.muted }));
 }
 
 function gridsDescribe(solution, state) {

@@ -4,7 +4,7 @@
 //     of the bilinear interpolation with their weights, I1 and I2 on the two
 //     rows, and the sixteen pixels of the cubic convolution when they exist.
 
-import { COLORS, FONT_SIZE_SMALL, LINE_HEIGHT, dot, line, text, textBlock, textWidth } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, dot, line, text, textBlock, textWidth } from "./draw.js";
 import { GRID, drawGrid, fmt, isMatrix, outline, stepValue } from "./filters.js";
 
 const R = Object.freeze({
@@ -15,8 +15,23 @@ const R = Object.freeze({
   keyStep: 0.05, // px moved per arrow key press
   besideFrom: 64, // the value box goes beside the grid only if the cells stay this large
   valueDy: -0.24, // grey values sit above the pixel centre, which gets a dot
-  key: 18, // room for the key line at the bottom
+  keySize: 10, // the key's text size
+  keyLine: 14, // and line height
+  cRoom: 26, // room right of the grid for "c →"
 });
+
+/** The key to the marks, in as many lines as the width needs. */
+const KEY = ["orange: the 2×2 of bilinear with their weights w", "blue dashed: nearest", "purple dashed: the 4×4 of bicubic"];
+function keyLines(width) {
+  const avail = width - 2 * GRID.margin;
+  const out = [];
+  for (const part of KEY) {
+    const last = out.length ? out[out.length - 1] : null;
+    if (last !== null && textWidth(`${last} · ${part}`, R.keySize) <= avail) out[out.length - 1] = `${last} · ${part}`;
+    else out.push(part);
+  }
+  return out;
+}
 
 function data(solution) {
   const inp = solution.inputs ?? {};
@@ -60,41 +75,70 @@ function layout(width, d) {
     w: Math.ceil(Math.max(...lines.map((l) => textWidth(l.text, FONT_SIZE_SMALL, l.weight ?? "normal"))) + 2 * pad),
     h: Math.ceil(lines.length * FONT_SIZE_SMALL * LINE_HEIGHT + 2 * pad),
   };
-  const beside = width - 2 * m - GRID.axis - box.w - GRID.gap >= cols * R.besideFrom;
-  const availW = beside ? width - 2 * m - GRID.axis - box.w - GRID.gap : width - 2 * m - GRID.axis;
-  const cell = Math.max(R.minCell, Math.min(R.maxCell, Math.floor(availW / cols)));
   const x0 = m + GRID.axis + 8;
+  // the grid, then the value box beside it (if the cells stay large) or "c →"
+  const beside = width - x0 - m - box.w - GRID.gap >= cols * R.besideFrom;
+  const availW = width - x0 - m - (beside ? box.w + GRID.gap : R.cRoom);
+  const cell = Math.max(R.minCell, Math.min(R.maxCell, Math.floor(availW / cols)));
   const y0 = m + GRID.axis + 4;
   const gridH = rows * cell;
   const boxX = beside ? x0 + cols * cell + GRID.gap : m;
   const boxY = beside ? y0 : y0 + gridH + GRID.gap;
-  const height = Math.max(y0 + gridH, boxY + box.h) + m + R.key;
-  return { cell, x0, y0, cols, rows, lines, boxX, boxY, height };
+  const key = keyLines(width);
+  const keyTop = Math.max(y0 + gridH, boxY + box.h) + m;
+  const height = keyTop + key.length * R.keyLine + 4;
+  return { cell, x0, y0, cols, rows, lines, boxX, boxY, key, keyTop, height };
 }
 
 /** Canvas position of image pixel position (c, r). */
 const at = (L, d, c, r) => [L.x0 + (c - d.fc + 0.5) * L.cell, L.y0 + (r - d.fr + 0.5) * L.cell];
 
+/** The four sides of a rectangle, as label obstacles. */
+function avoidFrame(labels, g, c, r, w, h, halfWidth) {
+  const x = g.x0 + c * g.cell;
+  const y = g.y0 + r * g.cell;
+  const X = x + w * g.cell;
+  const Y = y + h * g.cell;
+  labels.avoidPath(
+    [
+      [x, y],
+      [X, y],
+      [X, Y],
+      [x, Y],
+    ],
+    halfWidth,
+    true,
+  );
+}
+
 function draw(ctx, width, d) {
   const L = layout(width, d);
+  const labels = new Labels(ctx, width, L.height);
   const shade = { fill: () => "rgba(87, 96, 106, 0.06)" };
   const g = drawGrid(ctx, d.patch, L.x0, L.y0, L.cell, { first: { c: d.fc, r: d.fr }, shade, valueDy: L.cell >= 40 ? R.valueDy : 0 });
-  text(ctx, "c →", L.x0 + g.w + 4, L.y0 - GRID.axis / 2, { size: 10, color: COLORS.muted });
-  text(ctx, "r ↓", L.x0 - 4, L.y0 - GRID.axis / 2, { size: 10, color: COLORS.muted, align: "right" });
+  g.texts.forEach((b) => labels.avoid(b));
+  labels.avoid(text(ctx, "c →", L.x0 + g.w + 4, L.y0 - GRID.axis / 2, { size: 10, color: COLORS.muted }));
+  labels.avoid(text(ctx, "r ↓", L.x0 - 4, L.y0 - GRID.axis / 2, { size: 10, color: COLORS.muted, align: "right" }));
   if (L.cell >= 40) {
-    for (let r = 0; r < L.rows; r++) for (let c = 0; c < L.cols; c++) dot(ctx, L.x0 + (c + 0.5) * L.cell, L.y0 + (r + 0.5) * L.cell, 2, COLORS.muted);
+    for (let r = 0; r < L.rows; r++) {
+      for (let c = 0; c < L.cols; c++) {
+        dot(ctx, L.x0 + (c + 0.5) * L.cell, L.y0 + (r + 0.5) * L.cell, 2, COLORS.muted);
+        labels.avoidDot(L.x0 + (c + 0.5) * L.cell, L.y0 + (r + 0.5) * L.cell, 2);
+      }
+    }
   }
   const { res } = d;
   // the sixteen pixels of the cubic convolution
   if (Number.isFinite(d.bc.c) && res.bicubic !== null) {
     outline(ctx, g, d.bc.c - d.fc, d.bc.r - d.fr, 4, 4, { color: COLORS.point, width: 2, dash: [6, 4] });
+    avoidFrame(labels, g, d.bc.c - d.fc, d.bc.r - d.fr, 4, 4, 1);
     // each pixel's cubic weight f(row) · f(column), at the bottom of its cell
     if (Array.isArray(d.bc.wc) && Array.isArray(d.bc.wr) && L.cell >= 44) {
       d.bc.wr.forEach((wr, j) =>
         d.bc.wc.forEach((wc, i) => {
           const x = L.x0 + (d.bc.c - d.fc + i + 0.5) * L.cell;
           const y = L.y0 + (d.bc.r - d.fr + j + 1) * L.cell - 7;
-          text(ctx, fmt(wr * wc, 2), x, y, { size: 9.5, align: "center", color: COLORS.point });
+          labels.avoid(text(ctx, fmt(wr * wc, 2), x, y, { size: 9.5, align: "center", color: COLORS.point }));
         }),
       );
     }
@@ -102,39 +146,41 @@ function draw(ctx, width, d) {
   // the four pixels of the bilinear interpolation
   const bc = d.bl.c - d.fc;
   const br = d.bl.r - d.fr;
-  if (Number.isFinite(bc) && Number.isFinite(br)) outline(ctx, g, bc, br, 2, 2, { fill: "rgba(217, 119, 6, 0.16)", width: 2 });
+  if (Number.isFinite(bc) && Number.isFinite(br)) {
+    outline(ctx, g, bc, br, 2, 2, { fill: "rgba(217, 119, 6, 0.16)", width: 2 });
+    avoidFrame(labels, g, bc, br, 2, 2, 1);
+  }
   // the nearest pixel
-  if (Number.isFinite(res.nearest_c)) outline(ctx, g, res.nearest_c - d.fc, res.nearest_r - d.fr, 1, 1, { color: COLORS.pixelSystem, width: 2.5, dash: [3, 3] });
+  if (Number.isFinite(res.nearest_c)) {
+    outline(ctx, g, res.nearest_c - d.fc, res.nearest_r - d.fr, 1, 1, { color: COLORS.pixelSystem, width: 2.5, dash: [3, 3] });
+    avoidFrame(labels, g, res.nearest_c - d.fc, res.nearest_r - d.fr, 1, 1, 1.5);
+  }
   const [px, py] = at(L, d, d.c, d.r);
-  // weights: lines from the position to the four pixel centres
+  // weights: lines from the position to the four pixel centres, each labelled
+  // beside its pixel's centre (outwards from the position first)
   const w = Array.isArray(d.bl.w) ? d.bl.w : [];
+  // below the centre, lower down (clear of a weight line), then outwards
+  const below = [0, 0.12, 0.22, 0.3].map((f) => ({ at: "S", dy: f * L.cell }));
   const corners = [
-    [d.bl.c, d.bl.r],
-    [d.bl.c + 1, d.bl.r],
-    [d.bl.c, d.bl.r + 1],
-    [d.bl.c + 1, d.bl.r + 1],
+    [d.bl.c, d.bl.r, [...below, "W", "SW", "NW", "SE"]],
+    [d.bl.c + 1, d.bl.r, [...below, "E", "SE", "NE", "SW"]],
+    [d.bl.c, d.bl.r + 1, [...below, "W", "SW", "NW", "SE"]],
+    [d.bl.c + 1, d.bl.r + 1, [...below, "E", "SE", "NE", "SW"]],
   ];
-  corners.forEach(([c, r], i) => {
+  const weightLabels = [];
+  corners.forEach(([c, r, spots], i) => {
     const [x, y] = at(L, d, c, r);
-    line(ctx, px, py, x, y, { color: COLORS.highlight, width: 1 + 3 * (w[i] ?? 0) });
-    if (L.cell >= 44) {
-      text(ctx, `w=${fmt(w[i], 3)}`, x + (i % 2 ? 4 : -4), y + L.cell * 0.22, {
-        size: 10,
-        align: i % 2 ? "left" : "right",
-        color: COLORS.highlight,
-        halo: true,
-        weight: "bold",
-      });
-    }
+    const lw = 1 + 3 * (w[i] ?? 0);
+    line(ctx, px, py, x, y, { color: COLORS.highlight, width: lw });
+    labels.avoidLine(px, py, x, y, lw / 2 + 1);
+    if (L.cell >= 44) weightLabels.push([`w=${fmt(w[i], 3)}`, x, y, spots, fmt(w[i], 3)]);
   });
   // I1 and I2 on the two rows, the final value between them
   const [ix, iy1] = at(L, d, d.c, d.bl.r);
   const [, iy2] = at(L, d, d.c, d.bl.r + 1);
   line(ctx, ix, iy1, ix, iy2, { color: COLORS.imageSystem, width: 1.5, dash: [4, 3] });
-  for (const [y, name] of [
-    [iy1, "I₁"],
-    [iy2, "I₂"],
-  ]) {
+  labels.avoidLine(ix, iy1, ix, iy2, 1);
+  for (const y of [iy1, iy2]) {
     ctx.save();
     ctx.fillStyle = COLORS.imageSystem;
     ctx.beginPath();
@@ -145,14 +191,26 @@ function draw(ctx, width, d) {
     ctx.closePath();
     ctx.fill();
     ctx.restore();
-    text(ctx, name, ix + R.marker + 3, y + (name === "I₁" ? -8 : 8), { size: FONT_SIZE_SMALL, color: COLORS.imageSystem, weight: "bold", halo: true });
+    labels.avoidDot(ix, y, R.marker);
   }
   dot(ctx, px, py, R.dot, COLORS.highlight);
   dot(ctx, px, py, 2.5, COLORS.background);
-  textBlock(ctx, L.lines, L.boxX, L.boxY, { size: FONT_SIZE_SMALL });
+  labels.avoidDot(px, py, R.dot, 2);
+  labels.avoid(textBlock(ctx, L.lines, L.boxX, L.boxY, { size: FONT_SIZE_SMALL }));
   // a small key to the marks
-  const ky = L.height - R.key / 2 - 2;
-  text(ctx, "orange: the 2×2 of bilinear · blue dashed: nearest · purple dashed: the 4×4 of bicubic", GRID.margin, ky, { size: 10, color: COLORS.muted });
+  L.key.forEach((k, i) => labels.avoid(text(ctx, k, GRID.margin, L.keyTop + (i + 0.5) * R.keyLine, { size: R.keySize, color: COLORS.muted })));
+  const iStyle = { size: FONT_SIZE_SMALL, color: COLORS.imageSystem, weight: "bold", gap: R.marker + 2 };
+  const withLabels = (short) => {
+    const all = labels.copy();
+    for (const [str, x, y, spots, number] of weightLabels) all.add(short ? number : str, x, y, { size: 10, weight: "bold", color: COLORS.highlight, gap: 3, pad: 1.5, candidates: spots, farther: R.dot + 3, shorter: short ? [{ text: number, size: 9 }] : [] });
+    all.add("I₁", ix, iy1, { ...iStyle, candidates: ["NE", "NW", "E", "W", "N", "SE", "SW"], farther: R.dot + 3 });
+    all.add("I₂", ix, iy2, { ...iStyle, candidates: ["SE", "SW", "E", "W", "S", "NE", "NW"], farther: R.dot + 3 });
+    return all;
+  };
+  // the weights as "w=0.426" where they all fit, else all as plain numbers
+  const full = withLabels(false);
+  if (full.place().every((p) => p.hits === 0)) full.draw();
+  else withLabels(true).draw();
 }
 
 const spec = {

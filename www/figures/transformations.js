@@ -7,7 +7,7 @@
 //      in either canvas (or the arrow keys) highlights it in both.
 
 import { formatNumber } from "../format.js";
-import { COLORS, FONT_SIZE_SMALL, arrow, dot, finite, line, text, textWidth } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, Labels, arrow, dot, finite, line, text, textWidth } from "./draw.js";
 
 const PLOT = Object.freeze({
   sideBySide: 560, // at least this wide: source and target panels side by side
@@ -191,7 +191,7 @@ function gridAndTicks(ctx, plot, names) {
   ctx.restore();
 }
 
-function drawPanel(ctx, panel, title, pts, color, selected, labelled) {
+function drawPanel(ctx, panel, title, pts, color, selected, labelled, labels) {
   text(ctx, title, panel.plot.x, panel.y + 12, { weight: "bold", color });
   pts.forEach(([a, b], i) => {
     const [px, py] = panel.plot.map(a, b);
@@ -205,10 +205,18 @@ function drawPanel(ctx, panel, title, pts, color, selected, labelled) {
       ctx.restore();
     }
     dot(ctx, px, py, PLOT.pointRadius, color);
-    if (labelled) {
-      text(ctx, String(i + 1), px + PLOT.labelGap, py - PLOT.labelGap, { size: FONT_SIZE_SMALL, weight: i === selected ? "bold" : "normal", halo: true });
-    }
+    labels.avoidDot(px, py, i === selected ? PLOT.ringRadius + 1.5 : PLOT.pointRadius, 1);
   });
+  // each point's number beside it (above right first), off the points, the
+  // residual arrows and the other numbers, inside the plot
+  if (labelled) {
+    const within = { x: panel.plot.x + 1, y: panel.plot.y + 1, w: panel.plot.w - 2, h: panel.plot.h - 2 };
+    pts.forEach(([a, b], i) => {
+      const [px, py] = panel.plot.map(a, b);
+      const r = i === selected ? PLOT.ringRadius : PLOT.pointRadius;
+      labels.add(String(i + 1), px, py, { size: FONT_SIZE_SMALL, weight: i === selected ? "bold" : "normal", gap: r + 1, candidates: ["NE", "NW", "SE", "SW", "E", "W", "N", "S"], farther: 6, within });
+    });
+  }
 }
 
 function drawPoints(ctx, width, height, solution, state) {
@@ -218,7 +226,8 @@ function drawPoints(ctx, width, height, solution, state) {
   const [src, tgt] = panels;
   gridAndTicks(ctx, src.plot, d.axes.slice(0, 2));
   gridAndTicks(ctx, tgt.plot, d.axes.slice(2, 4));
-  drawPanel(ctx, src, d.sourceName, d.source, COLORS.pixelSystem, selected, true);
+  const labels = new Labels(ctx, width, height);
+  drawPanel(ctx, src, d.sourceName, d.source, COLORS.pixelSystem, selected, true, labels);
 
   const mag = magnification(d, tgt.plot);
   if (mag) {
@@ -230,11 +239,16 @@ function drawPoints(ctx, width, height, solution, state) {
       const [vx, vy] = d.residuals[i] ?? [0, 0];
       const [x0, y0] = tgt.plot.map(a, b);
       const [x1, y1] = tgt.plot.map(a + mag.k * vx, b + mag.k * vy);
-      if (Math.hypot(x1 - x0, y1 - y0) > 1) arrow(ctx, x0, y0, x1, y1, { color: i === selected ? COLORS.highlight : COLORS.point, width: i === selected ? 2.5 : 1.8, size: 7 });
+      if (Math.hypot(x1 - x0, y1 - y0) > 1) {
+        const width = i === selected ? 2.5 : 1.8;
+        arrow(ctx, x0, y0, x1, y1, { color: i === selected ? COLORS.highlight : COLORS.point, width, size: 7 });
+        labels.avoidArrow(x0, y0, x1, y1, { width, size: 7 });
+      }
     });
     ctx.restore();
   }
-  drawPanel(ctx, tgt, d.targetName, d.target, COLORS.imageSystem, selected, true);
+  drawPanel(ctx, tgt, d.targetName, d.target, COLORS.imageSystem, selected, true, labels);
+  labels.draw();
 
   // the scale bar and what the arrows are
   const y = height - PLOT.legend + 14;
