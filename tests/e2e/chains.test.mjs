@@ -164,7 +164,7 @@ describe("chain codes", () => {
       // a digitised circle: diameter and minor axis nearly equal
       const ecc = Number(/eccentricity ([\d.]+)\.$/.exec(label)?.[1]);
       assert.ok(ecc >= 1 && ecc < 1.1, label);
-      await page.getByRole("button", { name: "Example 17 (the seed’s edge)" }).click();
+      await page.getByRole("button", { name: "Example 17 (the worked example’s edge)" }).click();
       assert.equal(await settled(page), "ok");
       label = (await figure(page)).label;
       assert.match(label, /Chain code 1 8 8 8 7 1 1 2 3 4 4 2 1 1 2 2;/);

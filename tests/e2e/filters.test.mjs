@@ -121,7 +121,7 @@ describe("resampling, filters and edges", () => {
       assert.equal(await exact(page, "selected"), 1 + 9 + 2 + 9 + 8 + 1 + 8 + 1 - 8 * 9);
       assert.equal(await exact(page, "kernel_sum"), 0);
       assert.match(await page.locator('.result-table tr[data-key="output"] td.diff').innerText(), /agrees/);
-      await page.getByRole("button", { name: "Seed 004: mean (33)" }).click();
+      await page.getByRole("button", { name: "Lecture 7: mean (33)" }).click();
       assert.equal(await settled(page), "ok");
       assert.ok(Math.abs((await exact(page, "selected")) - 300 / 9) < 1e-12);
       assert.equal(Number(await page.locator('.result-table tr[data-key="selected"] td.printed').getAttribute("data-value")), 33);

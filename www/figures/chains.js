@@ -554,7 +554,7 @@ export const figures = {
   "chain-code": {
     ...base,
     actions: [
-      { label: "Example 17 (the seed’s edge)", inputs: () => ({ given: "pixels", pixels: pixelsText(EX17), connectivity: "8", from: "start" }) },
+      { label: "Example 17 (the worked example’s edge)", inputs: () => ({ given: "pixels", pixels: pixelsText(EX17), connectivity: "8", from: "start" }) },
       { label: "Exercise: from the right end", inputs: () => ({ given: "pixels", pixels: pixelsText(EX17), connectivity: "8", from: "end" }) },
       { label: "Figure c (4-connected)", inputs: () => ({ given: "code", code: FIG_C_CODE, start: "1 4", connectivity: "4", from: "start" }) },
       ...shapePresets({ from: "start" }),

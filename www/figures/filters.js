@@ -451,7 +451,7 @@ filterSpec.actions = [
   { label: "Example 15: mean", inputs: () => ({ ...seed15, kernel: "mean" }) },
   { label: "Example 15: Gaussian", inputs: () => ({ ...seed15, kernel: "gaussian-3" }) },
   { label: "Example 16: Laplacian", inputs: () => ({ window: grid(EXAMPLE_16), kernel: "laplacian-8", select_c: "3", select_r: "3", border: "crop" }) },
-  { label: "Seed 004: mean (33)", inputs: () => ({ window: grid(SEED_004), kernel: "mean", select_c: "3", select_r: "3", border: "crop" }) },
+  { label: "Lecture 7: mean (33)", inputs: () => ({ window: grid(SEED_004), kernel: "mean", select_c: "3", select_r: "3", border: "crop" }) },
 ];
 edgeSpec.actions = [
   { label: "Example 15: Prewitt", inputs: () => ({ ...seed15, operator: "prewitt" }) },

@@ -195,7 +195,7 @@ function ellipseLayout(width, solution) {
 
 const ellipseSpec = {
   caption:
-    "N and seed 003's precision test: the error ellipse of the position (semi-axes σmax, σmin; orange) beside the threshold circle of radius T (dashed). Inside the circle: accepted. A long ellipse is an edge, a huge one a flat area.",
+    "N and the precision test of Lecture 21: the error ellipse of the position (semi-axes σmax, σmin; orange) beside the threshold circle of radius T (dashed). Inside the circle: accepted. A long ellipse is an edge, a huge one a flat area.",
   height(width, solution) {
     return ellipseLayout(width, solution).height;
   },
@@ -309,7 +309,7 @@ function drawOverview(ctx, width, m) {
 
 const moravecSpec = {
   caption:
-    "Moravec (seed 000): at each interior pixel (framed), the four differences across it — along the row, the column and both diagonals, each arrow from the subtracted to the other neighbour — squared and summed. A window larger than 4×4 shows the selected pixel (orange 3×3 frame).",
+    "Moravec (worked examples, Example 14): at each interior pixel (framed), the four differences across it — along the row, the column and both diagonals, each arrow from the subtracted to the other neighbour — squared and summed. A window larger than 4×4 shows the selected pixel (orange 3×3 frame).",
   height(width, solution, state) {
     const m = moravecPixels(solution, state);
     const L = moravecLayout(width, Math.max(m.shown.length, 1));
@@ -465,7 +465,7 @@ function legendLines(width, solution, magnification) {
 
 const imageSpec = {
   caption:
-    "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression. Three fixed windows (dotted) show seed 003's three cases with their ellipses at the same magnification: flat (a dashed disc, no direction determined or both axes long), edge (long along the edge), corner (small).",
+    "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression. Three fixed windows (dotted) show Lecture 21's three cases with their ellipses at the same magnification: flat (a dashed disc, no direction determined or both axes long), edge (long along the edge), corner (small).",
   height(width, solution) {
     const img = stepValue(solution, "image");
     if (!isMatrix(img)) return 120;
