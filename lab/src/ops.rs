@@ -316,8 +316,10 @@ pub fn correlate(
                 let cs = [bc - 1.0, bc, bc + 1.0];
                 let rs = [br - 1.0, br, br + 1.0];
                 around = Some(rho);
-                if let Ok(q) = correlation::quadric_peak(cs, rs, rho) {
-                    let [qc, qr] = q.centre;
+                let peak = correlation::quadric_peak(cs, rs, rho)
+                    .ok()
+                    .and_then(|q| q.extremum.maximum());
+                if let Some([qc, qr]) = peak {
                     // a peak more than a pixel away is no refinement
                     if (qc - bc).abs() <= 1.0 && (qr - br).abs() <= 1.0 {
                         subpixel = Some((qc, qr));
@@ -350,7 +352,7 @@ pub fn correlate(
             let settings = Settings {
                 model,
                 gradients: Gradients::SearchWindow,
-                max_iterations: 50,
+                max_iterations: matching::DEFAULT_ITERATIONS,
             };
             let p = Params::shift(c - c0 as f64, r - r0 as f64, 1.0, 0.0);
             matching::match_2d(&t, &win, p, settings).ok()

@@ -466,12 +466,7 @@ pub fn run_fiducials(img: &LabImage, approx: &[f64]) -> Result<JsValue, JsError>
                 )
                 .into(),
             ),
-            (
-                "sigma0",
-                f.adjustment.std_dev.as_ref().map_or(JsValue::NULL, |_| {
-                    num((f.adjustment.vtpv / f.adjustment.redundancy.max(1) as f64).sqrt())
-                }),
-            ),
+            ("sigma0", f.adjustment.sigma0.map_or(JsValue::NULL, num)),
         ])
     };
     let flat: Vec<f64> = marks
