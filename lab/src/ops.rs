@@ -22,7 +22,7 @@ pub struct Layer {
     pub height: usize,
     pub c0: usize,
     pub r0: usize,
-    pub data: Vec<f32>,
+    pub data: Vec<f64>,
     /// Signed values (drawn with the diverging colour scale).
     pub signed: bool,
 }
@@ -35,12 +35,12 @@ impl Layer {
             height: g.height(),
             c0: region.c0,
             r0: region.r0,
-            data: g.data().iter().map(|&v| v as f32).collect(),
+            data: g.data().to_vec(),
             signed,
         }
     }
     /// The value at input pixel `(c, r)`, if the layer covers it.
-    pub fn at(&self, c: usize, r: usize) -> Option<f32> {
+    pub fn at(&self, c: usize, r: usize) -> Option<f64> {
         if c < self.c0 || r < self.r0 || c >= self.c0 + self.width || r >= self.r0 + self.height {
             return None;
         }
@@ -156,7 +156,7 @@ fn map_layer<T: Copy>(name: &str, map: &interest::Map<T>, f: impl Fn(T) -> Optio
         data: map
             .cells
             .iter()
-            .map(|m| m.and_then(&f).map_or(f32::NAN, |v| v as f32))
+            .map(|m| m.and_then(&f).unwrap_or(f64::NAN))
             .collect(),
         signed: false,
     }
@@ -284,7 +284,7 @@ pub fn correlate(
     search: Rect,
     model: Model,
 ) -> Result<Correlation> {
-    if template.width % 2 == 0 || template.height % 2 == 0 || template.width < 3 {
+    if template.width.is_multiple_of(2) || template.height.is_multiple_of(2) || template.width < 3 {
         return Err(Error::input(
             "template",
             "must be an odd number of pixels across and down (at least 3), so that it has a centre",
@@ -393,7 +393,7 @@ pub fn rotate_scale(
     angle_deg: f64,
     scale: f64,
 ) -> Result<impl Fn(f64, f64) -> (f64, f64)> {
-    if !(scale.is_finite() && scale > 0.0) || !angle_deg.is_finite() {
+    if !(scale.is_finite() && scale > 0.0 && angle_deg.is_finite()) {
         return Err(Error::input("scale", "must be a number greater than 0"));
     }
     let (mc, mr) = (

@@ -7,8 +7,9 @@
 use crate::decode;
 use crate::ops::{self, Layer, Point, Rect};
 use crate::sample;
-use js_sys::{Array, Float32Array, Float64Array, Object, Reflect};
+use js_sys::{Array, Float64Array, Object, Reflect};
 use photogrammetry_playground::error::Error;
+use photogrammetry_playground::filter;
 use photogrammetry_playground::matching::{Model, Status};
 use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::resample::Method;
@@ -39,7 +40,7 @@ fn layer_js(l: &Layer) -> Result<JsValue, JsError> {
         ("c0", num(l.c0 as f64)),
         ("r0", num(l.r0 as f64)),
         ("signed", JsValue::from_bool(l.signed)),
-        ("data", Float32Array::from(l.data.as_slice()).into()),
+        ("data", Float64Array::from(l.data.as_slice()).into()),
     ])
 }
 
@@ -58,7 +59,7 @@ fn grid_layer(name: &str, g: &Grid, c0: usize, r0: usize, signed: bool) -> Layer
         height: g.height(),
         c0,
         r0,
-        data: g.data().iter().map(|&v| v as f32).collect(),
+        data: g.data().to_vec(),
         signed,
     }
 }
@@ -104,10 +105,25 @@ impl LabImage {
     pub fn max_value(&self) -> f64 {
         self.max_value
     }
-    /// The grey values, row-major (a copy).
-    pub fn grey(&self) -> Float32Array {
-        let v: Vec<f32> = self.grid.data().iter().map(|&x| x as f32).collect();
-        Float32Array::from(v.as_slice())
+    /// The grey values, row-major (one copy out of wasm memory).
+    pub fn grey(&self) -> Float64Array {
+        Float64Array::from(self.grid.data())
+    }
+    /// The `w × h` neighbourhood centred on `(c, r)` read under `border`
+    /// (`filter::neighbourhood`), row-major: the window a worked example
+    /// gets for that pixel.
+    pub fn neighbourhood(
+        &self,
+        c: usize,
+        r: usize,
+        w: usize,
+        h: usize,
+        border: &str,
+    ) -> Result<Float64Array, JsError> {
+        let b = ops::border(border).map_err(js_error)?;
+        filter::neighbourhood(&self.grid, c, r, w, h, b)
+            .map(|v| Float64Array::from(v.as_slice()))
+            .ok_or_else(|| JsError::new("window: part of it lies outside the image (border crop)"))
     }
     /// The grey value at `(c, r)`, `undefined` outside.
     pub fn value(&self, c: usize, r: usize) -> Option<f64> {
@@ -264,11 +280,11 @@ pub fn run_correlation(
     let t = rect(template, "template")?;
     let s = rect(search, "search")?;
     let m = ops::correlate(&a.grid, t, &b.grid, s, model).map_err(js_error)?;
-    let rho: Vec<f32> = m
+    let rho: Vec<f64> = m
         .surface
         .windows
         .iter()
-        .map(|w| w.rho.map_or(f32::NAN, |x| x as f32))
+        .map(|w| w.rho.unwrap_or(f64::NAN))
         .collect();
     let surface = Layer {
         name: "ncc".into(),
@@ -340,6 +356,28 @@ pub fn run_resample(
     width: usize,
     height: usize,
 ) -> Result<JsValue, JsError> {
+    let methods = [Method::Nearest, Method::Bilinear, Method::Bicubic];
+    let map = resample_map(img, kind, params, width, height)?;
+    let grids = ops::warp(&img.grid, width, height, &map, &methods);
+    let names = ["nearest", "bilinear", "bicubic"];
+    let ls: Vec<Layer> = grids
+        .iter()
+        .zip(names)
+        .map(|(g, n)| grid_layer(n, g, 0, 0, false))
+        .collect();
+    layers_js(&ls)
+}
+
+type PositionMap = Box<dyn Fn(f64, f64) -> (f64, f64)>;
+
+/// The output → input map of [`run_resample`].
+fn resample_map(
+    img: &LabImage,
+    kind: &str,
+    params: &[f64],
+    width: usize,
+    height: usize,
+) -> Result<PositionMap, JsError> {
     if width == 0 || height == 0 || width > 4096 || height > 4096 {
         return Err(JsError::new(
             "width: the output must be 1 to 4096 pixels across and down",
@@ -348,8 +386,7 @@ pub fn run_resample(
     if params.iter().any(|p| !p.is_finite()) {
         return Err(JsError::new("params: must be finite numbers"));
     }
-    let methods = [Method::Nearest, Method::Bilinear, Method::Bicubic];
-    let grids = match kind {
+    match kind {
         "rotate" => {
             let [angle, scale] = params else {
                 return Err(JsError::new(
@@ -357,7 +394,7 @@ pub fn run_resample(
                 ));
             };
             let map = ops::rotate_scale(&img.grid, *angle, *scale).map_err(js_error)?;
-            ops::warp(&img.grid, width, height, &map, &methods)
+            Ok(Box::new(map))
         }
         "projective" => {
             if params.len() != 8 {
@@ -367,22 +404,30 @@ pub fn run_resample(
             }
             let pts: Vec<(f64, f64)> = params.chunks(2).map(|p| (p[0], p[1])).collect();
             let t = ops::projective(&pts, width, height).map_err(js_error)?;
-            let map = move |x: f64, y: f64| t.apply(x, y).unwrap_or((f64::NAN, f64::NAN));
-            ops::warp(&img.grid, width, height, &map, &methods)
+            Ok(Box::new(move |x: f64, y: f64| {
+                t.apply(x, y).unwrap_or((f64::NAN, f64::NAN))
+            }))
         }
-        _ => {
-            return Err(JsError::new(&format!(
-                "kind: must be rotate or projective (got \"{kind}\")"
-            )))
-        }
-    };
-    let names = ["nearest", "bilinear", "bicubic"];
-    let ls: Vec<Layer> = grids
-        .iter()
-        .zip(names)
-        .map(|(g, n)| grid_layer(n, g, 0, 0, false))
-        .collect();
-    layers_js(&ls)
+        _ => Err(JsError::new(&format!(
+            "kind: must be rotate or projective (got \"{kind}\")"
+        ))),
+    }
+}
+
+/// Where output pixel `(c, r)` of [`run_resample`] reads the input: `[x, y]`.
+#[wasm_bindgen]
+pub fn resample_position(
+    img: &LabImage,
+    kind: &str,
+    params: &[f64],
+    width: usize,
+    height: usize,
+    c: usize,
+    r: usize,
+) -> Result<Float64Array, JsError> {
+    let map = resample_map(img, kind, params, width, height)?;
+    let (x, y) = map(c as f64, r as f64);
+    Ok(Float64Array::from(&[x, y][..]))
 }
 
 /// Threshold, the region at `(c, r)`, its boundary, chain code, length and

@@ -6,7 +6,7 @@ use photogrammetry_lab::sample;
 use photogrammetry_playground::filter::{self, neighbourhood};
 use photogrammetry_playground::interest;
 use photogrammetry_playground::matching::{Model, Status};
-use photogrammetry_playground::raster::{Border, Grid};
+use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::resample::{self, Method};
 
 /// A small random image (SplitMix64, grey values 0 … 255).
@@ -52,7 +52,7 @@ fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
                     // the worked example's function for one window
                     match filter::pixel_sum(&img, &kernel, c, r, border) {
                         Some(p) => {
-                            assert_eq!(layer.at(c, r), Some(p.value as f32), "{k} {b} ({c}, {r})");
+                            assert_eq!(layer.at(c, r), Some(p.value), "{k} {b} ({c}, {r})");
                             covered += 1;
                         }
                         None => assert_eq!(layer.at(c, r), None, "{k} {b} ({c}, {r})"),
@@ -71,9 +71,8 @@ fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
         let layer = ops::filter_image(&img, "median", border, None).unwrap();
         for r in 0..9 {
             for c in 0..11 {
-                let want = neighbourhood(&img, c, r, 3, 3, border)
-                    .and_then(|v| filter::median_of(&v))
-                    .map(|v| v as f32);
+                let want =
+                    neighbourhood(&img, c, r, 3, 3, border).and_then(|v| filter::median_of(&v));
                 assert_eq!(layer.at(c, r), want, "median {b} ({c}, {r})");
             }
         }
@@ -94,9 +93,9 @@ fn edges_equal_the_kernel_sums_and_the_magnitude() {
                 for c in 0..10 {
                     let gx = filter::pixel_sum(&img, &kx, c, r, border).map(|p| p.value);
                     let gy = filter::pixel_sum(&img, &ky, c, r, border).map(|p| p.value);
-                    assert_eq!(ls[0].at(c, r), gx.map(|v| v as f32));
-                    assert_eq!(ls[1].at(c, r), gy.map(|v| v as f32));
-                    let m = gx.zip(gy).map(|(x, y)| x.hypot(y) as f32);
+                    assert_eq!(ls[0].at(c, r), gx);
+                    assert_eq!(ls[1].at(c, r), gy);
+                    let m = gx.zip(gy).map(|(x, y)| x.hypot(y));
                     assert_eq!(ls[2].at(c, r), m, "{op} {b} ({c}, {r})");
                 }
             }
@@ -113,10 +112,10 @@ fn forstner_and_moravec_maps_equal_their_window_functions_at_every_pixel() {
         for c in 0..12 {
             let win = interest::window_at(&img, c, r, 5);
             let want = win.map(|w| interest::forstner(&w).unwrap().measures);
-            assert_eq!(ls[0].at(c, r), want.map(|m| m.w as f32), "w ({c}, {r})");
-            assert_eq!(ls[1].at(c, r), want.and_then(|m| m.q).map(|q| q as f32));
+            assert_eq!(ls[0].at(c, r), want.map(|m| m.w), "w ({c}, {r})");
+            assert_eq!(ls[1].at(c, r), want.and_then(|m| m.q));
             let win = interest::window_at(&img, c, r, 4);
-            let want = win.map(|w| interest::moravec(&w).unwrap().mean as f32);
+            let want = win.map(|w| interest::moravec(&w).unwrap().mean);
             assert_eq!(mor.at(c, r), want, "moravec ({c}, {r})");
         }
     }
