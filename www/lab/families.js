@@ -118,7 +118,7 @@ const edges = {
 
 // ---------------------------------------------------------------- interest operators
 
-const ELLIPSE_MAGNIFY = 20;
+const ELLIPSE_MAGNIFY = 10;
 
 const interest = {
   id: "interest",
@@ -126,7 +126,7 @@ const interest = {
   create(lab, box) {
     const [op, opLabel] = select("lab-interest", "Operator", [["forstner", "Förstner"], ["moravec", "Moravec"]], "forstner");
     const [size, sizeLabel] = number("lab-window", "Window", 5, { min: "3", max: "15", step: "1" });
-    const [sigma, sigmaLabel] = number("lab-sigma", "σn (grey values)", 2, { min: "0.01" });
+    const [sigma, sigmaLabel] = number("lab-sigma", "σn (grey values)", 8, { min: "0.01" });
     const [thr, thrLabel] = number("lab-threshold", "Threshold T (px)", 0.5, { min: "0.01" });
     const [qmin, qLabel] = number("lab-qmin", "Roundness q ≥", 0.5, { min: "0", max: "1" });
     const [mthr, mthrLabel] = number("lab-mthreshold", "Moravec threshold", 2000, { min: "0" });

@@ -36,6 +36,11 @@ export function openLab(root) {
   return current;
 }
 
+/** Test hook: makes the worker's wasm trap (the lab must recover). */
+export function trapForTests() {
+  return current?.run("trap", {}, "Trapping");
+}
+
 /** Stops the lab's worker and listeners (when the reader leaves #/lab). */
 export function closeLab() {
   current?.close();

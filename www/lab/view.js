@@ -125,7 +125,8 @@ export class Viewer {
     this.layer = null;
     this.layerCanvas = null;
     this.shapes = [];
-    this.fit();
+    this.fitted = false;
+    this.resize();
   }
 
   /** Shows `layer` (or none) over or beside the image; returns its colour scale. */
