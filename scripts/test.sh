@@ -11,13 +11,14 @@ export CHROMEDRIVER=/usr/bin/chromedriver
 step() { printf '\n== %s\n' "$*"; }
 step "cargo fmt --check"
 cargo fmt --all -- --check
-step "cargo clippy (host and wasm32) -D warnings"
-cargo clippy --all-targets -- -D warnings
-cargo clippy --all-targets --target wasm32-unknown-unknown -- -D warnings
-step "cargo test (native)"
-cargo test
+step "cargo clippy (host and wasm32, the core and the lab) -D warnings"
+cargo clippy --workspace --all-targets -- -D warnings
+cargo clippy --workspace --all-targets --target wasm32-unknown-unknown -- -D warnings
+step "cargo test (native, the core and the lab)"
+cargo test --workspace
 step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
 cargo test --target wasm32-unknown-unknown --test 'web*'
+cargo test --target wasm32-unknown-unknown -p photogrammetry-lab --test 'web*'
 step "build the page"
 SKIP_SETUP=1 bash scripts/build.sh
 step "end-to-end tests of the page in Chromium"
