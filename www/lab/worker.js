@@ -95,6 +95,10 @@ const handlers = {
   fiducials({ approx }) {
     return lab.run_fiducials(need("a"), Float64Array.from(approx));
   },
+  raw({ slot = "a", width, height, bytes }) {
+    put(slot, lab.image_from_u8(width, height, new Uint8Array(bytes)));
+    return { width, height };
+  },
   trap() {
     lab.trap_for_tests();
   },
@@ -107,8 +111,10 @@ self.onmessage = async (ev) => {
     const handler = handlers[type];
     if (!handler) throw new Error(`unknown request "${type}"`);
     const transfer = [];
+    const t0 = performance.now();
     const result = handler(args, transfer);
-    self.postMessage({ id, ok: true, result }, transfer);
+    // ms: the time inside the worker (for npm run bench -- --lab)
+    self.postMessage({ id, ok: true, result, ms: performance.now() - t0 }, transfer);
   } catch (e) {
     const trapped = e instanceof WebAssembly.RuntimeError;
     self.postMessage({ id, ok: false, trapped, error: String(e?.message ?? e) });
