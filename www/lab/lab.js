@@ -294,6 +294,7 @@ class Lab {
   // ------------------------------------------------------------- results
 
   clearResult() {
+    this.say("");
     this.layers = [];
     this.layerSelect.replaceChildren();
     this.layerBar.hidden = true;
