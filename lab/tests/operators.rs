@@ -133,7 +133,7 @@ fn forstner_finds_the_checkerboard_corners_within_half_a_pixel() {
     });
     let (_, pts) = ops::forstner(&img, 5, 1.0, 0.5, 0.5).unwrap();
     // every inner corner (k = 1 … 5 both ways) is found, and only those
-    let mut found = vec![false; 25];
+    let mut found = [false; 25];
     for p in &pts {
         let (kc, kr) = ((p.c as f64 + 0.5) / 8.0, (p.r as f64 + 0.5) / 8.0);
         let (nc, nr) = (kc.round(), kr.round());
