@@ -448,6 +448,10 @@ pub struct Traced {
     pub shape: Option<chain::Shape>,
 }
 
+/// Longest boundary (pixels) whose shape descriptors are computed:
+/// `chain::shape`'s diameter compares every pair of boundary pixels.
+pub const MAX_SHAPE_PIXELS: usize = 4000;
+
 /// Traces the region of `img` containing `(c, r)` after thresholding.
 pub fn boundary(img: &Grid, threshold: f64, c: usize, r: usize) -> Result<Traced> {
     if !threshold.is_finite() {
@@ -469,7 +473,11 @@ pub fn boundary(img: &Grid, threshold: f64, c: usize, r: usize) -> Result<Traced
         .next()
         .ok_or_else(|| Error::Internal("a picked region has no boundary".into()))?;
     let length = chain::length(&boundary.code, conn);
-    let shape = chain::shape("boundary", &boundary.pixels).ok();
+    // the diameter compares every pair of boundary pixels: skipped for
+    // long boundaries
+    let shape = (boundary.pixels.len() <= MAX_SHAPE_PIXELS)
+        .then(|| chain::shape("boundary", &boundary.pixels).ok())
+        .flatten();
     Ok(Traced {
         mask,
         boundary,

@@ -254,6 +254,7 @@ const boundaries = {
           ["Length", `${res.horizontal} horizontal + ${res.vertical} vertical + ${res.diagonal}·√2 diagonal = ${fmt(res.length, 7)} px`],
         ];
         if (sh) rows.push(["Shape", `diameter ${fmt(sh.diameter)} px, minor axis ${fmt(sh.minor_axis_length)} px, eccentricity ${fmt(sh.eccentricity)}`]);
+        else rows.push(["Shape", "not computed: the boundary is longer than 4000 pixels (the diameter compares every pair of boundary pixels)"]);
         const closed = res.pixels.length >= 2 ? [...res.pixels, res.pixels[0], res.pixels[1]] : [];
         lab.explain.replaceChildren(
           el("table", { class: "lab-table", id: "lab-boundary" }, rows.map(([k, v]) => el("tr", {}, el("th", {}, k), el("td", { class: k === "Chain code" ? "lab-code" : "" }, v)))),
