@@ -285,6 +285,7 @@ class Lab {
     this.image = img;
     this.clearResult();
     this.viewer.setImage(img);
+    this.inspector.textContent = "Point at the image: column c, row r and grey value appear here.";
     const what = `${img.name}: ${img.width} × ${img.height} pixels, ${img.format}, ${img.colour === "colour" ? "colour (shown as grey)" : "grey"}, ${img.bits}-bit`;
     this.info.replaceChildren(what, sample ? el("span", { class: "muted" }, ` — ${sample.source}, licence ${sample.licence}`) : "");
     document.body.dataset.image = img.name;
