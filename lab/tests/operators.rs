@@ -342,3 +342,33 @@ fn warp_equals_the_point_functions_and_boundary_traces_the_picked_region() {
     );
     assert_eq!(t.boundary.code, vec![1, 1, 7, 5, 5, 3]);
 }
+
+#[test]
+fn a_handful_of_pixels_of_a_sample_photo_agree_with_an_independent_computation() {
+    // The numbers come from tests/corpus/independent.py: its own PNG decoder
+    // (zlib and the scanline filters) and the sums written out by hand.
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../www/lab/samples/camera.png"
+    ))
+    .unwrap();
+    let img = photogrammetry_lab::decode::decode("camera.png", &bytes)
+        .unwrap()
+        .grid;
+    let mean = ops::filter_image(&img, "mean", ops::border("crop").unwrap(), None).unwrap();
+    let edges = ops::edges(&img, "sobel", ops::border("crop").unwrap()).unwrap();
+    for (c, r, grey, m, gx) in [
+        (0, 0, 200.0, None, None),
+        (100, 50, 210.0, Some(1884.0 / 9.0), Some(-5.0)),
+        (256, 256, 14.0, Some(10.0), Some(-32.0)),
+        (300, 400, 155.0, Some(1397.0 / 9.0), Some(-31.0)),
+        (511, 511, 149.0, None, None),
+    ] {
+        assert_eq!(img.get(c, r), Some(grey), "({c}, {r})");
+        match (mean.at(c, r), m) {
+            (Some(a), Some(b)) => assert!((a - b).abs() < 1e-12, "({c}, {r}): {a} vs {b}"),
+            (a, b) => assert_eq!(a, b, "({c}, {r})"),
+        }
+        assert_eq!(edges[0].at(c, r), gx, "({c}, {r})");
+    }
+}
