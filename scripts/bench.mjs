@@ -11,6 +11,11 @@ import zlib from "node:zlib";
 import { startServer } from "./serve.mjs";
 
 const args = process.argv.slice(2);
+if (args.includes("--lab")) {
+  // the image lab's mode: scripts/bench_lab.mjs
+  await import("./bench_lab.mjs");
+  process.exit(0);
+}
 const arg = (name, dflt) => {
   const i = args.indexOf(name);
   return i >= 0 ? args[i + 1] : dflt;
@@ -69,6 +74,7 @@ const budget = sum((r) => ["wasm", "js", "css"].includes(r.kind));
 console.log(`  wasm + JS + CSS: ${kb(budget)}   (aim: 150 KB)`);
 console.log(`  fonts apart:     ${kb(sum((r) => r.kind === "font"))}`);
 console.log(`  html:            ${kb(sum((r) => r.kind === "html"))}`);
+console.log(`  image lab files loaded: ${rows.filter((r) => r.path.includes("/lab/")).length} (the lab loads only when #/lab opens)`);
 times.sort((a, b) => a - b);
 const median = times[Math.floor(times.length / 2)];
 console.log(`\nNavigation to the first solved example (${runs} cold loads, new browser context each):`);

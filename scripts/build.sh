@@ -16,8 +16,14 @@ mkdir -p dist/pkg dist/vendor/katex
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/pkg \
   target/wasm32-unknown-unknown/release/photogrammetry_playground.wasm
 cp -R www/. dist/
+# The image lab's own module (lab/), loaded only when #/lab opens.
+echo "build: cargo build --release --target wasm32-unknown-unknown -p photogrammetry-lab"
+cargo build --release --target wasm32-unknown-unknown -p photogrammetry-lab --lib
+mkdir -p dist/lab/pkg
+wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/lab/pkg \
+  target/wasm32-unknown-unknown/release/photogrammetry_lab.wasm
 katex=node_modules/katex/dist
 cp "$katex/katex.min.js" "$katex/katex.min.css" dist/vendor/katex/
 mkdir -p dist/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
-echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm $(wc -c < dist/pkg/photogrammetry_playground_bg.wasm) bytes)"
+echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm $(wc -c < dist/pkg/photogrammetry_playground_bg.wasm) bytes, lab wasm $(wc -c < dist/lab/pkg/photogrammetry_lab_bg.wasm) bytes)"

@@ -11,13 +11,14 @@ export CHROMEDRIVER=/usr/bin/chromedriver
 step() { printf '\n== %s\n' "$*"; }
 step "cargo fmt --check"
 cargo fmt --all -- --check
-step "cargo clippy (host and wasm32) -D warnings"
-cargo clippy --all-targets -- -D warnings
-cargo clippy --all-targets --target wasm32-unknown-unknown -- -D warnings
-step "cargo test (native)"
-cargo test
+step "cargo clippy (host and wasm32, the core and the lab) -D warnings"
+cargo clippy --workspace --all-targets -- -D warnings
+cargo clippy --workspace --all-targets --target wasm32-unknown-unknown -- -D warnings
+step "cargo test (native, the core and the lab)"
+cargo test --workspace
 step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
 cargo test --target wasm32-unknown-unknown --test 'web*'
+cargo test --target wasm32-unknown-unknown -p photogrammetry-lab --test 'web*'
 step "unit tests of the page modules (Node)"
 node --test tests/unit/
 step "build the page"

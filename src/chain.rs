@@ -570,6 +570,47 @@ pub fn shape(field: &str, boundary: &[Pixel]) -> Result<Shape> {
     })
 }
 
+/// The region of `image` that contains pixel `(c, r)`: the connected set
+/// (under `conn`) of pixels on the same side of `threshold` as `(c, r)`
+/// (`≥ threshold` or `< threshold`), as a binary grid (1 inside, 0 outside)
+/// that [`trace`] turns into its boundary. `None` when `(c, r)` is outside.
+pub fn region_at(
+    image: &Grid,
+    threshold: f64,
+    c: usize,
+    r: usize,
+    conn: Connectivity,
+) -> Option<Grid> {
+    let (w, h) = (image.width(), image.height());
+    let side = |v: f64| v >= threshold;
+    let want = side(image.get(c, r)?);
+    let mut mask = Grid::filled(w, h, 0.0);
+    let mut stack = vec![(c, r)];
+    mask.set(c, r, 1.0);
+    let steps: &[(i64, i64)] = match conn {
+        Connectivity::Four => &[(1, 0), (0, -1), (-1, 0), (0, 1)],
+        Connectivity::Eight => &STEPS8,
+    };
+    while let Some((pc, pr)) = stack.pop() {
+        for &(dc, dr) in steps {
+            let (Ok(nc), Ok(nr)) = (
+                usize::try_from(pc as i64 + dc),
+                usize::try_from(pr as i64 + dr),
+            ) else {
+                continue;
+            };
+            match (image.get(nc, nr), mask.get(nc, nr)) {
+                (Some(v), Some(m)) if m == 0.0 && side(v) == want => {
+                    mask.set(nc, nr, 1.0);
+                    stack.push((nc, nr));
+                }
+                _ => {}
+            }
+        }
+    }
+    Some(mask)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -20,7 +20,7 @@ pub const MIN_WINDOW: usize = 3;
 /// Largest window side accepted by the window functions.
 pub const MAX_WINDOW: usize = 32;
 /// Largest image side accepted by the whole-image maps.
-pub const MAX_IMAGE: usize = 1024;
+pub const MAX_IMAGE: usize = 4096;
 /// `det N` counts as zero when `det N ≤ SINGULAR_TOL · (trace N)²`: a
 /// straight edge in any direction, whose `det N` is zero up to rounding.
 pub const SINGULAR_TOL: f64 = 1e-12;

@@ -39,5 +39,5 @@ pub mod raster;
 pub mod resample;
 pub mod solution;
 pub mod transform;
-#[cfg(target_arch = "wasm32")]
+#[cfg(all(target_arch = "wasm32", feature = "exports"))]
 pub mod wasm;

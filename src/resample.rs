@@ -193,6 +193,44 @@ pub fn bicubic(img: &Grid, x: f64, y: f64, a: f64) -> Option<Bicubic> {
     })
 }
 
+/// The three interpolation methods, for whole-image resampling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    Nearest,
+    Bilinear,
+    /// Seed 004's cubic convolution ([`SEED_A`]).
+    Bicubic,
+}
+
+/// The value at `(x, y)` by `method`: [`nearest`], [`bilinear`] or
+/// [`bicubic`] with [`SEED_A`], nothing else (`None` where that function
+/// gives `None`).
+pub fn value_at(img: &Grid, x: f64, y: f64, method: Method) -> Option<f64> {
+    match method {
+        Method::Nearest => nearest(img, x, y).map(|n| n.value),
+        Method::Bilinear => bilinear(img, x, y).map(|b| b.value),
+        Method::Bicubic => bicubic(img, x, y, SEED_A).map(|b| b.value),
+    }
+}
+
+/// A `width × height` image whose pixel `(c, r)` is the input resampled at
+/// `map(c, r)` (output → input position, "indirect" resampling) by
+/// `method`; `fill` where [`value_at`] has no value (outside the input, or
+/// too near its edge for the method's neighbourhood).
+pub fn warp(
+    img: &Grid,
+    width: usize,
+    height: usize,
+    map: impl Fn(f64, f64) -> (f64, f64),
+    method: Method,
+    fill: f64,
+) -> Grid {
+    Grid::from_fn(width, height, |c, r| {
+        let (x, y) = map(c as f64, r as f64);
+        value_at(img, x, y, method).unwrap_or(fill)
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -112,6 +112,7 @@ function showHome() {
           ? `All ${ready} examples are ready.`
           : `${ready} of ${entries.length} examples are ready; ${entries.length - ready === 1 ? "the other is" : "the others are"} marked “coming”.`,
       ),
+      el("p", { class: "lab-link" }, el("a", { href: "#/lab" }, "Image lab: run these operators on real photos, and open the example behind any pixel →")),
       catalogNav({ detailed: true }),
     ),
   );
@@ -374,11 +375,33 @@ function quoteKey(key) {
 }
 
 // ---------------------------------------------------------------------------
+// The image lab (#/lab): its own module and wasm, loaded only when it opens
+
+let labModule = null;
+
+async function showLab() {
+  destroyView();
+  setStatus("loading");
+  try {
+    labModule = await import("./lab/lab.js");
+  } catch (e) {
+    showMessage("The image lab could not be loaded", messageOf(e));
+    return;
+  }
+  labModule.openLab(root);
+}
+
+// ---------------------------------------------------------------------------
 // Routing
 
 async function route({ focus = false } = {}) {
   const hash = location.hash;
   const { id, params } = parseHash(hash);
+  if (id !== "lab") labModule?.closeLab();
+  if (id === "lab" && mode === "full") {
+    await showLab();
+    return;
+  }
   if (!id) {
     showHome();
     return;

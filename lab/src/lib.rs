@@ -1,0 +1,16 @@
+//! The image lab: real photos in, the core's operators over the whole
+//! image, results out as layers. A second wasm module beside the worked
+//! examples' one, loaded only when the lab opens (in a Web Worker).
+//!
+//! - [`decode`]: PNG, JPEG, TIFF → grey [`Grid`](photogrammetry_playground::raster::Grid)
+//!   under `image::Limits`.
+//! - [`sample`]: the generated scanned frame photo with Example 4's fiducials.
+//! - [`ops`]: the lab's operator menu: names and parameters → the core's
+//!   whole-image functions → layers.
+//! - `wasm`: the thin wasm-bindgen exports; the only file that knows JS.
+
+pub mod decode;
+pub mod ops;
+pub mod sample;
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;

@@ -1,0 +1,569 @@
+//! The lab's operator menu: names and parameters in, the core's whole-image
+//! functions called, layers out. Nothing is computed here that the core does
+//! not compute for the worked examples (DESIGN.md's first rule): this file
+//! only picks kernels, cuts windows and collects results.
+
+use photogrammetry_playground::chain::{self, Connectivity};
+use photogrammetry_playground::correlation::{self, Surface};
+use photogrammetry_playground::error::{Error, Result};
+use photogrammetry_playground::filter::{self, Kernel, Region};
+use photogrammetry_playground::interest::{self, Measures};
+use photogrammetry_playground::matching::{self, Gradients, Matching, Model, Params, Settings};
+use photogrammetry_playground::raster::{Border, Grid};
+use photogrammetry_playground::resample::{self, Method};
+use photogrammetry_playground::transform::{self, Fit, PointPair};
+
+/// One result image: `width × height` values whose pixel `(0, 0)` sits on
+/// input pixel `(c0, r0)`; `NaN` where there is no value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layer {
+    pub name: String,
+    pub width: usize,
+    pub height: usize,
+    pub c0: usize,
+    pub r0: usize,
+    pub data: Vec<f64>,
+    /// Signed values (drawn with the diverging colour scale).
+    pub signed: bool,
+}
+
+impl Layer {
+    fn from_grid(name: &str, g: &Grid, region: Region, signed: bool) -> Self {
+        Layer {
+            name: name.to_string(),
+            width: g.width(),
+            height: g.height(),
+            c0: region.c0,
+            r0: region.r0,
+            data: g.data().to_vec(),
+            signed,
+        }
+    }
+    /// The value at input pixel `(c, r)`, if the layer covers it.
+    pub fn at(&self, c: usize, r: usize) -> Option<f64> {
+        if c < self.c0 || r < self.r0 || c >= self.c0 + self.width || r >= self.r0 + self.height {
+            return None;
+        }
+        let v = self.data[(r - self.r0) * self.width + (c - self.c0)];
+        (!v.is_nan()).then_some(v)
+    }
+}
+
+/// A border policy by name: `replicate`, `reflect`, `zero`, `crop`.
+pub fn border(name: &str) -> Result<Border> {
+    match name {
+        "replicate" => Ok(Border::Replicate),
+        "reflect" => Ok(Border::Reflect),
+        "zero" => Ok(Border::Zero),
+        "crop" => Ok(Border::Crop),
+        _ => Err(Error::input(
+            "border",
+            format!("must be replicate, reflect, zero or crop (got \"{name}\")"),
+        )),
+    }
+}
+
+/// A kernel by the `filter-window` example's names (`None` for `median`).
+pub fn kernel(name: &str, custom: Option<(&[Vec<f64>], f64)>) -> Result<Option<Kernel>> {
+    Ok(Some(match name {
+        "mean" => filter::mean3(),
+        "weighted-mean" => filter::weighted_mean(),
+        "gaussian-3" => filter::gaussian3(),
+        "gaussian-5" => filter::gaussian5(),
+        "laplacian-4" => filter::laplacian4(),
+        "laplacian-8" => filter::laplacian8(),
+        "laplacian-004" => filter::laplacian_seed004_printed(),
+        "log" => filter::log5(),
+        "sharpen" => filter::sharpen(),
+        "high-pass" => filter::high_pass(),
+        "median" => return Ok(None),
+        "custom" => match custom {
+            Some((rows, d)) => Kernel::new("custom_kernel", rows, d)?,
+            None => return Err(Error::input("custom_kernel", "is missing")),
+        },
+        _ => return Err(Error::input("kernel", format!("unknown kernel \"{name}\""))),
+    }))
+}
+
+/// A filter over the whole image: `filter::correlate` with the named
+/// kernel, or `filter::median` 3×3.
+pub fn filter_image(
+    img: &Grid,
+    kernel_name: &str,
+    border: Border,
+    custom: Option<(&[Vec<f64>], f64)>,
+) -> Result<Layer> {
+    let f = match kernel(kernel_name, custom)? {
+        Some(k) => filter::correlate(img, &k, border)?,
+        None => filter::median(img, 3, 3, border)?,
+    };
+    let signed = f.output.data().iter().any(|&v| v < 0.0);
+    Ok(Layer::from_grid(kernel_name, &f.output, f.region, signed))
+}
+
+/// Prewitt or Sobel `gx`, `gy`, magnitude and direction (`atan2(gy, gx)`
+/// in degrees) over the whole image: `filter::gradient`.
+pub fn edges(img: &Grid, operator: &str, border: Border) -> Result<Vec<Layer>> {
+    let (kx, ky) = match operator {
+        "prewitt" => (filter::prewitt_x(), filter::prewitt_y()),
+        "sobel" => (filter::sobel_x(), filter::sobel_y()),
+        _ => {
+            return Err(Error::input(
+                "operator",
+                format!("must be prewitt or sobel (got \"{operator}\")"),
+            ))
+        }
+    };
+    let g = filter::gradient(img, &kx, &ky, border)?;
+    let dir = Grid::new(
+        "direction",
+        g.region.width,
+        g.region.height,
+        g.gx.data()
+            .iter()
+            .zip(g.gy.data())
+            .map(|(x, y)| y.atan2(*x).to_degrees())
+            .collect(),
+    )?;
+    Ok(vec![
+        Layer::from_grid("gx", &g.gx, g.region, true),
+        Layer::from_grid("gy", &g.gy, g.region, true),
+        Layer::from_grid("magnitude", &g.magnitude, g.region, false),
+        Layer::from_grid("direction", &dir, g.region, true),
+    ])
+}
+
+/// An interest point with its standard error ellipse (Förstner) in pixels.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Point {
+    pub c: usize,
+    pub r: usize,
+    pub score: f64,
+    /// Semi-axes of the error ellipse (px) and the major axis's direction
+    /// (radians from +c toward +r); zero for Moravec points.
+    pub major: f64,
+    pub minor: f64,
+    pub angle: f64,
+}
+
+fn map_layer<T: Copy>(name: &str, map: &interest::Map<T>, f: impl Fn(T) -> Option<f64>) -> Layer {
+    Layer {
+        name: name.to_string(),
+        width: map.width,
+        height: map.height,
+        c0: 0,
+        r0: 0,
+        data: map
+            .cells
+            .iter()
+            .map(|m| m.and_then(&f).unwrap_or(f64::NAN))
+            .collect(),
+        signed: false,
+    }
+}
+
+/// Förstner's `w` and `q` maps (`interest::forstner_map`), seed 003's
+/// threshold and suppression (`interest::forstner_points`), each point with
+/// its error ellipse `Σuv = σn²·N⁻¹`.
+pub fn forstner(
+    img: &Grid,
+    size: usize,
+    sigma_n: f64,
+    threshold_px: f64,
+    q_min: f64,
+) -> Result<(Vec<Layer>, Vec<Point>)> {
+    for (field, v) in [("sigma_n", sigma_n), ("threshold_px", threshold_px)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(Error::input(field, "must be a number greater than 0"));
+        }
+    }
+    let map = interest::forstner_map(img, size)?;
+    let det = interest::forstner_points(&map, sigma_n, threshold_px, q_min);
+    let points = det
+        .points
+        .iter()
+        .filter_map(|p| {
+            let m: Measures = map.get(p.c, p.r)?;
+            let pr = interest::precision(&m, sigma_n, threshold_px);
+            Some(Point {
+                c: p.c,
+                r: p.r,
+                score: p.score,
+                major: pr.sigma_max?,
+                minor: pr.sigma_min?,
+                angle: m.weak_angle,
+            })
+        })
+        .collect();
+    Ok((
+        vec![
+            map_layer("w", &map, |m: Measures| Some(m.w)),
+            map_layer("q", &map, |m: Measures| m.q),
+        ],
+        points,
+    ))
+}
+
+/// The Moravec map (`interest::moravec_map`) and its points above
+/// `threshold` after suppression (`interest::moravec_points`).
+pub fn moravec(img: &Grid, size: usize, threshold: f64) -> Result<(Layer, Vec<Point>)> {
+    if !threshold.is_finite() {
+        return Err(Error::input("threshold", "must be a finite number"));
+    }
+    let map = interest::moravec_map(img, size)?;
+    let det = interest::moravec_points(&map, threshold);
+    let points = det
+        .points
+        .iter()
+        .map(|p| Point {
+            c: p.c,
+            r: p.r,
+            score: p.score,
+            major: 0.0,
+            minor: 0.0,
+            angle: 0.0,
+        })
+        .collect();
+    Ok((map_layer("moravec", &map, Some), points))
+}
+
+/// A rectangle of an image: top-left `(c0, r0)`, `width × height`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Rect {
+    pub c0: usize,
+    pub r0: usize,
+    pub width: usize,
+    pub height: usize,
+}
+
+fn cut(img: &Grid, field: &str, r: Rect) -> Result<Grid> {
+    img.window(r.c0, r.r0, r.width, r.height).ok_or_else(|| {
+        Error::input(
+            field,
+            format!(
+                "the {}×{} box at column {}, row {} does not lie inside the {}×{} image",
+                r.width,
+                r.height,
+                r.c0,
+                r.r0,
+                img.width(),
+                img.height()
+            ),
+        )
+    })
+}
+
+/// What template matching found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Correlation {
+    /// The NCC surface: entry `(i, j)` is the template's top-left at search
+    /// pixel `(search.c0 + i, search.r0 + j)`.
+    pub surface: Surface,
+    pub template: Grid,
+    pub search: Rect,
+    /// Template centre at the best whole-pixel position (image pixels).
+    pub best: Option<(usize, usize)>,
+    /// The 3×3 ρ around the best position (rows r−1 … r+1) when it is not
+    /// on the surface's edge, and the quadric's subpixel centre (image px).
+    pub around: Option<[[f64; 3]; 3]>,
+    pub subpixel: Option<(f64, f64)>,
+    /// Least-squares matching from the subpixel (or best) position, in the
+    /// window `lsm_window` of the search image.
+    pub lsm: Option<Matching>,
+    pub lsm_window: Rect,
+}
+
+/// NCC of the `template` box of `a` over the `search` box of `b`
+/// (`correlation::correlate_2d`), the best match, the 3×3 quadric subpixel
+/// peak (`correlation::quadric_peak`), then least-squares matching
+/// (`matching::match_2d`) with `model` from there.
+pub fn correlate(
+    a: &Grid,
+    template: Rect,
+    b: &Grid,
+    search: Rect,
+    model: Model,
+) -> Result<Correlation> {
+    if template.width.is_multiple_of(2) || template.height.is_multiple_of(2) || template.width < 3 {
+        return Err(Error::input(
+            "template",
+            "must be an odd number of pixels across and down (at least 3), so that it has a centre",
+        ));
+    }
+    let t = cut(a, "template", template)?;
+    let s = cut(b, "search", search)?;
+    let surface = correlation::correlate_2d(&t, &s)?;
+    let (hw, hh) = (template.width / 2, template.height / 2);
+    let best = surface
+        .best
+        .map(|(i, j)| (search.c0 + i + hw, search.r0 + j + hh));
+    let mut around = None;
+    let mut subpixel = None;
+    if let Some((i, j)) = surface.best {
+        if i >= 1 && j >= 1 && i + 1 < surface.width && j + 1 < surface.height {
+            let mut rho = [[0.0; 3]; 3];
+            let mut ok = true;
+            for (dj, row) in rho.iter_mut().enumerate() {
+                for (di, v) in row.iter_mut().enumerate() {
+                    match surface.rho(i + di - 1, j + dj - 1) {
+                        Some(x) => *v = x,
+                        None => ok = false,
+                    }
+                }
+            }
+            if ok {
+                let (bc, br) = best.map_or((0.0, 0.0), |(c, r)| (c as f64, r as f64));
+                let cs = [bc - 1.0, bc, bc + 1.0];
+                let rs = [br - 1.0, br, br + 1.0];
+                around = Some(rho);
+                let peak = correlation::quadric_peak(cs, rs, rho)
+                    .ok()
+                    .and_then(|q| q.extremum.maximum());
+                if let Some([qc, qr]) = peak {
+                    // a peak more than a pixel away is no refinement
+                    if (qc - bc).abs() <= 1.0 && (qr - br).abs() <= 1.0 {
+                        subpixel = Some((qc, qr));
+                    }
+                }
+            }
+        }
+    }
+    // LSM in a window of the search image round the match, a margin of
+    // half a template on each side
+    let start = subpixel.or(best.map(|(c, r)| (c as f64, r as f64)));
+    let mut lsm_window = Rect {
+        c0: 0,
+        r0: 0,
+        width: 0,
+        height: 0,
+    };
+    let lsm = match start {
+        Some((c, r)) => {
+            let (mc, mr) = (template.width, template.height);
+            let c0 = (c.round() as usize).saturating_sub(mc);
+            let r0 = (r.round() as usize).saturating_sub(mr);
+            lsm_window = Rect {
+                c0,
+                r0,
+                width: (2 * mc + 1).min(b.width() - c0),
+                height: (2 * mr + 1).min(b.height() - r0),
+            };
+            let win = cut(b, "search", lsm_window)?;
+            let settings = Settings {
+                model,
+                gradients: Gradients::SearchWindow,
+                max_iterations: matching::DEFAULT_ITERATIONS,
+            };
+            let p = Params::shift(c - c0 as f64, r - r0 as f64, 1.0, 0.0);
+            matching::match_2d(&t, &win, p, settings).ok()
+        }
+        None => None,
+    };
+    Ok(Correlation {
+        surface,
+        template: t,
+        search,
+        best,
+        around,
+        subpixel,
+        lsm,
+        lsm_window,
+    })
+}
+
+/// Resampling by a transformation of output pixel → input position
+/// (`resample::warp`), one layer per method.
+pub fn warp(
+    img: &Grid,
+    width: usize,
+    height: usize,
+    map: &dyn Fn(f64, f64) -> (f64, f64),
+    methods: &[Method],
+) -> Vec<Grid> {
+    methods
+        .iter()
+        .map(|&m| resample::warp(img, width, height, map, m, 0.0))
+        .collect()
+}
+
+/// Rotation by `angle_deg` (clockwise on the screen) and scaling by
+/// `scale` about the image centre: the output → input map.
+pub fn rotate_scale(
+    img: &Grid,
+    angle_deg: f64,
+    scale: f64,
+) -> Result<impl Fn(f64, f64) -> (f64, f64)> {
+    if !(scale.is_finite() && scale > 0.0 && angle_deg.is_finite()) {
+        return Err(Error::input("scale", "must be a number greater than 0"));
+    }
+    let (mc, mr) = (
+        (img.width() as f64 - 1.0) / 2.0,
+        (img.height() as f64 - 1.0) / 2.0,
+    );
+    let (s, c) = angle_deg.to_radians().sin_cos();
+    Ok(move |x: f64, y: f64| {
+        let (dx, dy) = (x - mc, y - mr);
+        // inverse of "rotate by θ then scale": rotate by −θ, divide by s
+        (
+            (c * dx + s * dy) / scale + mc,
+            (-s * dx + c * dy) / scale + mr,
+        )
+    })
+}
+
+/// The projective rectification of four clicked points onto a rectangle
+/// `width × height`: the 004 table's projective model fitted through
+/// `transform::fit` from output corners to the clicked input positions.
+pub fn projective(
+    clicked: &[(f64, f64)],
+    width: usize,
+    height: usize,
+) -> Result<transform::Transform> {
+    if clicked.len() != 4 {
+        return Err(Error::input(
+            "points",
+            format!("needs 4 clicked points, got {}", clicked.len()),
+        ));
+    }
+    let (w, h) = (width as f64 - 1.0, height as f64 - 1.0);
+    let corners = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)];
+    let pairs: Vec<PointPair> = corners
+        .iter()
+        .zip(clicked)
+        .map(|(&(u, v), &(x, y))| PointPair { u, v, x, y })
+        .collect();
+    Ok(transform::fit(transform::Model::Projective, &pairs)
+        .map_err(|e| e.in_field("points"))?
+        .transform)
+}
+
+/// A traced region: threshold, the region at the picked pixel
+/// (`chain::region_at`), its outer boundary (`chain::trace`) with chain code,
+/// length and shape (`chain::length`, `chain::shape`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Traced {
+    pub mask: Grid,
+    pub boundary: chain::Boundary,
+    pub length: chain::Length,
+    pub shape: Option<chain::Shape>,
+}
+
+/// Longest boundary (pixels) whose shape descriptors are computed:
+/// `chain::shape`'s diameter compares every pair of boundary pixels.
+pub const MAX_SHAPE_PIXELS: usize = 4000;
+
+/// Traces the region of `img` containing `(c, r)` after thresholding.
+pub fn boundary(img: &Grid, threshold: f64, c: usize, r: usize) -> Result<Traced> {
+    if !threshold.is_finite() {
+        return Err(Error::input("threshold", "must be a finite number"));
+    }
+    let conn = Connectivity::Eight;
+    let mask = chain::region_at(img, threshold, c, r, conn).ok_or_else(|| {
+        Error::input(
+            "pixel",
+            format!(
+                "({c}, {r}) is outside the {}×{} image",
+                img.width(),
+                img.height()
+            ),
+        )
+    })?;
+    let boundary = chain::trace(&mask, conn)
+        .into_iter()
+        .next()
+        .ok_or_else(|| Error::Internal("a picked region has no boundary".into()))?;
+    let length = chain::length(&boundary.code, conn);
+    // the diameter compares every pair of boundary pixels: skipped for
+    // long boundaries
+    let shape = (boundary.pixels.len() <= MAX_SHAPE_PIXELS)
+        .then(|| chain::shape("boundary", &boundary.pixels).ok())
+        .flatten();
+    Ok(Traced {
+        mask,
+        boundary,
+        length,
+        shape,
+    })
+}
+
+/// One fiducial measured: template matching + LSM round `approx`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    pub approx: (f64, f64),
+    pub measured: (f64, f64),
+    pub ncc: f64,
+    pub iterations: usize,
+}
+
+/// Measures each fiducial near its approximate position: NCC of `template`
+/// over a box of `±reach` pixels, subpixel peak, LSM (shift + radiometric).
+pub fn measure_marks(
+    img: &Grid,
+    template: &Grid,
+    approx: &[(f64, f64)],
+    reach: usize,
+) -> Result<Vec<Mark>> {
+    let (tw, th) = (template.width(), template.height());
+    let a = Grid::new("template", tw, th, template.data().to_vec())?;
+    let whole_t = Rect {
+        c0: 0,
+        r0: 0,
+        width: tw,
+        height: th,
+    };
+    approx
+        .iter()
+        .enumerate()
+        .map(|(k, &(c, r))| {
+            let field = format!("mark {}", k + 1);
+            let side = 2 * reach + tw;
+            let c0 = (c.round() as i64 - (reach + tw / 2) as i64).max(0) as usize;
+            let r0 = (r.round() as i64 - (reach + th / 2) as i64).max(0) as usize;
+            let search = Rect {
+                c0,
+                r0,
+                width: side.min(img.width().saturating_sub(c0)),
+                height: side.min(img.height().saturating_sub(r0)),
+            };
+            let m = correlate(&a, whole_t, img, search, Model::ShiftRadiometric)
+                .map_err(|e| Error::input(&field, e.to_string()))?;
+            let best = m
+                .best
+                .ok_or_else(|| Error::input(&field, "no match found (the search box is flat)"))?;
+            let ncc = m
+                .surface
+                .rho(best.0 - c0 - tw / 2, best.1 - r0 - th / 2)
+                .unwrap_or(0.0);
+            let (measured, iterations) = match &m.lsm {
+                Some(l) if l.status == matching::Status::Converged => (
+                    (
+                        l.params.a[2] + m.lsm_window.c0 as f64,
+                        l.params.a[5] + m.lsm_window.r0 as f64,
+                    ),
+                    l.iterations.len(),
+                ),
+                _ => (m.subpixel.unwrap_or((best.0 as f64, best.1 as f64)), 0),
+            };
+            Ok(Mark {
+                approx: (c, r),
+                measured,
+                ncc,
+                iterations,
+            })
+        })
+        .collect()
+}
+
+/// Example 4's similarity and affine fits of measured marks `(c, r)` to the
+/// calibrated `(x, y)` (mm), with `x′ = c`, `y′ = −r`.
+pub fn fit_fiducials(measured: &[(f64, f64)], calibrated: &[[f64; 2]]) -> Result<(Fit, Fit)> {
+    let pairs: Vec<PointPair> = measured
+        .iter()
+        .zip(calibrated)
+        .map(|(&(c, r), &[x, y])| PointPair { u: c, v: -r, x, y })
+        .collect();
+    Ok((
+        transform::fit(transform::Model::Similarity, &pairs)?,
+        transform::fit(transform::Model::FiducialAffine, &pairs)?,
+    ))
+}

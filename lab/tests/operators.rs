@@ -1,0 +1,374 @@
+//! The lab's whole-image operators against the core's window functions
+//! (DESIGN.md's first rule) and against known truths.
+
+use photogrammetry_lab::ops::{self, Rect};
+use photogrammetry_lab::sample;
+use photogrammetry_playground::filter::{self, neighbourhood};
+use photogrammetry_playground::interest;
+use photogrammetry_playground::matching::{Model, Status};
+use photogrammetry_playground::raster::Grid;
+use photogrammetry_playground::resample::{self, Method};
+
+/// A small random image (SplitMix64, grey values 0 … 255).
+fn random(w: usize, h: usize, seed: u64) -> Grid {
+    let mut s = seed;
+    let data = (0..w * h)
+        .map(|_| {
+            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = s;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) % 256) as f64
+        })
+        .collect();
+    Grid::new("image", w, h, data).unwrap()
+}
+
+const BORDERS: [&str; 4] = ["replicate", "reflect", "zero", "crop"];
+const KERNELS: [&str; 10] = [
+    "mean",
+    "weighted-mean",
+    "gaussian-3",
+    "gaussian-5",
+    "laplacian-4",
+    "laplacian-8",
+    "log",
+    "sharpen",
+    "high-pass",
+    "laplacian-004",
+];
+
+#[test]
+fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
+    let img = random(11, 9, 1);
+    for b in BORDERS {
+        let border = ops::border(b).unwrap();
+        for k in KERNELS {
+            let kernel = ops::kernel(k, None).unwrap().unwrap();
+            let layer = ops::filter_image(&img, k, border, None).unwrap();
+            let mut covered = 0;
+            for r in 0..9 {
+                for c in 0..11 {
+                    // the worked example's function for one window
+                    match filter::pixel_sum(&img, &kernel, c, r, border) {
+                        Some(p) => {
+                            assert_eq!(layer.at(c, r), Some(p.value), "{k} {b} ({c}, {r})");
+                            covered += 1;
+                        }
+                        None => assert_eq!(layer.at(c, r), None, "{k} {b} ({c}, {r})"),
+                    }
+                }
+            }
+            let half = kernel.half_width();
+            let want = if b == "crop" {
+                (11 - 2 * half) * (9 - 2 * half)
+            } else {
+                99
+            };
+            assert_eq!(covered, want, "{k} {b}");
+        }
+        // the median: the median of the 3×3 neighbourhood
+        let layer = ops::filter_image(&img, "median", border, None).unwrap();
+        for r in 0..9 {
+            for c in 0..11 {
+                let want =
+                    neighbourhood(&img, c, r, 3, 3, border).and_then(|v| filter::median_of(&v));
+                assert_eq!(layer.at(c, r), want, "median {b} ({c}, {r})");
+            }
+        }
+    }
+}
+
+#[test]
+fn edges_equal_the_kernel_sums_and_the_magnitude() {
+    let img = random(10, 8, 2);
+    for b in BORDERS {
+        let border = ops::border(b).unwrap();
+        for (op, kx, ky) in [
+            ("prewitt", filter::prewitt_x(), filter::prewitt_y()),
+            ("sobel", filter::sobel_x(), filter::sobel_y()),
+        ] {
+            let ls = ops::edges(&img, op, border).unwrap();
+            for r in 0..8 {
+                for c in 0..10 {
+                    let gx = filter::pixel_sum(&img, &kx, c, r, border).map(|p| p.value);
+                    let gy = filter::pixel_sum(&img, &ky, c, r, border).map(|p| p.value);
+                    assert_eq!(ls[0].at(c, r), gx);
+                    assert_eq!(ls[1].at(c, r), gy);
+                    let m = gx.zip(gy).map(|(x, y)| x.hypot(y));
+                    assert_eq!(ls[2].at(c, r), m, "{op} {b} ({c}, {r})");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn forstner_and_moravec_maps_equal_their_window_functions_at_every_pixel() {
+    let img = random(12, 10, 3);
+    let (ls, _) = ops::forstner(&img, 5, 2.0, 0.5, 0.0).unwrap();
+    let (mor, _) = ops::moravec(&img, 4, 0.0).unwrap();
+    for r in 0..10 {
+        for c in 0..12 {
+            let win = interest::window_at(&img, c, r, 5);
+            let want = win.map(|w| interest::forstner(&w).unwrap().measures);
+            assert_eq!(ls[0].at(c, r), want.map(|m| m.w), "w ({c}, {r})");
+            assert_eq!(ls[1].at(c, r), want.and_then(|m| m.q));
+            let win = interest::window_at(&img, c, r, 4);
+            let want = win.map(|w| interest::moravec(&w).unwrap().mean);
+            assert_eq!(mor.at(c, r), want, "moravec ({c}, {r})");
+        }
+    }
+}
+
+#[test]
+fn forstner_finds_the_checkerboard_corners_within_half_a_pixel() {
+    // 8-px squares: the corners are between pixels, at c = 8k − 0.5.
+    let img = Grid::from_fn(48, 48, |c, r| {
+        if (c / 8 + r / 8) % 2 == 0 {
+            40.0
+        } else {
+            200.0
+        }
+    });
+    let (_, pts) = ops::forstner(&img, 5, 1.0, 0.5, 0.5).unwrap();
+    // every inner corner (k = 1 … 5 both ways) is found, and only those
+    let mut found = [false; 25];
+    for p in &pts {
+        let (kc, kr) = ((p.c as f64 + 0.5) / 8.0, (p.r as f64 + 0.5) / 8.0);
+        let (nc, nr) = (kc.round(), kr.round());
+        // the window's anchor pixel lies half a pixel from the true corner
+        let (dc, dr) = (p.c as f64 - (8.0 * nc - 0.5), p.r as f64 - (8.0 * nr - 0.5));
+        assert!(
+            dc.abs() <= 0.5 && dr.abs() <= 0.5,
+            "{p:?} is {dc}, {dr} px off"
+        );
+        assert!(
+            (1.0..=5.0).contains(&nc) && (1.0..=5.0).contains(&nr),
+            "{p:?}"
+        );
+        found[(nr as usize - 1) * 5 + nc as usize - 1] = true;
+        assert!(p.major > 0.0 && p.minor > 0.0 && p.major >= p.minor);
+    }
+    assert_eq!(pts.len(), 25, "{pts:?}");
+    assert!(found.iter().all(|&f| f));
+}
+
+#[test]
+fn ncc_and_lsm_recover_a_known_subpixel_shift_of_a_photo() {
+    // camera.png, and the same photo shifted by (+3.3, −1.6) px by bicubic
+    // resampling: the truth is the shift (interpolation adds its own error,
+    // a few hundredths of a pixel on a photo; tolerance 0.1 px: two interpolations of a sharp photo, the cubic convolution that made the shifted copy and LSM's bilinear resampling, each err by a few hundredths of a pixel).
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../www/lab/samples/camera.png"
+    ))
+    .unwrap();
+    let a = photogrammetry_lab::decode::decode("camera.png", &bytes)
+        .unwrap()
+        .grid;
+    let (sx, sy) = (3.3, -1.6);
+    let b = resample::warp(&a, 512, 512, |x, y| (x - sx, y - sy), Method::Bicubic, 0.0);
+    let t = Rect {
+        c0: 240,
+        r0: 120,
+        width: 21,
+        height: 21,
+    };
+    let s = Rect {
+        c0: 225,
+        r0: 105,
+        width: 51,
+        height: 51,
+    };
+    let m = ops::correlate(&a, t, &b, s, Model::ShiftRadiometric).unwrap();
+    // whole-pixel best: the template centre (250, 130) moved by the shift
+    assert_eq!(m.best, Some((253, 128)));
+    let (qc, qr) = m.subpixel.unwrap();
+    assert!(
+        (qc - 253.3).abs() < 0.3 && (qr - 128.4).abs() < 0.3,
+        "{qc}, {qr}"
+    );
+    let l = m.lsm.unwrap();
+    assert_eq!(l.status, Status::Converged);
+    let c = l.params.a[2] + m.lsm_window.c0 as f64;
+    let r = l.params.a[5] + m.lsm_window.r0 as f64;
+    assert!(
+        (c - 253.3).abs() < 0.1 && (r - 128.4).abs() < 0.1,
+        "{c}, {r}"
+    );
+}
+
+#[test]
+fn lsm_recovers_a_known_affine_of_a_photo() {
+    // the photo warped by a 4° rotation, 1.05 scale about (250, 130), plus a
+    // shift; affine LSM from the NCC match recovers the affine part within
+    // 0.01 and the position within 0.05 px (interpolation error again).
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../www/lab/samples/camera.png"
+    ))
+    .unwrap();
+    let a = photogrammetry_lab::decode::decode("camera.png", &bytes)
+        .unwrap()
+        .grid;
+    let (th, s) = (4f64.to_radians(), 1.05);
+    let (cx, cy, dx, dy) = (250.0, 130.0, 2.4, 1.7);
+    // b(x) = a(A⁻¹(x − centre − d) + centre): a patch of a at centre maps
+    // to b at centre + d with matrix A = s·R(θ)
+    let b = resample::warp(
+        &a,
+        512,
+        512,
+        |x, y| {
+            let (u, v) = (x - cx - dx, y - cy - dy);
+            let (sn, cs) = th.sin_cos();
+            ((cs * u + sn * v) / s + cx, (-sn * u + cs * v) / s + cy)
+        },
+        Method::Bicubic,
+        0.0,
+    );
+    let t = Rect {
+        c0: 235,
+        r0: 115,
+        width: 31,
+        height: 31,
+    };
+    let sr = Rect {
+        c0: 225,
+        r0: 105,
+        width: 55,
+        height: 55,
+    };
+    let m = ops::correlate(&a, t, &b, sr, Model::AffineRadiometric).unwrap();
+    let l = m.lsm.unwrap();
+    assert_eq!(
+        l.status,
+        Status::Converged,
+        "{:?} {:?}",
+        l.status,
+        l.params.a
+    );
+    let p = l.params.a;
+    let (sn, cs) = th.sin_cos();
+    for (got, want) in [
+        (p[0], s * cs),
+        (p[1], -s * sn),
+        (p[3], s * sn),
+        (p[4], s * cs),
+    ] {
+        assert!((got - want).abs() < 0.01, "{p:?}");
+    }
+    let (c, r) = (p[2] + m.lsm_window.c0 as f64, p[5] + m.lsm_window.r0 as f64);
+    assert!(
+        (c - (cx + dx)).abs() < 0.05 && (r - (cy + dy)).abs() < 0.05,
+        "{c}, {r}"
+    );
+}
+
+#[test]
+fn the_fiducial_fit_on_the_generated_frame_recovers_the_known_affine() {
+    let img = sample::scanned_frame();
+    let template = sample::mark_template(21).unwrap();
+    let marks = ops::measure_marks(&img, &template, &sample::nominal_marks(), 12).unwrap();
+    // each mark within 0.1 px of its true position: noise 1.5 grey values
+    // against 195 of contrast, and LSM's bilinear resampling of the mark's
+    // one-pixel soft edge (its own error of a few hundredths of a pixel)
+    for (m, t) in marks.iter().zip(sample::true_marks()) {
+        assert!(m.ncc > 0.95, "{m:?}");
+        assert!(m.iterations > 0, "{m:?}");
+        let d = (m.measured.0 - t.0).hypot(m.measured.1 - t.1);
+        assert!(d < 0.1, "{m:?} vs {t:?}: {d} px");
+    }
+    let measured: Vec<(f64, f64)> = marks.iter().map(|m| m.measured).collect();
+    let (sim, aff) = ops::fit_fiducials(&measured, &sample::calibrated()).unwrap();
+    // the affine: 0.1 px of measuring error is 0.025 mm at the marks, so
+    // the scales are within about 0.1·0.25/450 ≈ 6·10⁻⁵ and the shifts 0.03 mm
+    let p = &aff.transform.params;
+    let t = sample::TRUE_AFFINE;
+    for i in [0, 1, 3, 4] {
+        assert!((p[i] - t[i]).abs() < 1e-4, "{p:?} vs {t:?}");
+    }
+    for i in [2, 5] {
+        assert!((p[i] - t[i]).abs() < 0.03, "{p:?} vs {t:?}");
+    }
+    // the similarity cannot take the two scales and the shear: its residuals
+    // are larger than the affine's
+    let rms = |f: &photogrammetry_playground::transform::Fit| {
+        (f.adjustment.vtpv / f.adjustment.v.len() as f64).sqrt()
+    };
+    assert!(
+        rms(&sim) > 5.0 * rms(&aff),
+        "{} vs {}",
+        rms(&sim),
+        rms(&aff)
+    );
+}
+
+#[test]
+fn warp_equals_the_point_functions_and_boundary_traces_the_picked_region() {
+    let img = random(9, 7, 4);
+    let map = |x: f64, y: f64| (0.9 * x + 0.3, 0.8 * y + 0.45);
+    for m in [Method::Nearest, Method::Bilinear, Method::Bicubic] {
+        let g = resample::warp(&img, 9, 7, map, m, 0.0);
+        for r in 0..7 {
+            for c in 0..9 {
+                let (x, y) = map(c as f64, r as f64);
+                let want = match m {
+                    Method::Nearest => resample::nearest(&img, x, y).map(|n| n.value),
+                    Method::Bilinear => resample::bilinear(&img, x, y).map(|n| n.value),
+                    Method::Bicubic => {
+                        resample::bicubic(&img, x, y, resample::SEED_A).map(|n| n.value)
+                    }
+                };
+                assert_eq!(g.get(c, r), Some(want.unwrap_or(0.0)));
+            }
+        }
+    }
+    // a 3×2 bright block in a dark image: boundary of 6 pixels, area 6
+    let img = Grid::from_fn(8, 6, |c, r| {
+        if (2..5).contains(&c) && (1..3).contains(&r) {
+            200.0
+        } else {
+            10.0
+        }
+    });
+    let t = ops::boundary(&img, 100.0, 3, 2).unwrap();
+    assert_eq!(t.boundary.area, 6);
+    assert_eq!(t.boundary.pixels.len(), 6);
+    assert_eq!(
+        t.length.horizontal + t.length.vertical + t.length.diagonal,
+        6
+    );
+    assert_eq!(t.boundary.code, vec![1, 1, 7, 5, 5, 3]);
+}
+
+#[test]
+fn a_handful_of_pixels_of_a_sample_photo_agree_with_an_independent_computation() {
+    // The numbers come from tests/corpus/independent.py: its own PNG decoder
+    // (zlib and the scanline filters) and the sums written out by hand.
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../www/lab/samples/camera.png"
+    ))
+    .unwrap();
+    let img = photogrammetry_lab::decode::decode("camera.png", &bytes)
+        .unwrap()
+        .grid;
+    let mean = ops::filter_image(&img, "mean", ops::border("crop").unwrap(), None).unwrap();
+    let edges = ops::edges(&img, "sobel", ops::border("crop").unwrap()).unwrap();
+    for (c, r, grey, m, gx) in [
+        (0, 0, 200.0, None, None),
+        (100, 50, 210.0, Some(1884.0 / 9.0), Some(-5.0)),
+        (256, 256, 14.0, Some(10.0), Some(-32.0)),
+        (300, 400, 155.0, Some(1397.0 / 9.0), Some(-31.0)),
+        (511, 511, 149.0, None, None),
+    ] {
+        assert_eq!(img.get(c, r), Some(grey), "({c}, {r})");
+        match (mean.at(c, r), m) {
+            (Some(a), Some(b)) => assert!((a - b).abs() < 1e-12, "({c}, {r}): {a} vs {b}"),
+            (a, b) => assert_eq!(a, b, "({c}, {r})"),
+        }
+        assert_eq!(edges[0].at(c, r), gx, "({c}, {r})");
+    }
+}

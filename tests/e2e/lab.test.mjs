@@ -1,0 +1,283 @@
+// The image lab (#/lab) in Chromium: its module loads only when it opens,
+// every sample and every file format opens, each operator family draws its
+// layer, a bad file is refused with its name and reason while the lab keeps
+// working, a trapped worker is replaced with the image kept, an output
+// pixel opens its worked example with the same number, and the fiducial
+// workflow runs from the marks to the residuals.
+
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import path from "node:path";
+import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
+
+const CORPUS = path.resolve("lab/tests/corpus");
+let env;
+before(async () => {
+  env = await start();
+});
+after(async () => {
+  await env?.close();
+});
+
+async function openLab(options) {
+  const o = await open(env.browser, options);
+  await o.page.goto(`${env.url}index.html#/lab`);
+  await o.page.waitForSelector("#lab-sample");
+  return o;
+}
+
+async function idle(page) {
+  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 30_000 });
+}
+
+async function sample(page, id) {
+  await page.selectOption("#lab-sample", id);
+  await page.click("#lab-open-sample");
+  await idle(page);
+  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
+}
+
+/** Mean |difference| of the main canvas's pixels between two grabs, and colour. */
+async function canvasStats(page, selector = ".lab-canvas") {
+  return page.$eval(selector, (cv) => {
+    const d = cv.getContext("2d").getImageData(0, 0, cv.width, cv.height).data;
+    let coloured = 0;
+    let sum = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - d[i + 2]) > 40) coloured++;
+      sum += d[i] + d[i + 1] + d[i + 2];
+    }
+    return { coloured, sum, n: d.length / 4 };
+  });
+}
+
+/** Clicks the main canvas at image pixel (c, r) of the image in view (fitted). */
+async function clickPixel(page, c, r, selector = ".lab-canvas") {
+  const pos = await page.$eval(selector, (cv, [c, r]) => {
+    const b = cv.getBoundingClientRect();
+    return { w: b.width, h: b.height, cw: cv.width, ch: cv.height };
+  }, [c, r]);
+  const img = await page.evaluate(() => document.body.dataset.image);
+  assert.ok(img);
+  // ask the viewer through the canvas: zoom/offset are not public, so click by the image's fitted geometry
+  const info = await page.$eval("#lab-info", (e) => e.textContent);
+  const [, w, h] = info.match(/(\d+) × (\d+) pixels/).map(Number);
+  const zoom = Math.min(pos.cw / w, pos.ch / h);
+  const ox = (pos.cw - w * zoom) / 2;
+  const oy = (pos.ch - h * zoom) / 2;
+  const x = ((c + 0.5) * zoom + ox) * (pos.w / pos.cw);
+  const y = ((r + 0.5) * zoom + oy) * (pos.h / pos.ch);
+  await page.click(selector, { position: { x, y } });
+}
+
+/** Follows the explain link and reads the example's exact result. */
+async function followExplain(page, selector = "#lab-explain-link") {
+  const a = page.locator(selector).first();
+  const key = await a.getAttribute("data-key");
+  const index = (await a.getAttribute("data-index")) || "";
+  const href = await a.getAttribute("href");
+  await page.goto(new URL(href, page.url()).href);
+  assert.equal(await settled(page), "ok", `${href} did not solve`);
+  const raw = await page.locator(`.result-table tr[data-key="${key}"] td.exact`).getAttribute("data-value");
+  let v = JSON.parse(raw);
+  for (const i of index.split(",").filter(Boolean).map(Number)) v = v[i];
+  return { v, key, href };
+}
+
+test("the lab loads its own module only when it opens, and every sample opens", { timeout: TEST_TIMEOUT * 3 }, async () => {
+  const { page, log, context } = await open(env.browser);
+  await page.goto(`${env.url}index.html#/`);
+  await settled(page);
+  assert.ok(!log.requests.some((u) => u.includes("photogrammetry_lab")), "the lab's wasm was fetched before the lab opened");
+  await page.click('a[href="#/lab"]');
+  await page.waitForSelector("#lab-sample");
+  for (const [id, w, h] of [["aero1.jpg", 0, 0], ["aero3.jpg", 0, 0], ["left01.jpg", 640, 480], ["camera.png", 512, 512], ["brick.png", 512, 512], ["frame", 1000, 1000]]) {
+    await sample(page, id);
+    const info = await page.textContent("#lab-info");
+    if (w) assert.match(info, new RegExp(`${w} × ${h} pixels`), info);
+    const s = await canvasStats(page);
+    assert.ok(s.sum > 0, `${id}: nothing drawn`);
+  }
+  assert.ok(log.requests.some((u) => u.includes("photogrammetry_lab_bg.wasm")));
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("files of each format open; a bad file says its name and why, and the lab keeps working", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  for (const [file, w, h, kind] of [["grey8.png", 4, 3, "PNG, grey, 8-bit"], ["grey16.png", 4, 3, "PNG, grey, 16-bit"], ["rgb8.png", 4, 3, "PNG, colour"],
+    ["blocks.jpg", 16, 8, "JPEG, grey"], ["colour.jpg", 8, 8, "JPEG, colour"], ["grey8_strips.tif", 4, 3, "TIFF, grey, 8-bit"],
+    ["grey16_strips.tif", 4, 3, "TIFF, grey, 16-bit"], ["rgb8_tiles.tif", 4, 3, "TIFF, colour"], ["rgb16_strips.tif", 4, 3, "TIFF, colour"]]) {
+    await page.setInputFiles("#lab-file", path.join(CORPUS, file));
+    await page.waitForFunction((f) => document.body.dataset.image === f, file);
+    const info = await page.textContent("#lab-info");
+    assert.ok(info.includes(`${w} × ${h} pixels`) && info.includes(kind), info);
+  }
+  // the 16-bit value is kept: hover the last pixel of grey16.png
+  await page.setInputFiles("#lab-file", path.join(CORPUS, "grey16.png"));
+  await page.waitForFunction(() => document.body.dataset.image === "grey16.png");
+  await idle(page);
+  for (const [file, says] of [["truncated.png", "PNG"], ["bad_crc.png", "damaged"], ["zero_width.png", "PNG"], ["huge_header.png", "too large"],
+    ["bomb.png", "megapixels"], ["missing_tag.tif", "TIFF"], ["text.png", "not a PNG, JPEG or TIFF"], ["empty.png", "empty"], ["truncated.jpg", "cut short"]]) {
+    await page.setInputFiles("#lab-file", path.join(CORPUS, file));
+    await page.waitForFunction(() => !document.getElementById("lab-error").hidden);
+    const msg = await page.textContent("#lab-error");
+    assert.ok(msg.startsWith(`${file}: `) && msg.includes(says), msg);
+    // still the last good image
+    assert.equal(await page.evaluate(() => document.body.dataset.image), "grey16.png");
+  }
+  // and the lab still works on it
+  await page.selectOption("#lab-family", "filters");
+  await page.selectOption("#lab-kernel", "mean");
+  await page.click("#lab-run");
+  await idle(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.layer), "mean");
+  assert.equal(await page.locator("#lab-error").isHidden(), true);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("each operator family draws its layer, and a clicked pixel opens its example with the same number", { timeout: TEST_TIMEOUT * 4 }, async () => {
+  const { page, log, context } = await openLab();
+  const checks = [
+    // family, set-up, expected layer, pixel
+    ["filters", async () => page.selectOption("#lab-kernel", "gaussian-5"), "gaussian-5", [200, 300]],
+    ["filters", async () => page.selectOption("#lab-kernel", "laplacian-8"), "laplacian-8", [250, 150]],
+    ["edges", async () => page.selectOption("#lab-operator", "sobel"), "magnitude", [300, 300]],
+    ["interest", async () => page.selectOption("#lab-interest", "forstner"), "w", [260, 120]],
+    ["interest", async () => page.selectOption("#lab-interest", "moravec"), "moravec", [100, 420]],
+  ];
+  for (const [family, setup, layer, [c, r]] of checks) {
+    await page.goto(`${env.url}index.html#/lab`);
+    await page.waitForSelector("#lab-sample");
+    await sample(page, "camera.png");
+    const before = await canvasStats(page);
+    await page.selectOption("#lab-family", family);
+    await setup();
+    await page.click("#lab-run");
+    await idle(page);
+    assert.equal(await page.evaluate(() => document.body.dataset.layer), layer);
+    const after = await canvasStats(page);
+    assert.notEqual(after.sum, before.sum, `${family}/${layer}: the layer changed no pixel`);
+    if (layer === "laplacian-8") assert.ok(after.coloured > 1000, "a signed layer is drawn in the diverging colours");
+    await clickPixel(page, c, r);
+    await page.waitForSelector("#lab-explain-link");
+    const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+    const { v, href } = await followExplain(page);
+    assert.equal(v, shown, `${href}: the example gives ${v}, the lab showed ${shown}`);
+  }
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("correlation: NCC surface, subpixel and LSM on the aerial pair, each explained by its example", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "aero1.jpg");
+  await page.selectOption("#lab-family", "correlation");
+  await page.selectOption("#lab-second", "same");
+  await page.selectOption("#lab-template", "11");
+  await page.fill("#lab-reach", "12");
+  await clickPixel(page, 300, 200);
+  await page.waitForSelector("#lab-match");
+  await idle(page);
+  const table = await page.textContent("#lab-match");
+  // the template found in its own photo: ρ = 1 where it was cut out
+  assert.match(table, /c \d+, r \d+, ρ = 1(?![.\d])/, table);
+  const search = await canvasStats(page, ".lab-pair canvas");
+  assert.ok(search.coloured > 100, "the NCC surface is drawn in colour");
+  const rho = Number(await page.evaluate(() => document.body.dataset.rho));
+  const links = await page.locator("#lab-explain a").evaluateAll((as) => as.map((a) => a.getAttribute("href")));
+  assert.ok(links.some((h) => h.includes("#/ncc-2d")) && links.some((h) => h.includes("#/subpixel-2d")) && links.some((h) => h.includes("#/lsm-2d")), links.join(" "));
+  const { v } = await followExplain(page, '#lab-explain a[href*="ncc-2d"]');
+  assert.ok(Math.abs(v - rho) < 1e-12, `${v} vs ${rho}`);
+  // the pair: search aero3 for the same template
+  await page.goBack();
+  await page.waitForSelector("#lab-sample");
+  await sample(page, "aero1.jpg");
+  await page.selectOption("#lab-family", "correlation");
+  await page.selectOption("#lab-second", "pair");
+  await page.selectOption("#lab-model", "affine");
+  await clickPixel(page, 300, 200);
+  await page.waitForSelector("#lab-match");
+  await idle(page);
+  assert.match(await page.textContent("#lab-match"), /LSM \(affine\), \d+ iterations/);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("resampling side by side, boundaries with chain code, and the fiducial workflow", { timeout: TEST_TIMEOUT * 3 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "brick.png");
+  await page.selectOption("#lab-family", "resampling");
+  await page.click("#lab-run");
+  await idle(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.resampled), "nearest,bilinear,bicubic");
+  const views = await page.locator("#lab-methods canvas").count();
+  assert.equal(views, 3);
+  const [n, b] = [await canvasStats(page, "#lab-methods figure:nth-child(1) canvas"), await canvasStats(page, "#lab-methods figure:nth-child(2) canvas")];
+  assert.notEqual(n.sum, b.sum, "nearest and bilinear look different on the zoomed crop");
+  // explain a bilinear pixel
+  const bilinear = page.locator("#lab-methods figure:nth-child(2) canvas");
+  const box = await bilinear.boundingBox();
+  await bilinear.click({ position: { x: box.width / 2, y: box.height / 2 } });
+  await page.waitForSelector("#lab-explain-link");
+  const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+  const r1 = await followExplain(page);
+  assert.equal(r1.key, "bilinear");
+  assert.ok(Math.abs(r1.v - shown) < 1e-9, `${r1.v} vs ${shown}`);
+
+  // boundaries on the generated frame: a fiducial's disc is a bright region
+  await page.goto(`${env.url}index.html#/lab`);
+  await page.waitForSelector("#lab-sample");
+  await sample(page, "frame");
+  await page.selectOption("#lab-family", "fiducials");
+  await page.click("#lab-run");
+  await page.waitForSelector("#lab-fiducials");
+  await idle(page);
+  const params = (await page.evaluate(() => document.body.dataset.fiducials)).split(",").map(Number);
+  const truth = [0.2502, 0.0004, 0.12 - 0.2502 * 499.5 + 0.0004 * 499.5, -0.0003, 0.2497, 0.08 + 0.0003 * 499.5 + 0.2497 * 499.5];
+  for (const i of [0, 1, 3, 4]) assert.ok(Math.abs(params[i] - truth[i]) < 1e-4, `${params} vs ${truth}`);
+  for (const i of [2, 5]) assert.ok(Math.abs(params[i] - truth[i]) < 0.03, `${params} vs ${truth}`);
+  const rows = await page.locator("#lab-fiducials tr").count();
+  assert.equal(rows, 5);
+  await page.click("#lab-fiducial-link");
+  assert.equal(await settled(page), "ok");
+  const fitted = JSON.parse(await page.locator('.result-table tr[data-key="parameters"] td.exact').getAttribute("data-value"));
+  for (let i = 0; i < 6; i++) assert.ok(Math.abs(fitted[i] - params[i]) < 1e-9, `${fitted} vs ${params}`);
+
+  await page.goto(`${env.url}index.html#/lab`);
+  await page.waitForSelector("#lab-sample");
+  await sample(page, "frame");
+  await page.selectOption("#lab-family", "boundaries");
+  await page.fill("#lab-bthreshold", "128");
+  // the first mark's true centre is near (48.7, 500.1)
+  await clickPixel(page, 49, 500);
+  await page.waitForSelector("#lab-boundary");
+  await idle(page);
+  const code = await page.evaluate(() => document.body.dataset.code);
+  assert.ok(code.length > 20 && /^[1-8]+$/.test(code), code);
+  const r2 = await followExplain(page, '#lab-explain a[href*="chain-code"]');
+  assert.equal(r2.v.join(""), code);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("a trap in the worker is recovered: a fresh worker, the image and settings kept", { timeout: TEST_TIMEOUT }, async () => {
+  const { page, context } = await openLab();
+  await sample(page, "camera.png");
+  await page.selectOption("#lab-family", "filters");
+  await page.selectOption("#lab-kernel", "sharpen");
+  // the test hook: make the worker's wasm execute `unreachable`
+  await page.evaluate(async () => {
+    const lab = await import("./lab/lab.js");
+    return lab.trapForTests();
+  });
+  await page.waitForFunction(() => /stopped unexpectedly/.test(document.getElementById("lab-error").textContent));
+  await idle(page);
+  assert.equal(await page.inputValue("#lab-kernel"), "sharpen");
+  await page.click("#lab-run");
+  await idle(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.layer), "sharpen");
+  assert.equal(await page.evaluate(() => document.body.dataset.image), "camera.png");
+  await context.close();
+});

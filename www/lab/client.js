@@ -1,0 +1,76 @@
+// The page's side of the lab worker: requests as promises, cancel, and
+// recovery. The worker is replaced (a fresh wasm instance) when its wasm
+// traps, when it dies, or when a long request is cancelled; `restore()`
+// (given by the lab) then puts the student's image back into the new one.
+
+export class LabClient {
+  /**
+   * @param {{ onRestart: (why: string) => Promise<void> }} hooks
+   */
+  constructor(hooks) {
+    this.hooks = hooks;
+    this.nextId = 1;
+    this.pending = new Map();
+    this.start();
+  }
+
+  start() {
+    this.worker = new Worker(new URL("./worker.js", import.meta.url), { type: "module" });
+    this.worker.onmessage = (ev) => this.answer(ev.data);
+    this.worker.onerror = (ev) => {
+      ev.preventDefault?.();
+      this.replace(`the lab's engine stopped (${ev.message || "worker error"})`);
+    };
+  }
+
+  answer({ id, ok, result, error, trapped }) {
+    const p = this.pending.get(id);
+    if (!p) return;
+    this.pending.delete(id);
+    if (ok) {
+      p.resolve(result);
+      return;
+    }
+    const err = new Error(error);
+    err.trapped = Boolean(trapped);
+    p.reject(err);
+    if (trapped) this.replace(`the lab's engine crashed (${error})`);
+  }
+
+  /** Sends a request; resolves with its result, rejects with an Error naming the field. */
+  call(type, args = {}, transfer = []) {
+    const id = this.nextId++;
+    return new Promise((resolve, reject) => {
+      this.pending.set(id, { resolve, reject, type });
+      this.worker.postMessage({ id, type, ...args }, transfer);
+    });
+  }
+
+  /** Whether a request is running. */
+  get busy() {
+    return this.pending.size > 0;
+  }
+
+  /** Stops whatever runs: the worker is replaced and the image restored. */
+  cancel() {
+    this.replace("cancelled");
+  }
+
+  replace(why) {
+    this.worker.terminate();
+    const err = new Error(why === "cancelled" ? "Cancelled." : why);
+    err.cancelled = why === "cancelled";
+    err.trapped = !err.cancelled;
+    for (const p of this.pending.values()) p.reject(err);
+    this.pending.clear();
+    this.start();
+    this.restarting = this.hooks.onRestart(why).finally(() => {
+      this.restarting = null;
+    });
+  }
+
+  close() {
+    this.worker.terminate();
+    this.pending.clear();
+  }
+}

@@ -1,0 +1,133 @@
+// "Explain this pixel": the worked example, as a normal shareable URL, whose
+// inputs are the window of numbers the lab used at one output pixel, and
+// where in that example's result the same number is (`key`, `index`).
+// Pure functions: rows of numbers in, a hash out (through url.js).
+
+import { buildHash } from "../url.js";
+
+/** Rows of numbers as the matrix text the forms read ("1,2,3;4,5,6"). */
+export function matrixText(rows) {
+  return rows.map((row) => row.map((v) => String(v)).join(",")).join(";");
+}
+
+/** A flat row-major array as rows of `w`. */
+export function toRows(flat, w) {
+  const rows = [];
+  for (let i = 0; i < flat.length; i += w) rows.push(Array.from(flat.slice(i, i + w)));
+  return rows;
+}
+
+/** Kernel side of the filter-window kernels. */
+export function kernelSide(kernel) {
+  return kernel === "gaussian-5" || kernel === "log" ? 5 : 3;
+}
+
+/**
+ * filter-window: the (k+2)×(k+2) neighbourhood read under the lab's border
+ * policy; the example's `output` is the 3×3 interior, whose centre is the
+ * lab's pixel.
+ */
+export function filterLink(kernel, window, side) {
+  return {
+    hash: buildHash("filter-window", [["window", matrixText(toRows(window, side))], ["kernel", kernel]]),
+    key: "output",
+    index: [1, 1],
+  };
+}
+
+/** edge-window: the 5×5 neighbourhood; gx, gy, magnitude at the centre of the 3×3 interior. */
+export function edgeLink(operator, window, layerName) {
+  const key = layerName === "direction" ? "magnitude" : layerName;
+  return {
+    hash: buildHash("edge-window", [["window", matrixText(toRows(window, 5))], ["operator", operator]]),
+    key,
+    index: [1, 1],
+  };
+}
+
+/** forstner-window: the window whose anchor is the pixel. */
+export function forstnerLink(window, size, sigmaN, thresholdPx, layerName) {
+  return {
+    hash: buildHash("forstner-window", [
+      ["window", matrixText(toRows(window, size))],
+      ["sigma_n", String(sigmaN)],
+      ["threshold_px", String(thresholdPx)],
+    ]),
+    key: layerName === "q" ? "q" : "w",
+    index: null,
+  };
+}
+
+/** moravec-window: the window whose anchor is the pixel; its `mean`. */
+export function moravecLink(window, size) {
+  return {
+    hash: buildHash("moravec-window", [["window", matrixText(toRows(window, size))]]),
+    key: "mean",
+    index: null,
+  };
+}
+
+/** ncc-2d: the template and the same-sized window of the search image at that position. */
+export function nccLink(template, window, w) {
+  return {
+    hash: buildHash("ncc-2d", [["a", matrixText(toRows(template, w))], ["b", matrixText(toRows(window, w))]]),
+    key: "rho",
+    index: null,
+  };
+}
+
+/** subpixel-2d: the 3×3 ρ round the best position, at the lab's (0-based) pixel positions. */
+export function subpixelLink(best, around) {
+  const [c, r] = best;
+  return {
+    hash: buildHash("subpixel-2d", [
+      ["c", [c - 1, c, c + 1].join(",")],
+      ["r", [r - 1, r, r + 1].join(",")],
+      ["rho", matrixText(toRows(around, 3))],
+    ]),
+    key: "c_max",
+    index: null,
+  };
+}
+
+/** lsm-2d: the template, the LSM window and the start (1-based). */
+export function lsmLink(template, tw, search, sw, start) {
+  return {
+    hash: buildHash("lsm-2d", [
+      ["template", matrixText(toRows(template, tw))],
+      ["search", matrixText(toRows(search, sw))],
+      ["c0", String(start[0] + 1)],
+      ["r0", String(start[1] + 1)],
+      ["a0", "1"],
+      ["b0", "0"],
+    ]),
+    key: "c",
+    index: null,
+  };
+}
+
+/** resample: the 4×4 patch round (x, y), its first pixel, the position. */
+export function resampleLink(patch, firstC, firstR, x, y, method) {
+  return {
+    hash: buildHash("resample", [
+      ["patch", matrixText(toRows(patch, 4))],
+      ["first_c", String(firstC)],
+      ["first_r", String(firstR)],
+      ["c", String(x)],
+      ["r", String(y)],
+    ]),
+    key: method,
+    index: null,
+  };
+}
+
+/** chain-code: the traced boundary as [c, r] rows. */
+export function chainLink(pixels) {
+  const rows = [];
+  for (let i = 0; i < pixels.length; i += 2) rows.push([pixels[i], pixels[i + 1]]);
+  return {
+    hash: buildHash("chain-code", [["pixels", matrixText(rows)]]),
+    key: "code",
+    index: null,
+  };
+}

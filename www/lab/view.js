@@ -1,0 +1,400 @@
+// The lab's image view: the grey image with a result layer over it (with an
+// opacity) or beside it, zoom and pan by mouse wheel / drag, touch (drag,
+// pinch) and keyboard (+ − arrows 0), a pixel inspector, grey values written
+// into the pixels when zoomed in far enough, and shapes drawn on top
+// (points with ellipses, boxes, outlines) in image coordinates.
+
+/** Pixels of screen per image pixel from which grey values are written in. */
+const LABEL_ZOOM = 28;
+const MIN_ZOOM = 0.05;
+const MAX_ZOOM = 64;
+
+/** A number for people: up to `digits` significant digits, no trailing noise. */
+export function fmt(v, digits = 5) {
+  if (v === null || v === undefined || !Number.isFinite(v)) return "–";
+  if (Number.isInteger(v)) return String(v);
+  const s = Number(v.toPrecision(digits));
+  return String(s);
+}
+
+/** min and max of the finite values. */
+export function rangeOf(data) {
+  let lo = Infinity;
+  let hi = -Infinity;
+  for (const v of data) {
+    if (Number.isFinite(v)) {
+      if (v < lo) lo = v;
+      if (v > hi) hi = v;
+    }
+  }
+  return lo <= hi ? [lo, hi] : [0, 0];
+}
+
+/** The diverging scale: blue (−) through white (0) to red (+), t in [−1, 1]. */
+export function diverging(t) {
+  const u = Math.max(-1, Math.min(1, t));
+  if (u < 0) {
+    const a = -u;
+    return [Math.round(255 - a * (255 - 33)), Math.round(255 - a * (255 - 102)), Math.round(255 - a * (255 - 172))];
+  }
+  return [Math.round(255 - u * (255 - 178)), Math.round(255 - u * (255 - 24)), Math.round(255 - u * (255 - 43))];
+}
+
+/** How a layer maps to colours: signed → symmetric diverging, else grey stretch. */
+export function scaleOf(layer) {
+  const [lo, hi] = rangeOf(layer.data);
+  if (layer.signed) {
+    const m = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
+    return { signed: true, lo: -m, hi: m, min: lo, max: hi };
+  }
+  return { signed: false, lo, hi: hi > lo ? hi : lo + 1, min: lo, max: hi };
+}
+
+/** RGBA pixels of a layer (NaN transparent). */
+export function paint(layer, scale) {
+  const out = new Uint8ClampedArray(layer.width * layer.height * 4);
+  const { lo, hi } = scale;
+  for (let i = 0; i < layer.data.length; i++) {
+    const v = layer.data[i];
+    if (!Number.isFinite(v)) continue;
+    let rgb;
+    if (scale.signed) rgb = diverging(v / hi);
+    else {
+      const g = Math.round(((v - lo) / (hi - lo)) * 255);
+      rgb = [g, g, g];
+    }
+    out.set([rgb[0], rgb[1], rgb[2], 255], i * 4);
+  }
+  return out;
+}
+
+function canvasOf(width, height, rgba) {
+  const c = document.createElement("canvas");
+  c.width = width;
+  c.height = height;
+  c.getContext("2d").putImageData(new ImageData(rgba, width, height), 0, 0);
+  return c;
+}
+
+export class Viewer {
+  /**
+   * @param {HTMLElement} host
+   * @param {{ label: string, onPick?: (c: number, r: number, ev: Event) => void, onHover?: (p: object|null) => void }} opts
+   */
+  constructor(host, opts) {
+    this.opts = opts;
+    this.canvas = document.createElement("canvas");
+    this.canvas.className = "lab-canvas";
+    this.canvas.tabIndex = 0;
+    this.canvas.setAttribute("role", "img");
+    this.canvas.setAttribute("aria-label", opts.label);
+    host.append(this.canvas);
+    this.image = null;
+    this.base = null;
+    this.layer = null;
+    this.layerCanvas = null;
+    this.opacity = 0.7;
+    this.mode = "over";
+    this.shapes = [];
+    this.zoom = 1;
+    this.ox = 0;
+    this.oy = 0;
+    this.bind();
+    this.resizer = new ResizeObserver(() => this.resize());
+    this.resizer.observe(host);
+  }
+
+  destroy() {
+    this.resizer.disconnect();
+    this.canvas.remove();
+  }
+
+  /** @param {{ width, height, grey: Float64Array, maxValue }} img */
+  setImage(img) {
+    this.image = img;
+    const rgba = new Uint8ClampedArray(img.width * img.height * 4);
+    const [lo, hi] = rangeOf(img.grey);
+    // the full range of the sample depth, stretched when the image uses little of it
+    const top = hi > lo ? hi : lo + 1;
+    for (let i = 0; i < img.grey.length; i++) {
+      const g = Math.round(((img.grey[i] - lo) / (top - lo)) * 255);
+      rgba[i * 4] = rgba[i * 4 + 1] = rgba[i * 4 + 2] = g;
+      rgba[i * 4 + 3] = 255;
+    }
+    this.base = canvasOf(img.width, img.height, rgba);
+    this.layer = null;
+    this.layerCanvas = null;
+    this.shapes = [];
+    this.fitted = false;
+    this.resize();
+  }
+
+  /** Shows `layer` (or none) over or beside the image; returns its colour scale. */
+  setLayer(layer) {
+    this.layer = layer;
+    if (!layer) {
+      this.layerCanvas = null;
+      this.draw();
+      return null;
+    }
+    this.scale = scaleOf(layer);
+    this.layerCanvas = canvasOf(layer.width, layer.height, paint(layer, this.scale));
+    this.draw();
+    return this.scale;
+  }
+
+  setOpacity(o) {
+    this.opacity = o;
+    this.draw();
+  }
+
+  setMode(mode) {
+    this.mode = mode;
+    this.fit();
+  }
+
+  setShapes(shapes) {
+    this.shapes = shapes;
+    this.draw();
+  }
+
+  resize() {
+    const w = Math.max(200, this.canvas.parentElement?.clientWidth || 600);
+    const img = this.image;
+    const aspect = img ? (img.height / (img.width * (this.mode === "beside" && this.layer ? 2 : 1))) : 0.75;
+    const h = Math.round(Math.min(Math.max(220, w * aspect), window.innerHeight * 0.7));
+    const dpr = window.devicePixelRatio || 1;
+    this.canvas.style.height = `${h}px`;
+    this.canvas.width = Math.round(w * dpr);
+    this.canvas.height = Math.round(h * dpr);
+    this.dpr = dpr;
+    if (!this.fitted) this.fit();
+    else this.draw();
+  }
+
+  /** The whole image in view. */
+  fit() {
+    if (!this.image || !this.canvas.width) {
+      this.draw();
+      return;
+    }
+    const panels = this.mode === "beside" && this.layer ? 2 : 1;
+    const w = this.canvas.width / panels;
+    this.zoom = Math.min(w / this.image.width, this.canvas.height / this.image.height);
+    this.ox = (w - this.image.width * this.zoom) / 2;
+    this.oy = (this.canvas.height - this.image.height * this.zoom) / 2;
+    this.fitted = true;
+    this.draw();
+  }
+
+  /** Image position (continuous, pixel centres at integers) under canvas point (px, py). */
+  toImage(px, py) {
+    const panels = this.mode === "beside" && this.layer ? 2 : 1;
+    const w = this.canvas.width / panels;
+    const x = ((px % w) - this.ox) / this.zoom - 0.5;
+    const y = (py - this.oy) / this.zoom - 0.5;
+    return [x, y];
+  }
+
+  zoomAt(f, px, py) {
+    const z = Math.max(MIN_ZOOM, Math.min(MAX_ZOOM, this.zoom * f));
+    const k = z / this.zoom;
+    this.ox = px - (px - this.ox) * k;
+    this.oy = py - (py - this.oy) * k;
+    this.zoom = z;
+    this.draw();
+  }
+
+  /** Zooms so that one image pixel is `z` screen pixels, centred on (c, r). */
+  zoomTo(z, c, r) {
+    this.zoom = z;
+    this.ox = this.canvas.width / 2 - (c + 0.5) * z;
+    this.oy = this.canvas.height / 2 - (r + 0.5) * z;
+    this.draw();
+  }
+
+  bind() {
+    const cv = this.canvas;
+    const pos = (ev) => {
+      const b = cv.getBoundingClientRect();
+      return [((ev.clientX - b.left) / b.width) * cv.width, ((ev.clientY - b.top) / b.height) * cv.height];
+    };
+    cv.addEventListener("wheel", (ev) => {
+      ev.preventDefault();
+      const [px, py] = pos(ev);
+      this.zoomAt(ev.deltaY < 0 ? 1.25 : 0.8, px, py);
+    }, { passive: false });
+    const pointers = new Map();
+    let moved = 0;
+    let pinch = null;
+    cv.addEventListener("pointerdown", (ev) => {
+      cv.setPointerCapture(ev.pointerId);
+      pointers.set(ev.pointerId, pos(ev));
+      moved = 0;
+      if (pointers.size === 2) {
+        const [a, b] = [...pointers.values()];
+        pinch = Math.hypot(a[0] - b[0], a[1] - b[1]);
+      }
+    });
+    cv.addEventListener("pointermove", (ev) => {
+      const p = pos(ev);
+      if (this.image) {
+        const [x, y] = this.toImage(p[0], p[1]);
+        this.hover(Math.round(x), Math.round(y));
+      }
+      const last = pointers.get(ev.pointerId);
+      if (!last) return;
+      pointers.set(ev.pointerId, p);
+      if (pointers.size === 2 && pinch) {
+        const [a, b] = [...pointers.values()];
+        const d = Math.hypot(a[0] - b[0], a[1] - b[1]);
+        this.zoomAt(d / pinch, (a[0] + b[0]) / 2, (a[1] + b[1]) / 2);
+        pinch = d;
+        moved += 10;
+        return;
+      }
+      if (this.dragHandler?.move) {
+        moved += Math.abs(p[0] - last[0]) + Math.abs(p[1] - last[1]);
+        if (this.dragHandler.move(this.toImage(...p))) return;
+      }
+      moved += Math.abs(p[0] - last[0]) + Math.abs(p[1] - last[1]);
+      this.ox += p[0] - last[0];
+      this.oy += p[1] - last[1];
+      this.draw();
+    });
+    const up = (ev) => {
+      const p = pointers.get(ev.pointerId);
+      pointers.delete(ev.pointerId);
+      if (pointers.size < 2) pinch = null;
+      if (!p || !this.image) return;
+      if (this.dragHandler?.end && this.dragHandler.end(this.toImage(...p), moved)) return;
+      if (moved < 6) {
+        const [x, y] = this.toImage(p[0], p[1]);
+        const c = Math.round(x);
+        const r = Math.round(y);
+        if (c >= 0 && r >= 0 && c < this.image.width && r < this.image.height) this.opts.onPick?.(c, r, ev, [x, y]);
+      }
+    };
+    cv.addEventListener("pointerup", up);
+    cv.addEventListener("pointercancel", (ev) => pointers.delete(ev.pointerId));
+    cv.addEventListener("pointerleave", () => this.opts.onHover?.(null));
+    cv.addEventListener("keydown", (ev) => {
+      const step = 40 * (this.dpr || 1);
+      const mid = [cv.width / 2, cv.height / 2];
+      const keys = {
+        "+": () => this.zoomAt(1.25, ...mid),
+        "=": () => this.zoomAt(1.25, ...mid),
+        "-": () => this.zoomAt(0.8, ...mid),
+        0: () => this.fit(),
+        ArrowLeft: () => { this.ox += step; this.draw(); },
+        ArrowRight: () => { this.ox -= step; this.draw(); },
+        ArrowUp: () => { this.oy += step; this.draw(); },
+        ArrowDown: () => { this.oy -= step; this.draw(); },
+      };
+      const k = keys[ev.key];
+      if (k) {
+        ev.preventDefault();
+        k();
+      }
+    });
+  }
+
+  hover(c, r) {
+    const img = this.image;
+    if (!img || c < 0 || r < 0 || c >= img.width || r >= img.height) {
+      this.opts.onHover?.(null);
+      return;
+    }
+    let layerValue = null;
+    const l = this.layer;
+    if (l && c >= l.c0 && r >= l.r0 && c < l.c0 + l.width && r < l.r0 + l.height) {
+      const v = l.data[(r - l.r0) * l.width + (c - l.c0)];
+      if (Number.isFinite(v)) layerValue = v;
+    }
+    this.opts.onHover?.({ c, r, grey: img.grey[r * img.width + c], layer: layerValue, layerName: l?.name ?? null });
+  }
+
+  draw() {
+    const cv = this.canvas;
+    const ctx = cv.getContext("2d");
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = getComputedStyle(cv).getPropertyValue("--bg-soft") || "#f6f8fa";
+    ctx.fillRect(0, 0, cv.width, cv.height);
+    if (!this.base) return;
+    const panels = this.mode === "beside" && this.layerCanvas ? 2 : 1;
+    const w = cv.width / panels;
+    for (let p = 0; p < panels; p++) {
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(p * w, 0, w, cv.height);
+      ctx.clip();
+      ctx.setTransform(this.zoom, 0, 0, this.zoom, p * w + this.ox, this.oy);
+      ctx.imageSmoothingEnabled = false;
+      const onlyLayer = panels === 2 && p === 1;
+      if (!onlyLayer) ctx.drawImage(this.base, 0, 0);
+      if (this.layerCanvas && (onlyLayer || panels === 1)) {
+        ctx.globalAlpha = onlyLayer ? 1 : this.opacity;
+        ctx.drawImage(this.layerCanvas, this.layer.c0, this.layer.r0);
+        ctx.globalAlpha = 1;
+      }
+      if (this.zoom >= LABEL_ZOOM) this.labels(ctx, p * w, w, onlyLayer);
+      this.drawShapes(ctx);
+      ctx.restore();
+    }
+  }
+
+  /** Grey values (or layer values) written into the visible pixels. */
+  labels(ctx, x0, w, layerOnly) {
+    const img = this.image;
+    const c0 = Math.max(0, Math.floor(-this.ox / this.zoom));
+    const r0 = Math.max(0, Math.floor(-this.oy / this.zoom));
+    const c1 = Math.min(img.width - 1, Math.ceil((w - this.ox) / this.zoom));
+    const r1 = Math.min(img.height - 1, Math.ceil((this.canvas.height - this.oy) / this.zoom));
+    ctx.font = `${0.28}px sans-serif`;
+    ctx.textAlign = "center";
+    ctx.textBaseline = "middle";
+    const l = this.layer;
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        let v = img.grey[r * img.width + c];
+        if (layerOnly && l) {
+          const inside = c >= l.c0 && r >= l.r0 && c < l.c0 + l.width && r < l.r0 + l.height;
+          v = inside ? l.data[(r - l.r0) * l.width + (c - l.c0)] : NaN;
+        }
+        if (!Number.isFinite(v)) continue;
+        const text = Number.isInteger(v) ? String(v) : v.toFixed(Math.abs(v) < 10 ? 2 : 1);
+        ctx.lineWidth = 0.06;
+        ctx.strokeStyle = "#000";
+        ctx.fillStyle = "#fff";
+        ctx.strokeText(text, c + 0.5, r + 0.5, 0.95);
+        ctx.fillText(text, c + 0.5, r + 0.5, 0.95);
+      }
+    }
+  }
+
+  drawShapes(ctx) {
+    const px = 1 / this.zoom;
+    for (const s of this.shapes) {
+      ctx.strokeStyle = s.colour || "#ff8c00";
+      ctx.fillStyle = s.colour || "#ff8c00";
+      ctx.lineWidth = (s.width || 2) * px * (this.dpr || 1);
+      ctx.beginPath();
+      if (s.kind === "rect") {
+        ctx.rect(s.c0, s.r0, s.w, s.h);
+      } else if (s.kind === "ellipse") {
+        // centre at pixel centre (c + 0.5); semi-axes scaled to be visible
+        ctx.ellipse(s.c + 0.5, s.r + 0.5, Math.max(s.a, 2 * px), Math.max(s.b, 2 * px), s.angle || 0, 0, 2 * Math.PI);
+      } else if (s.kind === "dot") {
+        ctx.arc(s.c + 0.5, s.r + 0.5, (s.size || 3) * px * (this.dpr || 1), 0, 2 * Math.PI);
+      } else if (s.kind === "poly") {
+        s.points.forEach(([c, r], i) => (i ? ctx.lineTo(c + 0.5, r + 0.5) : ctx.moveTo(c + 0.5, r + 0.5)));
+        if (s.closed) ctx.closePath();
+      } else if (s.kind === "line") {
+        ctx.moveTo(s.from[0] + 0.5, s.from[1] + 0.5);
+        ctx.lineTo(s.to[0] + 0.5, s.to[1] + 0.5);
+      }
+      if (s.fill) ctx.fill();
+      else ctx.stroke();
+    }
+  }
+}

@@ -1,0 +1,122 @@
+// The lab's Web Worker: holds the lab's wasm module and the images in its
+// memory, runs one request at a time and answers with plain objects whose
+// big arrays are transferred (not copied) to the page.
+//   request  { id, type, ...args }
+//   answer   { id, ok: true, result } | { id, ok: false, error, trapped }
+// A wasm trap (WebAssembly.RuntimeError) is reported as `trapped`: the page
+// then drops this worker and starts a fresh one.
+
+import init, * as lab from "./pkg/photogrammetry_lab.js";
+
+const ready = init();
+/** The images by slot: "a" (the open photo), "b" (the second photo of a pair). */
+const images = {};
+
+function layersOut(layers, transfer) {
+  for (const l of layers) transfer.push(l.data.buffer);
+  return layers;
+}
+
+function imageInfo(img, transfer) {
+  const grey = img.grey();
+  transfer.push(grey.buffer);
+  return {
+    width: img.width(),
+    height: img.height(),
+    format: img.format(),
+    colour: img.colour(),
+    bits: img.bits(),
+    maxValue: img.max_value(),
+    grey,
+  };
+}
+
+function need(slot) {
+  const img = images[slot];
+  if (!img) throw new Error(`image: no image is open${slot === "b" ? " as the second photo" : ""}`);
+  return img;
+}
+
+function put(slot, img) {
+  images[slot]?.free();
+  images[slot] = img;
+}
+
+const handlers = {
+  load({ slot = "a", name, bytes }, transfer) {
+    const img = lab.decode_image(name, new Uint8Array(bytes));
+    put(slot, img);
+    return imageInfo(img, transfer);
+  },
+  frame({ slot = "a" }, transfer) {
+    const img = lab.scanned_frame();
+    put(slot, img);
+    return { ...imageInfo(img, transfer), truth: lab.scanned_frame_truth() };
+  },
+  neighbourhood({ slot = "a", c, r, w, h, border }) {
+    return need(slot).neighbourhood(c, r, w, h, border);
+  },
+  window({ slot = "a", c, r, w, h }) {
+    return need(slot).window(c, r, w, h);
+  },
+  filter({ kernel, border }, transfer) {
+    return { layers: layersOut(lab.run_filter(need("a"), kernel, border), transfer) };
+  },
+  edges({ operator, border }, transfer) {
+    return { layers: layersOut(lab.run_edges(need("a"), operator, border), transfer) };
+  },
+  forstner({ size, sigmaN, thresholdPx, qMin }, transfer) {
+    const r = lab.run_forstner(need("a"), size, sigmaN, thresholdPx, qMin);
+    layersOut(r.layers, transfer);
+    return r;
+  },
+  moravec({ size, threshold }, transfer) {
+    const r = lab.run_moravec(need("a"), size, threshold);
+    layersOut(r.layers, transfer);
+    return r;
+  },
+  correlation({ template, search, model, sameImage }, transfer) {
+    const b = sameImage || !images.b ? need("a") : images.b;
+    const r = lab.run_correlation(need("a"), Float64Array.from(template), b, Float64Array.from(search), model);
+    layersOut(r.layers, transfer);
+    return r;
+  },
+  resample({ kind, params, width, height }, transfer) {
+    return { layers: layersOut(lab.run_resample(need("a"), kind, Float64Array.from(params), width, height), transfer) };
+  },
+  resamplePosition({ kind, params, width, height, c, r }) {
+    return lab.resample_position(need("a"), kind, Float64Array.from(params), width, height, c, r);
+  },
+  boundary({ threshold, c, r }, transfer) {
+    const out = lab.run_boundary(need("a"), threshold, c, r);
+    layersOut(out.layers, transfer);
+    return out;
+  },
+  fiducials({ approx }) {
+    return lab.run_fiducials(need("a"), Float64Array.from(approx));
+  },
+  raw({ slot = "a", width, height, bytes }) {
+    put(slot, lab.image_from_u8(width, height, new Uint8Array(bytes)));
+    return { width, height };
+  },
+  trap() {
+    lab.trap_for_tests();
+  },
+};
+
+self.onmessage = async (ev) => {
+  const { id, type, ...args } = ev.data;
+  try {
+    await ready;
+    const handler = handlers[type];
+    if (!handler) throw new Error(`unknown request "${type}"`);
+    const transfer = [];
+    const t0 = performance.now();
+    const result = handler(args, transfer);
+    // ms: the time inside the worker (for npm run bench -- --lab)
+    self.postMessage({ id, ok: true, result, ms: performance.now() - t0 }, transfer);
+  } catch (e) {
+    const trapped = e instanceof WebAssembly.RuntimeError;
+    self.postMessage({ id, ok: false, trapped, error: String(e?.message ?? e) });
+  }
+};
