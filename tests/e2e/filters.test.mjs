@@ -74,7 +74,7 @@ describe("resampling, filters and edges", () => {
       assert.ok(Math.abs((await exact(page, "selected")) - 102 / 9) < 1e-12);
       const notes = await page.locator(".notes .note").allInnerTexts();
       assert.ok(notes.some((n) => /erratum/i.test(n) && /copied as 1/.test(n)));
-      assert.ok(notes.some((n) => /rounding/i.test(n) && /cuts the means off/.test(n)));
+      assert.ok(notes.some((n) => /rounding/i.test(n) && /cut the means off/.test(n)));
       assert.match(await page.locator('.result-table tr[data-key="output"] td.printed').innerText(), /12\.9/);
       assert.equal(await page.locator(".formula-raw, .formula-error").count(), 0);
       const [fig] = await canvases(page);
