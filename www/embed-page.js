@@ -73,7 +73,8 @@ export function onView(view, api) {
   const live = el("p", { class: "visually-hidden result-announcer", "aria-live": "polite", "aria-atomic": "true" });
   const toolsHost = el("section", { class: "panel tools-section", "aria-labelledby": "tools-h" }, el("h3", { id: "tools-h" }, embedded ? "Export" : "Share and export"));
   toolsHost.append(toolsBar(view, { embedded, options: currentOptions }));
-  article.append(toolsHost, live);
+  article.append(toolsHost);
+  article.prepend(live); // (at the end its absolute box would hang below the content)
   openSteps.clear();
   current = { view, api, notice, live, toolsHost, printInputs, printLink, lastAnnounced: null };
   // a locked example: the figure edits no input (its view selections stay)

@@ -21,6 +21,7 @@ function offer(worker) {
 }
 
 function watch(registration) {
+  if (!registration) return; // registration refused (a browser that blocks workers)
   if (registration.waiting && navigator.serviceWorker.controller) offer(registration.waiting);
   registration.addEventListener("updatefound", () => {
     const worker = registration.installing;
