@@ -16,7 +16,7 @@ import { formatValue } from "./format.js";
 /** Wait after the last change before announcing the result (typing settles). */
 const ANNOUNCE_DELAY_MS = 600;
 /** Result keys read out in an announcement. */
-const ANNOUNCE_KEYS = 3;
+const ANNOUNCE_KEYS = 6;
 
 const embedded = document.body.dataset.mode === "embed";
 let options = defaults();
