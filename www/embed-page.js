@@ -140,7 +140,11 @@ function shapeSteps() {
       fold.append(...[...item.childNodes]);
       item.append(fold);
       if (openSteps.has(k) || (start && !openSteps.size)) fold.open = true;
-      fold.addEventListener("toggle", () => (fold.open ? openSteps.add(k) : openSteps.delete(k)));
+      fold.addEventListener("toggle", () => {
+        if (fold.open) openSteps.add(k);
+        else openSteps.delete(k);
+        reachScrollers();
+      });
     }
   });
 }
@@ -173,6 +177,29 @@ function visibleErrors() {
   return errors;
 }
 
+/**
+ * A formula wider than its column scrolls sideways; a keyboard user must be
+ * able to reach it (WCAG 2.1.1, axe's scrollable-region-focusable). Only the
+ * parts that do scroll get a tab stop. (A stopgap until math.js does it.)
+ */
+function reachScrollers() {
+  for (const part of document.querySelectorAll(".formula-part")) {
+    const scrolls = part.scrollWidth > part.clientWidth + 1;
+    if (scrolls && !part.hasAttribute("tabindex")) {
+      part.tabIndex = 0;
+      part.classList.add("formula-scrolls");
+    } else if (!scrolls && part.classList.contains("formula-scrolls")) {
+      part.removeAttribute("tabindex");
+      part.classList.remove("formula-scrolls");
+    }
+  }
+}
+let scrollerTimer = 0;
+window.addEventListener("resize", () => {
+  clearTimeout(scrollerTimer);
+  scrollerTimer = setTimeout(reachScrollers, 150);
+});
+
 /** Each settled state: folds, announcements, events to the host. */
 export function onStatus(status, view) {
   if (!current || view !== current.view) return;
@@ -183,6 +210,7 @@ export function onStatus(status, view) {
   current.printLink.textContent = `Link: ${location.href}`;
   if (status === "ok" && view.lastGood) {
     shapeSteps();
+    reachScrollers();
     const solution = view.lastGood;
     const summary = resultSummary(solution);
     if (current.lastAnnounced === null) current.lastAnnounced = `Result: ${summary}`;
