@@ -54,9 +54,8 @@ const NOTES = [
   ["Quarto / Jupyter Book", "Paste either form into a raw HTML block (```{=html} in Quarto, a {raw} html cell or a .. raw:: html directive in Jupyter Book); the script form sizes itself."],
 ];
 
-function copyField(label, text, name) {
-  const area = el("textarea", { class: "snippet", readonly: true, rows: String(Math.min(6, text.split("\n").length + 2)), "aria-label": label, "data-snippet": name });
-  area.value = text;
+function copyField(label, name, rows) {
+  const area = el("textarea", { class: "snippet", readonly: true, rows: String(rows), "aria-label": label, "data-snippet": name });
   const status = el("span", { class: "snippet-status", role: "status" });
   const copy = el("button", { type: "button", class: "button", "data-copy": name }, `Copy ${label.toLowerCase()}`);
   copy.addEventListener("click", async () => {
@@ -113,8 +112,8 @@ export function toggleEmbedPanel(view, button, bar) {
   panel?.close();
   const state = { theme: "auto", hide: [], steps: "open", lock: false, step: null, height: DEFAULT_HEIGHT };
   const base = new URL(".", location.href.split("#")[0]).href;
-  const script = copyField("Script form", "", "script");
-  const iframe = copyField("Iframe form", "", "iframe");
+  const script = copyField("Script form", "script", 4);
+  const iframe = copyField("Iframe form", "iframe", 5);
   const preview = el("iframe", { class: "embed-preview", title: `Preview of the embedded ${view.entry.title}`, loading: "lazy" });
   const heightNote = el("p", { class: "muted embed-height" });
   const refresh = ({ reload = true } = {}) => {
@@ -153,7 +152,7 @@ export function toggleEmbedPanel(view, button, bar) {
     notes,
     el("h4", {}, "Live preview"),
     heightNote,
-    preview,
+    el("div", { class: "embed-preview-box" }, preview),
   );
   bar.after(node);
   refresh();
