@@ -128,8 +128,10 @@ fn bad_inputs_are_js_errors_and_the_module_keeps_answering() {
         solve_err("boundary-length", obj(r#"{"connectivity": 6}"#)),
         "connectivity: 6 is not one of the choices (8, 4)"
     );
-    assert!(solve_err("boundary-length", obj(r#"{"connectivity": true}"#))
-        .starts_with("connectivity: must be one of the choices"));
+    assert!(
+        solve_err("boundary-length", obj(r#"{"connectivity": true}"#))
+            .starts_with("connectivity: must be one of the choices")
+    );
     assert!(
         solve_err("boundary-shape", obj(r#"{"pixels": [[0,0],[9000,0]]}"#))
             .contains("can be traced")
@@ -173,7 +175,9 @@ fn a_numeric_choice_takes_the_number_across_the_boundary() {
         num(&by_text, &["result", "length"])
     );
     assert_eq!(
-        at(&by_number, &["inputs", "connectivity"]).as_string().as_deref(),
+        at(&by_number, &["inputs", "connectivity"])
+            .as_string()
+            .as_deref(),
         Some("4")
     );
 }

@@ -34,7 +34,7 @@
         params.set(a.slice(5), el.attributes[i].value);
     }
     params.set("id", id);
-    params.set("host", location.origin);
+    if (/^https?:/.test(location.origin)) params.set("host", location.origin);
     var frame = document.createElement("iframe");
     frame.src = base.href + "#/" + (q < 0 ? spec : spec.slice(0, q)) + "?" + params.toString();
     frame.title = el.getAttribute("data-title") || "Worked example: " + (q < 0 ? spec : spec.slice(0, q)) + " (Photogrammetry Playground)";

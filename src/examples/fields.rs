@@ -756,16 +756,27 @@ mod tests {
 
     #[test]
     fn a_choice_of_numbers_also_takes_the_number() {
-        let f = Field::choice("connectivity", "Connectivity", &[("8", "8"), ("4", "4")], "8");
+        let f = Field::choice(
+            "connectivity",
+            "Connectivity",
+            &[("8", "8"), ("4", "4")],
+            "8",
+        );
         assert_eq!(f.check(&Value::Number(4.0)), Ok(Value::Text("4".into())));
         assert_eq!(f.check(&Value::Number(8.0)), Ok(Value::Text("8".into())));
-        assert_eq!(f.check(&Value::Text("4".into())), Ok(Value::Text("4".into())));
+        assert_eq!(
+            f.check(&Value::Text("4".into())),
+            Ok(Value::Text("4".into()))
+        );
         let e = f.check(&Value::Number(6.0)).unwrap_err().to_string();
         assert_eq!(e, "connectivity: 6 is not one of the choices (8, 4)");
         let e = f.check(&Value::Number(f64::NAN)).unwrap_err().to_string();
         assert!(e.starts_with("connectivity: NaN is not one of"), "{e}");
         let e = f.check(&Value::Bool(true)).unwrap_err().to_string();
-        assert!(e.starts_with("connectivity: must be one of the choices"), "{e}");
+        assert!(
+            e.starts_with("connectivity: must be one of the choices"),
+            "{e}"
+        );
         // options that are words take no number
         let g = Field::choice("model", "Model", &[("helmert", "Helmert")], "helmert");
         let e = g.check(&Value::Number(1.0)).unwrap_err().to_string();
