@@ -202,7 +202,10 @@ window.addEventListener("resize", () => {
 
 /** Each settled state: folds, announcements, events to the host. */
 export function onStatus(status, view) {
-  if (!current || view !== current.view) return;
+  if (!current || view !== current.view) {
+    scheduleMeasure(); // a message page ("no such example") has a height too
+    return;
+  }
   current.printInputs.textContent = view.form
     .entries()
     .map(([k, v]) => `${k} = ${v.replace(/\n/g, "; ")}`)
@@ -210,7 +213,9 @@ export function onStatus(status, view) {
   current.printLink.textContent = `Link: ${location.href}`;
   if (status === "ok" && view.lastGood) {
     shapeSteps();
-    reachScrollers();
+    // after the solution is on screen, when the page is idle (it measures the layout)
+    if (window.requestIdleCallback) requestIdleCallback(reachScrollers, { timeout: 1000 });
+    else setTimeout(reachScrollers, 200);
     const solution = view.lastGood;
     const summary = resultSummary(solution);
     if (current.lastAnnounced === null) current.lastAnnounced = `Result: ${summary}`;

@@ -43,7 +43,7 @@ export function snippets({ base, id, title, texts, options, height = DEFAULT_HEI
   const script = `<script src="${attrText(embedJs)}" defer></script>\n<div data-playground="${attrText(query)}"${attrs.length ? ` ${attrs.join(" ")}` : ""}></div>`;
   const src = new URL(`embed.html${buildHash(id, [...texts, ...params])}`, base).href;
   const h = Math.max(200, Math.ceil(height / 10) * 10);
-  const iframe = `<iframe src="${attrText(src)}" title="${attrText(`${title} — ${SITE}`)}" loading="lazy" width="100%" height="${h}" style="width:100%;height:${h}px;border:0"></iframe>`;
+  const iframe = `<iframe src="${attrText(src)}" title="${attrText(`${title} — ${SITE}`)}" loading="lazy" allow="clipboard-write" width="100%" height="${h}" style="width:100%;height:${h}px;border:0"></iframe>`;
   return { script, iframe, src, height: h };
 }
 

@@ -39,6 +39,7 @@
     frame.src = base.href + "#/" + (q < 0 ? spec : spec.slice(0, q)) + "?" + params.toString();
     frame.title = el.getAttribute("data-title") || "Worked example: " + (q < 0 ? spec : spec.slice(0, q)) + " (Photogrammetry Playground)";
     frame.loading = "lazy";
+    frame.allow = "clipboard-write";
     frame.setAttribute("style", "display:block;width:100%;border:0;height:480px");
     var rec = { el: el, frame: frame, id: id, state: null, shown: false, title: !el.getAttribute("data-title") };
     el.textContent = "";
