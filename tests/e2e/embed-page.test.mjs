@@ -205,6 +205,7 @@ describe("exports and Embed this", { timeout: TEST_TIMEOUT * 2 }, () => {
       await context.grantPermissions(["clipboard-read", "clipboard-write"], { origin: new URL(env.url).origin });
       await visit(page, env.url, "index.html", "#/gsd?dpi=1200");
       await page.click('[data-tool="embed"]');
+      await page.waitForSelector(".embed-panel", { timeout: WAIT }); // its module loads on the first click
       assert.equal(await page.getAttribute('[data-tool="embed"]', "aria-expanded"), "true");
       const script = await page.inputValue('[data-snippet="script"]');
       assert.ok(script.includes(`<script src="${env.url}embed.js" defer></script>`), script);
