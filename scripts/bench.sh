@@ -6,3 +6,4 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh --test
 SKIP_SETUP=1 bash scripts/build.sh
 node scripts/bench.mjs "$@"
+node scripts/bench-embed.mjs "$@"

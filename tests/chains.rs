@@ -834,3 +834,26 @@ fn text_inputs_parse_as_the_page_sends_them() {
     let p = parse_inputs("chain-code", &Record::new().with("pixels", "1 4; 2")).unwrap();
     assert!(p.errors.get("pixels").is_some());
 }
+
+#[test]
+fn connectivity_given_as_a_number_is_the_same_choice() {
+    // docs/API.md: a choice whose options are numbers also takes the number
+    let code = [4., 4., 1., 1., 2., 1., 1., 4.];
+    let base = || {
+        Record::new()
+            .with("given", "code")
+            .with("code", Value::numbers(&code))
+    };
+    let as_text = solve("boundary-length", &base().with("connectivity", "4")).unwrap();
+    let as_number = solve("boundary-length", &base().with("connectivity", 4.0)).unwrap();
+    assert_eq!(num(&as_number, "length"), 8.0);
+    assert_eq!(num(&as_number, "length"), num(&as_text, "length"));
+    assert_eq!(
+        as_number.inputs.get("connectivity"),
+        Some(&Value::from("4"))
+    );
+    let eight = solve("boundary-length", &base().with("connectivity", 8.0)).unwrap();
+    assert_eq!(eight.inputs.get("connectivity"), Some(&Value::from("8")));
+    let e = err("boundary-length", base().with("connectivity", 6.0));
+    assert_eq!(e, "connectivity: 6 is not one of the choices (8, 4)");
+}

@@ -124,8 +124,14 @@ fn bad_inputs_are_js_errors_and_the_module_keeps_answering() {
         solve_err("chain-code", obj(r#"{"pixels": [[0.5, 1]]}"#)),
         "pixels: point 1 must be whole pixel positions (got 0.5)"
     );
-    assert!(solve_err("boundary-length", obj(r#"{"connectivity": 8}"#))
-        .starts_with("connectivity: must be one of the choices"));
+    assert_eq!(
+        solve_err("boundary-length", obj(r#"{"connectivity": 6}"#)),
+        "connectivity: 6 is not one of the choices (8, 4)"
+    );
+    assert!(
+        solve_err("boundary-length", obj(r#"{"connectivity": true}"#))
+            .starts_with("connectivity: must be one of the choices")
+    );
     assert!(
         solve_err("boundary-shape", obj(r#"{"pixels": [[0,0],[9000,0]]}"#))
             .contains("can be traced")
@@ -148,4 +154,30 @@ fn texts_from_the_form_parse_and_solve() {
         [4., 4., 1., 1., 2., 1., 1., 4., 1., 1., 2., 2., 2., 3., 3.]
     );
     assert!(notes_text(&s).contains("figure c"));
+}
+
+#[wasm_bindgen_test]
+fn a_numeric_choice_takes_the_number_across_the_boundary() {
+    // {connectivity: 4} as a JS number is the choice "4"
+    let by_number = solve(
+        "boundary-length",
+        obj(r#"{"given": "code", "connectivity": 4, "code": [4, 4, 1, 1, 2, 1, 1, 4]}"#),
+    )
+    .unwrap();
+    let by_text = solve(
+        "boundary-length",
+        obj(r#"{"given": "code", "connectivity": "4", "code": [4, 4, 1, 1, 2, 1, 1, 4]}"#),
+    )
+    .unwrap();
+    assert_eq!(num(&by_number, &["result", "length"]), 8.0);
+    assert_eq!(
+        num(&by_number, &["result", "length"]),
+        num(&by_text, &["result", "length"])
+    );
+    assert_eq!(
+        at(&by_number, &["inputs", "connectivity"])
+            .as_string()
+            .as_deref(),
+        Some("4")
+    );
 }

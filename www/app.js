@@ -15,6 +15,7 @@ import { buildForm } from "./form.js";
 import { renderAnswer, renderNotes, renderResult, renderSteps } from "./render.js";
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
+import * as embedPage from "./embed-page.js";
 
 /** Topics in page order (docs/API.md); unknown topics follow in catalog order. */
 const TOPIC_ORDER = [
@@ -46,6 +47,7 @@ let view = null;
 
 function setStatus(status) {
   document.body.dataset.status = status;
+  embedPage.onStatus(status, view);
 }
 
 function entryById(id) {
@@ -225,6 +227,14 @@ function buildView(entry) {
   v.stopFitting = keepFitted(stepsList);
   document.title = `${entry.title} — ${SITE_TITLE}`;
   view = v;
+  // view options, embedding, exports (embed-page.js)
+  embedPage.onView(v, {
+    setTexts: (texts) => {
+      if (view !== v) return;
+      v.form.set(texts);
+      recompute();
+    },
+  });
   return v;
 }
 
@@ -290,7 +300,7 @@ function renderSolution(solution) {
 }
 
 function writeUrl() {
-  const hash = buildHash(view.id, view.form.entries());
+  const hash = buildHash(view.id, [...view.form.entries(), ...embedPage.optionEntries()]);
   if (location.hash !== hash) history.replaceState(history.state, "", hash);
   if (view.openLink) view.openLink.setAttribute("href", `index.html${hash}`);
 }
@@ -396,7 +406,8 @@ async function showLab() {
 
 async function route({ focus = false } = {}) {
   const hash = location.hash;
-  const { id, params } = parseHash(hash);
+  const { id, params: allParams } = parseHash(hash);
+  const params = embedPage.takeOptions(allParams); // theme, hide, lock …: embed-options.js
   if (id !== "lab") labModule?.closeLab();
   if (id === "lab" && mode === "full") {
     await showLab();
@@ -437,6 +448,7 @@ async function route({ focus = false } = {}) {
     notice.textContent = "";
   }
   recompute();
+  embedPage.afterRoute();
   if (focus) v.parts.heading.focus({ preventScroll: false });
 }
 

@@ -379,6 +379,25 @@ impl Field {
                             .join(", ")
                     ),
                 )),
+                // a choice whose options are numbers ("8", "4") also takes the number
+                Value::Number(x) => match options
+                    .iter()
+                    .find(|(o, _)| o.parse::<f64>().is_ok_and(|n| n == *x))
+                {
+                    Some((o, _)) => Ok(Value::Text((*o).to_string())),
+                    None => Err(Error::input(
+                        key,
+                        format!(
+                            "{} is not one of the choices ({})",
+                            fmt_sig(*x, 15),
+                            options
+                                .iter()
+                                .map(|(o, _)| *o)
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    )),
+                },
                 other => Err(Error::input(
                     key,
                     format!("must be one of the choices, got {}", other.type_name()),
@@ -786,6 +805,35 @@ mod tests {
         assert!(e.contains("infinite"), "{e}");
         let e = f.check(&Value::Text("900".into())).unwrap_err().to_string();
         assert_eq!(e, "dpi: must be a number, got the string \"900\"");
+    }
+
+    #[test]
+    fn a_choice_of_numbers_also_takes_the_number() {
+        let f = Field::choice(
+            "connectivity",
+            "Connectivity",
+            &[("8", "8"), ("4", "4")],
+            "8",
+        );
+        assert_eq!(f.check(&Value::Number(4.0)), Ok(Value::Text("4".into())));
+        assert_eq!(f.check(&Value::Number(8.0)), Ok(Value::Text("8".into())));
+        assert_eq!(
+            f.check(&Value::Text("4".into())),
+            Ok(Value::Text("4".into()))
+        );
+        let e = f.check(&Value::Number(6.0)).unwrap_err().to_string();
+        assert_eq!(e, "connectivity: 6 is not one of the choices (8, 4)");
+        let e = f.check(&Value::Number(f64::NAN)).unwrap_err().to_string();
+        assert!(e.starts_with("connectivity: NaN is not one of"), "{e}");
+        let e = f.check(&Value::Bool(true)).unwrap_err().to_string();
+        assert!(
+            e.starts_with("connectivity: must be one of the choices"),
+            "{e}"
+        );
+        // options that are words take no number
+        let g = Field::choice("model", "Model", &[("helmert", "Helmert")], "helmert");
+        let e = g.check(&Value::Number(1.0)).unwrap_err().to_string();
+        assert_eq!(e, "model: 1 is not one of the choices (helmert)");
     }
 
     #[test]

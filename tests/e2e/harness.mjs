@@ -55,7 +55,9 @@ export async function start() {
  * error and dialog.
  */
 export async function open(browser, options = {}) {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, ...options });
+  // service workers blocked unless a test asks for them (`serviceWorkers: "allow"`):
+  // no precache traffic in the request logs, no copy of an earlier build
+  const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, serviceWorkers: "block", ...options });
   const page = await context.newPage();
   const log = { requests: [], pageErrors: [], consoleErrors: [], dialogs: [] };
   context.on("request", (r) => log.requests.push(r.url()));
@@ -153,4 +155,23 @@ export function catalogMdIds() {
     if (m) ids.push(m[1]);
   }
   return ids;
+}
+
+/** A second server, on another port (another origin), for host pages: path → HTML. */
+export async function startHost(pages) {
+  const http = await import("node:http");
+  const server = http.createServer((req, res) => {
+    const url = new URL(req.url, "http://x");
+    const body = Object.hasOwn(pages, url.pathname) ? pages[url.pathname] : null;
+    if (body === null) {
+      res.writeHead(404, { "content-type": "text/plain" }).end("not found");
+      return;
+    }
+    res.writeHead(200, { "content-type": "text/html; charset=utf-8", "cache-control": "no-store" }).end(body);
+  });
+  await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
+  return {
+    url: `http://127.0.0.1:${server.address().port}/`,
+    close: () => new Promise((r) => server.close(() => r())),
+  };
 }

@@ -1,0 +1,82 @@
+// Measures the embed as a course page meets it (a benchmark, not a test):
+//  - the bytes embed.js adds to the host page, gzipped;
+//  - the time from the iframe entering the viewport (an IntersectionObserver
+//    on the host page) to the example solved on screen (the embed's `ready`
+//    event at the host), cold (new browser context) and warm (the same
+//    context again: HTTP cache and the service worker's copy).
+//   node scripts/bench-embed.mjs [--runs 5] [--example gsd]
+import { chromium } from "playwright-core";
+import fs from "node:fs";
+import http from "node:http";
+import zlib from "node:zlib";
+import { startServer } from "./serve.mjs";
+
+const args = process.argv.slice(2);
+const arg = (name, dflt) => {
+  const i = args.indexOf(name);
+  return i >= 0 ? args[i + 1] : dflt;
+};
+const runs = Number(arg("--runs", 5));
+const example = arg("--example", "gsd");
+
+const js = fs.readFileSync("dist/embed.js");
+console.log(`embed.js: ${js.length} bytes, ${zlib.gzipSync(js, { level: 9 }).length} bytes gzipped (aim: under 3 KB)`);
+
+const server = await startServer({ dir: "dist", port: 0 });
+// the host page on another origin: the embed far below the fold, so lazy loading waits for the scroll
+const hostPage = `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Course page</title></head><body>
+<div style="height:6000px">Scroll down</div>
+<script src="${server.url}embed.js" defer></script>
+<div id="e" data-playground="${example}" data-id="e"></div>
+<script>
+  window.times = {};
+  const start = () => {
+    const frame = document.querySelector("#e iframe");
+    if (!frame) return setTimeout(start, 10);
+    new IntersectionObserver((es) => { if (es.some((e) => e.isIntersecting) && !times.enter) times.enter = performance.now(); }).observe(frame);
+  };
+  start();
+  document.getElementById("e").addEventListener("playground:ready", () => (times.ready = performance.now()));
+</script></body></html>`;
+const host = http.createServer((req, res) => res.writeHead(200, { "content-type": "text/html; charset=utf-8" }).end(hostPage));
+await new Promise((r) => host.listen(0, "127.0.0.1", r));
+const hostUrl = `http://127.0.0.1:${host.address().port}/`;
+const browser = await chromium.launch({
+  executablePath: "/usr/bin/chromium",
+  args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync"],
+});
+
+async function once(page) {
+  await page.goto(hostUrl);
+  await page.waitForSelector("#e iframe", { state: "attached" });
+  await page.waitForTimeout(300); // settled above the fold; the embed not loaded yet
+  await page.evaluate(() => document.getElementById("e").scrollIntoView());
+  await page.waitForFunction(() => window.times.ready > 0, null, { timeout: 20000 });
+  return page.evaluate(() => window.times.ready - window.times.enter);
+}
+
+const cold = [];
+const warm = [];
+try {
+  for (let i = 0; i < runs; i++) {
+    const context = await browser.newContext({ viewport: { width: 1280, height: 900 } });
+    const page = await context.newPage();
+    cold.push(await once(page));
+    // let the service worker finish its copy, then come back
+    const frame = await (await page.$("#e iframe")).contentFrame();
+    await frame.evaluate(() => navigator.serviceWorker?.ready);
+    warm.push(await once(page));
+    await context.close();
+  }
+} finally {
+  await browser.close();
+  await server.close();
+  host.close();
+}
+const stat = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return `median ${s[Math.floor(s.length / 2)].toFixed(0)} ms, min ${s[0].toFixed(0)} ms, max ${s[s.length - 1].toFixed(0)} ms`;
+};
+console.log(`iframe in the viewport → ${example} solved on screen (${runs} runs):`);
+console.log(`  cold (new context):          ${stat(cold)}`);
+console.log(`  second visit (cached + SW):  ${stat(warm)}`);

@@ -1,0 +1,36 @@
+// Writes the build's version and file list into dist/sw.js (see www/sw.js):
+//   node scripts/sw-manifest.mjs [dist]
+// The version is a hash of every file's path and bytes, so any change to the
+// site makes a new service worker, and an unchanged rebuild keeps the old one.
+import crypto from "node:crypto";
+import fs from "node:fs";
+import path from "node:path";
+
+const dist = path.resolve(process.argv[2] || "dist");
+const sw = path.join(dist, "sw.js");
+
+function walk(dir) {
+  return fs.readdirSync(dir, { withFileTypes: true }).flatMap((d) => {
+    const p = path.join(dir, d.name);
+    return d.isDirectory() ? walk(p) : [p];
+  });
+}
+
+const files = walk(dist)
+  .map((p) => path.relative(dist, p).split(path.sep).join("/"))
+  .filter((f) => f !== "sw.js")
+  .sort();
+const hash = crypto.createHash("sha256");
+for (const f of files) {
+  hash.update(f);
+  hash.update("\0");
+  hash.update(fs.readFileSync(path.join(dist, f)));
+}
+const version = hash.digest("hex").slice(0, 16);
+const source = fs.readFileSync(sw, "utf8");
+const marker = /^const BUILD = \{ version: "dev", files: \[\] \};.*$/m;
+if (!marker.test(source)) throw new Error("sw-manifest: the BUILD line of sw.js is missing");
+const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files] })};`;
+fs.writeFileSync(sw, source.replace(marker, () => line));
+fs.writeFileSync(path.join(dist, "version.json"), `${JSON.stringify({ version, files: files.length })}\n`);
+console.log(`sw-manifest: version ${version}, ${files.length} files`);

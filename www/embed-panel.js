@@ -1,0 +1,171 @@
+// "Embed this": both snippets for the current inputs and options, copy
+// buttons, a live preview, and notes for the usual course platforms. The
+// panel is plain content under the tools (no dialog, so no focus trap).
+
+import { el } from "./dom.js";
+import { NAMESPACE, VERSION } from "./embed-bridge.js";
+import { PARTS } from "./embed-options.js";
+import { buildHash } from "./url.js";
+
+const SITE = "Photogrammetry Playground";
+const DEFAULT_HEIGHT = 900;
+const PREVIEW_ID = "embed-preview";
+
+let panel = null;
+
+/** The snippets for an example, its input texts and options ({ theme, hide[], steps, lock, step }). */
+export function snippets({ base, id, title, texts, options, height = DEFAULT_HEIGHT }) {
+  const embedJs = new URL("embed.js", base).href;
+  const query = buildHash(id, texts).slice(2); // "gsd?dpi=1200"
+  const attrs = [];
+  const params = [];
+  if (options.theme && options.theme !== "auto") {
+    attrs.push(`data-theme="${options.theme}"`);
+    params.push(["theme", options.theme]);
+  }
+  if (options.hide?.length) {
+    attrs.push(`data-hide="${options.hide.join(",")}"`);
+    params.push(["hide", options.hide.join(",")]);
+  }
+  if (options.steps === "collapsed") {
+    attrs.push('data-steps="collapsed"');
+    params.push(["steps", "collapsed"]);
+  }
+  if (options.lock) {
+    attrs.push('data-lock="true"');
+    params.push(["lock", "true"]);
+  }
+  if (options.step) {
+    attrs.push(`data-step="${options.step}"`);
+    params.push(["step", String(options.step)]);
+  }
+  const attrText = (s) => s.replace(/&/g, "&amp;").replace(/"/g, "&quot;").replace(/</g, "&lt;");
+  const script = `<script src="${attrText(embedJs)}" defer></script>\n<div data-playground="${attrText(query)}"${attrs.length ? ` ${attrs.join(" ")}` : ""}></div>`;
+  const src = new URL(`embed.html${buildHash(id, [...texts, ...params])}`, base).href;
+  const h = Math.max(200, Math.ceil(height / 10) * 10);
+  const iframe = `<iframe src="${attrText(src)}" title="${attrText(`${title} — ${SITE}`)}" loading="lazy" allow="clipboard-write" width="100%" height="${h}" style="width:100%;height:${h}px;border:0"></iframe>`;
+  return { script, iframe, src, height: h };
+}
+
+const NOTES = [
+  ["Moodle", "In a Page or a Label, switch the Atto/TinyMCE editor to HTML and paste the iframe form (Moodle strips scripts for most roles). It keeps the height above: pick one that fits the example."],
+  ["Canvas", "In the Rich Content Editor choose HTML Editor and paste the iframe form. Canvas listens for the embed's lti.frameResize message, so the frame grows and shrinks with the content."],
+  ["WordPress", "Administrators can paste the script form into a Custom HTML block; editors and authors cannot save scripts, so use the iframe form there."],
+  ["Quarto / Jupyter Book", "Paste either form into a raw HTML block (```{=html} in Quarto, a {raw} html cell or a .. raw:: html directive in Jupyter Book); the script form sizes itself."],
+];
+
+function copyField(label, name, rows) {
+  const area = el("textarea", { class: "snippet", readonly: true, rows: String(rows), "aria-label": label, "data-snippet": name });
+  const status = el("span", { class: "snippet-status", role: "status" });
+  const copy = el("button", { type: "button", class: "button", "data-copy": name }, `Copy ${label.toLowerCase()}`);
+  copy.addEventListener("click", async () => {
+    try {
+      await navigator.clipboard.writeText(area.value);
+      status.textContent = "Copied.";
+    } catch {
+      area.focus();
+      area.select();
+      status.textContent = "Selected: press Ctrl+C (⌘C) to copy.";
+    }
+  });
+  return { area, block: el("div", { class: "snippet-block" }, el("h4", {}, label), area, el("div", { class: "snippet-actions" }, copy, status)) };
+}
+
+function optionControls(state, onChange) {
+  const theme = el("select", { id: "embed-theme" }, ["auto", "light", "dark"].map((t) => el("option", { value: t }, t)));
+  theme.value = state.theme;
+  theme.addEventListener("change", () => onChange({ theme: theme.value }));
+  const parts = el("fieldset", { class: "embed-parts" }, el("legend", {}, "Parts shown"));
+  for (const p of PARTS) {
+    const box = el("input", { type: "checkbox", value: p, checked: !state.hide.includes(p) });
+    box.addEventListener("change", () => onChange({ hide: PARTS.filter((q) => !parts.querySelector(`input[value="${q}"]`).checked) }));
+    parts.append(el("label", { class: "embed-check" }, box, ` ${p}`));
+  }
+  const collapsed = el("input", { type: "checkbox", id: "embed-collapsed", checked: state.steps === "collapsed" });
+  collapsed.addEventListener("change", () => onChange({ steps: collapsed.checked ? "collapsed" : "open" }));
+  const lock = el("input", { type: "checkbox", id: "embed-lock", checked: state.lock });
+  lock.addEventListener("change", () => onChange({ lock: lock.checked }));
+  const step = el("input", { type: "number", id: "embed-step", min: "1", step: "1", inputmode: "numeric", value: state.step ?? "" });
+  step.addEventListener("change", () => {
+    const n = Number(step.value);
+    onChange({ step: Number.isInteger(n) && n >= 1 ? n : null });
+  });
+  return el(
+    "div",
+    { class: "embed-options" },
+    el("label", { for: "embed-theme" }, "Theme "),
+    theme,
+    parts,
+    el("label", { class: "embed-check" }, collapsed, " steps folded"),
+    el("label", { class: "embed-check" }, lock, " inputs locked"),
+    el("label", { for: "embed-step" }, "Start at step "),
+    step,
+  );
+}
+
+/** Opens or closes the panel under `bar` for the view on screen. */
+export function toggleEmbedPanel(view, button, bar) {
+  if (panel && panel.view === view && panel.node.isConnected) {
+    panel.close();
+    return;
+  }
+  panel?.close();
+  const state = { theme: "auto", hide: [], steps: "open", lock: false, step: null, height: DEFAULT_HEIGHT };
+  const base = new URL(".", location.href.split("#")[0]).href;
+  const script = copyField("Script form", "script", 4);
+  const iframe = copyField("Iframe form", "iframe", 5);
+  const preview = el("iframe", { class: "embed-preview", title: `Preview of the embedded ${view.entry.title}`, loading: "lazy" });
+  const heightNote = el("p", { class: "muted embed-height" });
+  const refresh = ({ reload = true } = {}) => {
+    const s = snippets({ base, id: view.id, title: view.entry.title, texts: view.form.entries(), options: state, height: state.height });
+    script.area.value = s.script;
+    iframe.area.value = s.iframe;
+    heightNote.textContent = `The preview measures ${state.height} px; the iframe form keeps ${s.height} px where the host cannot resize it.`;
+    if (reload) preview.src = `${s.src}${s.src.includes("?") ? "&" : "?"}id=${PREVIEW_ID}`;
+  };
+  const onMessage = (e) => {
+    if (e.source !== preview.contentWindow || e.origin !== location.origin) return;
+    const d = e.data;
+    if (!d || d.type !== `${NAMESPACE}:resize` || d.version !== VERSION || d.id !== PREVIEW_ID) return;
+    const h = Number(d.height);
+    if (!Number.isFinite(h)) return;
+    state.height = Math.min(Math.max(Math.round(h), 100), 20000);
+    preview.style.height = `${state.height}px`;
+    refresh({ reload: false });
+  };
+  window.addEventListener("message", onMessage);
+  const onSolved = () => refresh();
+  window.addEventListener("playground-solved", onSolved);
+  const notes = el("ul", { class: "embed-notes" }, NOTES.map(([name, text]) => el("li", {}, el("strong", {}, `${name}: `), text)));
+  const node = el(
+    "section",
+    { class: "embed-panel", "aria-labelledby": "embed-h" },
+    el("h4", { id: "embed-h" }, "Embed this example in a course page"),
+    el("p", {}, "Both forms show these inputs. The script form sizes itself and tells your page about changes (see the README); the iframe form works where scripts are stripped."),
+    optionControls(state, (changes) => {
+      Object.assign(state, changes);
+      refresh();
+    }),
+    script.block,
+    iframe.block,
+    el("h4", {}, "Platforms"),
+    notes,
+    el("h4", {}, "Live preview"),
+    heightNote,
+    el("div", { class: "embed-preview-box" }, preview),
+  );
+  bar.after(node);
+  refresh();
+  button.setAttribute("aria-expanded", "true");
+  panel = {
+    view,
+    node,
+    close() {
+      window.removeEventListener("message", onMessage);
+      window.removeEventListener("playground-solved", onSolved);
+      node.remove();
+      button.setAttribute("aria-expanded", "false");
+      panel = null;
+    },
+  };
+}
