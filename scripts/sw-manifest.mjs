@@ -30,7 +30,9 @@ const version = hash.digest("hex").slice(0, 16);
 const source = fs.readFileSync(sw, "utf8");
 const marker = /^const BUILD = \{ version: "dev", files: \[\] \};.*$/m;
 if (!marker.test(source)) throw new Error("sw-manifest: the BUILD line of sw.js is missing");
-const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files] })};`;
+// the lab (its wasm and sample photos, about 1 MB) is cached when first used, not on every first visit
+const lazy = (f) => f.startsWith("lab/");
+const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files.filter((f) => !lazy(f))], lazy: files.filter(lazy) })};`;
 fs.writeFileSync(sw, source.replace(marker, () => line));
 fs.writeFileSync(path.join(dist, "version.json"), `${JSON.stringify({ version, files: files.length })}\n`);
 console.log(`sw-manifest: version ${version}, ${files.length} files`);

@@ -11,10 +11,12 @@
 // worker keeps serving its own, consistent set of files until then.
 
 const BUILD = { version: "dev", files: [] }; // replaced by scripts/sw-manifest.mjs
+// BUILD.files are cached at install; BUILD.lazy (the lab) when first fetched
 const PREFIX = "photogrammetry-playground-";
 const CACHE = `${PREFIX}${BUILD.version}`;
 const SCOPE = new URL("./", self.location.href);
 const FILES = new Set(BUILD.files.map((f) => new URL(f, SCOPE).pathname));
+const LAZY = new Set((BUILD.lazy ?? []).map((f) => new URL(f, SCOPE).pathname));
 
 self.addEventListener("install", (event) => {
   if (!BUILD.files.length) return; // an unbuilt copy caches nothing
@@ -43,6 +45,21 @@ self.addEventListener("fetch", (event) => {
   if (url.origin !== SCOPE.origin) return;
   let path = url.pathname;
   if (path.endsWith("/")) path += "index.html";
+  if (LAZY.has(path)) {
+    event.respondWith(
+      caches.open(CACHE).then((cache) =>
+        cache.match(path).then(
+          (hit) =>
+            hit ||
+            fetch(request).then((response) => {
+              if (response.ok) cache.put(path, response.clone());
+              return response;
+            }),
+        ),
+      ),
+    );
+    return;
+  }
   if (!FILES.has(path)) return;
   event.respondWith(
     caches
