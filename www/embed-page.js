@@ -12,6 +12,7 @@ import { parseOptions, defaults } from "./embed-options.js";
 import { configure, isFramed, listen, post, postCanvasResize } from "./embed-bridge.js";
 import { toolsBar } from "./export.js";
 import { formatValue } from "./format.js";
+import { fitFormulas } from "./math.js";
 
 /** Wait after the last change before announcing the result (typing settles). */
 const ANNOUNCE_DELAY_MS = 600;
@@ -143,7 +144,7 @@ function shapeSteps() {
       fold.addEventListener("toggle", () => {
         if (fold.open) openSteps.add(k);
         else openSteps.delete(k);
-        reachScrollers();
+        if (fold.open) fitFormulas(fold); // a folded step had no width to fit its formulas to
       });
     }
   });
@@ -177,45 +178,20 @@ function visibleErrors() {
   return errors;
 }
 
-/**
- * A formula wider than its column scrolls sideways; a keyboard user must be
- * able to reach it (WCAG 2.1.1, axe's scrollable-region-focusable). Only the
- * parts that do scroll get a tab stop. (A stopgap until math.js does it.)
- */
-function reachScrollers() {
-  for (const part of document.querySelectorAll(".formula-part")) {
-    const scrolls = part.scrollWidth > part.clientWidth + 1;
-    if (scrolls && !part.hasAttribute("tabindex")) {
-      part.tabIndex = 0;
-      part.classList.add("formula-scrolls");
-    } else if (!scrolls && part.classList.contains("formula-scrolls")) {
-      part.removeAttribute("tabindex");
-      part.classList.remove("formula-scrolls");
-    }
-  }
-}
-let scrollerTimer = 0;
-window.addEventListener("resize", () => {
-  clearTimeout(scrollerTimer);
-  scrollerTimer = setTimeout(reachScrollers, 150);
-});
-
 /** Each settled state: folds, announcements, events to the host. */
 export function onStatus(status, view) {
   if (!current || view !== current.view) {
     scheduleMeasure(); // a message page ("no such example") has a height too
     return;
   }
+  const labels = new Map((view.entry.inputs ?? []).map((f) => [f.key, f]));
   current.printInputs.textContent = view.form
     .entries()
-    .map(([k, v]) => `${k} = ${v.replace(/\n/g, "; ")}`)
+    .map(([k, v]) => `${labels.get(k)?.label ?? k}${labels.get(k)?.unit ? ` (${labels.get(k).unit})` : ""} = ${v.replace(/\n/g, "; ")}`)
     .join("\n");
   current.printLink.textContent = `Link: ${location.href}`;
   if (status === "ok" && view.lastGood) {
     shapeSteps();
-    // after the solution is on screen, when the page is idle (it measures the layout)
-    if (window.requestIdleCallback) requestIdleCallback(reachScrollers, { timeout: 1000 });
-    else setTimeout(reachScrollers, 200);
     const solution = view.lastGood;
     const summary = resultSummary(solution);
     if (current.lastAnnounced === null) current.lastAnnounced = `Result: ${summary}`;
