@@ -172,6 +172,7 @@ export function splitTerms(piece) {
 
 function termsOf(piece) {
   const terms = [];
+  let seenRelation = false;
   let start = 0;
   const cut = (end) => {
     const t = piece.slice(start, end).trim();
@@ -183,17 +184,23 @@ function termsOf(piece) {
         cut(i);
         start = i;
       }
-    } else if ((t.ch === "=" || (t.cmd && RELATION_COMMANDS.includes(t.cmd))) && paren === 0 && i > start) {
-      // a relation inside a row of a block ("σa = 0.00996 √… = 1.9 × 10⁻⁶")
-      cut(i);
-      start = i;
+    } else if ((t.ch === "=" || (t.cmd && RELATION_COMMANDS.includes(t.cmd))) && paren === 0) {
+      // a second relation inside a row of a block ("σa = 0.00996 √… = 1.9 × 10⁻⁶"); the
+      // left-hand side stays with the first one, as in splitFormula
+      if (seenRelation && i > start) {
+        cut(i);
+        start = i;
+      }
+      seenRelation = true;
     } else if (t.cmd === ";" && paren === 0) {
       cut(i);
       start = i + t.length;
+      seenRelation = false;
     } else if (t.ch === "," && /^,\\ /.test(piece.slice(i, i + 3)) && (paren === 0 || (paren === 1 && bracketOpen(piece.slice(0, i))))) {
       // ",\ " between the items of a list, or between equations in a row
       cut(i + 1);
       start = i + 3;
+      seenRelation = false;
     }
   });
   cut(piece.length);

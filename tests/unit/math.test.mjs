@@ -1,0 +1,69 @@
+// Where formulas may break (www/math.js), in Node: the splitting is pure
+// string work; the page lays the pieces out and fits them to the width.
+import { describe, it } from "node:test";
+import assert from "node:assert/strict";
+import { findGrid, gridBlocks, splitFormula, splitTerms } from "../../www/math.js";
+
+describe("splitFormula: groups and relation chains", () => {
+  it("the left-hand side stays with the first relation; the result is a piece of its own", () => {
+    assert.deepEqual(splitFormula(String.raw`\text{GSD} = p \cdot m = 356\ \text{mm} = 35.6\ \text{cm}`), [
+      [String.raw`\text{GSD} = p \cdot m`, String.raw`= 356\ \text{mm}`, String.raw`= 35.6\ \text{cm}`],
+    ]);
+  });
+  it("\\quad and ',\\ ' between equations start groups; a comma inside parentheses does not", () => {
+    const g = splitFormula(String.raw`a_1 = b_1 - b_3,\ a_2 = b_2,\quad P = (1,\ 2)`);
+    assert.equal(g.length, 3);
+    assert.deepEqual(g[2], [String.raw`P = (1,\ 2)`]);
+  });
+  it("unbalanced braces leave the formula whole", () => {
+    assert.deepEqual(splitFormula("x = {a"), [["x = {a"]]);
+  });
+});
+
+describe("splitTerms: sums, lists and rows", () => {
+  it("a written-out sum breaks before each binary + or −, not inside parentheses, not at a sign", () => {
+    const { lines } = splitTerms("= (48 - 58.7)(52 - 59.1) + (50 - 58.7)(37 - 59.1) - 3 = 1149.2");
+    assert.deepEqual(lines, [["= (48 - 58.7)(52 - 59.1)", "+ (50 - 58.7)(37 - 59.1)", "- 3", "= 1149.2"]]);
+    assert.deepEqual(splitTerms("-113.002 + v_{1}").lines, [["-113.002", "+ v_{1}"]]);
+    assert.deepEqual(splitTerms("= -0.5").lines, [["= -0.5"]]);
+  });
+  it("the items of a bracketed list and \\; sequences", () => {
+    assert.deepEqual(splitTerms(String.raw`V = [-0.01,\ 0.03,\ -0.02]`).lines, [[String.raw`V = [-0.01,`, "0.03,", "-0.02]"]]);
+    assert.deepEqual(splitTerms(String.raw`d = 7\;0\;(-1)`).lines, [["d = 7", "0", "(-1)"]]);
+  });
+  it("a gathered block gives one line per row; a second relation in a row may break", () => {
+    const { lines } = splitTerms(String.raw`\begin{gathered}\sigma_a = 0.0099 \sqrt{0.1} = 0.003 \\ \Delta(1) = (1,0),\ \Delta(2) = (1,-1)\end{gathered}`);
+    assert.deepEqual(lines, [[String.raw`\sigma_a = 0.0099 \sqrt{0.1}`, "= 0.003"], [String.raw`\Delta(1) = (1,0),`, String.raw`\Delta(2) = (1,-1)`]]);
+  });
+  it("nothing breaks inside a fraction or a root", () => {
+    assert.deepEqual(splitTerms(String.raw`\rho = \frac{a + b}{\sqrt{c + d}}`).lines, [[String.raw`\rho = \frac{a + b}{\sqrt{c + d}}`]]);
+  });
+});
+
+describe("grids: matrices and tables in blocks of columns", () => {
+  const matrix = String.raw`N = \begin{bmatrix} 1 & 2 & 3 \\ 4 & 5 & 6 \end{bmatrix},`;
+  it("findGrid keeps what stands before and after", () => {
+    const g = findGrid(matrix);
+    assert.equal(g.before, "N = ");
+    assert.equal(g.after, ",");
+    assert.equal(g.env, "bmatrix");
+  });
+  it("a matrix in blocks of two columns: every number kept once", () => {
+    const blocks = gridBlocks(findGrid(matrix), 2);
+    assert.deepEqual(
+      blocks.map((b) => [b.from, b.to, b.of]),
+      [
+        [1, 2, 3],
+        [3, 3, 3],
+      ],
+    );
+    assert.match(blocks[0].tex, /1 & 2 \\\\ 4 & 5/);
+    assert.match(blocks[1].tex, /3 \\\\ 6/);
+  });
+  it("a table keeps its first column and its rules in every block", () => {
+    const table = String.raw`\begin{array}{c|rr|rr} k & a & b & c & d \\ \hline 1 & 10 & 20 & 30 & 40 \end{array}`;
+    const blocks = gridBlocks(findGrid(table), 2);
+    assert.equal(blocks.length, 2);
+    assert.match(blocks[1].tex, /^\\begin\{array\}\{c\|rr\} k & c & d \\\\ \\hline 1 & 30 & 40/);
+  });
+});
