@@ -217,3 +217,20 @@ fn zone_and_band_rules_at_every_boundary() {
     let e = utm::forward(&wgs, -80.5, 10.0, None).unwrap_err().to_string();
     assert!(e.starts_with("latitude: UTM covers"), "{e}");
 }
+
+#[test]
+#[ignore]
+fn dump() {
+    for id in ["utm", "utm-inverse", "utm-facts"] {
+        let s = solve(id, &Record::new()).unwrap();
+        for st in &s.steps {
+            println!("## {}\n{}\n{}\n", st.title, st.text, st.substituted);
+        }
+        for (k, v) in s.result.iter() {
+            println!("{k} = {v:?}");
+        }
+        for n in &s.notes {
+            println!("NOTE {:?}: {}", n.kind, n.text);
+        }
+    }
+}
