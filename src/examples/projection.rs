@@ -285,11 +285,27 @@ pub(super) fn label_results(s: &mut Solution) {
         ("zone_rule", "How the zone was chosen", ""),
         ("in_legal_range", "Inside the legal UTM range", ""),
         ("classical_easting", "Easting by the classical series", "m"),
-        ("classical_northing", "Northing by the classical series", "m"),
+        (
+            "classical_northing",
+            "Northing by the classical series",
+            "m",
+        ),
         ("classical_difference_m", "Classical − exact, distance", "m"),
-        ("classical_latitude", "Latitude by the classical series", "°"),
-        ("classical_longitude", "Longitude by the classical series", "°"),
-        ("classical_difference_deg", "Classical − exact, largest angle", "°"),
+        (
+            "classical_latitude",
+            "Latitude by the classical series",
+            "°",
+        ),
+        (
+            "classical_longitude",
+            "Longitude by the classical series",
+            "°",
+        ),
+        (
+            "classical_difference_deg",
+            "Classical − exact, largest angle",
+            "°",
+        ),
         ("iterations", "Newton iterations for φ", ""),
     ]);
 }
@@ -645,7 +661,7 @@ fn figure_step(ell: &Ellipsoid, lat: f64, u: &utm::Forward) -> Result<Step> {
         k_profile.push(vec![dl, f.x / 1000.0, f.k]);
     }
     // classical − exact along the point's parallel
-    let far = (u.dlon.abs() + 1.0).max(15.0).min(utm::MAX_FORCED_OFFSET_DEG);
+    let far = (u.dlon.abs() + 1.0).clamp(15.0, utm::MAX_FORCED_OFFSET_DEG);
     let mut diff = Vec::new();
     let mut dl = 0.25;
     while dl <= far + 1e-9 {
@@ -677,24 +693,33 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
     let i = Inputs(inputs);
     let zone = i.number("zone")? as u8;
     let hem_text = i.text("hemisphere")?;
-    let band = hem_text
-        .chars()
-        .next()
-        .filter(|_| hem_text.len() == 1);
+    let band = hem_text.chars().next().filter(|_| hem_text.len() == 1);
     let hemisphere = match (hem_text, band) {
         ("north", _) => Hemisphere::North,
         ("south", _) => Hemisphere::South,
         (_, Some(b)) => utm::band_hemisphere(b).ok_or_else(|| {
-            Error::input("hemisphere", format!("\"{b}\" is not a latitude band (C–X without I and O)"))
+            Error::input(
+                "hemisphere",
+                format!("\"{b}\" is not a latitude band (C–X without I and O)"),
+            )
         })?,
-        _ => return Err(Error::input("hemisphere", "must be north, south or a band letter")),
+        _ => {
+            return Err(Error::input(
+                "hemisphere",
+                "must be north, south or a band letter",
+            ))
+        }
     };
     let (e, n) = (i.number("easting")?, i.number("northing")?);
     let ell = ellipsoid(&i)?;
     let inv = utm::inverse(&ell, zone, hemisphere, e, n)?;
     let series = Series::new(&ell);
     let tm = inv.tm;
-    let mut s = Solution::new("utm-inverse", "UTM to latitude and longitude", inputs.clone());
+    let mut s = Solution::new(
+        "utm-inverse",
+        "UTM to latitude and longitude",
+        inputs.clone(),
+    );
     s.step(ellipsoid_step(&ell));
     s.step(
         Step::new(
@@ -828,8 +853,14 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
         .with("longitude", inv.longitude)
         .with("scale_factor", tm.k)
         .with("convergence", tm.gamma.to_degrees())
-        .with("latitude_dms", dms::format(inv.latitude, 'N', 'S', 5).as_str())
-        .with("longitude_dms", dms::format(inv.longitude, 'E', 'W', 5).as_str())
+        .with(
+            "latitude_dms",
+            dms::format(inv.latitude, 'N', 'S', 5).as_str(),
+        )
+        .with(
+            "longitude_dms",
+            dms::format(inv.longitude, 'E', 'W', 5).as_str(),
+        )
         .with("band", utm::band_letter(inv.latitude).to_string().as_str())
         .with("hemisphere", hemisphere.name())
         .with("iterations", tm.iterations)

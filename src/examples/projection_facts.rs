@@ -265,14 +265,38 @@ fn solve(inputs: &Record) -> Result<Solution> {
         .with("wgs84_grs80_difference_max_mm", wg_all * 1000.0);
     label_results(&mut s);
     s.label_present(&[
-        ("k1_distance_km", "Distance from the central meridian where k = 1", "km"),
-        ("k1_longitude_offset", "Longitude difference where k = 1", "°"),
-        ("k_at_90km", "Scale factor 90 km from the central meridian", ""),
-        ("k_at_90km_ppm", "Scale error 90 km from the central meridian, (k − 1)·10⁶", "ppm"),
-        ("central_scale_factor", "Scale factor on the central meridian k₀", ""),
+        (
+            "k1_distance_km",
+            "Distance from the central meridian where k = 1",
+            "km",
+        ),
+        (
+            "k1_longitude_offset",
+            "Longitude difference where k = 1",
+            "°",
+        ),
+        (
+            "k_at_90km",
+            "Scale factor 90 km from the central meridian",
+            "",
+        ),
+        (
+            "k_at_90km_ppm",
+            "Scale error 90 km from the central meridian, (k − 1)·10⁶",
+            "ppm",
+        ),
+        (
+            "central_scale_factor",
+            "Scale factor on the central meridian k₀",
+            "",
+        ),
         ("zone_width_deg", "Zone width", "°"),
         ("zone_width_km", "Zone width on the map", "km"),
-        ("zone_width_ground_km", "Zone width on the ground (along the parallel)", "km"),
+        (
+            "zone_width_ground_km",
+            "Zone width on the ground (along the parallel)",
+            "km",
+        ),
         ("edge_scale_factor", "Scale factor at the zone edge", ""),
         ("edge_distortion_ppm", "Distortion at the zone edge", "ppm"),
         ("latitude_min", "Southern limit of UTM", "°"),
@@ -281,8 +305,16 @@ fn solve(inputs: &Record) -> Result<Solution> {
         ("false_northing_south_m", "False northing in the south", "m"),
         ("zones_thailand", "Zones of Thailand", ""),
         ("zones_pakistan", "Zones of Pakistan", ""),
-        ("wgs84_grs80_difference_mm", "WGS 84 − GRS 80, largest difference on this parallel", "mm"),
-        ("wgs84_grs80_difference_max_mm", "WGS 84 − GRS 80, largest difference in any zone", "mm"),
+        (
+            "wgs84_grs80_difference_mm",
+            "WGS 84 − GRS 80, largest difference on this parallel",
+            "mm",
+        ),
+        (
+            "wgs84_grs80_difference_max_mm",
+            "WGS 84 − GRS 80, largest difference in any zone",
+            "mm",
+        ),
     ]);
 
     s.note(

@@ -10,7 +10,9 @@
 pub fn parse(text: &str, pos: char, neg: char) -> Result<f64, String> {
     let t = text.trim();
     if t.is_empty() {
-        return Err("is empty; enter degrees (55.5) or degrees, minutes, seconds (55°30'00\"N)".into());
+        return Err(
+            "is empty; enter degrees (55.5) or degrees, minutes, seconds (55°30'00\"N)".into(),
+        );
     }
     let mut body = t.to_string();
     let mut sign = 1.0;
@@ -55,7 +57,9 @@ pub fn parse(text: &str, pos: char, neg: char) -> Result<f64, String> {
         b = rest.trim_start();
     }
     let parts: Vec<&str> = b
-        .split(|c: char| c.is_whitespace() || matches!(c, '°' | '\'' | '"' | '′' | '″' | ':' | 'd' | 'º'))
+        .split(|c: char| {
+            c.is_whitespace() || matches!(c, '°' | '\'' | '"' | '′' | '″' | ':' | 'd' | 'º')
+        })
         .filter(|s| !s.is_empty())
         .collect();
     if parts.is_empty() || parts.len() > 3 {

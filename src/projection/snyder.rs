@@ -64,9 +64,8 @@ pub fn forward(ell: &Ellipsoid, k0: f64, lat_deg: f64, dlon_deg: f64) -> Forward
             + (1.0 + c) * a2 / 2.0
             + (5.0 - 4.0 * t + 42.0 * c + 13.0 * c * c - 28.0 * ep2) * a4 / 24.0
             + (61.0 - 148.0 * t + 16.0 * t * t) * a6 / 720.0);
-    let gamma = a
-        * phi.tan()
-        * (1.0 + a2 * (1.0 + 3.0 * c + 2.0 * c * c) / 3.0 + a4 * (2.0 - t) / 15.0);
+    let gamma =
+        a * phi.tan() * (1.0 + a2 * (1.0 + 3.0 * c + 2.0 * c * c) / 3.0 + a4 * (2.0 - t) / 15.0);
     Forward {
         big_n,
         t,
@@ -106,7 +105,7 @@ pub fn inverse(ell: &Ellipsoid, k0: f64, x: f64, y: f64) -> Result<Inverse> {
         + (21.0 * e1 * e1 / 16.0 - 55.0 * e1.powi(4) / 32.0) * (4.0 * mu).sin()
         + (151.0 * e1.powi(3) / 96.0) * (6.0 * mu).sin()
         + (1097.0 * e1.powi(4) / 512.0) * (8.0 * mu).sin();
-    if !(phi1.abs() < std::f64::consts::FRAC_PI_2) {
+    if phi1.is_nan() || phi1.abs() >= std::f64::consts::FRAC_PI_2 {
         return Err(Error::input(
             "northing",
             "puts the footpoint at or beyond the pole",
@@ -123,8 +122,7 @@ pub fn inverse(ell: &Ellipsoid, k0: f64, x: f64, y: f64) -> Result<Inverse> {
     let (d5, d6) = (d4 * d, d4 * d2);
     let phi = phi1
         - n1 * phi1.tan() / r1
-            * (d2 / 2.0
-                - (5.0 + 3.0 * t1 + 10.0 * c1 - 4.0 * c1 * c1 - 9.0 * ep2) * d4 / 24.0
+            * (d2 / 2.0 - (5.0 + 3.0 * t1 + 10.0 * c1 - 4.0 * c1 * c1 - 9.0 * ep2) * d4 / 24.0
                 + (61.0 + 90.0 * t1 + 298.0 * c1 + 45.0 * t1 * t1 - 252.0 * ep2 - 3.0 * c1 * c1)
                     * d6
                     / 720.0);

@@ -206,12 +206,7 @@ pub fn forward(ell: &Ellipsoid, lat: f64, lon: f64, zone: Option<u8>) -> Result<
     let (zone, rule) = match zone {
         None => (std_zone, std_rule),
         Some(z) if (1..=60).contains(&z) => (z, ZoneRule::Forced),
-        Some(z) => {
-            return Err(Error::input(
-                "zone",
-                format!("must be 1 to 60 (got {z})"),
-            ))
-        }
+        Some(z) => return Err(Error::input("zone", format!("must be 1 to 60 (got {z})"))),
     };
     let lon0 = central_meridian(zone);
     let dlon = lon_diff(lon, lon0);
@@ -270,12 +265,17 @@ pub fn inverse(
     northing: f64,
 ) -> Result<Inverse> {
     if !(1..=60).contains(&zone) {
-        return Err(Error::input("zone", format!("must be 1 to 60 (got {zone})")));
+        return Err(Error::input(
+            "zone",
+            format!("must be 1 to 60 (got {zone})"),
+        ));
     }
     if !(EASTING_MIN..=EASTING_MAX).contains(&easting) {
         return Err(Error::input(
             "easting",
-            format!("must be between 100 000 m and 900 000 m, the legal UTM range (got {easting} m)"),
+            format!(
+                "must be between 100 000 m and 900 000 m, the legal UTM range (got {easting} m)"
+            ),
         ));
     }
     let (lo, hi) = match hemisphere {
