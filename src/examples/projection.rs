@@ -206,7 +206,7 @@ pub(super) fn ellipsoid_step(ell: &Ellipsoid) -> Step {
         ),
     )
     .formula(
-        r"f = \frac{1}{1/f},\quad e^2 = f(2-f),\quad n = \frac{f}{2-f},\quad e'^2 = \frac{e^2}{1-e^2},\quad b = a(1-f)",
+        r"e^2 = f(2-f),\quad n = \frac{f}{2-f},\quad e'^2 = \frac{e^2}{1-e^2},\quad b = a(1-f)",
         format!(
             r"f = \frac{{1}}{{{}}},\quad e^2 = {},\quad n = {},\quad e'^2 = {},\quad b = {}\ \text{{m}}",
             fmt_sig(ell.inv_f, 13),
@@ -230,14 +230,14 @@ fn coefficient_step(s: &Series, forward: bool) -> Step {
             r"\alpha",
             s.alpha,
             "The rectifying radius A (the meridian's length is 2πA) and Krüger's coefficients α₁…α₆ (Karney 2011, eq. 35), each a polynomial in n; α_j shrinks like n^j, so six terms reach nanometres.",
-            r"A = \frac{a}{1+n}\left(1 + \frac{n^2}{4} + \frac{n^4}{64} + \frac{n^6}{256}\right),\quad \alpha_1 = \tfrac12 n - \tfrac23 n^2 + \tfrac{5}{16} n^3 + \tfrac{41}{180} n^4 - \tfrac{127}{288} n^5 + \tfrac{7891}{37800} n^6,\ \alpha_2 = \tfrac{13}{48} n^2 - \tfrac35 n^3 + \dots",
+            r"A = \frac{a}{1+n}\left(1 + \frac{n^2}{4} + \frac{n^4}{64} + \frac{n^6}{256}\right),\quad \alpha_1 = \tfrac12 n - \tfrac23 n^2 + \tfrac{5}{16} n^3\quad {} + \tfrac{41}{180} n^4 - \tfrac{127}{288} n^5 + \tfrac{7891}{37800} n^6,\quad \alpha_2 = \tfrac{13}{48} n^2 - \tfrac35 n^3 + \dots",
         )
     } else {
         (
             r"\beta",
             s.beta,
             "The rectifying radius A and the coefficients β₁…β₆ of the inverse series (Karney 2011, eq. 36).",
-            r"A = \frac{a}{1+n}\left(1 + \frac{n^2}{4} + \frac{n^4}{64} + \frac{n^6}{256}\right),\quad \beta_1 = \tfrac12 n - \tfrac23 n^2 + \tfrac{37}{96} n^3 - \tfrac{1}{360} n^4 - \tfrac{81}{512} n^5 + \tfrac{96199}{604800} n^6,\ \beta_2 = \tfrac{1}{48} n^2 + \tfrac{1}{15} n^3 - \dots",
+            r"A = \frac{a}{1+n}\left(1 + \frac{n^2}{4} + \frac{n^4}{64} + \frac{n^6}{256}\right),\quad \beta_1 = \tfrac12 n - \tfrac23 n^2 + \tfrac{37}{96} n^3\quad {} - \tfrac{1}{360} n^4 - \tfrac{81}{512} n^5 + \tfrac{96199}{604800} n^6,\quad \beta_2 = \tfrac{1}{48} n^2 + \tfrac{1}{15} n^3 - \dots",
         )
     };
     let list = c
@@ -245,7 +245,7 @@ fn coefficient_step(s: &Series, forward: bool) -> Step {
         .enumerate()
         .map(|(j, x)| format!(r"{name}_{} = {}", j + 1, sci(*x, 10)))
         .collect::<Vec<_>>()
-        .join(r",\ ");
+        .join(r",\quad ");
     Step::new(
         if forward {
             "Rectifying radius and the α coefficients"
@@ -379,9 +379,9 @@ fn solve_utm(inputs: &Record) -> Result<Solution> {
     s.step(
         Step::new("Zone, central meridian, band and hemisphere", zone_text.trim())
             .formula(
-                r"\text{zone} = \left\lfloor \frac{\lambda^\circ + 180}{6} \right\rfloor + 1,\quad \lambda_0 = 6\cdot\text{zone} - 183,\quad \Delta\lambda = \lambda - \lambda_0,\quad \text{band} = \text{CDEFGHJKLMNPQRSTUVWX}\left[\left\lfloor\frac{\varphi^\circ + 80}{8}\right\rfloor\right]",
+                r"\text{zone} = \left\lfloor \frac{\lambda^\circ + 180}{6} \right\rfloor + 1,\quad \lambda_0 = 6\cdot\text{zone} - 183,\quad \Delta\lambda = \lambda - \lambda_0,\quad i = \left\lfloor\frac{\varphi^\circ + 80}{8}\right\rfloor,\quad \text{band} = \text{CDE}\ldots\text{WX}[i]",
                 format!(
-                    r"\left\lfloor \frac{{{} + 180}}{{6}} \right\rfloor + 1 = {}\ \Rightarrow\ \text{{zone}} = {},\quad \lambda_0 = 6\cdot {} - 183 = {}^\circ,\quad \Delta\lambda = {}^\circ,\quad \text{{band}}\ {} ,\ \text{{{}}}",
+                    r"\left\lfloor \frac{{{} + 180}}{{6}} \right\rfloor + 1 = {}\ \Rightarrow\ \text{{zone}} = {},\quad \lambda_0 = 6\cdot {} - 183 = {}^\circ,\quad \Delta\lambda = {}^\circ,\quad \text{{band}}\ \text{{{}}},\quad \text{{{}}}",
                     par(fmt_sig(lon, 12)),
                     regular,
                     u.zone,
@@ -440,11 +440,9 @@ fn solve_utm(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\xi = \xi' + \sum_{j=1}^{6} \alpha_j \sin 2j\xi' \cosh 2j\eta',\quad \eta = \eta' + \sum_{j=1}^{6} \alpha_j \cos 2j\xi' \sinh 2j\eta'",
             format!(
-                r"\xi = {} + {} = {},\quad \eta = {} + {} = {}",
-                fmt_sig(tm.xi_prime, 14),
+                r"\xi = \xi' + {} = {},\quad \eta = \eta' + {} = {}",
                 par(sci(tm.xi - tm.xi_prime, 10)),
                 fmt_sig(tm.xi, 14),
-                fmt_sig(tm.eta_prime, 14),
                 par(sci(tm.eta - tm.eta_prime, 10)),
                 fmt_sig(tm.eta, 14)
             ),
@@ -489,9 +487,9 @@ fn solve_utm(inputs: &Record) -> Result<Solution> {
             "From the derivative of the same series: γ is the angle from true north to grid north (clockwise), k how much the map enlarges lengths at the point.",
         )
         .formula(
-            r"p' = 1 + \sum 2j\alpha_j \cos 2j\xi' \cosh 2j\eta',\ q' = \sum 2j\alpha_j \sin 2j\xi' \sinh 2j\eta',\ \gamma = \operatorname{atan2}(\tau' \sin\Delta\lambda,\ \sqrt{1+\tau'^2}\cos\Delta\lambda) + \operatorname{atan2}(q', p'),\ k = k_0 \frac{\sqrt{1-e^2\sin^2\varphi}\,\sqrt{1+\tau^2}}{\sqrt{\tau'^2 + \cos^2\Delta\lambda}}\cdot\frac{A}{a}\sqrt{p'^2+q'^2}",
+            r"p' = 1 + \sum 2j\alpha_j \cos 2j\xi' \cosh 2j\eta',\quad q' = \sum 2j\alpha_j \sin 2j\xi' \sinh 2j\eta',\quad \gamma = \operatorname{atan2}(\tau' \sin\Delta\lambda,\quad \sqrt{1+\tau'^2}\cos\Delta\lambda) + \operatorname{atan2}(q', p'),\quad k = k_0 \frac{\sqrt{1-e^2\sin^2\varphi}\,\sqrt{1+\tau^2}}{\sqrt{\tau'^2 + \cos^2\Delta\lambda}}\cdot\frac{A}{a}\sqrt{p'^2+q'^2}",
             format!(
-                r"p' = {},\ q' = {},\ \gamma = {}^\circ + {}^\circ = {}^\circ,\ k = 0.9996 \times {} \times {} = {}",
+                r"p' = {},\quad q' = {},\quad \gamma = {}^\circ + {}^\circ = {}^\circ,\quad k = 0.9996 \times {} \times {} = {}",
                 fmt_sig(tm.p, 14),
                 par(sci(tm.q, 10)),
                 fmt_sig(tm.gamma_sphere.to_degrees(), 12),
@@ -517,9 +515,9 @@ fn solve_utm(inputs: &Record) -> Result<Solution> {
             "Snyder's power series in A = Δλ·cos φ (Map Projections — A Working Manual, 1987, eqs. 8-9, 8-10), as many textbooks print it. Near the central meridian it agrees to a millimetre; its error grows quickly with the distance from it.",
         )
         .formula(
-            r"x = k_0 N\left[A + (1-T+C)\tfrac{A^3}{6} + (5-18T+T^2+72C-58e'^2)\tfrac{A^5}{120}\right],\ y = k_0\left\{M + N\tan\varphi\left[\tfrac{A^2}{2} + (5-T+9C+4C^2)\tfrac{A^4}{24} + (61-58T+T^2+600C-330e'^2)\tfrac{A^6}{720}\right]\right\}",
+            r"x = k_0 N\,(A + c_3 A^3 + c_5 A^5),\quad y = k_0\,\bigl(M + N\tan\varphi\,(\tfrac{A^2}{2} + c_4 A^4 + c_6 A^6)\bigr),\quad c_3 = \frac{1-T+C}{6},\quad c_5 = \frac{5-18T+T^2+72C-58e'^2}{120},\quad c_4 = \frac{5-T+9C+4C^2}{24},\quad c_6 = \frac{61-58T+T^2+600C-330e'^2}{720},\quad N = \frac{a}{\sqrt{1-e^2\sin^2\varphi}},\quad T = \tan^2\varphi,\quad C = e'^2\cos^2\varphi,\quad A = \Delta\lambda\cos\varphi",
             format!(
-                r"N = {}\ \text{{m}},\ T = {},\ C = {},\ A = {},\ M = {}\ \text{{m}};\ x = {}\ \text{{m}},\ y = {}\ \text{{m}};\ \text{{distance from the exact point}} = {}\ \text{{m}}",
+                r"N = {}\ \text{{m}},\quad T = {},\quad C = {},\quad A = {},\quad M = {}\ \text{{m}};\quad x = {}\ \text{{m}},\quad y = {}\ \text{{m}};\quad \text{{distance from the exact point}} = {}\ \text{{m}}",
                 fixed(c.big_n, 4),
                 fmt_sig(c.t, 12),
                 fmt_sig(c.c, 12),
@@ -749,9 +747,9 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
             "ξ and η are the map coordinates in units of k₀A; the β series undoes Krüger's series.",
         )
         .formula(
-            r"\xi = \frac{y}{k_0 A},\ \eta = \frac{x}{k_0 A},\quad \xi' = \xi - \sum_{j=1}^{6}\beta_j \sin 2j\xi\cosh 2j\eta,\ \eta' = \eta - \sum_{j=1}^{6}\beta_j\cos 2j\xi \sinh 2j\eta",
+            r"\xi = \frac{y}{k_0 A},\quad \eta = \frac{x}{k_0 A},\quad \xi' = \xi - \sum_{j=1}^{6}\beta_j \sin 2j\xi\cosh 2j\eta,\quad \eta' = \eta - \sum_{j=1}^{6}\beta_j\cos 2j\xi \sinh 2j\eta",
             format!(
-                r"\xi = {},\ \eta = {},\quad \xi' = {},\ \eta' = {}",
+                r"\xi = {},\quad \eta = {},\quad \xi' = {},\quad \eta' = {}",
                 fmt_sig(tm.xi, 14),
                 fmt_sig(tm.eta, 14),
                 fmt_sig(tm.xi_prime, 14),
@@ -812,7 +810,7 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\gamma = \operatorname{atan2}(q, p) + \operatorname{atan2}(\sin\xi'\tanh\eta', \cos\xi'),\quad k = k_0\,\frac{A}{a}\,\frac{\sqrt{1 - e^2 + e^2/(1+\tau^2)}\,\sqrt{1+\tau^2}\,\sqrt{\sinh^2\eta'+\cos^2\xi'}}{\sqrt{p^2+q^2}}",
             format!(
-                r"p = {},\ q = {},\quad \gamma = {}^\circ,\quad k = {}",
+                r"p = {},\quad q = {},\quad \gamma = {}^\circ,\quad k = {}",
                 fmt_sig(tm.p, 14),
                 par(sci(tm.q, 10)),
                 fmt_sig(tm.gamma.to_degrees(), 12),
@@ -832,9 +830,9 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
             "Snyder's inverse: the footpoint latitude φ₁ from the meridian arc, then power series in D = x/(N₁k₀).",
         )
         .formula(
-            r"\mu = \frac{M}{a(1-e^2/4-3e^4/64-5e^6/256)},\ \varphi_1 = \mu + \left(\tfrac{3e_1}{2}-\tfrac{27e_1^3}{32}\right)\sin 2\mu + \dots,\ \varphi = \varphi_1 - \frac{N_1\tan\varphi_1}{R_1}\left[\tfrac{D^2}{2} - \dots\right],\ \Delta\lambda = \frac{D - (1+2T_1+C_1)D^3/6 + \dots}{\cos\varphi_1}",
+            r"\mu = \frac{M}{a(1-e^2/4-3e^4/64-5e^6/256)},\quad \varphi_1 = \mu + \left(\tfrac{3e_1}{2}-\tfrac{27e_1^3}{32}\right)\sin 2\mu + \dots,\quad \varphi = \varphi_1 - \frac{N_1\tan\varphi_1}{R_1}\left[\tfrac{D^2}{2} - \dots\right],\quad \Delta\lambda = \frac{D - (1+2T_1+C_1)D^3/6 + \dots}{\cos\varphi_1}",
             format!(
-                r"\varphi_1 = {}^\circ,\ D = {},\quad \varphi = {}^\circ,\ \lambda = {}^\circ\quad(\text{{largest difference}}\ {}^\circ)",
+                r"\varphi_1 = {}^\circ,\quad D = {},\quad \varphi = {}^\circ,\quad \lambda = {}^\circ\quad(\text{{largest difference}}\ {}^\circ)",
                 fmt_sig(c.phi1.to_degrees(), 12),
                 fmt_sig(c.d, 12),
                 fmt_sig(c.lat_deg, 12),

@@ -92,7 +92,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         .formula(
             r"k(x) \approx k_0 \cosh\frac{x}{k_0 a}\ \Rightarrow\ k = 1\ \text{at}\ x \approx a\,\operatorname{acosh}\frac{1}{k_0}",
             format!(
-                r"k = 1\ \text{{at}}\ \Delta\lambda = {}^\circ,\ x = {}\ \text{{km}}\quad(\text{{sphere: }} {}\ \text{{km}})",
+                r"k = 1\ \text{{at}}\ \Delta\lambda = {}^\circ,\quad x = {}\ \text{{km}}\quad(\text{{sphere: }} {}\ \text{{km}})",
                 fmt_sig(d1, 10),
                 fixed(k1_km, 3),
                 fixed(sphere_km, 3)
