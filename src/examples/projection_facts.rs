@@ -83,14 +83,14 @@ fn solve(inputs: &Record) -> Result<Solution> {
     let d1 = k_one_dlon(&ell, lat)?;
     let at1 = krueger::forward(&ell, K0, lat, d1)?;
     let k1_km = at1.x / 1000.0;
-    let sphere_km = ell.a / 1000.0 * (1.0 / K0).acosh();
+    let sphere_km = K0 * ell.a / 1000.0 * (1.0 / K0).acosh();
     s.step(
         Step::new(
             "Where the scale factor is 1",
-            "On the central meridian k = k₀ = 0.9996; k grows with the square of the distance x from it. Along this parallel, k = 1 where the bisection below puts it; on a sphere of radius a it would be where cosh(x/a) = 1/k₀.",
+            "On the central meridian k = k₀ = 0.9996; k grows with the square of the distance x from it. Along this parallel, k = 1 where the bisection below puts it; on a sphere of radius a it would be where cosh(x/(k₀a)) = 1/k₀.",
         )
         .formula(
-            r"k(x) \approx k_0 \cosh\frac{x}{k_0 a}\ \Rightarrow\ k = 1\ \text{at}\ x \approx a\,\operatorname{acosh}\frac{1}{k_0}",
+            r"k(x) \approx k_0 \cosh\frac{x}{k_0 a}\ \Rightarrow\ k = 1\ \text{at}\ x \approx k_0 a\,\operatorname{acosh}\frac{1}{k_0}",
             format!(
                 r"k = 1\ \text{{at}}\ \Delta\lambda = {}^\circ,\quad x = {}\ \text{{km}}\quad(\text{{sphere: }} {}\ \text{{km}})",
                 fmt_sig(d1, 10),
@@ -338,7 +338,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Erratum,
             format!(
-                "The seed says the scale factor is 1.0000 \"at a distance of 90 kilometers from the central meridian\". It is 1 at {} km (on the equator; about a·acosh(1/k₀) = {} km at any latitude, since k depends almost only on x). At 90 km, k = {}: k − k₀ grows with the square of the distance, so half the distance makes up only a quarter of the 0.0004. The two lines of true scale are about 360 km apart, not 180 km.",
+                "The seed says the scale factor is 1.0000 \"at a distance of 90 kilometers from the central meridian\". It is 1 at {} km (on the equator; about k₀·a·acosh(1/k₀) = {} km at any latitude, since k depends almost only on x). At 90 km, k = {}: k − k₀ grows with the square of the distance, so half the distance makes up only a quarter of the 0.0004. The two lines of true scale are about 360 km apart, not 180 km.",
                 plain(k1_km, 1),
                 plain(sphere_km, 1),
                 fmt_sig(at90.k, 6)

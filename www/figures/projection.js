@@ -194,8 +194,12 @@ const map = {
     const Y = m.sy(pn);
     dot(ctx, X, Y, POINT_R, COLORS.point);
     const label = `E ${formatNumber(pe, 7)} km, N ${formatNumber(pn, 7)} km`;
-    const right = X + 8 + ctx.measureText(label).width + 40 < box.x + box.w;
-    text(ctx, label, right ? X + 8 : X - 8, Y - 12, { size: FONT_SIZE_SMALL, color: COLORS.point, align: right ? "left" : "right", halo: true });
+    // beside the point where it fits, else centred above it, kept inside the plot
+    const w = textWidth(label, FONT_SIZE_SMALL);
+    let lx = X + 8;
+    if (lx + w > box.x + box.w - 2) lx = X - 8 - w;
+    if (lx < box.x + 2) lx = Math.min(Math.max(box.x + 2, X - w / 2), box.x + box.w - 2 - w);
+    text(ctx, label, lx, Y - 14, { size: FONT_SIZE_SMALL, color: COLORS.point, halo: true });
   },
 };
 
@@ -249,7 +253,7 @@ function kSpec(seedLine) {
       const padK = (kHi - kLo) * 0.08;
       const box = plotBox(width, height);
       const m = axes(ctx, box, [Math.min(...xs), Math.max(...xs)], [kLo - padK, kHi + padK], {
-        xLabel: "Distance x from the central meridian (km, east positive)",
+        xLabel: "Distance x from the central meridian (km, east +)",
         yLabel: "k",
         title: "Scale factor k across the zone",
         yFormat: (v) => formatNumber(v, 6),
