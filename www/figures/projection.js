@@ -134,7 +134,7 @@ const map = {
     const inp = solution.inputs ?? {};
     const zone = r.zone ?? inp.zone;
     const lon0 = stepWith(solution, "central_meridian")?.central_meridian ?? r.central_meridian;
-    return `Map of UTM zone ${zone}: the central meridian ${lonName(lon0)} runs straight up the middle at easting 500 km; the other meridians curve toward it near the pole; the point lies at easting ${formatNumber((stepWith(solution, "point")?.point ?? [0])[0], 6)} km, northing ${formatNumber((stepWith(solution, "point")?.point ?? [0, 0])[1], 7)} km.`;
+    return `Map of UTM zone ${zone}: the central meridian ${lonName(lon0)} runs straight up the middle at easting 500 km; the other meridians curve toward it near the pole; the point lies at easting ${formatNumber((stepWith(solution, "point")?.point ?? [0])[0], 9)} km, northing ${formatNumber((stepWith(solution, "point")?.point ?? [0, 0])[1], 10)} km.`;
   },
   draw(ctx, width, height, solution) {
     const d = mapData(solution);
