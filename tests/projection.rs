@@ -648,3 +648,43 @@ fn every_result_key_has_a_label_and_the_catalog_lists_the_three() {
     );
     assert!(catalog().iter().all(|e| e.status == "ready"));
 }
+
+#[test]
+fn formulas_are_well_formed_latex_for_many_inputs() {
+    // braces balance, and no power of ten is raised again (10^{-10}^\circ
+    // is a KaTeX error)
+    let cases = [
+        ("utm", Record::new()),
+        ("utm", Record::new().with("latitude", -79.9).with("longitude", -179.9)),
+        ("utm", Record::new().with("latitude", 55.0).with("longitude", -6.0).with("zone", 32.0)),
+        ("utm", Record::new().with("latitude", 0.0).with("longitude", 3.0)),
+        ("utm-inverse", Record::new()),
+        ("utm-inverse", Record::new().with("easting", 500_000.0).with("northing", 0.0)),
+        ("utm-inverse", Record::new().with("hemisphere", "C").with("easting", 899_000.0).with("northing", 1_000_000.0)),
+        ("utm-facts", Record::new()),
+        ("utm-facts", Record::new().with("latitude", 84.0)),
+    ];
+    for (id, inputs) in cases {
+        let s = solve(id, &inputs).unwrap();
+        for st in &s.steps {
+            for tex in [&st.formula, &st.substituted] {
+                let mut depth = 0i32;
+                for ch in tex.chars() {
+                    match ch {
+                        '{' => depth += 1,
+                        '}' => depth -= 1,
+                        _ => {}
+                    }
+                    assert!(depth >= 0, "{id} {}: {tex}", st.title);
+                }
+                assert_eq!(depth, 0, "{id} {}: {tex}", st.title);
+                let flat = tex.replace(' ', "");
+                for (i, _) in flat.match_indices("\\times10^{") {
+                    let rest = &flat[i + 10..];
+                    let close = rest.find('}').unwrap();
+                    assert!(!rest[close + 1..].starts_with('^'), "{id} {}: {tex}", st.title);
+                }
+            }
+        }
+    }
+}

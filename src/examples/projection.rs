@@ -173,7 +173,8 @@ pub(super) fn sci(x: f64, sig: usize) -> String {
     match s.split_once('e') {
         Some((m, e)) => {
             let m = m.trim_end_matches('0').trim_end_matches('.');
-            format!(r"{m}\times 10^{{{e}}}")
+            // braced, so that a following ^\circ is not a double superscript
+            format!(r"{{{m}\times 10^{{{e}}}}}")
         }
         None => s,
     }
@@ -808,7 +809,7 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
             "From the derivative of the β series and the sphere's own γ and k.",
         )
         .formula(
-            r"\gamma = \operatorname{atan2}(q, p) + \operatorname{atan2}(\sin\xi'\tanh\eta', \cos\xi'),\quad k = k_0\,\frac{A}{a}\,\frac{\sqrt{1 - e^2 + e^2/(1+\tau^2)}\,\sqrt{1+\tau^2}\,\sqrt{\sinh^2\eta'+\cos^2\xi'}}{\sqrt{p^2+q^2}}",
+            r"\gamma = \operatorname{atan2}(q, p) + \operatorname{atan2}(\sin\xi'\tanh\eta', \cos\xi'),\quad k = k_0\,\frac{A}{a}\,\frac{w}{\sqrt{p^2+q^2}},\quad w = \sqrt{1 - e^2 + \frac{e^2}{1+\tau^2}}\,\sqrt{1+\tau^2}\,\sqrt{\sinh^2\eta'+\cos^2\xi'}",
             format!(
                 r"p = {},\quad q = {},\quad \gamma = {}^\circ,\quad k = {}",
                 fmt_sig(tm.p, 14),

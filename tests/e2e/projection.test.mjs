@@ -56,6 +56,7 @@ describe("map projection", () => {
       const steps = await page.locator(".steps .step-title").allInnerTexts();
       assert.ok(steps.includes("Krüger's series") && steps.includes("Easting and northing"), steps.join(" | "));
       assert.ok((await page.locator(".steps .katex").count()) > 20);
+      assert.equal(await page.locator(".formula-error").count(), 0, "every formula renders");
       // three canvases, each drawn and labelled
       const figs = await canvases(page, COLORS);
       assert.equal(figs.length, 3);
@@ -111,6 +112,7 @@ describe("map projection", () => {
       assert.ok(Math.abs((await exact(page, "latitude")) - 55) < 1e-9);
       assert.ok(Math.abs((await exact(page, "longitude")) - 12) < 1e-9);
       assert.equal(await cellText(page, "latitude_dms", "exact"), "55°00′00.00000″ N");
+      assert.equal(await page.locator(".formula-error").count(), 0, "every formula renders");
       const figs = await canvases(page, COLORS);
       assert.equal(figs.length, 2);
       assert.ok(figs[0].counts.point > 30 && figs[0].counts.meridian > 300);
@@ -129,6 +131,7 @@ describe("map projection", () => {
       assert.equal(await visit(page, env.url, "index.html", "#/utm-facts"), "ok");
       assert.ok(Math.abs((await exact(page, "k1_distance_km")) - 179.754) < 1e-3);
       assert.equal(await cellText(page, "k1_distance_km", "printed"), "90");
+      assert.equal(await page.locator(".formula-error").count(), 0, "every formula renders");
       assert.match(await cellText(page, "k1_distance_km", "diff"), /differs/);
       assert.match(await cellText(page, "latitude_max", "diff"), /differs/);
       assert.match(await cellText(page, "zones_thailand", "diff"), /differs/);
