@@ -655,12 +655,37 @@ fn formulas_are_well_formed_latex_for_many_inputs() {
     // is a KaTeX error)
     let cases = [
         ("utm", Record::new()),
-        ("utm", Record::new().with("latitude", -79.9).with("longitude", -179.9)),
-        ("utm", Record::new().with("latitude", 55.0).with("longitude", -6.0).with("zone", 32.0)),
-        ("utm", Record::new().with("latitude", 0.0).with("longitude", 3.0)),
+        (
+            "utm",
+            Record::new()
+                .with("latitude", -79.9)
+                .with("longitude", -179.9),
+        ),
+        (
+            "utm",
+            Record::new()
+                .with("latitude", 55.0)
+                .with("longitude", -6.0)
+                .with("zone", 32.0),
+        ),
+        (
+            "utm",
+            Record::new().with("latitude", 0.0).with("longitude", 3.0),
+        ),
         ("utm-inverse", Record::new()),
-        ("utm-inverse", Record::new().with("easting", 500_000.0).with("northing", 0.0)),
-        ("utm-inverse", Record::new().with("hemisphere", "C").with("easting", 899_000.0).with("northing", 1_000_000.0)),
+        (
+            "utm-inverse",
+            Record::new()
+                .with("easting", 500_000.0)
+                .with("northing", 0.0),
+        ),
+        (
+            "utm-inverse",
+            Record::new()
+                .with("hemisphere", "C")
+                .with("easting", 899_000.0)
+                .with("northing", 1_000_000.0),
+        ),
         ("utm-facts", Record::new()),
         ("utm-facts", Record::new().with("latitude", 84.0)),
     ];
@@ -682,7 +707,11 @@ fn formulas_are_well_formed_latex_for_many_inputs() {
                 for (i, _) in flat.match_indices("\\times10^{") {
                     let rest = &flat[i + 10..];
                     let close = rest.find('}').unwrap();
-                    assert!(!rest[close + 1..].starts_with('^'), "{id} {}: {tex}", st.title);
+                    assert!(
+                        !rest[close + 1..].starts_with('^'),
+                        "{id} {}: {tex}",
+                        st.title
+                    );
                 }
             }
         }

@@ -622,10 +622,23 @@ fn figure_step(ell: &Ellipsoid, lat: f64, u: &utm::Forward) -> Result<Step> {
             (fnorth + f.y) / 1000.0,
         ])
     };
+    // the central meridian, the zone's edges (±3°), the ends, and the
+    // whole (span ≤ 6°) or round-5° longitudes between
+    let mut offsets = vec![-span, -3.0, 0.0, 3.0, span];
+    offsets.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    let first = ((u.central_meridian - span) / lon_step).ceil() as i32;
+    let last = ((u.central_meridian + span) / lon_step).floor() as i32;
+    for i in first..=last {
+        let d = f64::from(i) * lon_step - u.central_meridian;
+        // a round meridian close to one already drawn would only crowd it
+        if offsets.iter().all(|o| (o - d).abs() >= lon_step / 2.0) {
+            offsets.push(d);
+        }
+    }
+    offsets.sort_by(f64::total_cmp);
     let mut meridians = Vec::new();
     let mut m_lons = Vec::new();
-    let mut d = -span;
-    while d <= span + 1e-9 {
+    for d in offsets {
         let mut line = Vec::new();
         let mut la = lat_lo;
         while la <= lat_hi + 1e-9 {
@@ -634,7 +647,6 @@ fn figure_step(ell: &Ellipsoid, lat: f64, u: &utm::Forward) -> Result<Step> {
         }
         meridians.push(Value::matrix(&line));
         m_lons.push(u.central_meridian + d);
-        d += lon_step;
     }
     let mut parallels = Vec::new();
     let mut p_lats = Vec::new();
@@ -675,6 +687,7 @@ fn figure_step(ell: &Ellipsoid, lat: f64, u: &utm::Forward) -> Result<Step> {
     )
     .value("meridians", Value::List(meridians))
     .value("meridian_longitudes", Value::numbers(&m_lons))
+    .value("map_central_meridian", u.central_meridian)
     .value("parallels", Value::List(parallels))
     .value("parallel_latitudes", Value::numbers(&p_lats))
     .value("point", Value::numbers(&[u.easting / 1000.0, u.northing / 1000.0]))

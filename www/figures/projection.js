@@ -152,7 +152,7 @@ const map = {
     ctx.beginPath();
     ctx.rect(box.x, box.y, box.w, box.h);
     ctx.clip();
-    const lon0 = v.meridian_longitudes[Math.floor(v.meridian_longitudes.length / 2)];
+    const lon0 = v.map_central_meridian;
     v.parallels.forEach((p, i) => {
       const lat = v.parallel_latitudes[i];
       polyline(ctx, p, m, lat === 0 ? { color: EQUATOR_COLOR, width: 2.5 } : { color: COLORS.muted, width: 0.8 });
@@ -168,18 +168,25 @@ const map = {
       if (Math.abs(Math.abs(d0) - 3) < 1e-9) polyline(ctx, p, m, { color: EDGE_COLOR, width: 2, dash: DASH });
     });
     ctx.restore();
-    // labels: meridians along the top edge, parallels along the left
-    let lastRight = -Infinity;
-    v.meridians.forEach((p, i) => {
-      const top = p[p.length - 1];
-      const X = m.sx(top[0]);
-      const label = lonName(v.meridian_longitudes[i]);
+    // labels along the top edge: the central meridian first, then the zone's
+    // edges, then the others where they do not cover one already written
+    const placed = [];
+    const order = v.meridians.map((p, i) => {
       const d0 = v.meridian_longitudes[i] - lon0;
-      const color = Math.abs(d0) < 1e-9 ? CM_COLOR : Math.abs(Math.abs(d0) - 3) < 1e-9 ? EDGE_COLOR : COLORS.muted;
-      if (X < box.x + 10 || X > box.x + box.w - 10 || X - 18 < lastRight) return;
-      const b = text(ctx, label, X, box.y + 9, { size: FONT_SIZE_SMALL, align: "center", color, halo: true });
-      lastRight = b.x + b.w;
+      return { p, i, rank: Math.abs(d0) < 1e-9 ? 0 : Math.abs(Math.abs(d0) - 3) < 1e-9 ? 1 : 2 };
     });
+    order.sort((a, b) => a.rank - b.rank);
+    for (const { p, i, rank } of order) {
+      const X = m.sx(p[p.length - 1][0]);
+      const label = lonName(v.meridian_longitudes[i]);
+      const w = textWidth(label, FONT_SIZE_SMALL) + 6;
+      const boxL = { x: X - w / 2, w };
+      if (boxL.x < box.x || boxL.x + w > box.x + box.w) continue;
+      if (placed.some((q) => boxL.x < q.x + q.w && q.x < boxL.x + w)) continue;
+      placed.push(boxL);
+      const color = rank === 0 ? CM_COLOR : rank === 1 ? EDGE_COLOR : COLORS.muted;
+      text(ctx, label, X, box.y + 9, { size: FONT_SIZE_SMALL, align: "center", color, halo: true, weight: rank === 0 ? "bold" : "normal" });
+    }
     let lastTop = Infinity;
     v.parallels.forEach((p, i) => {
       const left = p[0];
