@@ -490,7 +490,7 @@ fn solve_utm(inputs: &Record) -> Result<Solution> {
         .formula(
             r"p' = 1 + \sum 2j\alpha_j \cos 2j\xi' \cosh 2j\eta',\quad q' = \sum 2j\alpha_j \sin 2j\xi' \sinh 2j\eta',\quad \gamma = \operatorname{atan2}(\tau' \sin\Delta\lambda,\quad \sqrt{1+\tau'^2}\cos\Delta\lambda) + \operatorname{atan2}(q', p'),\quad k = k_0 \frac{\sqrt{1-e^2\sin^2\varphi}\,\sqrt{1+\tau^2}}{\sqrt{\tau'^2 + \cos^2\Delta\lambda}}\cdot\frac{A}{a}\sqrt{p'^2+q'^2}",
             format!(
-                r"p' = {},\quad q' = {},\quad \gamma = {}^\circ + {}^\circ = {}^\circ,\quad k = 0.9996 \times {} \times {} = {}",
+                r"p' = {},\quad q' = {},\quad \gamma = {}^\circ + {}\,{{}}^\circ = {}^\circ,\quad k = 0.9996 \times {} \times {} = {}",
                 fmt_sig(tm.p, 14),
                 par(sci(tm.q, 10)),
                 fmt_sig(tm.gamma_sphere.to_degrees(), 12),
@@ -846,7 +846,7 @@ fn solve_inverse(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\mu = \frac{M}{a(1-e^2/4-3e^4/64-5e^6/256)},\quad \varphi_1 = \mu + \left(\tfrac{3e_1}{2}-\tfrac{27e_1^3}{32}\right)\sin 2\mu + \dots,\quad \varphi = \varphi_1 - \frac{N_1\tan\varphi_1}{R_1}\left[\tfrac{D^2}{2} - \dots\right],\quad \Delta\lambda = \frac{D - (1+2T_1+C_1)D^3/6 + \dots}{\cos\varphi_1}",
             format!(
-                r"\varphi_1 = {}^\circ,\quad D = {},\quad \varphi = {}^\circ,\quad \lambda = {}^\circ\quad(\text{{largest difference}}\ {}^\circ)",
+                r"\varphi_1 = {}^\circ,\quad D = {},\quad \varphi = {}^\circ,\quad \lambda = {}^\circ\quad(\text{{largest difference}}\ {}\,{{}}^\circ)",
                 fmt_sig(c.phi1.to_degrees(), 12),
                 fmt_sig(c.d, 12),
                 fmt_sig(c.lat_deg, 12),
