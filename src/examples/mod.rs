@@ -18,6 +18,7 @@ pub mod interest;
 pub mod matching;
 pub mod projection;
 pub mod projection_facts;
+pub mod projection_figure;
 pub mod resampling;
 pub mod transformations;
 
