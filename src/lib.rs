@@ -21,6 +21,8 @@
 //! - [`interest`]: the Förstner and Moravec interest operators, on a window
 //!   and as whole-image maps with thresholding and suppression.
 //! - [`transform`]: 2-D transformations estimated from point pairs by least squares.
+//! - [`projection`]: ellipsoids, the transverse Mercator (Krüger series and
+//!   Snyder's classical one), UTM zones and bands, degrees-minutes-seconds.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
@@ -35,6 +37,7 @@ pub mod filter;
 pub mod interest;
 pub mod lsq;
 pub mod matching;
+pub mod projection;
 pub mod raster;
 pub mod resample;
 pub mod solution;

@@ -293,6 +293,8 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
         "boundary-length",
         "boundary-shape",
         "utm",
+        "utm-inverse",
+        "utm-facts",
     ];
     let cat = catalog();
     assert_eq!(cat.len(), ids.len());

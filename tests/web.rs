@@ -38,7 +38,7 @@ fn solve_err(id: &str, inputs: JsValue) -> String {
 #[wasm_bindgen_test]
 fn catalog_is_plain_data_with_typed_fields() {
     let cat: Array = catalog().unwrap().dyn_into().expect("an Array");
-    assert_eq!(cat.length(), 24);
+    assert_eq!(cat.length(), 26);
     let gsd = cat
         .iter()
         .find(|e| get(e, "id").as_string().as_deref() == Some("gsd"))

@@ -47,6 +47,9 @@ pub enum Kind {
     },
     /// True or false.
     Flag,
+    /// An angle in degrees, typed as decimal degrees or degrees, minutes and
+    /// seconds with an optional hemisphere letter (`55°30'N`); |angle| ≤ max.
+    Angle { max: f64, pos: char, neg: char },
 }
 
 /// One input of a worked example.
@@ -215,6 +218,21 @@ impl Field {
             kind: Kind::Choice { options },
             default: Value::from(default),
             when: None,
+        }
+    }
+
+    /// An angle field (degrees or degrees-minutes-seconds) within ±`max`,
+    /// with hemisphere letters `pos` (positive) and `neg` (negative).
+    pub fn angle(
+        key: &'static str,
+        label: &'static str,
+        max: f64,
+        (pos, neg): (char, char),
+        default: f64,
+    ) -> Self {
+        Field {
+            kind: Kind::Angle { max, pos, neg },
+            ..Field::number(key, label, default)
         }
     }
 
@@ -403,6 +421,23 @@ impl Field {
                     format!("must be one of the choices, got {}", other.type_name()),
                 )),
             },
+            Kind::Angle { max, pos, neg } => {
+                let x = match v {
+                    Value::Text(t) => crate::projection::dms::parse(t, *pos, *neg)
+                        .map_err(|e| Error::input(key, e))?,
+                    other => finite_number(key, other)?,
+                };
+                if x.abs() > *max {
+                    return Err(Error::input(
+                        key,
+                        format!(
+                            "must be between −{max}° and {max}° (got {}°)",
+                            fmt_sig(x, 12)
+                        ),
+                    ));
+                }
+                Ok(Value::Number(x))
+            }
             Kind::Flag => match v {
                 Value::Bool(_) => Ok(v.clone()),
                 other => Err(Error::input(
@@ -429,7 +464,7 @@ impl Field {
                     .collect::<Result<Vec<_>>>()?;
                 Value::matrix(&rows)
             }
-            Kind::Choice { .. } => Value::Text(t.to_string()),
+            Kind::Choice { .. } | Kind::Angle { .. } => Value::Text(t.to_string()),
             Kind::Flag => match t {
                 "true" | "1" | "yes" | "on" => Value::Bool(true),
                 "false" | "0" | "no" | "off" | "" => Value::Bool(false),
@@ -775,6 +810,12 @@ impl From<&Field> for FieldInfo {
                 );
             }
             Kind::Flag => info.kind = "flag",
+            Kind::Angle { max, .. } => {
+                info.kind = "angle";
+                info.unit = Some("°");
+                info.min = Some(-max);
+                info.max = Some(*max);
+            }
         }
         info
     }

@@ -137,13 +137,15 @@ export const CATALOG_IDS = [
   "boundary-length",
   "boundary-shape",
   "utm",
+  "utm-inverse",
 ];
 
 /**
  * Entries beyond CATALOG.md, each documented in docs/API.md
- * (forstner-image: the Förstner operator on a generated test pattern).
+ * (forstner-image: the Förstner operator on a generated test pattern;
+ * utm-facts: seed 004's UTM facts, checked).
  */
-export const EXTRA_IDS = ["forstner-image"];
+export const EXTRA_IDS = ["forstner-image", "utm-facts"];
 
 /** The ids in ../shared/CATALOG.md (first column of its tables), or null when absent. */
 export function catalogMdIds() {

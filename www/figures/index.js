@@ -77,6 +77,7 @@ const MODULES = Object.freeze({
   "Filters and edges": () => import("./filters.js"),
   "Interest operators": () => import("./interest.js"),
   "Chain codes and boundaries": () => import("./chains.js"),
+  "Map projection": () => import("./projection.js"),
 });
 
 /** id → spec or [spec…], filled as topic modules load. */
