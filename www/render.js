@@ -8,12 +8,28 @@
 
 import { el } from "./dom.js";
 import { renderFormula } from "./math.js";
-import { agreesWithPrinted, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
+import { agreesWithPrinted, formatDecimals, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
 
 /** Note kinds with their own badge style; any other kind gets the neutral one. */
 const NOTE_KINDS = ["erratum", "rounding", "convention", "warning"];
 /** Note kinds that explain a printed value as another convention or a slip, not a difference. */
 const EXPLAINING_KINDS = ["erratum", "convention"];
+/**
+ * Decimals a quantity in this unit deserves, beyond the usual significant
+ * digits: eastings and northings to the millimetre, angles to about 0.1 mm on
+ * the ground (1e-9 degree), so a surveyor sees every digit the core is sure of.
+ */
+const UNIT_DECIMALS = Object.freeze({ m: 3, "°": 9, km: 6 });
+
+/** An exact value for its unit (see UNIT_DECIMALS), else as formatExact does. */
+function formatFor(value, unit, printed) {
+  const dec = UNIT_DECIMALS[unit];
+  if (dec !== undefined && typeof value === "number" && Number.isFinite(value) && Math.abs(value) >= 1 && printed === undefined) {
+    return formatDecimals(value, dec);
+  }
+  return formatExact(value, printed);
+}
+
 /** Significant digits of a printed value (the course notes print at most this many; derived ones are cut here). */
 const PRINTED_DIGITS = 8;
 /** Numbers of a vector shown in the answer line before "…". */
@@ -168,7 +184,7 @@ export function renderResult(solution) {
     name.append(" ", el("code", { class: "api-name", title: "name in the API and the URL" }, row.key));
     if (row.intermediate) name.append(el("span", { class: "intermediate" }, " (intermediate)"));
     const printed = textbook && Object.hasOwn(textbook, row.key) ? textbook[row.key] : undefined;
-    const exactCell = el("td", { class: "exact", "data-label": WORDS.exact }, valueNode(row.exact, (v) => formatExact(v, typeof printed === "number" ? printed : undefined)));
+    const exactCell = el("td", { class: "exact", "data-label": WORDS.exact }, valueNode(row.exact, (v) => formatFor(v, unit, typeof printed === "number" ? printed : undefined)));
     const dv = dataValue(row.exact);
     if (dv !== null) exactCell.dataset.value = dv;
     const tr = el("tr", { "data-key": row.key }, name, exactCell);
@@ -213,7 +229,7 @@ export function renderAnswer(solution) {
     const exact = result[key];
     const printed = Object.hasOwn(textbook, key) ? textbook[key] : undefined;
     const u = unit ? ` ${unit}` : "";
-    const span = el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, `${answerText(exact, printed)}${u}`));
+    const span = el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, `${answerText(exact, printed, unit)}${u}`));
     if (printed !== undefined) {
       const { agrees, explained } = compare(solution, key, exact, printed);
       span.append(`; the course notes print ${answerText(printed)}${u}`, el("span", { class: "muted" }, agrees ? " (agrees)" : explained ? " (an erratum: see the notes)" : " (see the notes)"));
@@ -223,13 +239,13 @@ export function renderAnswer(solution) {
   return parts.flatMap((p, i) => (i ? [el("span", { class: "answer-sep" }, " · "), p] : [p]));
 }
 
-function answerText(value, printed) {
+function answerText(value, printed, unit = null) {
   if (isMatrix(value)) return `${value.length} × ${value[0].length} matrix (in the result below)`;
   if (Array.isArray(value)) {
     const shown = value.slice(0, ANSWER_VECTOR_MAX).map((v, i) => (typeof v === "number" ? formatExact(v, Array.isArray(printed) ? printed[i] : undefined) : formatValue(v)));
     return `[${shown.join(", ")}${value.length > ANSWER_VECTOR_MAX ? ", …" : ""}]`;
   }
-  return typeof value === "number" ? formatExact(value, typeof printed === "number" ? printed : undefined) : formatValue(value);
+  return typeof value === "number" ? formatFor(value, unit, typeof printed === "number" ? printed : undefined) : formatValue(value);
 }
 
 /** The notes, numbered, each with its kind as a badge and the quantities it concerns. */

@@ -28,6 +28,7 @@ pub fn keys(id: &str) -> &'static [&'static str] {
         "boundary-shape" => &["diameter", "minor_axis_length", "eccentricity"],
         "utm" => &["zone", "easting", "northing"],
         "utm-inverse" => &["latitude", "longitude"],
+        "utm-facts" => &["k1_distance_km", "latitude_max", "edge_distortion_ppm"],
         _ => &[],
     }
 }

@@ -343,18 +343,21 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 plain(sphere_km, 1),
                 fmt_sig(at90.k, 6)
             ),
-        );
+        )
+        .about(&["k1_distance_km", "k_at_90km_ppm"]);
         s.note(
             NoteKind::Erratum,
             "The lecture says UTM projects \"from −80 to +80 deg latitude\". The southern limit is right; the northern limit is 84°N (band X is 12° tall, 72°N–84°N, so that UTM reaches the north of Greenland and Svalbard). Beyond both limits the Universal Polar Stereographic (UPS) projection is used.",
-        );
+        )
+        .about(&["latitude_max"]);
         s.note(
             NoteKind::Erratum,
             format!(
-                "The lecture gives \"Thailand: Zone 47\". Zone 47 covers 96°E–102°E, western and central Thailand with Bangkok; Thailand reaches {}°E in the east (Ubon Ratchathani province), which is zone 48 (102°E–108°E). Thai maps use both zones. Pakistan ({}°E–{}°E) is zones 41, 42 and 43, as the seed says.",
+                "The lecture gives \"Thailand: Zone 47\". Zone 47 covers 96°E–102°E, western and central Thailand with Bangkok; Thailand reaches {}°E in the east (Ubon Ratchathani province), which is zone 48 (102°E–108°E). Thai maps use both zones. Pakistan ({}°E–{}°E) is zones 41, 42 and 43, as the lecture says.",
                 THAILAND.1, PAKISTAN.0, PAKISTAN.1
             ),
-        );
+        )
+        .about(&["zones_thailand"]);
         s.note(
             NoteKind::Convention,
             format!(
