@@ -143,7 +143,7 @@ describe("the embed page's options", { timeout: TEST_TIMEOUT * 2 }, () => {
       assert.ok((await page.innerText(".steps-panel")).includes("0.02116667"), "the substituted numbers print");
       const buttons = await page.$$eval("button", (b) => b.filter((x) => x.getBoundingClientRect().width > 0).length);
       assert.equal(buttons, 0, "no button prints");
-      assert.match(await page.innerText(".print-inputs"), /dpi = 1200/);
+      assert.match(await page.innerText(".print-inputs"), /Scan resolution \(dpi\) = 1200/);
       assert.match(await page.innerText(".print-link"), /embed\.html#\/gsd\?dpi=1200/);
       assert.equal(await page.isVisible(".figure-canvas"), true);
       const pdf = await page.pdf({ format: "A4" });
