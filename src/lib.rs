@@ -23,6 +23,8 @@
 //! - [`transform`]: 2-D transformations estimated from point pairs by least squares.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
+//! - [`practice`]: practice mode: variant codes and generators, answer
+//!   reading and grading with carried-forward errors and known mistakes.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
 //!   `parse_inputs`); the only file that knows about JavaScript.
 
@@ -35,6 +37,7 @@ pub mod filter;
 pub mod interest;
 pub mod lsq;
 pub mod matching;
+pub mod practice;
 pub mod raster;
 pub mod resample;
 pub mod solution;
