@@ -160,3 +160,202 @@ fn verdict(g: &practice::Graded, key: &str) -> String {
     let b = g.get(key).unwrap();
     format!("{:?}", b.verdict).to_lowercase()
 }
+
+/// A fixed variant of pixel-to-photo with its own numbers.
+const P2P: &str = "1K7Q2";
+
+#[test]
+fn correct_and_reading_forms_are_accepted() {
+    let x = exact("pixel-to-photo", P2P, "x_mm");
+    let p = exact("pixel-to-photo", P2P, "pixel_size_mm");
+    let comma = format!("{:.4}", x).replace('.', ",");
+    let g = grade(
+        "pixel-to-photo",
+        P2P,
+        &answers(&[("x_mm", &comma), ("pixel_size_mm", &format!("{:e}", p))]),
+    )
+    .unwrap();
+    assert_eq!(verdict(&g, "x_mm"), "correct", "{:?}", g.get("x_mm"));
+    assert_eq!(verdict(&g, "pixel_size_mm"), "correct");
+    assert_eq!(g.get("x_mm").unwrap().read.as_deref(), Some(format!("{:.4}", x).as_str()));
+    assert_eq!(g.score, 2.0);
+    assert_eq!(g.out_of, 7);
+    assert_eq!(verdict(&g, "y_mm"), "empty");
+}
+
+#[test]
+fn units_are_converted_or_flagged() {
+    let gsd = exact("gsd", P2P, "gsd_cm");
+    let g = grade(
+        "gsd",
+        P2P,
+        &answers(&[
+            ("gsd_cm", &format!("{:.3} mm", gsd * 10.0)),
+            ("gsd_mm", &format!("{:.3} px", gsd * 10.0)),
+        ]),
+    )
+    .unwrap();
+    let cm = g.get("gsd_cm").unwrap();
+    assert_eq!((cm.unit, cm.points), (Some("ok"), 1.0));
+    let mm = g.get("gsd_mm").unwrap();
+    assert_eq!((mm.unit, mm.verdict), (Some("wrong"), practice::grade::Verdict::Wrong));
+    assert_eq!(mm.points, 0.5);
+    assert!(mm.message.contains("in mm"), "{}", mm.message);
+}
+
+#[test]
+fn tolerance_edges_on_a_box() {
+    // x_mm: ± (0.001 mm + 0.1 %).
+    let x = exact("pixel-to-photo", P2P, "x_mm");
+    let allowed = 0.001 + 0.001 * x.abs();
+    let inside = format!("{:.12}", x + 0.98 * allowed);
+    let outside = format!("{:.12}", x + 1.05 * allowed);
+    let g = grade("pixel-to-photo", P2P, &answers(&[("x_mm", &inside)])).unwrap();
+    assert_eq!(verdict(&g, "x_mm"), "correct");
+    let g = grade("pixel-to-photo", P2P, &answers(&[("x_mm", &outside)])).unwrap();
+    assert_eq!(verdict(&g, "x_mm"), "wrong");
+}
+
+#[test]
+fn coarse_but_right_digits_get_half_a_point() {
+    // x_mm is graded to ± (0.001 mm + 0.1 %); one decimal is right as far as
+    // it goes but too coarse. The first variant where one decimal is off by
+    // more than the tolerance:
+    let (code, x) = (0..100)
+        .map(|v| (encode(v), exact("pixel-to-photo", &encode(v), "x_mm")))
+        .find(|(_, x)| ((x * 10.0).round() / 10.0 - x).abs() > 0.001 + 0.001 * x.abs())
+        .unwrap();
+    let text = format!("{x:.1}");
+    let g = grade("pixel-to-photo", &code, &answers(&[("x_mm", &text)])).unwrap();
+    let b = g.get("x_mm").unwrap();
+    assert_eq!(
+        (b.verdict, b.precision, b.points),
+        (practice::grade::Verdict::Correct, Some("coarse"), 0.5),
+        "{text} vs {x}"
+    );
+    // One decimal but the wrong digit is wrong, not coarse.
+    let off = format!("{:.1}", x + 0.2);
+    let g = grade("pixel-to-photo", &code, &answers(&[("x_mm", &off)])).unwrap();
+    assert_eq!(verdict(&g, "x_mm"), "wrong");
+}
+
+#[test]
+fn an_intermediate_rounded_as_shown_is_accepted() {
+    // The student rounds the pixel size to 3 significant digits and carries on.
+    let i = variant("pixel-to-photo", Some(P2P), 0).unwrap().inputs;
+    let p = 25.4 / i.number("dpi").unwrap();
+    let x_px = i.number("c").unwrap() - i.number("columns").unwrap() / 2.0;
+    let p3 = practice::round_sig(p, 3);
+    let x = x_px * p3;
+    assert!((x - x_px * p).abs() > 1e-9, "the rounding must change something");
+    let g = grade("pixel-to-photo", P2P, &answers(&[("x_mm", &format!("{x:.5}"))])).unwrap();
+    let b = g.get("x_mm").unwrap();
+    assert_eq!(verdict(&g, "x_mm"), "correct", "{b:?}");
+}
+
+#[test]
+fn an_error_is_carried_forward_as_consistent() {
+    // A wrong pixel size (1/dpi · 25 instead of 25.4) and an x that follows
+    // from it.
+    let i = variant("gsd", Some(P2P), 0).unwrap().inputs;
+    let p_wrong = 25.0 / i.number("dpi").unwrap();
+    let m = exact("gsd", P2P, "scale_denominator");
+    let g = grade(
+        "gsd",
+        P2P,
+        &answers(&[
+            ("pixel_size_mm", &format!("{p_wrong:.6}")),
+            ("gsd_mm", &format!("{:.3}", p_wrong * m)),
+            ("gsd_cm", &format!("{:.4}", p_wrong * m / 10.0)),
+        ]),
+    )
+    .unwrap();
+    assert_eq!(verdict(&g, "pixel_size_mm"), "wrong");
+    assert_eq!(verdict(&g, "gsd_mm"), "consistent", "{:?}", g.get("gsd_mm"));
+    assert!(g.get("gsd_mm").unwrap().message.contains("Pixel size (step 2)"));
+    assert_eq!(verdict(&g, "gsd_cm"), "consistent");
+    assert_eq!(g.score, 2.0);
+}
+
+/// Every named mistake of a fixed variant is recognised by name when the
+/// student types its value.
+fn each_mistake_is_named(id: &str, code: &str) {
+    let spec = specs().into_iter().find(|s| s.id == id).unwrap();
+    let p = variant(id, Some(code), 0).unwrap();
+    let s = examples::solve(id, &p.inputs).unwrap();
+    let mistakes = (spec.mistakes)(&p.inputs).unwrap();
+    assert!(!mistakes.is_empty(), "{id} has no named mistakes");
+    let mut named = 0;
+    for m in &mistakes {
+        let b = p.boxes.iter().find(|b| b.key == m.key).unwrap();
+        let x = value_in(&s, &m.key).unwrap();
+        if b.tolerance.accepts(x, m.value) {
+            continue; // the mistake does not change this variant's answer
+        }
+        let text = format!("{}", m.value);
+        let g = grade(id, code, &answers(&[(&m.key, &text)])).unwrap();
+        let got = g.get(&m.key).unwrap();
+        assert_eq!(got.verdict, practice::grade::Verdict::Wrong, "{id} {}: {got:?}", m.name);
+        // Two mistakes may give the same number; then the first one is named.
+        let first = mistakes
+            .iter()
+            .find(|o| o.key == m.key && b.tolerance.accepts(o.value, m.value) && !b.tolerance.accepts(x, o.value))
+            .unwrap();
+        assert_eq!(got.mistake, Some(first.name), "{id} {}", m.name);
+        assert!(got.message.contains(first.name));
+        named += 1;
+    }
+    assert!(named > 0, "{id}: no mistake shows in variant {code}");
+}
+
+macro_rules! mistake_tests {
+    ($($name:ident => $id:literal),* $(,)?) => {$(
+        #[test]
+        fn $name() {
+            each_mistake_is_named($id, P2P);
+            each_mistake_is_named($id, "1ZZZZ");
+        }
+    )*};
+}
+
+mistake_tests! {
+    mistakes_pixel_to_photo => "pixel-to-photo",
+    mistakes_gsd => "gsd",
+    mistakes_photo_to_pixel => "photo-to-pixel",
+}
+
+#[test]
+fn malformed_and_empty_boxes_are_never_wrong() {
+    let g = grade(
+        "gsd",
+        P2P,
+        &answers(&[("gsd_mm", "12..5"), ("gsd_cm", ""), ("pixel_size_mm", "0.03 parsecs")]),
+    )
+    .unwrap();
+    assert_eq!(verdict(&g, "gsd_mm"), "unreadable");
+    assert!(g.get("gsd_mm").unwrap().message.contains("not counted as wrong"));
+    assert_eq!(verdict(&g, "gsd_cm"), "empty");
+    assert_eq!(verdict(&g, "pixel_size_mm"), "unreadable");
+    assert_eq!(g.score, 0.0);
+}
+
+#[test]
+fn bad_codes_and_boxes_give_clear_errors() {
+    let e = grade("gsd", "zz", &Record::new()).unwrap_err().to_string();
+    assert!(e.starts_with("code:"), "{e}");
+    let e = grade("gsd", P2P, &answers(&[("nope", "1")])).unwrap_err().to_string();
+    assert!(e.contains("answers.nope") && e.contains("gsd_cm"), "{e}");
+    let e = variant("no-such", None, 3).unwrap_err().to_string();
+    assert!(e.contains("unknown example"), "{e}");
+}
+
+#[test]
+fn the_same_code_gives_the_same_variant() {
+    let a = variant("gsd", Some(P2P), 0).unwrap();
+    let b = variant("gsd", Some(&P2P.to_lowercase()), 99).unwrap();
+    assert_eq!(a.inputs, b.inputs);
+    assert_eq!(a.code, P2P);
+    let fresh = variant("gsd", None, 12345).unwrap();
+    assert_eq!(fresh.code, encode(12345));
+    assert_eq!(variant("gsd", Some(&fresh.code), 0).unwrap().inputs, fresh.inputs);
+}
