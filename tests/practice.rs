@@ -108,8 +108,69 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 fail("the point is outside the image")
             }
         }
+        "ncc-1d" => {
+            let rho = list(r, "rho");
+            if margin(&rho) < 0.01 {
+                fail("no clear best sub-window")
+            }
+        }
+        "ncc-2d" => {
+            if num(r, "rho").abs() < 0.2 {
+                fail("ρ too close to 0")
+            }
+        }
+        "ncc-surface" => {
+            let rho: Vec<f64> = match r.get("rho") {
+                Some(Value::List(rows)) => rows
+                    .iter()
+                    .flat_map(|row| match row {
+                        Value::List(xs) => {
+                            xs.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect()
+                        }
+                        _ => vec![f64::NAN],
+                    })
+                    .collect(),
+                _ => vec![],
+            };
+            if rho.iter().any(|x| !x.is_finite()) || margin(&rho) < 0.01 {
+                fail("a flat window or no clear best position")
+            }
+        }
+        "subpixel-1d" | "subpixel-2d" => {
+            let c = list(
+                &s.inputs,
+                if id == "subpixel-1d" {
+                    "positions"
+                } else {
+                    "c"
+                },
+            );
+            if !(num(r, "c_max") > c[0] && num(r, "c_max") < c[2]) {
+                fail("the peak is not between the outer positions")
+            }
+            if id == "subpixel-2d" {
+                let rr = list(&s.inputs, "r");
+                if !(num(r, "r_max") > rr[0] && num(r, "r_max") < rr[2]) {
+                    fail("the peak row is not between the outer rows")
+                }
+            }
+        }
         _ => {}
     }
+}
+
+fn list(r: &Record, key: &str) -> Vec<f64> {
+    match r.get(key) {
+        Some(Value::List(xs)) => xs.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect(),
+        _ => vec![],
+    }
+}
+
+/// How far the largest value stands above the second largest.
+fn margin(xs: &[f64]) -> f64 {
+    let mut v = xs.to_vec();
+    v.sort_by(|a, b| b.total_cmp(a));
+    v[0] - v[1]
 }
 
 /// The whole audit of one example, or a sample of `SEEDS` when asked for.
@@ -127,6 +188,11 @@ audit_tests! {
     audit_pixel_to_photo => "pixel-to-photo",
     audit_gsd => "gsd",
     audit_photo_to_pixel => "photo-to-pixel",
+    audit_ncc_1d => "ncc-1d",
+    audit_ncc_2d => "ncc-2d",
+    audit_ncc_surface => "ncc-surface",
+    audit_subpixel_1d => "subpixel-1d",
+    audit_subpixel_2d => "subpixel-2d",
 }
 
 #[test]
@@ -177,7 +243,10 @@ fn correct_and_reading_forms_are_accepted() {
     .unwrap();
     assert_eq!(verdict(&g, "x_mm"), "correct", "{:?}", g.get("x_mm"));
     assert_eq!(verdict(&g, "pixel_size_mm"), "correct");
-    assert_eq!(g.get("x_mm").unwrap().read.as_deref(), Some(format!("{:.4}", x).as_str()));
+    assert_eq!(
+        g.get("x_mm").unwrap().read.as_deref(),
+        Some(format!("{:.4}", x).as_str())
+    );
     assert_eq!(g.score, 2.0);
     assert_eq!(g.out_of, 7);
     assert_eq!(verdict(&g, "y_mm"), "empty");
@@ -198,7 +267,10 @@ fn units_are_converted_or_flagged() {
     let cm = g.get("gsd_cm").unwrap();
     assert_eq!((cm.unit, cm.points), (Some("ok"), 1.0));
     let mm = g.get("gsd_mm").unwrap();
-    assert_eq!((mm.unit, mm.verdict), (Some("wrong"), practice::grade::Verdict::Wrong));
+    assert_eq!(
+        (mm.unit, mm.verdict),
+        (Some("wrong"), practice::grade::Verdict::Wrong)
+    );
     assert_eq!(mm.points, 0.5);
     assert!(mm.message.contains("in mm"), "{}", mm.message);
 }
@@ -247,8 +319,16 @@ fn an_intermediate_rounded_as_shown_is_accepted() {
     let x_px = i.number("c").unwrap() - i.number("columns").unwrap() / 2.0;
     let p3 = practice::round_sig(p, 3);
     let x = x_px * p3;
-    assert!((x - x_px * p).abs() > 1e-9, "the rounding must change something");
-    let g = grade("pixel-to-photo", P2P, &answers(&[("x_mm", &format!("{x:.5}"))])).unwrap();
+    assert!(
+        (x - x_px * p).abs() > 1e-9,
+        "the rounding must change something"
+    );
+    let g = grade(
+        "pixel-to-photo",
+        P2P,
+        &answers(&[("x_mm", &format!("{x:.5}"))]),
+    )
+    .unwrap();
     let b = g.get("x_mm").unwrap();
     assert_eq!(verdict(&g, "x_mm"), "correct", "{b:?}");
 }
@@ -272,7 +352,11 @@ fn an_error_is_carried_forward_as_consistent() {
     .unwrap();
     assert_eq!(verdict(&g, "pixel_size_mm"), "wrong");
     assert_eq!(verdict(&g, "gsd_mm"), "consistent", "{:?}", g.get("gsd_mm"));
-    assert!(g.get("gsd_mm").unwrap().message.contains("Pixel size (step 2)"));
+    assert!(g
+        .get("gsd_mm")
+        .unwrap()
+        .message
+        .contains("Pixel size (step 2)"));
     assert_eq!(verdict(&g, "gsd_cm"), "consistent");
     assert_eq!(g.score, 2.0);
 }
@@ -295,11 +379,20 @@ fn each_mistake_is_named(id: &str, code: &str) {
         let text = format!("{}", m.value);
         let g = grade(id, code, &answers(&[(&m.key, &text)])).unwrap();
         let got = g.get(&m.key).unwrap();
-        assert_eq!(got.verdict, practice::grade::Verdict::Wrong, "{id} {}: {got:?}", m.name);
+        assert_eq!(
+            got.verdict,
+            practice::grade::Verdict::Wrong,
+            "{id} {}: {got:?}",
+            m.name
+        );
         // Two mistakes may give the same number; then the first one is named.
         let first = mistakes
             .iter()
-            .find(|o| o.key == m.key && b.tolerance.accepts(o.value, m.value) && !b.tolerance.accepts(x, o.value))
+            .find(|o| {
+                o.key == m.key
+                    && b.tolerance.accepts(o.value, m.value)
+                    && !b.tolerance.accepts(x, o.value)
+            })
             .unwrap();
         assert_eq!(got.mistake, Some(first.name), "{id} {}", m.name);
         assert!(got.message.contains(first.name));
@@ -322,6 +415,11 @@ mistake_tests! {
     mistakes_pixel_to_photo => "pixel-to-photo",
     mistakes_gsd => "gsd",
     mistakes_photo_to_pixel => "photo-to-pixel",
+    mistakes_ncc_1d => "ncc-1d",
+    mistakes_ncc_2d => "ncc-2d",
+    mistakes_ncc_surface => "ncc-surface",
+    mistakes_subpixel_1d => "subpixel-1d",
+    mistakes_subpixel_2d => "subpixel-2d",
 }
 
 #[test]
@@ -329,11 +427,19 @@ fn malformed_and_empty_boxes_are_never_wrong() {
     let g = grade(
         "gsd",
         P2P,
-        &answers(&[("gsd_mm", "12..5"), ("gsd_cm", ""), ("pixel_size_mm", "0.03 parsecs")]),
+        &answers(&[
+            ("gsd_mm", "12..5"),
+            ("gsd_cm", ""),
+            ("pixel_size_mm", "0.03 parsecs"),
+        ]),
     )
     .unwrap();
     assert_eq!(verdict(&g, "gsd_mm"), "unreadable");
-    assert!(g.get("gsd_mm").unwrap().message.contains("not counted as wrong"));
+    assert!(g
+        .get("gsd_mm")
+        .unwrap()
+        .message
+        .contains("not counted as wrong"));
     assert_eq!(verdict(&g, "gsd_cm"), "empty");
     assert_eq!(verdict(&g, "pixel_size_mm"), "unreadable");
     assert_eq!(g.score, 0.0);
@@ -343,7 +449,9 @@ fn malformed_and_empty_boxes_are_never_wrong() {
 fn bad_codes_and_boxes_give_clear_errors() {
     let e = grade("gsd", "zz", &Record::new()).unwrap_err().to_string();
     assert!(e.starts_with("code:"), "{e}");
-    let e = grade("gsd", P2P, &answers(&[("nope", "1")])).unwrap_err().to_string();
+    let e = grade("gsd", P2P, &answers(&[("nope", "1")]))
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("answers.nope") && e.contains("gsd_cm"), "{e}");
     let e = variant("no-such", None, 3).unwrap_err().to_string();
     assert!(e.contains("unknown example"), "{e}");
@@ -357,5 +465,18 @@ fn the_same_code_gives_the_same_variant() {
     assert_eq!(a.code, P2P);
     let fresh = variant("gsd", None, 12345).unwrap();
     assert_eq!(fresh.code, encode(12345));
-    assert_eq!(variant("gsd", Some(&fresh.code), 0).unwrap().inputs, fresh.inputs);
+    assert_eq!(
+        variant("gsd", Some(&fresh.code), 0).unwrap().inputs,
+        fresh.inputs
+    );
+}
+
+#[test]
+#[ignore]
+fn debug_variant() {
+    let id = std::env::var("ID").unwrap();
+    let code = std::env::var("CODE").unwrap();
+    let p = variant(&id, Some(&code), 0).unwrap();
+    let s = examples::solve(&id, &p.inputs).unwrap();
+    println!("{:?}\n{:?}", p.inputs, s.result);
 }
