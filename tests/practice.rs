@@ -32,9 +32,28 @@ fn fields_of(id: &str) -> Vec<Field> {
         .fields)()
 }
 
-fn audit(spec: &Spec, seeds: u32) {
+/// Audits variants `0..seeds` of `spec`: every one is generated, validated,
+/// printed and read back, solved, and its boxes checked (finite, of a size a
+/// student handles, example-specific signs of a good variant). Every
+/// `stride`-th one also has its chain tied to the solver and its mistakes
+/// computed (the grading engine's side, several solves each).
+fn audit(spec: &Spec, seeds: u32, stride: u32, solve_stride: u32) {
     let fields = fields_of(spec.id);
     for v in 0..seeds {
+        if v % solve_stride != 0 {
+            let inputs = inputs_of(spec, v);
+            let printed = printed_roundtrip(&fields, &inputs);
+            assert_eq!(
+                printed,
+                inputs,
+                "{} {}: givens change when printed",
+                spec.id,
+                encode(v)
+            );
+            examples::fields::validate(&fields, &inputs)
+                .unwrap_or_else(|e| panic!("{} {}: invalid inputs: {e}", spec.id, encode(v)));
+            continue;
+        }
         let inputs = inputs_of(spec, v);
         let code = encode(v);
         let s = examples::solve(spec.id, &inputs)
@@ -47,8 +66,10 @@ fn audit(spec: &Spec, seeds: u32) {
         );
         let boxes = (spec.boxes)(&inputs);
         assert!(!boxes.is_empty());
+        let deep = v % stride == 0;
         let chained = spec
             .chain
+            .filter(|_| deep)
             .map(|c| c(&inputs, &Record::new()).expect("chain runs"));
         for b in &boxes {
             let x = value_in(&s, &b.key).unwrap_or_else(|e| panic!("{} {code}: {e}", spec.id));
@@ -69,7 +90,12 @@ fn audit(spec: &Spec, seeds: u32) {
             }
         }
         // Every named mistake belongs to a box and is a number.
-        for m in (spec.mistakes)(&inputs).expect("mistakes compute") {
+        let mistakes = if deep {
+            (spec.mistakes)(&inputs).expect("mistakes compute")
+        } else {
+            Vec::new()
+        };
+        for m in mistakes {
             assert!(
                 boxes.iter().any(|b| b.key == m.key),
                 "{}: {}",
@@ -179,9 +205,33 @@ macro_rules! audit_tests {
         #[test]
         fn $name() {
             let spec = specs().into_iter().find(|s| s.id == $id).expect("spec");
-            audit(&spec, SEEDS);
+            let (stride, solve_stride) = strides($id);
+            audit(&spec, SEEDS, stride, solve_stride);
         }
     )*};
+}
+
+/// How often the debug-build audit solves a variant (`solve_stride`) and
+/// checks its grading side (`stride`). The iterative matchers and the
+/// whole-image Förstner take tens of milliseconds a solve in a debug build;
+/// `full_audit_every_seed` (ignored; run it with
+/// `cargo test --release --test practice -- --ignored`) does every check on
+/// every seed of every example.
+fn strides(id: &str) -> (u32, u32) {
+    match id {
+        "lsm-affine" => (500, 100),
+        "lsm-2d" | "forstner-image" | "transform-fit" => (200, 40),
+        "fiducial-similarity" | "fiducial-affine" | "lsm-1d" => (100, 20),
+        _ => (50, 10),
+    }
+}
+
+#[test]
+#[ignore]
+fn full_audit_every_seed() {
+    for spec in specs() {
+        audit(&spec, SEEDS, 1, 1);
+    }
 }
 
 audit_tests! {
@@ -193,6 +243,21 @@ audit_tests! {
     audit_ncc_surface => "ncc-surface",
     audit_subpixel_1d => "subpixel-1d",
     audit_subpixel_2d => "subpixel-2d",
+    audit_fiducial_similarity => "fiducial-similarity",
+    audit_fiducial_affine => "fiducial-affine",
+    audit_transform_fit => "transform-fit",
+    audit_lsm_1d => "lsm-1d",
+    audit_lsm_2d => "lsm-2d",
+    audit_lsm_affine => "lsm-affine",
+    audit_resample => "resample",
+    audit_filter_window => "filter-window",
+    audit_edge_window => "edge-window",
+    audit_forstner_window => "forstner-window",
+    audit_moravec_window => "moravec-window",
+    audit_forstner_image => "forstner-image",
+    audit_chain_code => "chain-code",
+    audit_boundary_length => "boundary-length",
+    audit_boundary_shape => "boundary-shape",
 }
 
 #[test]
@@ -420,6 +485,21 @@ mistake_tests! {
     mistakes_ncc_surface => "ncc-surface",
     mistakes_subpixel_1d => "subpixel-1d",
     mistakes_subpixel_2d => "subpixel-2d",
+    mistakes_fiducial_similarity => "fiducial-similarity",
+    mistakes_fiducial_affine => "fiducial-affine",
+    mistakes_transform_fit => "transform-fit",
+    mistakes_lsm_1d => "lsm-1d",
+    mistakes_lsm_2d => "lsm-2d",
+    mistakes_lsm_affine => "lsm-affine",
+    mistakes_resample => "resample",
+    mistakes_filter_window => "filter-window",
+    mistakes_edge_window => "edge-window",
+    mistakes_forstner_window => "forstner-window",
+    mistakes_moravec_window => "moravec-window",
+    mistakes_forstner_image => "forstner-image",
+    mistakes_chain_code => "chain-code",
+    mistakes_boundary_length => "boundary-length",
+    mistakes_boundary_shape => "boundary-shape",
 }
 
 #[test]

@@ -61,14 +61,14 @@ pub(crate) fn textured(rng: &mut Rng, n: usize) -> Vec<f64> {
     v
 }
 
-fn list(inputs: &Record, key: &str) -> Vec<f64> {
+pub(crate) fn list(inputs: &Record, key: &str) -> Vec<f64> {
     match inputs.get(key) {
         Some(crate::solution::Value::List(xs)) => xs.iter().filter_map(|x| x.as_f64()).collect(),
         _ => Vec::new(),
     }
 }
 
-fn rows(inputs: &Record, key: &str) -> Vec<Vec<f64>> {
+pub(crate) fn rows_of(inputs: &Record, key: &str) -> Vec<Vec<f64>> {
     match inputs.get(key) {
         Some(crate::solution::Value::List(rs)) => rs
             .iter()
@@ -98,7 +98,7 @@ fn rho_with(a: &[f64], ma: f64, b: &[f64]) -> f64 {
 }
 
 /// ρ without the means subtracted: the mistake.
-fn rho_raw(a: &[f64], b: &[f64]) -> f64 {
+pub(crate) fn rho_raw(a: &[f64], b: &[f64]) -> f64 {
     let (mut ab, mut aa, mut bb) = (0.0, 0.0, 0.0);
     for (x, y) in a.iter().zip(b) {
         ab += x * y;
@@ -239,8 +239,8 @@ fn boxes_ncc_2d(_: &Record) -> Vec<BoxDef> {
 }
 
 fn chain_ncc_2d(i: &Record, g: &Record) -> Result<Record> {
-    let a: Vec<f64> = rows(i, "a").concat();
-    let b: Vec<f64> = rows(i, "b").concat();
+    let a: Vec<f64> = rows_of(i, "a").concat();
+    let b: Vec<f64> = rows_of(i, "b").concat();
     let ma = or_given(g, "mean_a", mean(&a));
     let mb = or_given(g, "mean_b", mean(&b));
     let dot = |f: &dyn Fn(f64, f64) -> f64| a.iter().zip(&b).map(|(x, y)| f(*x, *y)).sum::<f64>();
@@ -256,15 +256,15 @@ fn chain_ncc_2d(i: &Record, g: &Record) -> Result<Record> {
         .with("rho", ab / (aa * bb).sqrt()))
 }
 
-fn transpose(m: &[Vec<f64>]) -> Vec<Vec<f64>> {
+pub(crate) fn transpose(m: &[Vec<f64>]) -> Vec<Vec<f64>> {
     (0..m.first().map_or(0, Vec::len))
         .map(|j| m.iter().map(|r| r.get(j).copied().unwrap_or(0.0)).collect())
         .collect()
 }
 
 fn mistakes_ncc_2d(i: &Record) -> Result<Vec<Mistake>> {
-    let a: Vec<f64> = rows(i, "a").concat();
-    let b = rows(i, "b");
+    let a: Vec<f64> = rows_of(i, "a").concat();
+    let b = rows_of(i, "b");
     let bt: Vec<f64> = transpose(&b).concat();
     let swapped = chain_ncc_2d(&i.clone().with("b", mat(&transpose(&b))), &Record::new())?;
     const SWAP: &str = "Pair each pixel of A with the pixel of B at the same row and column.";
@@ -358,8 +358,8 @@ fn boxes_surface(i: &Record) -> Vec<BoxDef> {
 
 fn mistakes_surface(i: &Record) -> Result<Vec<Mistake>> {
     let (c, r) = surface_best(i)?;
-    let t = rows(i, "template").concat();
-    let s = rows(i, "search");
+    let t = rows_of(i, "template").concat();
+    let s = rows_of(i, "search");
     let w: Vec<f64> = s[..3].iter().flat_map(|row| row[..3].to_vec()).collect();
     const SWAP: &str = "c is the column (to the right), r the row (down).";
     const CORNER: &str =
@@ -474,7 +474,7 @@ fn boxes_sub_2d(_: &Record) -> Vec<BoxDef> {
 }
 
 fn mistakes_sub_2d(i: &Record) -> Result<Vec<Mistake>> {
-    let swapped = i.clone().with("rho", mat(&transpose(&rows(i, "rho"))));
+    let swapped = i.clone().with("rho", mat(&transpose(&rows_of(i, "rho"))));
     let s = examples::solve("subpixel-2d", &swapped)?;
     const SWAP: &str = "The rows of the ρ table are the rows r; its columns are the columns c.";
     Ok(vec![
