@@ -122,10 +122,8 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
     let r = &s.result;
     let fail = |why: &str| panic!("{id} {code}: {why}");
     match id {
-        "pixel-to-photo" => {
-            if num(r, "x_px") == 0.0 || num(r, "y_px") == 0.0 {
-                fail("the point is on an axis")
-            }
+        "pixel-to-photo" if num(r, "x_px") == 0.0 || num(r, "y_px") == 0.0 => {
+            fail("the point is on an axis")
         }
         "photo-to-pixel" => {
             let (c, rr) = (num(r, "c"), num(r, "r"));
@@ -140,11 +138,7 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 fail("no clear best sub-window")
             }
         }
-        "ncc-2d" => {
-            if num(r, "rho").abs() < 0.2 {
-                fail("ρ too close to 0")
-            }
-        }
+        "ncc-2d" if num(r, "rho").abs() < 0.2 => fail("ρ too close to 0"),
         "ncc-surface" => {
             let rho: Vec<f64> = match r.get("rho") {
                 Some(Value::List(rows)) => rows
