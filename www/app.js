@@ -111,6 +111,7 @@ function showHome() {
           : `${ready} of ${entries.length} examples are ready; ${entries.length - ready === 1 ? "the other is" : "the others are"} marked “coming”.`,
       ),
       catalogNav({ detailed: true }),
+      el("p", { class: "practice-home-link" }, el("a", { href: "#/practice" }, "Practice: every example with fresh numbers, checked step by step →")),
     ),
   );
   setStatus("home");
@@ -156,6 +157,8 @@ function buildView(entry) {
   const copyButton = el("button", { type: "button", class: "button" }, "Copy link");
   copyButton.addEventListener("click", () => copyLink(copyStatus));
   const actions = el("div", { class: "actions" }, resetButton, copyButton, copyStatus);
+  // practice mode (www/practice/): fresh numbers for this example
+  actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
   if (mode === "embed") {
     const open = el("a", { class: "open-full", target: "_blank", rel: "noopener", href: "index.html" }, `Open in ${SITE_TITLE} ↗`);
     v.openLink = open;
@@ -338,6 +341,12 @@ async function route({ focus = false } = {}) {
   const { id, params } = parseHash(hash);
   if (!id) {
     showHome();
+    return;
+  }
+  if (id === "practice" || params.some(([key]) => key === "practice")) {
+    destroyView();
+    const { showPractice } = await import("./practice/view.js");
+    await showPractice({ root, core, entries, id, params, mode, setStatus });
     return;
   }
   const entry = entryById(id);
