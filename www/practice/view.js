@@ -42,7 +42,7 @@ function ensureStyles() {
 export async function showPractice({ root, core, entries, id, params, mode, setStatus }) {
   ensureStyles();
   const get = (k) => params.find(([key]) => key === k)?.[1] ?? null;
-  const ctx = { root, core, entries, mode, setStatus };
+  const ctx = { root, core, entries, mode, setStatus, params };
   if (id === "practice") {
     if (get("worksheet")) return showWorksheet(ctx, get("worksheet"), get("n"), get("codes"));
     return showOverview(ctx);
@@ -58,7 +58,9 @@ export async function showPractice({ root, core, entries, id, params, mode, setS
   } catch (e) {
     return message(ctx, `Practice: ${entry.title}`, `This practice link does not work: ${messageOf(e)}`, id);
   }
-  const hash = `#/${encodeURIComponent(id)}?practice=${variant.code}`;
+  // The link names the variant; other options (an embed's id, host) stay.
+  const query = params.map(([k, v]) => (k === "practice" ? `practice=${variant.code}` : `${encodeURIComponent(k)}=${encodeURIComponent(v)}`)).join("&");
+  const hash = `#/${encodeURIComponent(id)}?${query}`;
   if (location.hash !== hash) history.replaceState(history.state, "", hash);
   const answers = stored && stored.code === variant.code ? stored.answers : {};
   buildVariant(ctx, entry, variant, answers);
@@ -88,7 +90,8 @@ function buildVariant(ctx, entry, variant, answers) {
 
   const newButton = el("button", { type: "button", class: "button" }, "New variant");
   newButton.addEventListener("click", () => {
-    location.hash = `#/${encodeURIComponent(id)}?practice=new`;
+    const others = ctx.params.filter(([k]) => k !== "practice").map(([k, v]) => `&${encodeURIComponent(k)}=${encodeURIComponent(v)}`);
+    location.hash = `#/${encodeURIComponent(id)}?practice=new${others.join("")}`;
   });
   const copyButton = el("button", { type: "button", class: "button" }, "Copy link");
   copyButton.addEventListener("click", async () => {
