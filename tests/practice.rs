@@ -554,3 +554,30 @@ fn debug_variant() {
     let s = examples::solve(&id, &p.inputs).unwrap();
     println!("{:?}\n{:?}", p.inputs, s.result);
 }
+
+/// The third hint shows the numbers but not the answer: no box's exact value
+/// (as the steps print it) is in its own "formula with numbers".
+#[test]
+fn the_numbers_hint_does_not_give_the_answer_away() {
+    for spec in specs() {
+        for v in 0..5 {
+            let p = variant(spec.id, Some(&encode(v)), 0).unwrap();
+            let s = examples::solve(spec.id, &p.inputs).unwrap();
+            for b in &p.boxes {
+                let x = value_in(&s, &b.key).unwrap();
+                let shown = photogrammetry_playground::solution::num(x);
+                if x.fract() == 0.0 || shown.len() < 4 {
+                    continue; // whole numbers and short ones appear as inputs too
+                }
+                assert!(
+                    !b.hints.numbers.contains(&shown),
+                    "{} {}: {} in {}",
+                    spec.id,
+                    b.key,
+                    shown,
+                    b.hints.numbers
+                );
+            }
+        }
+    }
+}

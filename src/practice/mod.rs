@@ -305,10 +305,24 @@ pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
 
 fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
     let step = step_of(&b.key, s);
-    let (formula, numbers) = s
+    let formula = s
         .steps
         .get(step)
-        .map(|st| (st.formula.clone(), without_result(&st.substituted)))
+        .map(|st| st.formula.clone())
+        .unwrap_or_default();
+    // The numbers of the step, or of the step before when the step only
+    // states the result (a solution vector): never the answer itself.
+    let answer = value_in(s, &b.key).ok().map(crate::solution::num);
+    let gives_away = |t: &str| {
+        answer
+            .as_ref()
+            .is_some_and(|a| a.len() >= 4 && t.contains(a.as_str()))
+    };
+    let numbers = [step, step.wrapping_sub(1)]
+        .iter()
+        .filter_map(|&k| s.steps.get(k))
+        .map(|st| without_result(&st.substituted))
+        .find(|t| !t.is_empty() && !gives_away(t))
         .unwrap_or_default();
     BoxInfo {
         key: b.key.clone(),
@@ -328,7 +342,12 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
 /// The tolerance in words.
 pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
     let u = unit.map(|u| format!(" {u}")).unwrap_or_default();
-    let abs = crate::solution::fmt_sig(t.atol, 3);
+    let abs = if t.atol > 0.0 && t.atol < 1e-3 {
+        // 1e-7 rather than 0.0000001
+        format!("{:e}", t.atol)
+    } else {
+        crate::solution::fmt_sig(t.atol, 3)
+    };
     let rel = crate::solution::fmt_sig(t.rtol * 100.0, 3);
     match (t.atol > 0.0, t.rtol > 0.0) {
         (true, true) => format!("± ({abs}{u} + {rel} %)"),
@@ -338,22 +357,37 @@ pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
     }
 }
 
-/// The substituted formula without its final `= result`, so the third hint
-/// shows the numbers but not the answer.
+/// The substituted formula up to its first `left = numbers`, the rest (the
+/// result and any later forms of it) replaced by `= ?`, so the third hint
+/// shows the numbers but not the answer: `GSD = 0.028 × 9047 = 255 mm = 25 cm`
+/// becomes `GSD = 0.028 × 9047 = ?`.
 fn without_result(tex: &str) -> String {
     let mut depth = 0i32;
-    let mut last = None;
+    let mut seen = 0;
     for (i, ch) in tex.char_indices() {
         match ch {
             '{' => depth += 1,
             '}' => depth -= 1,
-            '=' if depth == 0 => last = Some(i),
+            '=' if depth == 0 => {
+                seen += 1;
+                if seen == 2 {
+                    return format!("{} = \\;?", tex[..i].trim_end());
+                }
+            }
             _ => {}
         }
     }
-    match last {
-        Some(i) => format!("{} = \\;?", tex[..i].trim_end()),
-        None => tex.to_string(),
+    match tex.find('=') {
+        // "x = 8.25": only the answer after the sign
+        Some(i)
+            if seen == 1
+                && tex[i + 1..]
+                    .chars()
+                    .all(|c| c.is_ascii_digit() || " .-+()".contains(c)) =>
+        {
+            format!("{} = \\;?", tex[..i].trim_end())
+        }
+        _ => tex.to_string(),
     }
 }
 
@@ -480,5 +514,11 @@ mod tests {
             without_result("x = 2 \\cdot 3 = 6"),
             "x = 2 \\cdot 3 = \\;?"
         );
+        assert_eq!(
+            without_result("g = 2 \\cdot 3 = 6 = 0.6"),
+            "g = 2 \\cdot 3 = \\;?"
+        );
+        assert_eq!(without_result("x = (-8.25)"), "x = \\;?");
+        assert_eq!(without_result("x = a + b"), "x = a + b");
     }
 }

@@ -46,7 +46,10 @@ fn gen_fiducials(rng: &mut Rng) -> Record {
     let a = rng.pick(&[106.0, 110.0, 113.0, 115.0]);
     let k = rng.num(2340, 2380) / 100.0; // pixels per mm
     let theta = (rng.num(-50, 50) / 100.0).to_radians();
-    let (cc, rc) = (rng.num(2650, 2750), rng.num(2650, 2750));
+    // The centre far enough in that every fiducial has a positive pixel
+    // position (Example 4's lie about 48 px from the edges).
+    let margin = (k * (a + 0.1)).ceil();
+    let (cc, rc) = (margin + rng.num(30, 80), margin + rng.num(30, 80));
     let mut points = Vec::new();
     for (ux, uy) in [(-1.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.0, -1.0)] {
         let x = dec(a * ux + rng.num(-30, 30) / 1000.0, 3);

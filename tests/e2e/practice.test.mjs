@@ -156,7 +156,7 @@ describe("a practice variant", () => {
       const numbers = await b.locator('.hint[data-rung="3"]').innerText();
       assert.ok(numbers.includes("?"), numbers);
       await button.click();
-      assert.match(await b.locator('.hint[data-rung="4"] .step-title').innerText(), /Ground sample distance/);
+      assert.match(await b.locator('.hint[data-rung="4"] .hint-step-title').innerText(), /Ground sample distance/);
       assert.equal(await button.isDisabled(), true);
       assert.match(await page.locator(".practice-revealed").innerText(), /the worked step \(4 of 4\)/);
       noErrors(log);

@@ -204,7 +204,7 @@ function buildVariant(ctx, entry, variant, answers) {
     if (n === 4) {
       try {
         const step = worked().steps[h.step];
-        part.append(el("h4", { class: "step-title" }, step.title));
+        part.append(el("h4", { class: "hint-step-title" }, step.title));
         if (step.text) part.append(el("p", {}, step.text));
         if (step.formula) part.append(renderFormula(step.formula, "formula"));
         if (step.substituted) part.append(renderFormula(step.substituted, "formula"));
@@ -241,7 +241,9 @@ function buildVariant(ctx, entry, variant, answers) {
       score.textContent = `The answers could not be checked: ${messageOf(e)}`;
       return;
     }
-    if (!saveProgress(id, code, t)) saveNote.hidden = false;
+    // nothing typed in a variant never stored: nothing to keep
+    const typed = Object.values(t).some((x) => x.trim());
+    if ((typed || loadProgress(id)?.code === code) && !saveProgress(id, code, t)) saveNote.hidden = false;
     for (const b of boxes) {
       const r = g.boxes[b.b.key];
       const text = b.input.value.trim();
