@@ -190,10 +190,10 @@ fn boxes_gsd(_: &Record) -> Vec<BoxDef> {
         .nudge("Scale = f / H, with both lengths in the same unit."),
         BoxDef::new("pixel_size_mm", "Pixel size", Some("mm"), PIXEL_SIZE)
             .nudge("One inch is 25.4 mm, and it holds dpi pixels."),
-        BoxDef::new("gsd_mm", "Ground sample distance", Some("mm"), rel).nudge(
+        BoxDef::new("gsd_mm", "Ground sample distance in mm", Some("mm"), rel).nudge(
             "One pixel on the photo covers the pixel size times the scale number on the ground.",
         ),
-        BoxDef::new("gsd_cm", "Ground sample distance", Some("cm"), rel)
+        BoxDef::new("gsd_cm", "Ground sample distance in cm", Some("cm"), rel)
             .nudge("The same length in centimetres."),
     ]
 }

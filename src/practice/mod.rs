@@ -342,7 +342,7 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
 /// The tolerance in words.
 pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
     let u = unit.map(|u| format!(" {u}")).unwrap_or_default();
-    let abs = if t.atol > 0.0 && t.atol < 1e-3 {
+    let abs = if t.atol > 0.0 && t.atol < 1e-4 {
         // 1e-7 rather than 0.0000001
         format!("{:e}", t.atol)
     } else {
