@@ -545,16 +545,6 @@ fn the_same_code_gives_the_same_variant() {
     );
 }
 
-#[test]
-#[ignore]
-fn debug_variant() {
-    let id = std::env::var("ID").unwrap();
-    let code = std::env::var("CODE").unwrap();
-    let p = variant(&id, Some(&code), 0).unwrap();
-    let s = examples::solve(&id, &p.inputs).unwrap();
-    println!("{:?}\n{:?}", p.inputs, s.result);
-}
-
 /// The third hint shows the numbers but not the answer: no box's exact value
 /// (as the steps print it) is in its own "formula with numbers".
 #[test]
