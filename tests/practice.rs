@@ -91,7 +91,7 @@ fn audit(spec: &Spec, seeds: u32, stride: u32, solve_stride: u32) {
         }
         // Every named mistake belongs to a box and is a number.
         let mistakes = if deep {
-            (spec.mistakes)(&inputs).expect("mistakes compute")
+            (spec.mistakes)(&inputs).unwrap_or_else(|e| panic!("{} {code}: mistakes: {e}", spec.id))
         } else {
             Vec::new()
         };
@@ -154,6 +154,11 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
             };
             if rho.iter().any(|x| !x.is_finite()) || margin(&rho) < 0.01 {
                 fail("a flat window or no clear best position")
+            }
+        }
+        "forstner-window" | "forstner-image" => {
+            if !(num(r, "det_n") > 0.0 && num(r, "q") > 0.05) {
+                fail("no corner in the window (N singular or q ≈ 0)")
             }
         }
         "subpixel-1d" | "subpixel-2d" => {
@@ -223,8 +228,12 @@ fn strides(id: &str) -> (u32, u32) {
 #[test]
 #[ignore]
 fn full_audit_every_seed() {
+    // AUDIT_ONLY=<id> audits one example.
+    let only = std::env::var("AUDIT_ONLY").ok();
     for spec in specs() {
-        audit(&spec, SEEDS, 1, 1);
+        if only.as_deref().is_none_or(|o| o == spec.id) {
+            audit(&spec, SEEDS, 1, 1);
+        }
     }
 }
 
@@ -259,7 +268,8 @@ fn every_ready_example_but_utm_has_practice() {
     let have: Vec<_> = specs().iter().map(|s| s.id).collect();
     let missing: Vec<_> = examples::catalog()
         .into_iter()
-        .filter(|e| e.status == "ready" && !have.contains(&e.id))
+        // UTM is being built in parallel (another issue); its practice comes with it.
+        .filter(|e| e.status == "ready" && !e.id.starts_with("utm") && !have.contains(&e.id))
         .map(|e| e.id)
         .collect();
     assert_eq!(missing, Vec::<&str>::new());
