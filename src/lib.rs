@@ -25,6 +25,8 @@
 //!   Snyder's classical one), UTM zones and bands, degrees-minutes-seconds.
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
+//! - [`practice`]: practice mode: variant codes and generators, answer
+//!   reading and grading with carried-forward errors and known mistakes.
 //! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
 //!   `parse_inputs`); the only file that knows about JavaScript.
 
@@ -37,6 +39,7 @@ pub mod filter;
 pub mod interest;
 pub mod lsq;
 pub mod matching;
+pub mod practice;
 pub mod projection;
 pub mod raster;
 pub mod resample;

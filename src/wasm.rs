@@ -53,3 +53,38 @@ pub fn parse_inputs(id: &str, texts: JsValue) -> Result<JsValue, JsError> {
     let parsed = examples::parse_inputs(id, &texts).map_err(js_error)?;
     to_js(&parsed)
 }
+
+#[wasm_bindgen]
+extern "C" {
+    /// The page's random numbers, for a fresh practice variant.
+    #[wasm_bindgen(js_namespace = Math, js_name = random)]
+    fn math_random() -> f64;
+}
+
+/// A practice variant of example `id`: `{ id, code, inputs, boxes }`; the
+/// variant of `code` when given (a string like `"1K7Q2"`), a new one when
+/// `code` is `undefined` or `null`.
+#[wasm_bindgen]
+pub fn practice(id: &str, code: JsValue) -> Result<JsValue, JsError> {
+    let code = if code.is_undefined() || code.is_null() {
+        None
+    } else {
+        Some(
+            code.as_string()
+                .ok_or_else(|| JsError::new("code: must be a string like \"1K7Q2\""))?,
+        )
+    };
+    let fresh = (math_random() * f64::from(crate::practice::VARIANTS)) as u32;
+    let p = crate::practice::practice(id, code.as_deref(), fresh).map_err(js_error)?;
+    to_js(&p)
+}
+
+/// Grades `answers` (`{ box key: text }`) for variant `code` of example `id`:
+/// `{ code, boxes: { key: { verdict, mistake?, message, read, value,
+/// precision, unit, points } }, score, out_of }`.
+#[wasm_bindgen]
+pub fn grade(id: &str, code: &str, answers: JsValue) -> Result<JsValue, JsError> {
+    let answers = record_from_js("answers", answers)?;
+    let g = crate::practice::grade(id, code, &answers).map_err(js_error)?;
+    to_js(&g)
+}

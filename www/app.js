@@ -116,6 +116,7 @@ function showHome() {
       ),
       el("p", { class: "lab-link" }, el("a", { href: "#/lab" }, "Image lab: run these operators on real photos, and open the example behind any pixel →")),
       catalogNav({ detailed: true }),
+      el("p", { class: "practice-home-link" }, el("a", { href: "#/practice" }, "Practice: every example with fresh numbers, checked step by step →")),
     ),
   );
   setStatus("home");
@@ -187,6 +188,8 @@ function buildView(entry) {
   apiBox.addEventListener("change", () => showApiNames(apiBox.checked));
   const apiToggle = el("label", { class: "api-toggle", for: `api-names-${id}`, title: "The names course authors use in links and in the JS API" }, apiBox, "Show API names");
   const actions = el("div", { class: "actions" }, resetButton, copyButton, apiToggle, copyStatus);
+  // practice mode (www/practice/): fresh numbers for this example
+  actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
   if (mode === "embed") {
     const open = el("a", { class: "open-full", target: "_blank", rel: "noopener", href: "index.html" }, `Open in ${SITE_TITLE} ↗`);
     v.openLink = open;
@@ -415,6 +418,12 @@ async function route({ focus = false } = {}) {
   }
   if (!id) {
     showHome();
+    return;
+  }
+  if (id === "practice" || params.some(([key]) => key === "practice")) {
+    destroyView();
+    const { showPractice } = await import("./practice/view.js");
+    await showPractice({ root, core, entries, id, params, mode, setStatus });
     return;
   }
   const entry = entryById(id);

@@ -13,6 +13,8 @@ export async function loadCore() {
     catalog: () => mod.catalog(),
     parseInputs: (id, texts) => mod.parse_inputs(id, texts),
     solve: (id, inputs) => mod.solve(id, inputs),
+    practice: (id, code) => mod.practice(id, code ?? undefined),
+    grade: (id, code, answers) => mod.grade(id, code, answers),
   };
 }
 

@@ -1,0 +1,524 @@
+//! Practice mode: fresh numbers for every worked example, answers checked
+//! box by box against the exact solver, errors carried forward, known
+//! mistakes named, and a hint ladder.
+//!
+//! - A variant is a short code: a version digit and four Crockford base-32
+//!   digits (`1K7Q2`). The code seeds a small deterministic PRNG ([`Rng`])
+//!   that the example's generator draws its inputs from, constructively.
+//! - Each example's [`Spec`] (in the topic files beside this one) says how to
+//!   draw the inputs, which values get an answer box, how the later boxes
+//!   follow from the earlier ones (for errors carried forward) and which
+//!   mistakes students make.
+//! - The expected values are the solver's own results
+//!   ([`crate::examples::solve`]); a test ties every chain to them.
+
+pub mod chains;
+pub mod coordinates;
+pub mod correlation;
+pub mod filters;
+pub mod grade;
+pub mod interest;
+pub mod matching;
+pub mod read;
+pub mod resampling;
+pub mod transformations;
+
+use crate::error::{Error, Result};
+use crate::examples;
+use crate::solution::{Record, Solution, Value};
+use serde::Serialize;
+
+pub use grade::{grade, Graded};
+
+/// The version of the generators; part of every code.
+pub const VERSION: u32 = 1;
+/// Crockford's base 32 (no I, L, O, U).
+const ALPHABET: &[u8; 32] = b"0123456789ABCDEFGHJKMNPQRSTVWXYZ";
+/// Digits of a code after the version digit.
+const CODE_DIGITS: usize = 4;
+/// How many different variants one example has.
+pub const VARIANTS: u32 = 1 << (5 * CODE_DIGITS);
+
+/// A small deterministic PRNG (SplitMix64): the same seed, the same draws,
+/// on every platform.
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Self {
+        Rng(seed)
+    }
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// A whole number in `lo..=hi`.
+    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        let span = (hi - lo).max(0) as u64 + 1;
+        lo + (self.next_u64() % span) as i64
+    }
+    /// `int` as an `f64`.
+    pub fn num(&mut self, lo: i64, hi: i64) -> f64 {
+        self.int(lo, hi) as f64
+    }
+    /// One of `xs` (the first when `xs` is empty is impossible: callers
+    /// pass constant, non-empty tables).
+    pub fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
+        xs[(self.next_u64() % xs.len().max(1) as u64) as usize]
+    }
+    /// True with probability one half.
+    pub fn coin(&mut self) -> bool {
+        self.next_u64() & 1 == 1
+    }
+}
+
+/// Encodes a variant number as a code (`1K7Q2`).
+pub fn encode(variant: u32) -> String {
+    let mut s = VERSION.to_string();
+    for i in (0..CODE_DIGITS).rev() {
+        s.push(ALPHABET[((variant >> (5 * i)) & 31) as usize] as char);
+    }
+    s
+}
+
+/// Reads a code (case-insensitive; I and L read as 1, O as 0).
+pub fn decode(code: &str) -> Result<u32> {
+    let bad = |why: String| Error::input("code", why);
+    let code = code.trim().to_ascii_uppercase();
+    let mut chars = code.chars();
+    let version = chars
+        .next()
+        .ok_or_else(|| bad("is empty; a practice code looks like 1K7Q2".into()))?;
+    let rest: Vec<char> = chars.collect();
+    if !version.is_ascii_digit() || rest.len() != CODE_DIGITS {
+        return Err(bad(format!(
+            "\"{code}\" is not a practice code (a version digit and {CODE_DIGITS} letters or digits, like 1K7Q2)"
+        )));
+    }
+    if version.to_digit(10) != Some(VERSION) {
+        return Err(bad(format!(
+            "\"{code}\" is a version-{version} code; this playground makes version-{VERSION} codes"
+        )));
+    }
+    let mut v = 0u32;
+    for ch in rest {
+        let ch = match ch {
+            'I' | 'L' => '1',
+            'O' => '0',
+            c => c,
+        };
+        let d = ALPHABET
+            .iter()
+            .position(|&a| a as char == ch)
+            .ok_or_else(|| bad(format!("\"{code}\": '{ch}' is not a code letter")))?;
+        v = (v << 5) | d as u32;
+    }
+    Ok(v)
+}
+
+/// The tolerance of a box: `|x − x*| ≤ atol + rtol·|x*|`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Tolerance {
+    pub atol: f64,
+    pub rtol: f64,
+}
+
+impl Tolerance {
+    pub const fn abs(atol: f64) -> Self {
+        Tolerance { atol, rtol: 0.0 }
+    }
+    pub const fn rel(rtol: f64) -> Self {
+        Tolerance { atol: 0.0, rtol }
+    }
+    /// The allowed deviation around `expected`.
+    pub fn allowed(self, expected: f64) -> f64 {
+        self.atol + self.rtol * expected.abs()
+    }
+    pub fn accepts(self, expected: f64, x: f64) -> bool {
+        (x - expected).abs() <= self.allowed(expected) * (1.0 + 1e-9) + 1e-12
+    }
+}
+
+/// One answer box of an example.
+#[derive(Debug, Clone)]
+pub struct BoxDef {
+    /// A result key, or a path into one: `rho[3]` (1-based element),
+    /// `n[1,2]` (row 1, column 2). Also a key of a step's values.
+    pub key: String,
+    pub label: String,
+    pub unit: Option<&'static str>,
+    pub tolerance: Tolerance,
+    /// The first rung of the hint ladder: what to think about.
+    pub nudge: String,
+}
+
+impl BoxDef {
+    pub fn new(key: &str, label: &str, unit: Option<&'static str>, tol: Tolerance) -> Self {
+        BoxDef {
+            key: key.to_string(),
+            label: label.to_string(),
+            unit,
+            tolerance: tol,
+            nudge: String::new(),
+        }
+    }
+    pub fn nudge(mut self, text: &str) -> Self {
+        self.nudge = text.to_string();
+        self
+    }
+}
+
+/// A mistake students make, with the value it gives in box `key`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mistake {
+    pub key: String,
+    /// Short name shown in the feedback ("y not flipped").
+    pub name: &'static str,
+    /// One sentence on what went wrong.
+    pub explain: &'static str,
+    pub value: f64,
+}
+
+impl Mistake {
+    pub fn new(key: &str, name: &'static str, explain: &'static str, value: f64) -> Self {
+        Mistake {
+            key: key.to_string(),
+            name,
+            explain,
+            value,
+        }
+    }
+}
+
+/// The box values a student's earlier answers imply: `given` holds the
+/// answers (by box key) to use instead of the exact values.
+pub type Chain = fn(&Record, &Record) -> Result<Record>;
+
+/// How one example is practised.
+pub struct Spec {
+    pub id: &'static str,
+    /// Draws the inputs (constructively: every draw is a good variant).
+    pub generate: fn(&mut Rng) -> Record,
+    /// The answer boxes for these inputs, in the order a student fills them.
+    pub boxes: fn(&Record) -> Vec<BoxDef>,
+    /// Later boxes from earlier ones; `None` when the boxes do not build
+    /// on each other in a way worth carrying forward.
+    pub chain: Option<Chain>,
+    /// The known mistakes and the values they give.
+    pub mistakes: fn(&Record) -> Result<Vec<Mistake>>,
+}
+
+/// Every example that has practice, in catalog order.
+pub fn specs() -> Vec<Spec> {
+    let mut all = coordinates::specs();
+    all.extend(transformations::specs());
+    all.extend(correlation::specs());
+    all.extend(matching::specs());
+    all.extend(resampling::specs());
+    all.extend(filters::specs());
+    all.extend(interest::specs());
+    all.extend(chains::specs());
+    all
+}
+
+pub fn spec(id: &str) -> Result<Spec> {
+    // Unknown ids get the catalog's own message.
+    let known = examples::catalog().iter().any(|e| e.id == id);
+    specs().into_iter().find(|s| s.id == id).ok_or_else(|| {
+        if known {
+            Error::input("id", format!("\"{id}\" has no practice mode yet"))
+        } else {
+            Error::UnknownExample { id: id.to_string() }
+        }
+    })
+}
+
+/// The seed of variant `variant` of example `id` (codes differ per example).
+fn seed(id: &str, variant: u32) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in id.bytes() {
+        h = (h ^ b as u64).wrapping_mul(0x100_0000_01b3);
+    }
+    h ^ ((VERSION as u64) << 40) ^ variant as u64
+}
+
+/// The inputs of variant `variant` of `spec`.
+pub fn inputs_of(spec: &Spec, variant: u32) -> Record {
+    (spec.generate)(&mut Rng::new(seed(spec.id, variant)))
+}
+
+/// What a box looks like to the page.
+#[derive(Debug, Clone, Serialize)]
+pub struct BoxInfo {
+    pub key: String,
+    pub label: String,
+    pub unit: Option<&'static str>,
+    pub tolerance: Tolerance,
+    /// The tolerance in words: "± 0.05 px", "± 0.1 %".
+    pub tolerance_text: String,
+    /// The hint ladder: a nudge, the formula (LaTeX), the formula with this
+    /// variant's numbers (LaTeX, the result left out), and the index of the
+    /// worked step in `solve(id, inputs).steps`.
+    pub hints: Hints,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Hints {
+    pub nudge: String,
+    pub formula: String,
+    pub numbers: String,
+    pub step: usize,
+}
+
+/// A practice variant: `{ code, inputs, boxes }`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Practice {
+    pub id: String,
+    pub code: String,
+    pub inputs: Record,
+    pub boxes: Vec<BoxInfo>,
+}
+
+/// A practice variant of example `id`: the one of `code`, or variant
+/// `fresh` (any number, reduced to the code range) when `code` is `None`.
+pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
+    let spec = spec(id)?;
+    let variant = match code {
+        Some(c) => decode(c)?,
+        None => fresh % VARIANTS,
+    };
+    let inputs = inputs_of(&spec, variant);
+    let solution = examples::solve(id, &inputs)?;
+    let boxes = (spec.boxes)(&inputs)
+        .into_iter()
+        .map(|b| box_info(&b, &solution))
+        .collect();
+    Ok(Practice {
+        id: id.to_string(),
+        code: encode(variant),
+        inputs,
+        boxes,
+    })
+}
+
+fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
+    let step = step_of(&b.key, s);
+    let formula = s
+        .steps
+        .get(step)
+        .map(|st| st.formula.clone())
+        .unwrap_or_default();
+    // The numbers of the step, or of the step before when the step only
+    // states the result (a solution vector): never the answer itself.
+    let answer = value_in(s, &b.key).ok().map(crate::solution::num);
+    let gives_away = |t: &str| {
+        answer
+            .as_ref()
+            .is_some_and(|a| a.len() >= 4 && t.contains(a.as_str()))
+    };
+    let numbers = [step, step.wrapping_sub(1)]
+        .iter()
+        .filter_map(|&k| s.steps.get(k))
+        .map(|st| without_result(&st.substituted))
+        .find(|t| !t.is_empty() && !gives_away(t))
+        .unwrap_or_default();
+    BoxInfo {
+        key: b.key.clone(),
+        label: b.label.clone(),
+        unit: b.unit,
+        tolerance: b.tolerance,
+        tolerance_text: tolerance_text(b.tolerance, b.unit),
+        hints: Hints {
+            nudge: b.nudge.clone(),
+            formula,
+            numbers,
+            step,
+        },
+    }
+}
+
+/// The tolerance in words.
+pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
+    let u = unit.map(|u| format!(" {u}")).unwrap_or_default();
+    let abs = if t.atol > 0.0 && t.atol < 1e-4 {
+        // 1e-7 rather than 0.0000001
+        format!("{:e}", t.atol)
+    } else {
+        crate::solution::fmt_sig(t.atol, 3)
+    };
+    let rel = crate::solution::fmt_sig(t.rtol * 100.0, 3);
+    match (t.atol > 0.0, t.rtol > 0.0) {
+        (true, true) => format!("± ({abs}{u} + {rel} %)"),
+        (true, false) => format!("± {abs}{u}"),
+        (false, true) => format!("± {rel} %"),
+        (false, false) => "exact".to_string(),
+    }
+}
+
+/// The substituted formula up to its first `left = numbers`, the rest (the
+/// result and any later forms of it) replaced by `= ?`, so the third hint
+/// shows the numbers but not the answer: `GSD = 0.028 × 9047 = 255 mm = 25 cm`
+/// becomes `GSD = 0.028 × 9047 = ?`.
+fn without_result(tex: &str) -> String {
+    let mut depth = 0i32;
+    let mut seen = 0;
+    for (i, ch) in tex.char_indices() {
+        match ch {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            '=' if depth == 0 => {
+                seen += 1;
+                if seen == 2 {
+                    return format!("{} = \\;?", tex[..i].trim_end());
+                }
+            }
+            _ => {}
+        }
+    }
+    match tex.find('=') {
+        // "x = 8.25": only the answer after the sign
+        Some(i)
+            if seen == 1
+                && tex[i + 1..]
+                    .chars()
+                    .all(|c| c.is_ascii_digit() || " .-+()".contains(c)) =>
+        {
+            format!("{} = \\;?", tex[..i].trim_end())
+        }
+        _ => tex.to_string(),
+    }
+}
+
+/// The base name and 1-based indices of a box key (`n[1,2]` → `n`, [1, 2]).
+pub fn split_key(key: &str) -> (&str, Vec<usize>) {
+    match key.split_once('[') {
+        Some((base, rest)) => {
+            let idx = rest
+                .trim_end_matches(']')
+                .split(',')
+                .filter_map(|p| p.trim().parse().ok())
+                .collect();
+            (base, idx)
+        }
+        None => (key, Vec::new()),
+    }
+}
+
+/// The step that shows box `key`: the first whose values carry its base
+/// name, else the last step.
+fn step_of(key: &str, s: &Solution) -> usize {
+    let (base, _) = split_key(key);
+    s.steps
+        .iter()
+        .position(|st| st.values.get(base).is_some())
+        .unwrap_or(s.steps.len().saturating_sub(1))
+}
+
+/// The value of box `key` in a solution (its result, else a step's values).
+pub fn value_in(s: &Solution, key: &str) -> Result<f64> {
+    let (base, idx) = split_key(key);
+    let v = s
+        .result
+        .get(base)
+        .or_else(|| s.steps.iter().find_map(|st| st.values.get(base)))
+        .ok_or_else(|| Error::Internal(format!("practice box {key} is not in {}", s.id)))?;
+    pick(v, &idx).ok_or_else(|| Error::Internal(format!("practice box {key} is not a number")))
+}
+
+/// The number at 1-based `idx` inside a value (booleans count 1/0).
+pub fn pick(v: &Value, idx: &[usize]) -> Option<f64> {
+    match (v, idx.split_first()) {
+        (Value::Number(x), None) => Some(*x),
+        (Value::Bool(b), None) => Some(if *b { 1.0 } else { 0.0 }),
+        (Value::List(xs), Some((&i, rest))) => pick(xs.get(i.checked_sub(1)?)?, rest),
+        _ => None,
+    }
+}
+
+/// Rounds to `sig` significant digits.
+pub fn round_sig(x: f64, sig: i32) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let p = 10f64.powi(sig - 1 - x.abs().log10().floor() as i32);
+    (x * p).round() / p
+}
+
+/// Shorthands for the topic files.
+pub(crate) fn nums(xs: &[f64]) -> Value {
+    Value::numbers(xs)
+}
+pub(crate) fn mat(rows: &[Vec<f64>]) -> Value {
+    Value::matrix(rows)
+}
+
+/// The value of `key` in `given`, else `exact`: what a chain computes on.
+pub(crate) fn or_given(given: &Record, key: &str, exact: f64) -> f64 {
+    given.number(key).unwrap_or(exact)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_round_trip_and_read_forgivingly() {
+        for v in [0, 1, 31, 32, 12345, VARIANTS - 1] {
+            assert_eq!(decode(&encode(v)).unwrap(), v);
+        }
+        assert_eq!(encode(0), "10000");
+        assert_eq!(decode("1oill").unwrap(), decode("10111").unwrap());
+        assert!(decode("").is_err());
+        assert!(decode("1K7Q").is_err());
+        assert!(decode("2K7Q2")
+            .unwrap_err()
+            .to_string()
+            .contains("version-2"));
+        assert!(decode("1K7U2").unwrap_err().to_string().contains("'U'"));
+    }
+
+    #[test]
+    fn rng_is_deterministic_and_in_range() {
+        let (mut a, mut b) = (Rng::new(7), Rng::new(7));
+        for _ in 0..1000 {
+            let x = a.int(-3, 5);
+            assert_eq!(x, b.int(-3, 5));
+            assert!((-3..=5).contains(&x));
+        }
+    }
+
+    #[test]
+    fn tolerance_edges() {
+        let t = Tolerance {
+            atol: 0.01,
+            rtol: 0.001,
+        };
+        // allowed around 10: 0.01 + 0.01 = 0.02
+        assert!(t.accepts(10.0, 10.02));
+        assert!(t.accepts(10.0, 9.98));
+        assert!(!t.accepts(10.0, 10.0201));
+        assert!(!t.accepts(10.0, 9.9799));
+        assert_eq!(tolerance_text(t, Some("mm")), "± (0.01 mm + 0.1 %)");
+    }
+
+    #[test]
+    fn keys_split_and_pick() {
+        assert_eq!(split_key("n[1,2]"), ("n", vec![1, 2]));
+        let m = Value::matrix(&[vec![1.0, 2.0], vec![3.0, 4.0]]);
+        assert_eq!(pick(&m, &[2, 1]), Some(3.0));
+        assert_eq!(pick(&m, &[3, 1]), None);
+        assert_eq!(pick(&m, &[0, 1]), None);
+        assert_eq!(
+            without_result("x = 2 \\cdot 3 = 6"),
+            "x = 2 \\cdot 3 = \\;?"
+        );
+        assert_eq!(
+            without_result("g = 2 \\cdot 3 = 6 = 0.6"),
+            "g = 2 \\cdot 3 = \\;?"
+        );
+        assert_eq!(without_result("x = (-8.25)"), "x = \\;?");
+        assert_eq!(without_result("x = a + b"), "x = a + b");
+    }
+}

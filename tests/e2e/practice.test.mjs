@@ -1,0 +1,238 @@
+// Practice mode as a student and an instructor use it: a practice link, a
+// known mistake named, an error carried forward accepted as consistent, the
+// hint ladder, answers kept over a reload, a printed worksheet with its key,
+// and answer events posted from an embed to its host page.
+import { after, before, describe, test } from "node:test";
+import assert from "node:assert/strict";
+import { TEST_TIMEOUT, open, start } from "./harness.mjs";
+
+const CODE = "1K7Q2";
+const LINK = `#/gsd?practice=${CODE}`;
+const WAIT = 15_000;
+
+let env;
+before(async () => {
+  env = await start();
+});
+after(async () => {
+  await env?.close();
+});
+
+/** Loads a practice page and waits for it to be ready. */
+async function visitPractice(page, file, hash, status = "practice") {
+  await page.goto(`${env.url}${file}${hash}`);
+  await page.waitForFunction((s) => document.body.dataset.status === s, status, { timeout: WAIT });
+}
+
+/** The variant's inputs and exact results, from the page's own wasm module. */
+async function variantOf(page, id, code) {
+  return page.evaluate(
+    async ([i, c]) => {
+      const m = await import("./pkg/photogrammetry_playground.js");
+      const p = m.practice(i, c);
+      return { inputs: p.inputs, result: m.solve(i, p.inputs).result };
+    },
+    [id, code],
+  );
+}
+
+function box(page, key) {
+  return page.locator(`.answer[data-key="${key}"]`);
+}
+
+async function answer(page, key, text) {
+  const input = box(page, key).locator("input");
+  await input.fill(text);
+  await input.press("Tab");
+}
+
+async function feedback(page, key) {
+  return (await box(page, key).locator(".answer-feedback").innerText({ timeout: WAIT })).trim();
+}
+
+function noErrors(log) {
+  assert.deepEqual(log.pageErrors, []);
+  assert.deepEqual(log.consoleErrors, []);
+}
+
+describe("a practice variant", () => {
+  test("opens from its link with its givens and boxes; the example page links to practice", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      assert.equal(await page.locator("#practice-title").innerText(), "Practice: Ground sample distance");
+      assert.match(await page.locator(".example-meta").innerText(), new RegExp(`Variant ${CODE}`));
+      const v = await variantOf(page, "gsd", CODE);
+      const givens = await page.locator(".givens").innerText();
+      assert.ok(givens.includes(`${v.inputs.dpi} dpi`), givens);
+      assert.ok(givens.includes(`${v.inputs.flying_height_m} m`), givens);
+      assert.deepEqual(await page.locator(".answer").evaluateAll((xs) => xs.map((x) => x.dataset.key)), ["scale_denominator", "pixel_size_mm", "gsd_mm", "gsd_cm"]);
+      assert.match(await box(page, "gsd_cm").locator(".answer-tolerance").innerText(), /Tolerance ± 0\.2 %/);
+      assert.equal((await page.locator(".practice-score").innerText()).trim(), "Score: 0 of 4");
+      // the worked example has a Practice link to this mode
+      await page.goto(`${env.url}index.html#/gsd`);
+      await page.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
+      await page.locator("a.practice-link").click();
+      await page.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: WAIT });
+      assert.match(page.url(), /#\/gsd\?practice=1[0-9A-Z]{4}$/);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("a known mistake is named; a right answer with a decimal comma is read and correct", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      const v = await variantOf(page, "gsd", CODE);
+      // H / f with f left in millimetres
+      await answer(page, "scale_denominator", String(v.inputs.flying_height_m / v.inputs.focal_length_mm));
+      assert.equal(await box(page, "scale_denominator").getAttribute("data-verdict"), "wrong");
+      assert.equal(await box(page, "scale_denominator").getAttribute("data-mistake"), "millimetres vs metres");
+      assert.match(await feedback(page, "scale_denominator"), /millimetres vs metres/);
+      const m = v.result.scale_denominator.toFixed(2);
+      await answer(page, "scale_denominator", m.replace(".", ","));
+      assert.equal(await box(page, "scale_denominator").getAttribute("data-verdict"), "correct");
+      assert.equal(await box(page, "scale_denominator").locator(".answer-read").innerText(), `read as ${m}`);
+      // a malformed entry is not counted as wrong
+      await answer(page, "gsd_cm", "3..5");
+      assert.equal(await box(page, "gsd_cm").getAttribute("data-verdict"), "unreadable");
+      assert.match(await feedback(page, "gsd_cm"), /not counted as wrong/);
+      assert.equal((await page.locator(".practice-score").innerText()).trim(), "Score: 1 of 4");
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("an error carried forward is consistent with the earlier step, and a reload keeps the answers", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      const v = await variantOf(page, "gsd", CODE);
+      const m = v.result.scale_denominator;
+      const wrongP = 25 / v.inputs.dpi; // 25 instead of 25.4 mm per inch
+      await answer(page, "scale_denominator", m.toFixed(3));
+      await answer(page, "pixel_size_mm", wrongP.toFixed(6));
+      await answer(page, "gsd_mm", (wrongP * m).toFixed(3));
+      assert.equal(await box(page, "pixel_size_mm").getAttribute("data-verdict"), "wrong");
+      assert.equal(await box(page, "gsd_mm").getAttribute("data-verdict"), "consistent");
+      assert.match(await feedback(page, "gsd_mm"), /Consistent with your Pixel size \(step 2\)/);
+      assert.equal((await page.locator(".practice-score").innerText()).trim(), "Score: 2 of 4");
+      await page.reload();
+      await page.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: WAIT });
+      assert.equal(await box(page, "gsd_mm").locator("input").inputValue(), (wrongP * m).toFixed(3));
+      assert.equal(await box(page, "gsd_mm").getAttribute("data-verdict"), "consistent");
+      assert.equal((await page.locator(".practice-score").innerText()).trim(), "Score: 2 of 4");
+      // the stored progress is the code and the raw texts only
+      const stored = await page.evaluate(() => JSON.parse(localStorage.getItem("photogrammetry-playground:practice:v1")));
+      assert.deepEqual(Object.keys(stored.gsd).sort(), ["answers", "code"]);
+      assert.equal(stored.gsd.code, CODE);
+      // the overview counts it under its topic
+      await page.goto(`${env.url}index.html#/practice`);
+      await page.waitForFunction(() => document.body.dataset.status === "practice-overview", null, { timeout: WAIT });
+      const coords = await page.locator('.overview-topic[data-topic="Coordinates"]').innerText();
+      assert.match(coords, /2 of 4 points/);
+      assert.match(coords, new RegExp(`variant ${CODE}`));
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("the hint ladder: nudge, formula, numbers, worked step, and the page says what was revealed", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      const b = box(page, "gsd_mm");
+      const button = b.locator(".hint-button");
+      await button.click();
+      assert.match(await b.locator('.hint[data-rung="1"]').innerText(), /pixel size times the scale number/);
+      assert.match(await page.locator(".practice-revealed").innerText(), /a nudge \(1 of 4\)/);
+      await button.click();
+      assert.ok((await b.locator('.hint[data-rung="2"] .katex').count()) >= 1);
+      await button.click();
+      const numbers = await b.locator('.hint[data-rung="3"]').innerText();
+      assert.ok(numbers.includes("?"), numbers);
+      await button.click();
+      assert.match(await b.locator('.hint[data-rung="4"] .hint-step-title').innerText(), /Ground sample distance/);
+      assert.equal(await button.isDisabled(), true);
+      assert.match(await page.locator(".practice-revealed").innerText(), /the worked step \(4 of 4\)/);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
+describe("worksheets", () => {
+  test("N variants with an answer key on separate pages, printable", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", "#/practice?worksheet=gsd&n=3", "worksheet");
+      assert.equal(await page.locator(".ws-exercise").count(), 3);
+      assert.equal(await page.locator(".ws-key-item").count(), 3);
+      // the codes are kept in the link, so the sheet is the same after a reload
+      const codes = await page.locator(".ws-exercise").evaluateAll((xs) => xs.map((x) => x.dataset.code));
+      assert.match(page.url(), new RegExp(`codes=${codes.join(",")}$`));
+      // the key holds the solver's value for the first exercise's GSD
+      const v = await variantOf(page, "gsd", codes[0]);
+      const firstKey = await page.locator(".ws-key-item").first().innerText();
+      const cm = Number(v.result.gsd_cm.toPrecision(7));
+      assert.ok(firstKey.includes(String(cm)), `${cm} in ${firstKey}`);
+      await page.emulateMedia({ media: "print" });
+      assert.equal(await page.locator(".ws-key").evaluate((k) => getComputedStyle(k).breakBefore), "page");
+      assert.equal(await page.locator(".ws-screen-only").isVisible(), false);
+      const pdf = await page.pdf({ format: "A4" });
+      const pages = (pdf.toString("latin1").match(/\/Type\s*\/Page[^s]/g) ?? []).length;
+      assert.ok(pages >= 2, `the printed sheet has ${pages} page(s)`);
+      await page.reload();
+      await page.waitForFunction(() => document.body.dataset.status === "worksheet", null, { timeout: WAIT });
+      assert.deepEqual(await page.locator(".ws-exercise").evaluateAll((xs) => xs.map((x) => x.dataset.code)), codes);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
+describe("embedded", () => {
+  test("an answer in an embedded practice question is posted to the host page", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await page.goto(`${env.url}index.html#/`);
+      const src = `${env.url}embed.html#/gsd?practice=${CODE}&id=quiz-7`;
+      await page.evaluate((s) => {
+        window.answers = [];
+        window.addEventListener("message", (e) => window.answers.push(e.data));
+        const f = document.createElement("iframe");
+        f.src = s;
+        f.width = "800";
+        f.height = "700";
+        document.body.append(f);
+      }, src);
+      const frame = page.frameLocator("iframe");
+      await frame.locator('.answer[data-key="gsd_cm"] input').waitFor({ timeout: WAIT });
+      const v = await variantOf(page, "gsd", CODE);
+      await frame.locator('.answer[data-key="gsd_cm"] input').fill(v.result.gsd_cm.toFixed(3));
+      await frame.locator('.answer[data-key="gsd_cm"] input').press("Tab");
+      await page.waitForFunction(() => window.answers.some((a) => a?.type === "photogrammetry-playground:answer"), null, { timeout: WAIT });
+      const msg = await page.evaluate(() => window.answers.find((a) => a?.type === "photogrammetry-playground:answer"));
+      assert.deepEqual(msg, {
+        type: "photogrammetry-playground:answer",
+        version: 1,
+        id: "quiz-7",
+        example: "gsd",
+        code: CODE,
+        box: "gsd_cm",
+        verdict: "correct",
+        score: 1,
+        out_of: 4,
+      });
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+});

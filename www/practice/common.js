@@ -1,0 +1,66 @@
+// Shared by the practice view and the worksheets: the givens of a variant as
+// the student reads them, and a box's expected value in a solution.
+
+import { el } from "../dom.js";
+
+const MINUS = "\u2212";
+
+/** A given exactly as generated (shortest round-trip form), with a real minus. */
+export function givenNumber(x) {
+  return typeof x === "number" ? String(x).replace("-", MINUS) : String(x);
+}
+
+function matrixTable(rows, columns = null) {
+  const table = el("table", { class: "given-matrix" });
+  if (columns) table.append(el("thead", {}, el("tr", {}, columns.map((c) => el("th", { scope: "col" }, c)))));
+  const body = el("tbody");
+  for (const row of rows) body.append(el("tr", {}, (Array.isArray(row) ? row : [row]).map((x) => el("td", {}, givenNumber(x)))));
+  table.append(body);
+  return table;
+}
+
+/** The givens of a variant as a definition list, labelled from the catalog's fields. */
+export function renderGivens(entry, inputs) {
+  const list = el("dl", { class: "givens" });
+  for (const [key, value] of Object.entries(inputs)) {
+    const field = entry.inputs.find((f) => f.key === key);
+    const label = field?.label ?? key;
+    let shown;
+    if (Array.isArray(value) && value.length && value.every(Array.isArray)) {
+      shown = matrixTable(value, field?.columns ?? null);
+    } else if (Array.isArray(value)) {
+      shown = el("span", { class: "given-vector" }, value.map(givenNumber).join(", "));
+    } else if (field?.kind === "choice") {
+      shown = el("span", {}, field.options?.find((o) => o.value === value)?.label ?? String(value));
+    } else {
+      shown = el("span", {}, givenNumber(value), field?.unit ? ` ${field.unit}` : "");
+    }
+    list.append(el("div", { class: "given" }, el("dt", {}, label), el("dd", {}, shown)));
+  }
+  return list;
+}
+
+/** Splits a box key: "n[1,2]" -> ["n", [1, 2]] (1-based). */
+export function splitKey(key) {
+  const m = /^([^[]+)\[([\d,\s]+)\]$/.exec(key);
+  if (!m) return [key, []];
+  return [m[1], m[2].split(",").map((s) => Number(s.trim()))];
+}
+
+/** The expected value of box `key` in a solution (its result, else a step's values). */
+export function expectedValue(solution, key) {
+  const [base, idx] = splitKey(key);
+  let v = solution.result?.[base];
+  if (v === undefined) v = (solution.steps ?? []).find((s) => s.values && base in s.values)?.values[base];
+  for (const i of idx) v = Array.isArray(v) ? v[i - 1] : undefined;
+  if (typeof v === "boolean") return v ? 1 : 0;
+  return typeof v === "number" ? v : null;
+}
+
+/** An expected value for the answer key: up to 7 significant digits. */
+export function keyNumber(x) {
+  if (typeof x !== "number") return "—";
+  if (Number.isInteger(x)) return givenNumber(x);
+  const s = Math.abs(x) >= 1e-4 && Math.abs(x) < 1e7 ? String(Number(x.toPrecision(7))) : x.toExponential(6);
+  return s.replace("-", MINUS);
+}

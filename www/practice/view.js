@@ -1,0 +1,271 @@
+// Practice mode on the page (docs/API.md, "practice" and "grade"):
+//   #/<id>?practice=<code>   one variant: givens, answer boxes checked by the
+//                            core, hints, progress kept in localStorage
+//   #/<id>?practice          the stored variant of this example, or a new one
+//   #/<id>?practice=new      a new variant
+//   #/practice               the per-topic summary and the worksheet maker
+//   #/practice?worksheet=<id>&n=4[&codes=…]   a printable worksheet with key
+// Everything shown is text (textContent) or KaTeX; nothing from the URL or
+// the student's boxes becomes HTML.
+
+import { el } from "../dom.js";
+import { messageOf } from "../core.js";
+import { renderFormula } from "../math.js";
+import { renderGivens } from "./common.js";
+import { postAnswer } from "./events.js";
+import { loadProgress, saveProgress } from "./store.js";
+import { showOverview, showWorksheet } from "./sheets.js";
+
+const SITE_TITLE = "Photogrammetry Playground";
+const STYLESHEET = "./practice/practice.css";
+/** The rungs of a box's hint ladder. */
+const RUNGS = ["A nudge", "The formula", "The formula with this variant's numbers", "The worked step"];
+/** What each verdict says in the badge. */
+const VERDICT_WORDS = {
+  correct: "Correct",
+  consistent: "Consistent",
+  wrong: "Not yet",
+  unreadable: "Cannot read",
+  empty: "",
+};
+
+/** Adds the practice stylesheet once. */
+function ensureStyles() {
+  if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
+  document.head.append(el("link", { rel: "stylesheet", href: STYLESHEET }));
+}
+
+/**
+ * Shows the practice route for `id` / `params`. Called by app.js's route()
+ * when the hash is #/practice… or carries a `practice` parameter.
+ */
+export async function showPractice({ root, core, entries, id, params, mode, setStatus }) {
+  ensureStyles();
+  const get = (k) => params.find(([key]) => key === k)?.[1] ?? null;
+  const ctx = { root, core, entries, mode, setStatus, params };
+  if (id === "practice") {
+    if (get("worksheet")) return showWorksheet(ctx, get("worksheet"), get("n"), get("codes"));
+    return showOverview(ctx);
+  }
+  const entry = entries.find((e) => e.id === id);
+  if (!entry || entry.status !== "ready") return message(ctx, "No practice here", `There is no ready example called “${id.slice(0, 40)}”.`);
+  let code = get("practice") ?? "";
+  const stored = loadProgress(id);
+  if (code === "" && stored) code = stored.code;
+  let variant;
+  try {
+    variant = core.practice(id, code === "" || code.toLowerCase() === "new" ? null : code);
+  } catch (e) {
+    return message(ctx, `Practice: ${entry.title}`, `This practice link does not work: ${messageOf(e)}`, id);
+  }
+  // The link names the variant; other options (an embed's id, host) stay.
+  const query = params.map(([k, v]) => (k === "practice" ? `practice=${variant.code}` : `${encodeURIComponent(k)}=${encodeURIComponent(v)}`)).join("&");
+  const hash = `#/${encodeURIComponent(id)}?${query}`;
+  if (location.hash !== hash) history.replaceState(history.state, "", hash);
+  const answers = stored && stored.code === variant.code ? stored.answers : {};
+  buildVariant(ctx, entry, variant, answers);
+}
+
+function message(ctx, title, text, id = null) {
+  document.title = `${title} — ${SITE_TITLE}`;
+  const back = id ? el("a", { href: `#/${encodeURIComponent(id)}` }, "← The worked example") : el("a", { href: "#/practice" }, "← All practice");
+  ctx.root.replaceChildren(el("section", { class: "message" }, el("h2", {}, title), el("p", {}, text), el("p", {}, back)));
+  ctx.setStatus("message");
+}
+
+function buildVariant(ctx, entry, variant, answers) {
+  const { core, root, mode } = ctx;
+  const id = entry.id;
+  const code = variant.code;
+  let solution = null;
+  const worked = () => (solution ??= core.solve(id, variant.inputs));
+  const hintsShown = {};
+  const checked = new Set(Object.keys(answers).filter((k) => answers[k]));
+
+  document.title = `Practice: ${entry.title} — ${SITE_TITLE}`;
+  const score = el("p", { class: "practice-score", role: "status" });
+  const revealed = el("p", { class: "practice-revealed muted" });
+  const saveNote = el("p", { class: "muted practice-save", hidden: true }, "Your answers cannot be kept in this browser (storage is off); they stay until you leave the page.");
+  const copyStatus = el("span", { class: "copy-status", role: "status" });
+
+  const newButton = el("button", { type: "button", class: "button" }, "New variant");
+  newButton.addEventListener("click", () => {
+    const others = ctx.params.filter(([k]) => k !== "practice").map(([k, v]) => `&${encodeURIComponent(k)}=${encodeURIComponent(v)}`);
+    location.hash = `#/${encodeURIComponent(id)}?practice=new${others.join("")}`;
+  });
+  const copyButton = el("button", { type: "button", class: "button" }, "Copy link");
+  copyButton.addEventListener("click", async () => {
+    try {
+      await navigator.clipboard.writeText(location.href);
+      copyStatus.textContent = "Link copied: it opens this same variant.";
+    } catch {
+      copyStatus.textContent = `Link: ${location.href}`;
+    }
+  });
+  const actions = el(
+    "div",
+    { class: "actions practice-actions" },
+    newButton,
+    copyButton,
+    el("a", { class: "button", href: `#/practice?worksheet=${encodeURIComponent(id)}&n=4` }, "Worksheet"),
+    copyStatus,
+  );
+
+  const boxes = variant.boxes.map((b, k) => buildBox(b, k));
+  const list = el("ol", { class: "answer-list" }, boxes.map((b) => b.item));
+
+  const crumbs =
+    mode === "embed"
+      ? null
+      : el("div", { class: "crumbs" }, el("a", { href: `#/${encodeURIComponent(id)}` }, "← The worked example"), " · ", el("a", { href: "#/practice" }, "All practice"));
+  root.replaceChildren(
+    el(
+      "article",
+      { class: "practice", "data-id": id, "data-code": code },
+      crumbs,
+      el(
+        "header",
+        { class: "example-head" },
+        el("h2", { id: "practice-title", tabindex: "-1" }, `Practice: ${entry.title}`),
+        el("p", { class: "example-meta" }, `Variant ${code} · ${entry.source ?? ""}`),
+      ),
+      actions,
+      el("div", { class: "practice-layout" },
+        el("section", { class: "panel givens-panel", "aria-labelledby": "givens-h" }, el("h3", { id: "givens-h" }, "Given"), renderGivens(entry, variant.inputs)),
+        el(
+          "section",
+          { class: "panel answers-panel", "aria-labelledby": "answers-h" },
+          el("h3", { id: "answers-h" }, "Your answers"),
+          el("p", { class: "muted" }, "Work in order; each box is checked when you leave it (Tab or Enter). A decimal comma, 1.2e-3, 3/4 and a unit after the number are all read. A later box is also checked against your own earlier answers."),
+          list,
+          score,
+          revealed,
+          saveNote,
+        ),
+      ),
+    ),
+  );
+
+  function buildBox(b, k) {
+    const inputId = `answer-${k}`;
+    const input = el("input", {
+      id: inputId,
+      class: "answer-input",
+      type: "text",
+      inputmode: "decimal",
+      autocomplete: "off",
+      spellcheck: "false",
+      "data-key": b.key,
+      "aria-describedby": `${inputId}-tol ${inputId}-fb`,
+    });
+    input.value = answers[b.key] ?? "";
+    const readAs = el("span", { class: "answer-read" });
+    const feedback = el("p", { class: "answer-feedback", id: `${inputId}-fb`, "aria-live": "polite" });
+    const hintButton = el("button", { type: "button", class: "button hint-button" }, "Hint");
+    const hintBody = el("div", { class: "hint-body" });
+    const item = el(
+      "li",
+      { class: "answer", "data-key": b.key },
+      el("label", { for: inputId, class: "answer-label" }, b.label),
+      el("div", { class: "answer-row" }, input, b.unit ? el("span", { class: "answer-unit" }, b.unit) : null, readAs),
+      el("p", { class: "answer-tolerance muted", id: `${inputId}-tol` }, `Tolerance ${b.tolerance_text}`),
+      feedback,
+      el("div", { class: "hints" }, hintButton, hintBody),
+    );
+    input.addEventListener("input", () => regrade(null));
+    input.addEventListener("change", () => {
+      checked.add(b.key);
+      regrade(b.key);
+    });
+    input.addEventListener("keydown", (ev) => {
+      if (ev.key === "Enter") {
+        checked.add(b.key);
+        regrade(b.key);
+      }
+    });
+    hintButton.addEventListener("click", () => {
+      const n = (hintsShown[b.key] ?? 0) + 1;
+      hintsShown[b.key] = n;
+      showHint(b, n, hintBody);
+      hintButton.textContent = n >= RUNGS.length ? "All hints shown" : `Next hint (${n + 1} of ${RUNGS.length})`;
+      hintButton.disabled = n >= RUNGS.length;
+      showRevealed();
+    });
+    return { b, input, readAs, feedback, item };
+  }
+
+  function showHint(b, n, body) {
+    const h = b.hints;
+    const rung = RUNGS[n - 1];
+    const part = el("div", { class: "hint", "data-rung": String(n) }, el("p", { class: "hint-rung" }, `${n}. ${rung}`));
+    if (n === 1) part.append(el("p", {}, h.nudge || "Look at what the givens say about this value."));
+    if (n === 2) part.append(h.formula ? renderFormula(h.formula, "formula") : el("p", {}, "This value is read off the worked step."));
+    if (n === 3) part.append(h.numbers ? renderFormula(h.numbers, "formula") : el("p", {}, "The step below has the numbers."));
+    if (n === 4) {
+      try {
+        const step = worked().steps[h.step];
+        part.append(el("h4", { class: "hint-step-title" }, step.title));
+        if (step.text) part.append(el("p", {}, step.text));
+        if (step.formula) part.append(renderFormula(step.formula, "formula"));
+        if (step.substituted) part.append(renderFormula(step.substituted, "formula"));
+      } catch (e) {
+        part.append(el("p", {}, `The worked step could not be shown: ${messageOf(e)}`));
+      }
+    }
+    body.append(part);
+  }
+
+  function showRevealed() {
+    const used = Object.entries(hintsShown).filter(([, n]) => n > 0);
+    if (!used.length) {
+      revealed.textContent = "No hints used. Hints are free in practice; the page says what you revealed.";
+      return;
+    }
+    const label = (key) => variant.boxes.find((b) => b.key === key)?.label ?? key;
+    revealed.textContent = `Revealed: ${used.map(([k, n]) => `${label(k)} — ${RUNGS[n - 1].toLowerCase()} (${n} of ${RUNGS.length})`).join("; ")}.`;
+  }
+
+  function texts() {
+    const out = {};
+    for (const b of boxes) out[b.b.key] = b.input.value;
+    return out;
+  }
+
+  /** Grades every box; `changed` is the box just left (for the host page). */
+  function regrade(changed) {
+    const t = texts();
+    let g;
+    try {
+      g = core.grade(id, code, t);
+    } catch (e) {
+      score.textContent = `The answers could not be checked: ${messageOf(e)}`;
+      return;
+    }
+    // nothing typed in a variant never stored: nothing to keep
+    const typed = Object.values(t).some((x) => x.trim());
+    if ((typed || loadProgress(id)?.code === code) && !saveProgress(id, code, t)) saveNote.hidden = false;
+    for (const b of boxes) {
+      const r = g.boxes[b.b.key];
+      const text = b.input.value.trim();
+      b.readAs.textContent = r.read && text ? `read as ${r.read}` : "";
+      const show = checked.has(b.b.key) && r.verdict !== "empty";
+      b.item.dataset.verdict = show ? r.verdict : "";
+      b.feedback.replaceChildren();
+      if (show) {
+        const parts = [el("span", { class: `verdict verdict-${r.verdict}` }, VERDICT_WORDS[r.verdict] ?? r.verdict), " ", r.message];
+        if (r.mistake) b.item.dataset.mistake = r.mistake;
+        else delete b.item.dataset.mistake;
+        b.feedback.append(...parts);
+      }
+    }
+    score.textContent = `Score: ${g.score} of ${g.out_of}`;
+    if (changed && mode === "embed") {
+      const r = g.boxes[changed];
+      postAnswer({ example: id, code, box: changed, verdict: r.verdict, score: g.score, outOf: g.out_of });
+    }
+  }
+
+  regrade(null);
+  showRevealed();
+  ctx.setStatus("practice");
+}
