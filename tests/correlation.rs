@@ -10,7 +10,6 @@ use photogrammetry_playground::correlation::{
 use photogrammetry_playground::examples::{parse_inputs, solve};
 use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::solution::{NoteKind, Record, Solution, Value};
-use std::time::Instant;
 
 // ------------------------------------------------------------ helpers
 
@@ -893,7 +892,8 @@ fn text_inputs_parse_as_the_page_sends_them() {
 }
 
 #[test]
-fn a_64_by_64_search_array_stays_instant() {
+fn a_64_by_64_search_array_and_a_long_1d_search_solve() {
+    // (how fast they solve is measured by `npm run bench`, not asserted here)
     let mut rng = Rng(0x5eed_0005);
     let search: Vec<Vec<f64>> = (0..64).map(|_| rng.values(64)).collect();
     for k in [3usize, 9, 21, 32] {
@@ -901,7 +901,6 @@ fn a_64_by_64_search_array_stays_instant() {
             .iter()
             .map(|r| r[20..20 + k].to_vec())
             .collect();
-        let t0 = Instant::now();
         let s = solve(
             "ncc-surface",
             &Record::new()
@@ -909,9 +908,6 @@ fn a_64_by_64_search_array_stays_instant() {
                 .with("template", Value::matrix(&template)),
         )
         .unwrap();
-        let ms = t0.elapsed().as_secs_f64() * 1e3;
-        // generous for an unoptimised test build; the release build is far faster
-        assert!(ms < 1500.0, "{k}×{k} template: {ms} ms");
         assert_eq!(num(result(&s, "best_col")), 21.0);
         assert_eq!(num(result(&s, "best_row")), 11.0);
         assert_eq!(rows(result(&s, "rho")).len(), 65 - k);
@@ -919,7 +915,6 @@ fn a_64_by_64_search_array_stays_instant() {
     // a long 1-D search
     let search = rng.values(4096);
     let template = search[1000..1100].to_vec();
-    let t0 = Instant::now();
     let s = solve(
         "ncc-1d",
         &Record::new()
@@ -927,7 +922,6 @@ fn a_64_by_64_search_array_stays_instant() {
             .with("template", vals(&template)),
     )
     .unwrap();
-    assert!(t0.elapsed().as_secs_f64() < 1.5);
     assert_eq!(num(result(&s, "best")), 1001.0);
     assert_eq!(s.steps.len(), 2 + 12 + 1 + 2);
 }
