@@ -190,6 +190,8 @@ function buildView(entry) {
   const actions = el("div", { class: "actions" }, resetButton, copyButton, apiToggle, copyStatus);
   // practice mode (www/practice/): fresh numbers for this example
   actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
+  // the same operator on a whole photo, in the image lab
+  if (mode === "full" && LAB_FAMILY[id]) actions.append(el("a", { class: "button lab-try", href: `#/lab?family=${LAB_FAMILY[id]}` }, "Try it on a photo"));
   if (mode === "embed") {
     const open = el("a", { class: "open-full", target: "_blank", rel: "noopener", href: "index.html" }, `Open in ${SITE_TITLE} ↗`);
     v.openLink = open;
@@ -392,7 +394,27 @@ function quoteKey(key) {
 
 let labModule = null;
 
-async function showLab() {
+/** The lab's operator family of each example that has its operator on whole images. */
+const LAB_FAMILY = Object.freeze({
+  "filter-window": "filters",
+  "edge-window": "edges",
+  "forstner-window": "interest",
+  "forstner-image": "interest",
+  "moravec-window": "interest",
+  "ncc-2d": "correlation",
+  "ncc-surface": "correlation",
+  "subpixel-2d": "correlation",
+  "lsm-2d": "correlation",
+  "lsm-affine": "correlation",
+  resample: "resampling",
+  "chain-code": "boundaries",
+  "boundary-length": "boundaries",
+  "boundary-shape": "boundaries",
+  "fiducial-similarity": "fiducials",
+  "fiducial-affine": "fiducials",
+});
+
+async function showLab(params = []) {
   destroyView();
   setStatus("loading");
   try {
@@ -401,7 +423,8 @@ async function showLab() {
     showMessage("The image lab could not be loaded", messageOf(e));
     return;
   }
-  labModule.openLab(root);
+  const family = params.find(([k]) => k === "family")?.[1] ?? null;
+  labModule.openLab(root, { family });
 }
 
 // ---------------------------------------------------------------------------
@@ -413,7 +436,7 @@ async function route({ focus = false } = {}) {
   const params = embedPage.takeOptions(allParams); // theme, hide, lock …: embed-options.js
   if (id !== "lab") labModule?.closeLab();
   if (id === "lab" && mode === "full") {
-    await showLab();
+    await showLab(params);
     return;
   }
   if (!id) {

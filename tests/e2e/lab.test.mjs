@@ -103,6 +103,23 @@ test("the lab loads its own module only when it opens, and every sample opens", 
   await context.close();
 });
 
+test("an example with an operator of the lab links to it, its family chosen", { timeout: TEST_TIMEOUT }, async () => {
+  const { page, log, context } = await open(env.browser);
+  for (const [id, family] of [["forstner-window", "interest"], ["filter-window", "filters"], ["chain-code", "boundaries"], ["ncc-2d", "correlation"]]) {
+    await page.goto(`${env.url}index.html#/${id}`);
+    await settled(page);
+    await page.getByRole("link", { name: "Try it on a photo" }).click();
+    await page.waitForSelector("#lab-family");
+    assert.equal(await page.inputValue("#lab-family"), family, id);
+  }
+  // an example the lab has no operator for has no such link
+  await page.goto(`${env.url}index.html#/gsd`);
+  await settled(page);
+  assert.equal(await page.getByRole("link", { name: "Try it on a photo" }).count(), 0);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
 test("files of each format open; a bad file says its name and why, and the lab keeps working", { timeout: TEST_TIMEOUT * 2 }, async () => {
   const { page, log, context } = await openLab();
   for (const [file, w, h, kind] of [["grey8.png", 4, 3, "PNG, grey, 8-bit"], ["grey16.png", 4, 3, "PNG, grey, 16-bit"], ["rgb8.png", 4, 3, "PNG, colour"],

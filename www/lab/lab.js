@@ -26,13 +26,13 @@ const SLOW_MS = 150;
 
 let current = null;
 
-/** Opens the lab in `root`; returns nothing (closeLab() ends it). */
-export function openLab(root) {
+/** Opens the lab in `root` (`family`: the operator family to start with, e.g. "interest"). */
+export function openLab(root, { family = null } = {}) {
   closeLab();
   if (!document.getElementById("lab-css")) {
     document.head.append(el("link", { rel: "stylesheet", id: "lab-css", href: new URL("./lab.css", import.meta.url).href }));
   }
-  current = new Lab(root);
+  current = new Lab(root, family);
   return current;
 }
 
@@ -48,8 +48,9 @@ export function closeLab() {
 }
 
 class Lab {
-  constructor(root) {
+  constructor(root, family = null) {
     this.root = root;
+    this.startFamily = family;
     this.image = null; // { name, width, height, grey, maxValue, format, colour, bits, truth? }
     this.source = null; // how to load it again: { sample } | { name, bytes }
     this.layers = [];
@@ -146,7 +147,7 @@ class Lab {
       const f = ev.dataTransfer?.files?.[0];
       if (f) this.openFile(f);
     });
-    this.chooseFamily(FAMILIES[0].id);
+    this.chooseFamily(FAMILIES.some((f) => f.id === this.startFamily) ? this.startFamily : FAMILIES[0].id);
   }
 
   chooseFamily(id) {
