@@ -75,7 +75,11 @@ fn solve(inputs: &Record) -> Result<Solution> {
             format!("UTM covers 80°S to 84°N only (got {}°)", fmt_sig(lat, 12)),
         ));
     }
-    let mut s = Solution::new("utm-facts", "Lecture 7's UTM facts, checked", inputs.clone());
+    let mut s = Solution::new(
+        "utm-facts",
+        "Lecture 7's UTM facts, checked",
+        inputs.clone(),
+    );
     let on_cm = krueger::forward(&ell, K0, lat, 0.0)?;
     let edge = krueger::forward(&ell, K0, lat, 3.0)?;
 
