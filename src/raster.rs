@@ -156,10 +156,9 @@ impl Grid {
         match border {
             Border::Crop => None,
             Border::Zero => Some(0.0),
-            Border::Replicate | Border::Reflect => self.get(
-                fold(c, self.width, border)?,
-                fold(r, self.height, border)?,
-            ),
+            Border::Replicate | Border::Reflect => {
+                self.get(fold(c, self.width, border)?, fold(r, self.height, border)?)
+            }
         }
     }
 

@@ -82,8 +82,11 @@ fn sobel_equals_gradient() {
             else {
                 continue;
             };
-            let (mut gx, mut gy, mut mag) =
-                (vec![0.0f32; w * h], vec![0.0f32; w * h], vec![0.0f32; w * h]);
+            let (mut gx, mut gy, mut mag) = (
+                vec![0.0f32; w * h],
+                vec![0.0f32; w * h],
+                vec![0.0f32; w * h],
+            );
             fast::sobel(img, border, &mut gx, &mut gy, &mut mag).unwrap();
             let reg = g.region;
             for r in 0..reg.height {
@@ -92,8 +95,16 @@ fn sobel_equals_gradient() {
                     let at = |grid: &photogrammetry_playground::raster::Grid| {
                         grid.get(c, r).unwrap_or(f64::NAN)
                     };
-                    assert_eq!(f64::from(gx[i]), at(&g.gx), "gx {w}×{h} {border:?} ({c}, {r})");
-                    assert_eq!(f64::from(gy[i]), -at(&g.gy), "gy {w}×{h} {border:?} ({c}, {r})");
+                    assert_eq!(
+                        f64::from(gx[i]),
+                        at(&g.gx),
+                        "gx {w}×{h} {border:?} ({c}, {r})"
+                    );
+                    assert_eq!(
+                        f64::from(gy[i]),
+                        -at(&g.gy),
+                        "gy {w}×{h} {border:?} ({c}, {r})"
+                    );
                     assert!(close(mag[i], at(&g.magnitude)), "magnitude ({c}, {r})");
                 }
             }
@@ -142,4 +153,173 @@ fn wrong_buffers_are_errors_not_panics() {
     assert!(fast::mean3(img, Border::Replicate, &mut short).is_err());
     let mut out = vec![0.0f32; 20];
     assert!(fast::separable(img, &[1.0, 1.0], &[1.0], 1.0, Border::Zero, &mut out).is_err());
+}
+
+#[test]
+fn forstner_wq_equals_the_window_operator() {
+    use photogrammetry_playground::interest::{self, fast as ifast, Measures, Sums};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 300 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        let (mut wo, mut qo) = (vec![0.0f32; w * h], vec![0.0f32; w * h]);
+        ifast::forstner_wq(img, 5, &mut wo, &mut qo).unwrap();
+        // plain reference everywhere: replicated central differences, the
+        // 5×5 sums of the replicated products, the core's Measures
+        let px = |c: isize, r: isize| grid.at(c, r, Border::Replicate).unwrap_or(0.0);
+        let grad = |c: isize, r: isize| {
+            let (c, r) = (c.clamp(0, w as isize - 1), r.clamp(0, h as isize - 1));
+            (
+                (px(c + 1, r) - px(c - 1, r)) / 2.0,
+                (px(c, r + 1) - px(c, r - 1)) / 2.0,
+            )
+        };
+        // the core's whole-image map (7×7 windows: 5×5 gradients) where it fits
+        let map = interest::forstner_map(&grid, 7).ok();
+        for r in 0..h as isize {
+            for c in 0..w as isize {
+                let mut s = Sums::default();
+                for j in -2..=2 {
+                    for i in -2..=2 {
+                        let (gx, gy) = grad(c + i, r + j);
+                        s.gx2 += gx * gx;
+                        s.gy2 += gy * gy;
+                        s.gxgy += gx * gy;
+                    }
+                }
+                let m = Measures::from_sums(&s, 25);
+                let i = r as usize * w + c as usize;
+                let what = format!("{w}×{h} at ({c}, {r})");
+                assert!(close(wo[i], m.w), "w {what}: {} vs {}", wo[i], m.w);
+                assert!(close(qo[i], m.q.unwrap_or(0.0)), "q {what}");
+                if let Some(mm) = map.as_ref().and_then(|m| m.get(c as usize, r as usize)) {
+                    assert!(close(wo[i], mm.w), "w (map) {what}");
+                    assert!(close(qo[i], mm.q.unwrap_or(0.0)), "q (map) {what}");
+                }
+            }
+        }
+    }
+    let bytes = random_image(9, 9, 1);
+    let img = Gray::new("img", &bytes, 9, 9).unwrap();
+    let mut o = vec![0.0f32; 81];
+    assert!(ifast::forstner_wq(img, 4, &mut o.clone(), &mut o).is_err());
+}
+
+#[test]
+fn affine_warps_equal_resample_warp() {
+    use photogrammetry_playground::resample::{self, fast as rfast, Method};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 400 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        let mut rng = Rng(k as u64);
+        let (cx, cy) = ((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
+        let maps = [
+            // the benchmark's: 7° and 1.15 about the centre
+            {
+                let a = 7f64.to_radians();
+                let (ca, sa) = (a.cos() / 1.15, a.sin() / 1.15);
+                [
+                    [ca, sa, cx - ca * cx - sa * cy],
+                    [-sa, ca, cy + sa * cx - ca * cy],
+                ]
+            },
+            // identity and a pure shift (positions on pixel centres)
+            [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            [[1.0, 0.0, 0.5], [0.0, 1.0, -1.25]],
+            // a random one, flipped
+            {
+                let f = |r: &mut Rng| r.below(2001) as f64 / 1000.0 - 1.0;
+                [
+                    [f(&mut rng), f(&mut rng), cx],
+                    [f(&mut rng), -f(&mut rng), cy],
+                ]
+            },
+        ];
+        let (ow, oh) = (w + 3, h.max(2) - 1);
+        for m in maps {
+            let map = |x: f64, y: f64| {
+                (
+                    m[0][0] * x + m[0][1] * y + m[0][2],
+                    m[1][0] * x + m[1][1] * y + m[1][2],
+                )
+            };
+            for (method, a) in [
+                (Method::Bilinear, 0.0),
+                (Method::Bicubic, resample::SEED_A),
+                (Method::Bicubic, -0.75),
+                (Method::Nearest, 0.0),
+            ] {
+                let mut out = vec![0.0f32; ow * oh];
+                rfast::warp_affine(img, &m, method, a, -1.0, ow, oh, &mut out).unwrap();
+                for r in 0..oh {
+                    for c in 0..ow {
+                        let (x, y) = map(c as f64, r as f64);
+                        let want = match method {
+                            Method::Bicubic => resample::bicubic(&grid, x, y, a).map(|b| b.value),
+                            _ => resample::value_at(&grid, x, y, method),
+                        }
+                        .unwrap_or(-1.0);
+                        let got = out[r * ow + c];
+                        assert!(
+                            close(got, want),
+                            "{method:?} a={a} {w}×{h} map {m:?} at ({c}, {r}): fast {got}, reference {want}"
+                        );
+                    }
+                }
+                if method == Method::Bilinear {
+                    let whole = resample::warp(&grid, ow, oh, map, method, -1.0);
+                    for (g, want) in out.iter().zip(whole.data()) {
+                        assert!(close(*g, *want));
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn zncc_equals_correlate_2d() {
+    use photogrammetry_playground::correlation::{self, fast as cfast};
+    let cases = [
+        (1, 1, 1, 1),
+        (7, 5, 3, 3),
+        (40, 31, 21, 21),
+        (33, 20, 9, 5),
+        (64, 9, 17, 3),
+        (25, 25, 25, 25),
+    ];
+    for (k, &(sw, sh, tw, th)) in cases.iter().enumerate() {
+        let s = random_image(sw, sh, 500 + k as u64);
+        // the template cut from the search image (peak ρ = 1) and a random one
+        let (tc, tr) = ((sw - tw) / 2, (sh - th) / 2);
+        let cut: Vec<u8> = (0..th)
+            .flat_map(|r| s[(tr + r) * sw + tc..(tr + r) * sw + tc + tw].to_vec())
+            .collect();
+        for t in [cut, random_image(tw, th, 600 + k as u64)] {
+            let sg = Gray::new("s", &s, sw, sh).unwrap();
+            let tg = Gray::new("t", &t, tw, th).unwrap();
+            let (ow, oh) = (sw - tw + 1, sh - th + 1);
+            let mut out = vec![0.0f32; ow * oh];
+            let peak = cfast::zncc(sg, tg, &mut out).unwrap();
+            let reference = correlation::correlate_2d(&tg.to_grid(), &sg.to_grid()).unwrap();
+            for r in 0..oh {
+                for c in 0..ow {
+                    let got = out[r * ow + c];
+                    match reference.rho(c, r) {
+                        Some(want) => assert!(close(got, want), "({c}, {r}): {got} vs {want}"),
+                        None => assert!(got.is_nan(), "({c}, {r}) flat: {got}"),
+                    }
+                }
+            }
+            // the same best position, unless two ρ tie within rounding
+            if let (Some(p), Some((bc, br))) = (peak, reference.best) {
+                let want = reference.rho(bc, br).unwrap_or(0.0);
+                assert!(close(p.rho, want));
+                assert!((p.c, p.r) == (bc, br) || (f64::from(p.rho) - want).abs() < 1e-6);
+            } else {
+                assert_eq!(peak.is_some(), reference.best.is_some());
+            }
+        }
+    }
 }

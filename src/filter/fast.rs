@@ -84,9 +84,21 @@ impl RowRing {
     }
 
     /// The converted rows for positions `r − radius … r + radius`.
-    pub(crate) fn rows(&mut self, img: &Gray, r: usize, radius: usize, border: Border) -> Vec<&[f32]> {
+    pub(crate) fn rows(
+        &mut self,
+        img: &Gray,
+        r: usize,
+        radius: usize,
+        border: Border,
+    ) -> Vec<&[f32]> {
         let idx: Vec<Option<usize>> = (0..=2 * radius)
-            .map(|j| fold(r as isize + j as isize - radius as isize, img.height(), effective(border)))
+            .map(|j| {
+                fold(
+                    r as isize + j as isize - radius as isize,
+                    img.height(),
+                    effective(border),
+                )
+            })
             .collect();
         let slots: Vec<Option<usize>> = idx.iter().map(|i| i.map(|i| self.load(img, i))).collect();
         slots
