@@ -14,10 +14,15 @@ cargo fmt --all -- --check
 step "cargo clippy (host and wasm32) -D warnings"
 cargo clippy --all-targets -- -D warnings
 cargo clippy --all-targets --target wasm32-unknown-unknown -- -D warnings
+# the SIMD loops of the fast paths (own target dir: no rebuild ping-pong)
+SIMD_FLAGS="-C target-feature=+simd128"
+RUSTFLAGS="$SIMD_FLAGS" cargo clippy --all-targets --target wasm32-unknown-unknown --target-dir target/simd128 -- -D warnings
 step "cargo test (native)"
 cargo test
 step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
 cargo test --target wasm32-unknown-unknown --test 'web*'
+step "fast paths against their references as wasm with +simd128 (web_fast in Node)"
+RUSTFLAGS="$SIMD_FLAGS" cargo test --target wasm32-unknown-unknown --target-dir target/simd128 --test web_fast
 step "build the page"
 SKIP_SETUP=1 bash scripts/build.sh
 step "end-to-end tests of the page in Chromium"

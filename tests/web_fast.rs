@@ -329,7 +329,11 @@ fn zncc_equals_correlate_2d() {
 /// image is one component, label 0).
 fn components(img: &[u8], w: usize, h: usize) -> (Vec<usize>, Vec<usize>) {
     let fg = |c: isize, r: isize| {
-        c >= 0 && r >= 0 && (c as usize) < w && (r as usize) < h && img[r as usize * w + c as usize] != 0
+        c >= 0
+            && r >= 0
+            && (c as usize) < w
+            && (r as usize) < h
+            && img[r as usize * w + c as usize] != 0
     };
     let mut fl = vec![usize::MAX; w * h];
     let mut bl = vec![usize::MAX; w * h];
@@ -341,7 +345,16 @@ fn components(img: &[u8], w: usize, h: usize) -> (Vec<usize>, Vec<usize>) {
             continue;
         }
         let steps: &[(isize, isize)] = if is_fg {
-            &[(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)]
+            &[
+                (1, 0),
+                (-1, 0),
+                (0, 1),
+                (0, -1),
+                (1, 1),
+                (1, -1),
+                (-1, 1),
+                (-1, -1),
+            ]
         } else {
             &[(1, 0), (-1, 0), (0, 1), (0, -1)]
         };
@@ -384,7 +397,7 @@ fn components(img: &[u8], w: usize, h: usize) -> (Vec<usize>, Vec<usize>) {
 #[test]
 fn contours_are_every_border_exactly() {
     use photogrammetry_playground::chain::{self, fast as chfast, Connectivity};
-    use std::collections::BTreeSet;
+    use std::collections::{BTreeMap, BTreeSet};
     for (k, &(w, h)) in SIZES.iter().enumerate() {
         for density in [2u64, 5, 9] {
             let mut rng = Rng(900 + k as u64 * 31 + density);
@@ -394,8 +407,10 @@ fn contours_are_every_border_exactly() {
             let img = Gray::new("img", &bytes, w, h).unwrap();
             let found = chfast::contours(img).unwrap();
             let (fl, bl) = components(&bytes, w, h);
-            // every (region, background) pair that touches is one border
-            let mut pairs = BTreeSet::new();
+            // every (region, background component) pair that touches
+            // through a 4-neighbour is one border: the region's pixels with
+            // a 4-neighbour in that background (0: the outside)
+            let mut borders: BTreeMap<(usize, usize), BTreeSet<(u32, u32)>> = BTreeMap::new();
             for r in 0..h {
                 for c in 0..w {
                     if bytes[r * w + c] == 0 {
@@ -404,88 +419,63 @@ fn contours_are_every_border_exactly() {
                     for (dc, dr) in [(1isize, 0isize), (-1, 0), (0, 1), (0, -1)] {
                         let (nc, nr) = (c as isize + dc, r as isize + dr);
                         let inside = nc >= 0 && nr >= 0 && (nc as usize) < w && (nr as usize) < h;
-                        let b = if inside { bl[nr as usize * w + nc as usize] } else { 0 };
-                        if !inside || bytes[nr as usize * w + nc as usize] == 0 {
-                            pairs.insert((fl[r * w + c], b));
+                        let q = if inside {
+                            nr as usize * w + nc as usize
+                        } else {
+                            0
+                        };
+                        if !inside || bytes[q] == 0 {
+                            let b = if inside { bl[q] } else { 0 };
+                            borders
+                                .entry((fl[r * w + c], b))
+                                .or_default()
+                                .insert((c as u32, r as u32));
                         }
                     }
                 }
             }
-            // a region with no background 4-neighbour at all has one border
-            // of its own (the raster scan meets it): count those apart
-            assert_eq!(found.len(), pairs.len(), "{w}×{h} density {density}: number of borders");
+            assert_eq!(
+                found.len(),
+                borders.len(),
+                "{w}×{h} density {density}: number of borders"
+            );
             let outer = chain::trace(&img.to_grid(), Connectivity::Eight);
             let mut outer_iter = outer.iter();
+            let mut seen = BTreeSet::new();
             for ct in &found {
                 let (c0, r0) = ct.points[0];
                 let region = fl[r0 as usize * w + c0 as usize];
-                // the background it separates: outside (0) for an outer
-                // border, the hole's label otherwise
-                let hole_label = if ct.hole {
-                    let hl: BTreeSet<usize> = pairs
-                        .iter()
-                        .filter(|(f, b)| *f == region && *b != 0)
-                        .map(|p| p.1)
-                        .collect();
-                    // the hole whose set matches the points
-                    let pts: BTreeSet<(u32, u32)> = ct.points.iter().copied().collect();
-                    *hl.iter()
-                        .find(|&&b| border_set(&bytes, &fl, &bl, w, h, region, b) == pts)
-                        .unwrap_or_else(|| panic!("{w}×{h}: hole border at ({c0}, {r0}) matches no hole"))
-                } else {
-                    let pts: BTreeSet<(u32, u32)> = ct.points.iter().copied().collect();
-                    let b0 = pairs
-                        .iter()
-                        .find(|(f, b)| *f == region && border_set(&bytes, &fl, &bl, w, h, region, *b) == pts)
-                        .map(|p| p.1);
-                    assert!(b0.is_some(), "{w}×{h}: outer border at ({c0}, {r0})");
-                    // the core's Moore tracing: same region, same start, same
-                    // pixels walked the other way round
+                let pts: BTreeSet<(u32, u32)> = ct.points.iter().copied().collect();
+                let pair = borders
+                    .iter()
+                    .find(|((f, b), set)| {
+                        *f == region
+                            && (*b != 0 || !ct.hole)
+                            && **set == pts
+                            && !seen.contains(&(*f, *b))
+                    })
+                    .map(|(p, _)| *p);
+                let pair = pair.unwrap_or_else(|| {
+                    panic!("{w}×{h} density {density}: border at ({c0}, {r0}) (hole {}) is no region's border", ct.hole)
+                });
+                assert!(seen.insert(pair), "{w}×{h}: border {pair:?} twice");
+                if !ct.hole {
+                    // the core's Moore tracing: same region, same start,
+                    // same pixels walked the other way round
                     let b = outer_iter.next().expect("as many outer borders as regions");
-                    let start = [i64::from(c0), i64::from(r0)];
-                    assert_eq!(b.pixels[0], start);
-                    let mut ours: Vec<[i64; 2]> =
-                        ct.points.iter().map(|&(c, r)| [i64::from(c), i64::from(r)]).collect();
+                    let mut ours: Vec<[i64; 2]> = ct
+                        .points
+                        .iter()
+                        .map(|&(c, r)| [i64::from(c), i64::from(r)])
+                        .collect();
                     ours[1..].reverse();
                     assert_eq!(ours, b.pixels, "{w}×{h}: outer border at ({c0}, {r0})");
-                    0
-                };
-                let _ = hole_label;
-            }
-            assert!(outer_iter.next().is_none(), "{w}×{h}: regions without an outer border");
-        }
-    }
-}
-
-/// The pixels of `region` with a 4-neighbour in background component `b`
-/// (0: the outside, including outside the image).
-fn border_set(
-    bytes: &[u8],
-    fl: &[usize],
-    bl: &[usize],
-    w: usize,
-    h: usize,
-    region: usize,
-    b: usize,
-) -> std::collections::BTreeSet<(u32, u32)> {
-    let mut s = std::collections::BTreeSet::new();
-    for r in 0..h {
-        for c in 0..w {
-            if bytes[r * w + c] == 0 || fl[r * w + c] != region {
-                continue;
-            }
-            let hit = [(1isize, 0isize), (-1, 0), (0, 1), (0, -1)].iter().any(|&(dc, dr)| {
-                let (nc, nr) = (c as isize + dc, r as isize + dr);
-                if nc < 0 || nr < 0 || nc as usize >= w || nr as usize >= h {
-                    return b == 0;
                 }
-                let q = nr as usize * w + nc as usize;
-                bytes[q] == 0 && bl[q] == b
-            });
-            if hit {
-                s.insert((c as u32, r as u32));
             }
+            assert!(
+                outer_iter.next().is_none(),
+                "{w}×{h}: regions without an outer border"
+            );
         }
     }
-    s
 }

@@ -497,6 +497,7 @@ pub fn trap_for_tests() {
 // `out_u8` (copies) or viewed in place with `out_ptr` / `out_len` over
 // the module's memory. `npm run bench -- ops` times these same exports.
 
+use photogrammetry_playground::chain::fast as chain_fast;
 use photogrammetry_playground::correlation::fast as zncc_fast;
 use photogrammetry_playground::filter::fast as filter_fast;
 use photogrammetry_playground::interest::fast as interest_fast;
@@ -513,6 +514,8 @@ pub struct FastImage {
     f32_out: [Vec<f32>; 3],
     /// The byte output (median).
     u8_out: Vec<u8>,
+    /// The borders of the last `contours` call.
+    borders: Vec<chain_fast::Contour>,
 }
 
 fn resize_f32(v: &mut Vec<f32>, n: usize) {
@@ -533,6 +536,7 @@ impl FastImage {
             data: data.to_vec(),
             f32_out: [Vec::new(), Vec::new(), Vec::new()],
             u8_out: Vec::new(),
+            borders: Vec::new(),
         })
     }
 
@@ -605,7 +609,9 @@ impl FastImage {
         let n = (s.width + 1).saturating_sub(t.width) * (s.height + 1).saturating_sub(t.height);
         self.outputs(1, n);
         let peak = zncc_fast::zncc(sg, tg, &mut self.f32_out[0]).map_err(js_error)?;
-        Ok(peak.map_or(Vec::new(), |p| vec![p.c as f64, p.r as f64, f64::from(p.rho)]))
+        Ok(peak.map_or(Vec::new(), |p| {
+            vec![p.c as f64, p.r as f64, f64::from(p.rho)]
+        }))
     }
 
     /// ZNCC on prepared byte buffers (search `sw × sh`, template `tw × th`)
@@ -624,7 +630,9 @@ impl FastImage {
         let n = (sw + 1).saturating_sub(tw) * (sh + 1).saturating_sub(th);
         self.outputs(1, n);
         let peak = zncc_fast::zncc(sg, tg, &mut self.f32_out[0]).map_err(js_error)?;
-        Ok(peak.map_or(Vec::new(), |p| vec![p.c as f64, p.r as f64, f64::from(p.rho)]))
+        Ok(peak.map_or(Vec::new(), |p| {
+            vec![p.c as f64, p.r as f64, f64::from(p.rho)]
+        }))
     }
 
     /// Affine warp, output → input map `[m00, m01, m02, m10, m11, m12]`,
@@ -657,6 +665,30 @@ impl FastImage {
         }
         let img = Gray::new("image", &self.data, self.width, self.height).map_err(js_error)?;
         filter_fast::median3(img, b, &mut self.u8_out).map_err(js_error)
+    }
+
+    /// Every border (outer and hole) of the non-zero pixels, Suzuki–Abe
+    /// (`findContours` RETR_LIST, CHAIN_APPROX_NONE); returns
+    /// `[number of borders, number of points]`; the points, `c, r, …` per
+    /// border, through [`FastImage::contour`].
+    pub fn contours(&mut self) -> Result<Vec<f64>, JsError> {
+        let img = Gray::new("image", &self.data, self.width, self.height).map_err(js_error)?;
+        self.borders = chain_fast::contours(img).map_err(js_error)?;
+        let points: usize = self.borders.iter().map(|c| c.points.len()).sum();
+        Ok(vec![self.borders.len() as f64, points as f64])
+    }
+
+    /// Border `i` of the last [`FastImage::contours`]: `c, r, c, r, …`
+    /// (empty past the last one).
+    pub fn contour(&self, i: usize) -> Vec<u32> {
+        self.borders.get(i).map_or(Vec::new(), |c| {
+            c.points.iter().flat_map(|&(x, y)| [x, y]).collect()
+        })
+    }
+
+    /// Whether border `i` is a hole's.
+    pub fn contour_is_hole(&self, i: usize) -> bool {
+        self.borders.get(i).is_some_and(|c| c.hole)
     }
 
     /// A copy of float output `i`.

@@ -46,7 +46,9 @@ pub fn contours(img: Gray) -> Result<Vec<Contour>> {
     let mut f = vec![0i32; pw * (h + 2)];
     for r in 0..h {
         let src = img.row(r).unwrap_or(&[]);
-        let dst = f.get_mut((r + 1) * pw + 1..(r + 1) * pw + 1 + w).unwrap_or(&mut []);
+        let dst = f
+            .get_mut((r + 1) * pw + 1..(r + 1) * pw + 1 + w)
+            .unwrap_or(&mut []);
         for (d, &s) in dst.iter_mut().zip(src) {
             *d = i32::from(s != 0);
         }
@@ -83,12 +85,22 @@ pub fn contours(img: Gray) -> Result<Vec<Contour>> {
 
 /// Follows the border through label index `start`, whose background
 /// neighbour is in direction `d2`; marks it with `nbd`; returns its pixels.
-fn follow(f: &mut [i32], offs: &[isize; 8], pw: usize, start: usize, d2: usize, nbd: i32) -> Vec<(u32, u32)> {
+fn follow(
+    f: &mut [i32],
+    offs: &[isize; 8],
+    pw: usize,
+    start: usize,
+    d2: usize,
+    nbd: i32,
+) -> Vec<(u32, u32)> {
     let at = |i: usize, k: usize| i.wrapping_add_signed(offs[k & 7]);
     let xy = |i: usize| (((i % pw) - 1) as u32, ((i / pw) - 1) as u32);
     let get = |f: &[i32], i: usize| f.get(i).copied().unwrap_or(0);
     // 3.1: clockwise from d2, the first non-zero neighbour
-    let Some(k1) = (0..8).map(|s| (d2 + 8 - s) & 7).find(|&k| get(f, at(start, k)) != 0) else {
+    let Some(k1) = (0..8)
+        .map(|s| (d2 + 8 - s) & 7)
+        .find(|&k| get(f, at(start, k)) != 0)
+    else {
         if let Some(v) = f.get_mut(start) {
             *v = -nbd;
         }

@@ -149,7 +149,58 @@ impl CrossSums {
                     .map(|c| i16x8(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]))
                     .collect();
                 let per_row = self.tpw / 8;
-                for (c, a) in acc.iter_mut().enumerate() {
+                let pw = self.padded_w;
+                let sp = self.search.as_ptr();
+                // four positions at a time: each template vector loaded once
+                // for four dot products
+                let mut c0 = 0;
+                while c0 + 4 <= ow {
+                    let z = i32x4_splat(0);
+                    let (mut s0, mut s1, mut s2, mut s3) = (z, z, z, z);
+                    for (j, trow) in tv.chunks_exact(per_row).enumerate() {
+                        let base = (r + j) * pw + c0;
+                        for (k, t) in trow.iter().enumerate() {
+                            // SAFETY: base + 8k + 3 + 8 ≤ (r + j)·pw + ow − 1 + tpw
+                            // < (r + j + 1)·pw ≤ search.len() (checked above).
+                            unsafe {
+                                let p = sp.add(base + 8 * k);
+                                s0 =
+                                    i32x4_add(s0, i32x4_dot_i16x8(v128_load(p as *const v128), *t));
+                                s1 = i32x4_add(
+                                    s1,
+                                    i32x4_dot_i16x8(v128_load(p.add(1) as *const v128), *t),
+                                );
+                                s2 = i32x4_add(
+                                    s2,
+                                    i32x4_dot_i16x8(v128_load(p.add(2) as *const v128), *t),
+                                );
+                                s3 = i32x4_add(
+                                    s3,
+                                    i32x4_dot_i16x8(v128_load(p.add(3) as *const v128), *t),
+                                );
+                            }
+                        }
+                    }
+                    // horizontal sums of the four accumulators, as one vector
+                    let t0 = i32x4_add(
+                        i32x4_shuffle::<0, 4, 1, 5>(s0, s1),
+                        i32x4_shuffle::<2, 6, 3, 7>(s0, s1),
+                    );
+                    let t1 = i32x4_add(
+                        i32x4_shuffle::<0, 4, 1, 5>(s2, s3),
+                        i32x4_shuffle::<2, 6, 3, 7>(s2, s3),
+                    );
+                    let sums = i32x4_add(
+                        i32x4_shuffle::<0, 1, 4, 5>(t0, t1),
+                        i32x4_shuffle::<2, 3, 6, 7>(t0, t1),
+                    );
+                    if let Some(dst) = acc.get_mut(c0..c0 + 4) {
+                        // SAFETY: dst holds 4 i32.
+                        unsafe { v128_store(dst.as_mut_ptr() as *mut v128, sums) };
+                    }
+                    c0 += 4;
+                }
+                for (c, a) in acc.iter_mut().enumerate().skip(c0) {
                     let mut sum = i32x4_splat(0);
                     for j in 0..self.th {
                         let base = (r + j) * self.padded_w + c;
