@@ -175,8 +175,8 @@ pub(crate) fn vertical(rows: &[&[f32]], k: &[f32], dst: &mut [f32]) {
     }
 }
 
-/// `dst[x] = scale · Σ_i k[i] · src[x + i]` (`src` padded by the kernel's radius).
-pub(crate) fn horizontal(src: &[f32], k: &[f32], scale: f32, dst: &mut [f32]) {
+/// `dst[x] = Σ_i k[i] · src[x + i] / divisor` (`src` padded by the kernel's radius).
+pub(crate) fn horizontal(src: &[f32], k: &[f32], divisor: f32, dst: &mut [f32]) {
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
     let done = 0;
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
@@ -185,7 +185,7 @@ pub(crate) fn horizontal(src: &[f32], k: &[f32], scale: f32, dst: &mut [f32]) {
         if src.len() + 1 >= w + k.len() {
             let n = w / 4 * 4;
             let ks: Vec<v128> = k.iter().map(|&v| f32x4_splat(v)).collect();
-            let sv = f32x4_splat(scale);
+            let dv = f32x4_splat(divisor);
             let mut x = 0;
             while x < n {
                 let mut acc = f32x4_splat(0.0);
@@ -195,7 +195,7 @@ pub(crate) fn horizontal(src: &[f32], k: &[f32], scale: f32, dst: &mut [f32]) {
                     acc = f32x4_add(acc, f32x4_mul(*kv, v));
                 }
                 // SAFETY: x + 4 ≤ w = dst.len().
-                unsafe { v128_store(dst.as_mut_ptr().add(x) as *mut v128, f32x4_mul(sv, acc)) };
+                unsafe { v128_store(dst.as_mut_ptr().add(x) as *mut v128, f32x4_div(acc, dv)) };
                 x += 4;
             }
             n
@@ -209,7 +209,7 @@ pub(crate) fn horizontal(src: &[f32], k: &[f32], scale: f32, dst: &mut [f32]) {
             .enumerate()
             .map(|(i, kv)| kv * src.get(x + i).copied().unwrap_or(0.0))
             .sum();
-        *d = scale * s;
+        *d = s / divisor;
     }
 }
 
@@ -223,19 +223,24 @@ fn check_taps(field: &str, k: &[f32]) -> Result<()> {
     Ok(())
 }
 
-/// `out = scale · Σ_j Σ_i ky[j] · kx[i] · I(c + i − a, r + j − b)`: the
-/// separable kernel `scale · ky ⊗ kx` applied as written (correlation),
+/// `out = Σ_j Σ_i ky[j] · kx[i] · I(c + i − a, r + j − b) / divisor`: the
+/// separable kernel `ky ⊗ kx / divisor` applied as written (correlation),
 /// a vertical pass over a ring of converted rows, then a horizontal pass.
+/// (Integer taps and a divisor keep integer sums exact: the 3×3 mean is
+/// the `f32` nearest to the reference's value.)
 pub fn separable(
     img: Gray,
     kx: &[f32],
     ky: &[f32],
-    scale: f32,
+    divisor: f32,
     border: Border,
     out: &mut [f32],
 ) -> Result<()> {
     check_taps("kx", kx)?;
     check_taps("ky", ky)?;
+    if !(divisor.is_finite() && divisor != 0.0) {
+        return Err(Error::input("divisor", "must be a finite non-zero number"));
+    }
     let (w, h) = (img.width(), img.height());
     check_len("output", out, w * h)?;
     let (rx, ry) = (kx.len() / 2, ky.len() / 2);
@@ -245,14 +250,14 @@ pub fn separable(
         let rows = ring.rows(&img, r, ry, border);
         vertical(&rows, ky, &mut tmp[rx..rx + w]);
         pad_row(&mut tmp, w, rx, border, 0.0);
-        horizontal(&tmp, kx, scale, o);
+        horizontal(&tmp, kx, divisor, o);
     }
     Ok(())
 }
 
 /// The 3×3 mean: `(1/9) · Σ` of the neighbourhood (sums exact in `f32`).
 pub fn mean3(img: Gray, border: Border, out: &mut [f32]) -> Result<()> {
-    separable(img, &[1.0; 3], &[1.0; 3], 1.0 / 9.0, border, out)
+    separable(img, &[1.0; 3], &[1.0; 3], 9.0, border, out)
 }
 
 /// The Gaussian taps `k(i) = exp(−i²/(2σ²)) / Σ_j exp(−j²/(2σ²))`,
