@@ -251,7 +251,7 @@ fn affine_warps_equal_resample_warp() {
                 (Method::Nearest, 0.0),
             ] {
                 let mut out = vec![0.0f32; ow * oh];
-                rfast::warp_affine(img, &m, method, a, -1.0, ow, oh, &mut out).unwrap();
+                rfast::warp_affine(img, &m, method, a, -1.0, (ow, oh), &mut out).unwrap();
                 for r in 0..oh {
                     for c in 0..ow {
                         let (x, y) = map(c as f64, r as f64);

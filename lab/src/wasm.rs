@@ -652,7 +652,7 @@ impl FastImage {
         let (w, h) = (self.width, self.height);
         self.outputs(1, w * h);
         let img = Gray::new("image", &self.data, w, h).map_err(js_error)?;
-        warp_fast::warp_affine(img, &map, method, a, 0.0, w, h, &mut self.f32_out[0])
+        warp_fast::warp_affine(img, &map, method, a, 0.0, (w, h), &mut self.f32_out[0])
             .map_err(js_error)
     }
 

@@ -214,7 +214,7 @@ pub(crate) fn horizontal(src: &[f32], k: &[f32], divisor: f32, dst: &mut [f32]) 
 }
 
 fn check_taps(field: &str, k: &[f32]) -> Result<()> {
-    if k.len() % 2 == 0 || k.iter().any(|v| !v.is_finite()) {
+    if k.len().is_multiple_of(2) || k.iter().any(|v| !v.is_finite()) {
         return Err(Error::input(
             field,
             "needs an odd number of finite taps (a centre tap)",

@@ -103,7 +103,7 @@ fn box_row(src: &[i32], size: usize, dst: &mut [i32]) {
 /// `w` and `q` of every pixel for a `size × size` window of gradients
 /// (odd, 3 … 31), border replicate.
 pub fn forstner_wq(img: Gray, size: usize, w_out: &mut [f32], q_out: &mut [f32]) -> Result<()> {
-    if size % 2 == 0 || !(3..=31).contains(&size) {
+    if size.is_multiple_of(2) || !(3..=31).contains(&size) {
         return Err(Error::input(
             "window_size",
             format!("must be odd, 3 … 31 (got {size})"),

@@ -161,8 +161,7 @@ pub fn warp_affine(
     method: Method,
     a: f64,
     fill: f32,
-    out_w: usize,
-    out_h: usize,
+    (out_w, out_h): (usize, usize),
     out: &mut [f32],
 ) -> Result<()> {
     if m.iter().flatten().any(|v| !v.is_finite()) || !a.is_finite() {
