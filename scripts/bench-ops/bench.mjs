@@ -209,9 +209,22 @@ if (lab.FastImage.prototype.contours) {
       cv: () => { contours.delete(); hier.delete(); contours = new cv.MatVector(); hier = new cv.Mat(); cv.findContours(src, contours, hier, cv.RETR_LIST, cv.CHAIN_APPROX_NONE); },
       agree: () => {
         let pts = 0;
-        for (let i = 0; i < contours.size(); i++) { const c = contours.get(i); pts += c.rows; c.delete(); }
-        const ok = ours[0] === contours.size() && ours[1] === pts;
-        return [ok, `ours ${ours[0]} contours / ${ours[1]} points, OpenCV.js ${contours.size()} / ${pts}`];
+        const theirs = [];
+        for (let i = 0; i < contours.size(); i++) {
+          const c = contours.get(i); pts += c.rows;
+          if (n <= 512) for (let k = 0; k < c.rows; k++) theirs.push(c.data32S[2 * k] * 65536 + c.data32S[2 * k + 1]);
+          c.delete();
+        }
+        let ok = ours[0] === contours.size() && ours[1] === pts, lists = "";
+        if (n <= 512) {
+          // TASKS.md: at 512 the point lists too, compared as multisets
+          const mine = [];
+          for (let i = 0; i < ours[0]; i++) { const p = img.contour(i); for (let k = 0; k < p.length; k += 2) mine.push(p[k] * 65536 + p[k + 1]); }
+          mine.sort((a, b) => a - b); theirs.sort((a, b) => a - b);
+          const same = mine.length === theirs.length && mine.every((v, i) => v === theirs[i]);
+          ok = ok && same; lists = same ? "; point multisets equal" : "; point multisets DIFFER";
+        }
+        return [ok, `ours ${ours[0]} contours / ${ours[1]} points, OpenCV.js ${contours.size()} / ${pts}${lists}`];
       },
       free: () => { img.free(); src.delete(); contours.delete(); hier.delete(); },
     };
