@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # npm run bench: build the page, then measure in headless Chromium what it
 # loads (gzipped bytes) and how long it takes to show the first solution.
+# npm run bench -- ops [--json FILE]: the image operators of ../shared/bench
+# (T1–T7) against OpenCV.js in the same Node process (scripts/bench-ops/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = ops ]; then
+  shift
+  exec bash scripts/bench-ops/run.sh "$@"
+fi
 bash scripts/setup.sh --test
 SKIP_SETUP=1 bash scripts/build.sh
 node scripts/bench.mjs "$@"

@@ -14,11 +14,16 @@ cargo fmt --all -- --check
 step "cargo clippy (host and wasm32, the core and the lab) -D warnings"
 cargo clippy --workspace --all-targets -- -D warnings
 cargo clippy --workspace --all-targets --target wasm32-unknown-unknown -- -D warnings
+# the SIMD loops of the fast paths (own target dir: no rebuild ping-pong)
+SIMD_FLAGS="-C target-feature=+simd128"
+RUSTFLAGS="$SIMD_FLAGS" cargo clippy --workspace --all-targets --target wasm32-unknown-unknown --target-dir target/simd128 -- -D warnings
 step "cargo test (native, the core and the lab)"
 cargo test --workspace
 step "cargo test --target wasm32-unknown-unknown (wasm-bindgen-test in headless Chromium)"
 cargo test --target wasm32-unknown-unknown --test 'web*'
 cargo test --target wasm32-unknown-unknown -p photogrammetry-lab --test 'web*'
+step "fast paths against their references as wasm with +simd128 (web_fast in Node)"
+RUSTFLAGS="$SIMD_FLAGS" cargo test --target wasm32-unknown-unknown --target-dir target/simd128 --test web_fast
 step "unit tests of the page modules (Node)"
 node --test tests/unit/
 step "build the page"

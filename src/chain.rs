@@ -21,6 +21,8 @@ use crate::error::{Error, Result};
 use crate::raster::Grid;
 use std::collections::HashMap;
 
+pub mod fast;
+
 /// A pixel `[c, r]`.
 pub type Pixel = [i64; 2];
 

@@ -23,6 +23,8 @@ use crate::error::{Error, Result};
 use crate::lsq::{self, Adjustment};
 use crate::raster::Grid;
 
+pub mod fast;
+
 /// Relative size under which a sum of squared deviations counts as zero
 /// (the array is flat up to rounding), measured against `n·max|x|²`.
 const FLAT: f64 = 1e-24;

@@ -15,6 +15,8 @@
 use crate::error::{Error, Result};
 use crate::raster::{Border, Grid};
 
+pub mod fast;
+
 /// A kernel `n / d`: numerators (row-major, odd width and height) and one
 /// divisor, so that `1/16·[1 2 1; …]` keeps its integers and the sums can be
 /// written out as the seeds write them.

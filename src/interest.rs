@@ -15,6 +15,8 @@
 use crate::error::{Error, Result};
 use crate::raster::Grid;
 
+pub mod fast;
+
 /// Smallest window side: a central difference needs a neighbour on each side.
 pub const MIN_WINDOW: usize = 3;
 /// Largest window side accepted by the window functions.

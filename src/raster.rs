@@ -18,6 +18,31 @@ pub enum Border {
     Crop,
 }
 
+/// The index inside `0..n` that position `x` reads under `border`:
+/// the nearest edge (`Replicate`), mirrored about the edge pixel
+/// (`Reflect`), `None` outside for `Zero` and `Crop` (and for `n = 0`).
+/// The one place the border rule is written; [`Grid::at`] and the fast
+/// image paths both use it.
+pub fn fold(x: isize, n: usize, border: Border) -> Option<usize> {
+    let n = n as isize;
+    if n == 0 {
+        return None;
+    }
+    if (0..n).contains(&x) {
+        return Some(x as usize);
+    }
+    match border {
+        Border::Replicate => Some(x.clamp(0, n - 1) as usize),
+        Border::Zero | Border::Crop => None,
+        Border::Reflect if n == 1 => Some(0),
+        Border::Reflect => {
+            let period = 2 * (n - 1);
+            let m = x.rem_euclid(period);
+            Some((if m < n { m } else { period - m }) as usize)
+        }
+    }
+}
+
 /// A rectangular grid of finite numbers.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
@@ -128,23 +153,11 @@ impl Grid {
         if inside(c, self.width) && inside(r, self.height) {
             return self.get(c as usize, r as usize);
         }
-        let fold = |x: isize, n: usize| -> usize {
-            let n = n as isize;
-            match border {
-                Border::Replicate => x.clamp(0, n - 1) as usize,
-                _ if n == 1 => 0,
-                _ => {
-                    let period = 2 * (n - 1);
-                    let m = x.rem_euclid(period);
-                    (if m < n { m } else { period - m }) as usize
-                }
-            }
-        };
         match border {
             Border::Crop => None,
             Border::Zero => Some(0.0),
             Border::Replicate | Border::Reflect => {
-                self.get(fold(c, self.width), fold(r, self.height))
+                self.get(fold(c, self.width, border)?, fold(r, self.height, border)?)
             }
         }
     }
@@ -163,6 +176,79 @@ impl Grid {
     pub fn rows(&self) -> Vec<Vec<f64>> {
         self.data.chunks(self.width).map(<[f64]>::to_vec).collect()
     }
+}
+
+/// An 8-bit grey image borrowed from a byte buffer (row-major, no
+/// padding): the input of the fast whole-image paths (`filter::fast`,
+/// `interest::fast`, `correlation::fast`, `resample::fast`, `chain::fast`).
+#[derive(Debug, Clone, Copy)]
+pub struct Gray<'a> {
+    data: &'a [u8],
+    width: usize,
+    height: usize,
+}
+
+impl<'a> Gray<'a> {
+    /// A view of `data` as `width × height`; `field` names it in errors.
+    pub fn new(field: &str, data: &'a [u8], width: usize, height: usize) -> Result<Self> {
+        if width == 0 || height == 0 {
+            return Err(Error::input(field, "is empty"));
+        }
+        if width.checked_mul(height) != Some(data.len()) {
+            return Err(Error::input(
+                field,
+                format!("has {} bytes for {width}×{height}", data.len()),
+            ));
+        }
+        Ok(Gray {
+            data,
+            width,
+            height,
+        })
+    }
+    pub fn width(&self) -> usize {
+        self.width
+    }
+    pub fn height(&self) -> usize {
+        self.height
+    }
+    pub fn data(&self) -> &'a [u8] {
+        self.data
+    }
+    /// Row `r` (`None` past the last row).
+    pub fn row(&self, r: usize) -> Option<&'a [u8]> {
+        self.data.get(r * self.width..(r + 1) * self.width)
+    }
+    /// The same values as a [`Grid`] (what the reference functions take).
+    pub fn to_grid(&self) -> Grid {
+        Grid {
+            width: self.width,
+            height: self.height,
+            data: self.data.iter().map(|&v| f64::from(v)).collect(),
+        }
+    }
+}
+
+impl Grid {
+    /// The values as bytes when every one is a whole number in 0 … 255
+    /// (an 8-bit image), so that a fast 8-bit path gives the same result.
+    pub fn to_u8(&self) -> Option<Vec<u8>> {
+        self.data
+            .iter()
+            .map(|&v| (v.fract() == 0.0 && (0.0..=255.0).contains(&v)).then_some(v as u8))
+            .collect()
+    }
+}
+
+/// Checks that an output buffer holds `n` values; `field` names it.
+pub fn check_len<T>(field: &str, out: &[T], n: usize) -> Result<()> {
+    if out.len() != n {
+        return Err(Error::input(
+            field,
+            format!("has room for {} values, the image has {n}", out.len()),
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]

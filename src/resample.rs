@@ -9,6 +9,8 @@
 
 use crate::raster::Grid;
 
+pub mod fast;
+
 /// Seed 004's cubic convolution kernel is `a = −1` of the family
 /// `f(x) = (a+2)|x|³ − (a+3)|x|² + 1` for `|x| < 1`,
 /// `a|x|³ − 5a|x|² + 8a|x| − 4a` for `1 ≤ |x| < 2`, 0 beyond:

@@ -93,12 +93,58 @@ pub fn filter_image(
     border: Border,
     custom: Option<(&[Vec<f64>], f64)>,
 ) -> Result<Layer> {
+    if let Some(layer) = fast_filter(img, kernel_name, border)? {
+        return Ok(layer);
+    }
     let f = match kernel(kernel_name, custom)? {
         Some(k) => filter::correlate(img, &k, border)?,
         None => filter::median(img, 3, 3, border)?,
     };
     let signed = f.output.data().iter().any(|&v| v < 0.0);
     Ok(Layer::from_grid(kernel_name, &f.output, f.region, signed))
+}
+
+/// The 3×3 mean and median of an 8-bit image by `filter::fast` (tied to
+/// `filter::correlate` / `filter::median` at every pixel by the core's
+/// tests/web_fast.rs); `None` for other kernels or images, which take the
+/// reference path.
+fn fast_filter(img: &Grid, kernel_name: &str, border: Border) -> Result<Option<Layer>> {
+    use photogrammetry_playground::raster::Gray;
+    let (w, h) = (img.width(), img.height());
+    let (Some(bytes), Some(region)) = (
+        matches!(kernel_name, "mean" | "median")
+            .then(|| img.to_u8())
+            .flatten(),
+        filter::output_region(w, h, 1, 1, border),
+    ) else {
+        return Ok(None);
+    };
+    let g = Gray::new("image", &bytes, w, h)?;
+    let mut full = vec![0f32; w * h];
+    if kernel_name == "mean" {
+        filter::fast::mean3(g, border, &mut full)?;
+    } else {
+        let mut out = vec![0u8; w * h];
+        filter::fast::median3(g, border, &mut out)?;
+        full = out.iter().map(|&v| f32::from(v)).collect();
+    }
+    let data = (region.r0..region.r0 + region.height)
+        .flat_map(|r| {
+            let start = r * w + region.c0;
+            full.get(start..start + region.width)
+                .unwrap_or(&[])
+                .to_vec()
+        })
+        .collect();
+    Ok(Some(Layer {
+        name: kernel_name.to_string(),
+        width: region.width,
+        height: region.height,
+        c0: region.c0,
+        r0: region.r0,
+        data,
+        signed: false,
+    }))
 }
 
 /// Prewitt or Sobel `gx`, `gy`, magnitude and direction (`atan2(gy, gx)`

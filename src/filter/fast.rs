@@ -1,0 +1,454 @@
+//! Fast whole-image paths of the filters on 8-bit images: separable
+//! kernels over a ring of converted rows, Sobel from one vertical and one
+//! horizontal pass, and the 3×3 median from sorted columns (no sorting of
+//! nine values per pixel). Output `f32` (filters) or `u8` (median).
+//!
+//! Each function gives the output of its reference in [`super`] at every
+//! pixel (`tests/fast_filters.rs` ties them): [`separable`] is
+//! [`super::correlate`] with the outer-product kernel, [`sobel`] is
+//! [`super::gradient`] with [`super::sobel_y`] (`gx`) and the negated
+//! [`super::sobel_x`] (`gy`), [`median3`] is [`super::median`] 3×3.
+//! Border policies `Replicate`, `Reflect` and `Zero` read outside as the
+//! reference does; `Crop` computes the whole image as `Replicate` (its
+//! interior, the part `Crop` keeps, is the same under every policy).
+//!
+//! Built with `+simd128` (wasm), the inner loops run on `core::arch::wasm32`
+//! vectors, 4 floats or 16 bytes at a time; everywhere else the same loops
+//! run scalar.
+
+use crate::error::{Error, Result};
+use crate::raster::{check_len, fold, Border, Gray};
+
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+use core::arch::wasm32::*;
+
+/// The border a fast path applies (`Crop` computed as `Replicate`).
+fn effective(border: Border) -> Border {
+    match border {
+        Border::Crop => Border::Replicate,
+        b => b,
+    }
+}
+
+/// Fills the `pad` cells on each side of `row[pad .. pad + w]` by `border`
+/// (`zero` where the policy reads nothing).
+pub(crate) fn pad_row<T: Copy>(row: &mut [T], w: usize, pad: usize, border: Border, zero: T) {
+    for i in 0..pad {
+        let x = i as isize - pad as isize;
+        let v = fold(x, w, effective(border)).and_then(|c| row.get(pad + c).copied());
+        if let Some(cell) = row.get_mut(i) {
+            *cell = v.unwrap_or(zero);
+        }
+        let x = (w + i) as isize;
+        let v = fold(x, w, effective(border)).and_then(|c| row.get(pad + c).copied());
+        if let Some(cell) = row.get_mut(pad + w + i) {
+            *cell = v.unwrap_or(zero);
+        }
+    }
+}
+
+/// The source row read for row position `r` (`None`: a row of zeros).
+pub(crate) fn row_at<'a>(img: &Gray<'a>, r: isize, border: Border) -> Option<&'a [u8]> {
+    fold(r, img.height(), effective(border)).and_then(|i| img.row(i))
+}
+
+/// Rows of an 8-bit image converted to `f32` once each, kept in a ring of
+/// `2·radius + 1` slots: the rows a vertical pass needs at one output row
+/// lie within `radius` of it, so they never share a slot.
+pub(crate) struct RowRing {
+    slots: Vec<Vec<f32>>,
+    tags: Vec<Option<usize>>,
+    zeros: Vec<f32>,
+}
+
+impl RowRing {
+    pub(crate) fn new(width: usize, radius: usize) -> Self {
+        let n = 2 * radius + 1;
+        RowRing {
+            slots: vec![vec![0.0; width]; n],
+            tags: vec![None; n],
+            zeros: vec![0.0; width],
+        }
+    }
+
+    /// Makes sure source row `i` is converted; returns its slot.
+    fn load(&mut self, img: &Gray, i: usize) -> usize {
+        let slot = i % self.slots.len();
+        if self.tags[slot] != Some(i) {
+            if let (Some(src), Some(dst)) = (img.row(i), self.slots.get_mut(slot)) {
+                convert_row(src, dst);
+            }
+            self.tags[slot] = Some(i);
+        }
+        slot
+    }
+
+    /// The converted rows for positions `r − radius … r + radius`.
+    pub(crate) fn rows(
+        &mut self,
+        img: &Gray,
+        r: usize,
+        radius: usize,
+        border: Border,
+    ) -> Vec<&[f32]> {
+        let idx: Vec<Option<usize>> = (0..=2 * radius)
+            .map(|j| {
+                fold(
+                    r as isize + j as isize - radius as isize,
+                    img.height(),
+                    effective(border),
+                )
+            })
+            .collect();
+        let slots: Vec<Option<usize>> = idx.iter().map(|i| i.map(|i| self.load(img, i))).collect();
+        slots
+            .iter()
+            .map(|s| match s {
+                Some(s) => self.slots.get(*s).map_or(&self.zeros[..], |v| &v[..]),
+                None => &self.zeros[..],
+            })
+            .collect()
+    }
+}
+
+/// `dst[x] = src[x]` as `f32`.
+pub(crate) fn convert_row(src: &[u8], dst: &mut [f32]) {
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = {
+        let n = src.len().min(dst.len()) / 16 * 16;
+        for (s, d) in src[..n].chunks_exact(16).zip(dst[..n].chunks_exact_mut(16)) {
+            // SAFETY: `s` holds 16 bytes and `d` 16 floats (chunks_exact);
+            // wasm loads and stores need no alignment.
+            unsafe {
+                let v = v128_load(s.as_ptr() as *const v128);
+                let lo = u16x8_extend_low_u8x16(v);
+                let hi = u16x8_extend_high_u8x16(v);
+                let p = d.as_mut_ptr() as *mut v128;
+                v128_store(p, f32x4_convert_u32x4(u32x4_extend_low_u16x8(lo)));
+                v128_store(p.add(1), f32x4_convert_u32x4(u32x4_extend_high_u16x8(lo)));
+                v128_store(p.add(2), f32x4_convert_u32x4(u32x4_extend_low_u16x8(hi)));
+                v128_store(p.add(3), f32x4_convert_u32x4(u32x4_extend_high_u16x8(hi)));
+            }
+        }
+        n
+    };
+    for (s, d) in src[done..].iter().zip(&mut dst[done..]) {
+        *d = f32::from(*s);
+    }
+}
+
+/// `dst[x] = Σ_j k[j] · rows[j][x]`.
+pub(crate) fn vertical(rows: &[&[f32]], k: &[f32], dst: &mut [f32]) {
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = {
+        let w = dst.len();
+        if rows.iter().all(|r| r.len() >= w) {
+            let n = w / 4 * 4;
+            let ks: Vec<v128> = k.iter().map(|&v| f32x4_splat(v)).collect();
+            let mut x = 0;
+            while x < n {
+                let mut acc = f32x4_splat(0.0);
+                for (r, kv) in rows.iter().zip(&ks) {
+                    // SAFETY: x + 4 ≤ w ≤ r.len() (checked above).
+                    let v = unsafe { v128_load(r.as_ptr().add(x) as *const v128) };
+                    acc = f32x4_add(acc, f32x4_mul(*kv, v));
+                }
+                // SAFETY: x + 4 ≤ w = dst.len().
+                unsafe { v128_store(dst.as_mut_ptr().add(x) as *mut v128, acc) };
+                x += 4;
+            }
+            n
+        } else {
+            0
+        }
+    };
+    for (x, d) in dst.iter_mut().enumerate().skip(done) {
+        *d = rows
+            .iter()
+            .zip(k)
+            .map(|(r, kv)| kv * r.get(x).copied().unwrap_or(0.0))
+            .sum();
+    }
+}
+
+/// `dst[x] = Σ_i k[i] · src[x + i] / divisor` (`src` padded by the kernel's radius).
+pub(crate) fn horizontal(src: &[f32], k: &[f32], divisor: f32, dst: &mut [f32]) {
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = {
+        let w = dst.len();
+        if src.len() + 1 >= w + k.len() {
+            let n = w / 4 * 4;
+            let ks: Vec<v128> = k.iter().map(|&v| f32x4_splat(v)).collect();
+            let dv = f32x4_splat(divisor);
+            let mut x = 0;
+            while x < n {
+                let mut acc = f32x4_splat(0.0);
+                for (i, kv) in ks.iter().enumerate() {
+                    // SAFETY: x + i + 4 ≤ w − 4 + k.len() + 3 < src.len() + 1.
+                    let v = unsafe { v128_load(src.as_ptr().add(x + i) as *const v128) };
+                    acc = f32x4_add(acc, f32x4_mul(*kv, v));
+                }
+                // SAFETY: x + 4 ≤ w = dst.len().
+                unsafe { v128_store(dst.as_mut_ptr().add(x) as *mut v128, f32x4_div(acc, dv)) };
+                x += 4;
+            }
+            n
+        } else {
+            0
+        }
+    };
+    for (x, d) in dst.iter_mut().enumerate().skip(done) {
+        let s: f32 = k
+            .iter()
+            .enumerate()
+            .map(|(i, kv)| kv * src.get(x + i).copied().unwrap_or(0.0))
+            .sum();
+        *d = s / divisor;
+    }
+}
+
+fn check_taps(field: &str, k: &[f32]) -> Result<()> {
+    if k.len().is_multiple_of(2) || k.iter().any(|v| !v.is_finite()) {
+        return Err(Error::input(
+            field,
+            "needs an odd number of finite taps (a centre tap)",
+        ));
+    }
+    Ok(())
+}
+
+/// `out = Σ_j Σ_i ky[j] · kx[i] · I(c + i − a, r + j − b) / divisor`: the
+/// separable kernel `ky ⊗ kx / divisor` applied as written (correlation),
+/// a vertical pass over a ring of converted rows, then a horizontal pass.
+/// (Integer taps and a divisor keep integer sums exact: the 3×3 mean is
+/// the `f32` nearest to the reference's value.)
+pub fn separable(
+    img: Gray,
+    kx: &[f32],
+    ky: &[f32],
+    divisor: f32,
+    border: Border,
+    out: &mut [f32],
+) -> Result<()> {
+    check_taps("kx", kx)?;
+    check_taps("ky", ky)?;
+    if !(divisor.is_finite() && divisor != 0.0) {
+        return Err(Error::input("divisor", "must be a finite non-zero number"));
+    }
+    let (w, h) = (img.width(), img.height());
+    check_len("output", out, w * h)?;
+    let (rx, ry) = (kx.len() / 2, ky.len() / 2);
+    let mut ring = RowRing::new(w, ry);
+    let mut tmp = vec![0.0f32; w + 2 * rx];
+    for (r, o) in out.chunks_exact_mut(w).enumerate() {
+        let rows = ring.rows(&img, r, ry, border);
+        vertical(&rows, ky, &mut tmp[rx..rx + w]);
+        pad_row(&mut tmp, w, rx, border, 0.0);
+        horizontal(&tmp, kx, divisor, o);
+    }
+    Ok(())
+}
+
+/// The 3×3 mean: `(1/9) · Σ` of the neighbourhood (sums exact in `f32`).
+pub fn mean3(img: Gray, border: Border, out: &mut [f32]) -> Result<()> {
+    separable(img, &[1.0; 3], &[1.0; 3], 9.0, border, out)
+}
+
+/// The Gaussian taps `k(i) = exp(−i²/(2σ²)) / Σ_j exp(−j²/(2σ²))`,
+/// `i = −radius … radius` (`None` for σ not finite and positive).
+pub fn gaussian_taps(sigma: f64, radius: usize) -> Option<Vec<f64>> {
+    if !(sigma.is_finite() && sigma > 0.0) {
+        return None;
+    }
+    let r = radius as f64;
+    let raw: Vec<f64> = (0..=2 * radius)
+        .map(|i| {
+            let x = i as f64 - r;
+            (-x * x / (2.0 * sigma * sigma)).exp()
+        })
+        .collect();
+    let sum: f64 = raw.iter().sum();
+    Some(raw.iter().map(|v| v / sum).collect())
+}
+
+/// Sobel over the whole image: `gx` = the `[−1 0 1; −2 0 2; −1 0 1]`
+/// response (right minus left, [`super::sobel_y`]), `gy` its transpose
+/// (down minus up, −[`super::sobel_x`]), `mag = √(gx² + gy²)`.
+pub fn sobel(
+    img: Gray,
+    border: Border,
+    gx: &mut [f32],
+    gy: &mut [f32],
+    mag: &mut [f32],
+) -> Result<()> {
+    let (w, h) = (img.width(), img.height());
+    for (f, o) in [("gx", &*gx), ("gy", &*gy), ("magnitude", &*mag)] {
+        check_len(f, o, w * h)?;
+    }
+    let mut ring = RowRing::new(w, 1);
+    let mut vs = vec![0.0f32; w + 2];
+    let mut vd = vec![0.0f32; w + 2];
+    let rows_out = gx
+        .chunks_exact_mut(w)
+        .zip(gy.chunks_exact_mut(w))
+        .zip(mag.chunks_exact_mut(w));
+    for (r, ((ox, oy), om)) in rows_out.enumerate() {
+        let rows = ring.rows(&img, r, 1, border);
+        vertical(&rows, &[1.0, 2.0, 1.0], &mut vs[1..=w]);
+        vertical(&rows, &[-1.0, 0.0, 1.0], &mut vd[1..=w]);
+        pad_row(&mut vs, w, 1, border, 0.0);
+        pad_row(&mut vd, w, 1, border, 0.0);
+        horizontal(&vs, &[-1.0, 0.0, 1.0], 1.0, ox);
+        horizontal(&vd, &[1.0, 2.0, 1.0], 1.0, oy);
+        magnitude(ox, oy, om);
+    }
+    Ok(())
+}
+
+/// `m = √(x² + y²)`.
+fn magnitude(x: &[f32], y: &[f32], m: &mut [f32]) {
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = {
+        let n = m.len().min(x.len()).min(y.len()) / 4 * 4;
+        let mut i = 0;
+        while i < n {
+            // SAFETY: i + 4 ≤ n ≤ every length.
+            unsafe {
+                let a = v128_load(x.as_ptr().add(i) as *const v128);
+                let b = v128_load(y.as_ptr().add(i) as *const v128);
+                let s = f32x4_sqrt(f32x4_add(f32x4_mul(a, a), f32x4_mul(b, b)));
+                v128_store(m.as_mut_ptr().add(i) as *mut v128, s);
+            }
+            i += 4;
+        }
+        n
+    };
+    for ((a, b), o) in x.iter().zip(y).zip(m.iter_mut()).skip(done) {
+        *o = (a * a + b * b).sqrt();
+    }
+}
+
+/// The 3×3 median of an 8-bit image: each column of three sorted once
+/// (`lo ≤ mid ≤ hi`), then per pixel the median of
+/// `max(lo)`, `med(mid)`, `min(hi)` over the three columns — exactly the
+/// middle of the nine values, with 16 pixels per SIMD step.
+pub fn median3(img: Gray, border: Border, out: &mut [u8]) -> Result<()> {
+    let (w, h) = (img.width(), img.height());
+    check_len("output", out, w * h)?;
+    let zeros = vec![0u8; w];
+    let mut lo = vec![0u8; w + 2];
+    let mut mid = vec![0u8; w + 2];
+    let mut hi = vec![0u8; w + 2];
+    for (r, o) in out.chunks_exact_mut(w).enumerate() {
+        let r = r as isize;
+        let a = row_at(&img, r - 1, border).unwrap_or(&zeros);
+        let b = row_at(&img, r, border).unwrap_or(&zeros);
+        let c = row_at(&img, r + 1, border).unwrap_or(&zeros);
+        sort_columns(a, b, c, &mut lo[1..=w], &mut mid[1..=w], &mut hi[1..=w]);
+        pad_row(&mut lo, w, 1, border, 0);
+        pad_row(&mut mid, w, 1, border, 0);
+        pad_row(&mut hi, w, 1, border, 0);
+        combine_median(&lo, &mid, &hi, o);
+    }
+    Ok(())
+}
+
+fn med3(a: u8, b: u8, c: u8) -> u8 {
+    a.min(b).max(a.max(b).min(c))
+}
+
+/// Sorts each column `(a[x], b[x], c[x])` into `lo[x] ≤ mid[x] ≤ hi[x]`.
+fn sort_columns(a: &[u8], b: &[u8], c: &[u8], lo: &mut [u8], mid: &mut [u8], hi: &mut [u8]) {
+    let w = lo.len();
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = {
+        if a.len() >= w && b.len() >= w && c.len() >= w && mid.len() >= w && hi.len() >= w {
+            let n = w / 16 * 16;
+            let mut x = 0;
+            while x < n {
+                // SAFETY: x + 16 ≤ w ≤ every length (checked above).
+                unsafe {
+                    let va = v128_load(a.as_ptr().add(x) as *const v128);
+                    let vb = v128_load(b.as_ptr().add(x) as *const v128);
+                    let vc = v128_load(c.as_ptr().add(x) as *const v128);
+                    let (l1, h1) = (u8x16_min(va, vb), u8x16_max(va, vb));
+                    let l = u8x16_min(l1, vc);
+                    let m1 = u8x16_max(l1, vc);
+                    let m = u8x16_min(m1, h1);
+                    let hh = u8x16_max(m1, h1);
+                    v128_store(lo.as_mut_ptr().add(x) as *mut v128, l);
+                    v128_store(mid.as_mut_ptr().add(x) as *mut v128, m);
+                    v128_store(hi.as_mut_ptr().add(x) as *mut v128, hh);
+                }
+                x += 16;
+            }
+            n
+        } else {
+            0
+        }
+    };
+    for x in done..w {
+        let (va, vb, vc) = (
+            a.get(x).copied().unwrap_or(0),
+            b.get(x).copied().unwrap_or(0),
+            c.get(x).copied().unwrap_or(0),
+        );
+        let (l1, h1) = (va.min(vb), va.max(vb));
+        let m1 = l1.max(vc);
+        if let (Some(l), Some(m), Some(hh)) = (lo.get_mut(x), mid.get_mut(x), hi.get_mut(x)) {
+            *l = l1.min(vc);
+            *m = m1.min(h1);
+            *hh = m1.max(h1);
+        }
+    }
+}
+
+/// `out[x] = med(max(lo[x..x+3]), med(mid[x..x+3]), min(hi[x..x+3]))`
+/// (the sorted columns padded by one on each side).
+fn combine_median(lo: &[u8], mid: &[u8], hi: &[u8], out: &mut [u8]) {
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = {
+        let w = out.len();
+        if lo.len() >= w + 2 && mid.len() >= w + 2 && hi.len() >= w + 2 {
+            let n = w / 16 * 16;
+            let mut x = 0;
+            let ld = |s: &[u8], i: usize| {
+                // SAFETY: callers keep i + 16 ≤ x + 2 + 16 ≤ w + 2 ≤ s.len().
+                unsafe { v128_load(s.as_ptr().add(i) as *const v128) }
+            };
+            let m3 = |a: v128, b: v128, c: v128| {
+                u8x16_max(u8x16_min(a, b), u8x16_min(u8x16_max(a, b), c))
+            };
+            while x < n {
+                let l = u8x16_max(u8x16_max(ld(lo, x), ld(lo, x + 1)), ld(lo, x + 2));
+                let m = m3(ld(mid, x), ld(mid, x + 1), ld(mid, x + 2));
+                let hh = u8x16_min(u8x16_min(ld(hi, x), ld(hi, x + 1)), ld(hi, x + 2));
+                // SAFETY: x + 16 ≤ w = out.len().
+                unsafe { v128_store(out.as_mut_ptr().add(x) as *mut v128, m3(l, m, hh)) };
+                x += 16;
+            }
+            n
+        } else {
+            0
+        }
+    };
+    for (x, o) in out.iter_mut().enumerate().skip(done) {
+        let g = |s: &[u8], i: usize| s.get(i).copied().unwrap_or(0);
+        let l = g(lo, x).max(g(lo, x + 1)).max(g(lo, x + 2));
+        let m = med3(g(mid, x), g(mid, x + 1), g(mid, x + 2));
+        let hh = g(hi, x).min(g(hi, x + 1)).min(g(hi, x + 2));
+        *o = med3(l, m, hh);
+    }
+}
