@@ -152,7 +152,8 @@ export function toggleEmbedPanel(view, button, bar) {
     notes,
     el("h4", {}, "Live preview"),
     heightNote,
-    el("div", { class: "embed-preview-box" }, preview),
+    // the preview scrolls inside the panel: reachable by keyboard, and named
+    el("div", { class: "embed-preview-box", tabindex: "0", role: "region", "aria-label": "Live preview of the embed (scrolls)" }, preview),
   );
   bar.after(node);
   refresh();

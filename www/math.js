@@ -503,7 +503,24 @@ function refit(term) {
       per = Math.max(1, Math.min(per - 1, Math.floor(per * 0.8)));
     }
   }
+  // a long left-hand side and its first relation: they may part
+  const at = firstRelation(tex);
+  if (at > 0) {
+    const line = lineNode([tex.slice(0, at).trim(), ...termsOf(tex.slice(at).trim())]);
+    line.classList.add("formula-refit");
+    term.replaceWith(line);
+    return line;
+  }
   return null;
+}
+
+/** Where the first top-level relation ("=", \approx) of a term stands, or -1. */
+function firstRelation(tex) {
+  let at = -1;
+  scan(tex, (i, t, depth, paren) => {
+    if (at < 0 && paren === 0 && (t.ch === "=" || (t.cmd && RELATION_COMMANDS.includes(t.cmd)))) at = i;
+  });
+  return at;
 }
 
 /** A table as one line per data row: its first cell, then "header = cell" for the others. */
