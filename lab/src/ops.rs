@@ -104,36 +104,32 @@ pub fn filter_image(
     Ok(Layer::from_grid(kernel_name, &f.output, f.region, signed))
 }
 
-/// The 3×3 mean and median of an 8-bit image by `filter::fast` (tied to
-/// `filter::correlate` / `filter::median` at every pixel by the core's
-/// tests/web_fast.rs); `None` for other kernels or images, which take the
-/// reference path.
+/// The 3×3 median of an 8-bit image by `filter::fast` (tied to
+/// `filter::median` at every pixel by the core's tests/web_fast.rs; integer
+/// values, so exactly the worked example's numbers); `None` for other
+/// kernels or images, which take the reference path. (The fast 3×3 mean
+/// writes f32, as the benchmark's contract asks; the lab's layers and the
+/// worked examples are f64, so the mean stays on the reference path here.)
 fn fast_filter(img: &Grid, kernel_name: &str, border: Border) -> Result<Option<Layer>> {
     use photogrammetry_playground::raster::Gray;
     let (w, h) = (img.width(), img.height());
     let (Some(bytes), Some(region)) = (
-        matches!(kernel_name, "mean" | "median")
-            .then(|| img.to_u8())
-            .flatten(),
+        (kernel_name == "median").then(|| img.to_u8()).flatten(),
         filter::output_region(w, h, 1, 1, border),
     ) else {
         return Ok(None);
     };
     let g = Gray::new("image", &bytes, w, h)?;
-    let mut full = vec![0f32; w * h];
-    if kernel_name == "mean" {
-        filter::fast::mean3(g, border, &mut full)?;
-    } else {
-        let mut out = vec![0u8; w * h];
-        filter::fast::median3(g, border, &mut out)?;
-        full = out.iter().map(|&v| f32::from(v)).collect();
-    }
+    let mut out = vec![0u8; w * h];
+    filter::fast::median3(g, border, &mut out)?;
     let data = (region.r0..region.r0 + region.height)
         .flat_map(|r| {
             let start = r * w + region.c0;
-            full.get(start..start + region.width)
+            out.get(start..start + region.width)
                 .unwrap_or(&[])
-                .to_vec()
+                .iter()
+                .map(|&v| f64::from(v))
+                .collect::<Vec<f64>>()
         })
         .collect();
     Ok(Some(Layer {
