@@ -7,7 +7,7 @@
 use crate::decode;
 use crate::ops::{self, Layer, Point, Rect};
 use crate::sample;
-use js_sys::{Array, Float64Array, Object, Reflect};
+use js_sys::{Array, Float32Array, Float64Array, Object, Reflect};
 use photogrammetry_playground::error::Error;
 use photogrammetry_playground::filter;
 use photogrammetry_playground::matching::{Model, Status};
