@@ -10,25 +10,25 @@ const BORDERS = [["replicate", "replicate the edge"], ["reflect", "reflect at th
 const KERNELS = [
   ["mean", "3×3 mean (1/9)"], ["weighted-mean", "3×3 weighted mean (1/10)"], ["gaussian-3", "3×3 Gaussian (1/16)"],
   ["gaussian-5", "5×5 Gaussian (1/256)"], ["laplacian-4", "Laplacian, 4 neighbours"], ["laplacian-8", "Laplacian, 8 neighbours"],
-  ["log", "Laplacian of Gaussian (5×5)"], ["sharpen", "Sharpening (seed 004)"], ["high-pass", "High-pass (seed 004)"], ["median", "3×3 median"],
+  ["log", "Laplacian of Gaussian (5×5)"], ["sharpen", "Sharpening (Lecture 7)"], ["high-pass", "High-pass (Lecture 7)"], ["median", "3×3 median"],
 ];
 
-function select(id, label, options, value) {
+export function select(id, label, options, value) {
   const s = el("select", { id }, options.map(([v, t]) => el("option", { value: v }, t)));
   s.value = value;
   return [s, el("label", {}, `${label} `, s)];
 }
 
-function number(id, label, value, attrs = {}) {
+export function number(id, label, value, attrs = {}) {
   const i = el("input", { id, type: "number", value: String(value), step: "any", ...attrs });
   return [i, el("label", {}, `${label} `, i)];
 }
 
-function runButton(text = "Run") {
+export function runButton(text = "Run") {
   return el("button", { type: "button", class: "lab-run", id: "lab-run" }, text);
 }
 
-function needImage(lab) {
+export function needImage(lab) {
   if (!lab.image) {
     lab.showError("Open a photo first (a sample or your own file).");
     return false;

@@ -4,29 +4,7 @@
 import { el } from "../dom.js";
 import { Viewer, fmt } from "./view.js";
 import * as X from "./explain.js";
-
-function select(id, label, options, value) {
-  const s = el("select", { id }, options.map(([v, t]) => el("option", { value: v }, t)));
-  s.value = value;
-  return [s, el("label", {}, `${label} `, s)];
-}
-
-function number(id, label, value, attrs = {}) {
-  const i = el("input", { id, type: "number", value: String(value), step: "any", ...attrs });
-  return [i, el("label", {}, `${label} `, i)];
-}
-
-function runButton(text = "Run") {
-  return el("button", { type: "button", class: "lab-run", id: "lab-run" }, text);
-}
-
-function needImage(lab) {
-  if (!lab.image) {
-    lab.showError("Open a photo first (a sample or your own file).");
-    return false;
-  }
-  return true;
-}
+import { needImage, number, runButton, select } from "./families.js";
 
 function link(l, text) {
   return el("a", { href: `index.html${l.hash}`, "data-key": l.key }, text);
