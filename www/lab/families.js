@@ -90,7 +90,7 @@ const edges = {
     const [border, borderLabel] = select("lab-border", "Border", BORDERS, "replicate");
     const run = runButton();
     box.append(opLabel, " ", borderLabel, " ", run,
-      el("p", { class: "muted" }, "gx = top row minus bottom row, gy = right column minus left (the seed's kernels, applied as written); direction = atan2(gy, gx) in degrees."));
+      el("p", { class: "muted" }, "gx = top row minus bottom row, gy = right column minus left (the course's kernels, applied as written); direction = atan2(gy, gx) in degrees."));
     let used = null;
     run.addEventListener("click", async () => {
       if (!needImage(lab)) return;
@@ -139,8 +139,8 @@ const interest = {
       if (!f && Number(size.value) === 5) size.value = "4";
       if (f && Number(size.value) === 4) size.value = "5";
       note.textContent = f
-        ? `Seed 003's rule: keep pixels whose error ellipse has λmax(Σuv) ≤ T² (and q ≥ the roundness), then the best in each window. Ellipses drawn ${ELLIPSE_MAGNIFY}× enlarged.`
-        : "Seed 000's rule: keep pixels whose mean of squared differences exceeds the threshold, then the largest in each window.";
+        ? `Lecture 21's rule: keep pixels whose error ellipse has λmax(Σuv) ≤ T² (and q ≥ the roundness), then the best in each window. Ellipses drawn ${ELLIPSE_MAGNIFY}× enlarged.`
+        : "The worked examples' rule (Example 14): keep pixels whose mean of squared differences exceeds the threshold, then the largest in each window.";
     };
     op.addEventListener("change", sync);
     sync();

@@ -149,7 +149,7 @@ const resampling = {
       run.hidden = !rot;
       clicks = [];
       hint.textContent = rot
-        ? "Nearest neighbour, bilinear and bicubic (seed 004's cubic convolution) side by side on the same zoomed crop. Click a result pixel to see its 4×4 neighbourhood in the worked example."
+        ? "Nearest neighbour, bilinear and bicubic (Lecture 7's cubic convolution) side by side on the same zoomed crop. Click a result pixel to see its 4×4 neighbourhood in the worked example."
         : "Click four points of a quadrilateral on the photo: top-left, top-right, bottom-right, bottom-left. They are mapped to a 256 × 256 square by the projective model of the 004 table.";
     };
     kind.addEventListener("change", sync);
