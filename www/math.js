@@ -192,6 +192,14 @@ function termsOf(piece) {
         start = i;
       }
       seenRelation = true;
+    } else if (t.cmd === "," && paren === 0 && i > start && /^\\,\s*\\(sqrt|frac|tfrac|dfrac|left|bigl|Bigl)/.test(piece.slice(i))) {
+      // factors set apart by a thin space ("√a\,√b"): a place to break (not "6\,367", a digit group)
+      cut(i);
+      start = i + t.length;
+    } else if ((t.cmd === "times" || t.cmd === "cdot") && paren === 0 && i > start) {
+      // a long product: "= 0.9996 × 6 367 449.1 × 0.0254…" may break before each ×
+      cut(i);
+      start = i;
     } else if (t.cmd === ";" && paren === 0) {
       cut(i);
       start = i + t.length;

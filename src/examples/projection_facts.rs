@@ -197,7 +197,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         .formula(
             r"\max_{\Delta\lambda\in\{0, 1.5^\circ, 3^\circ\}} \left|(x, y)_{\text{WGS 84}} - (x, y)_{\text{GRS 80}}\right|",
             format!(
-                r"{}\ \text{{mm}}\quad(\text{{anywhere from }}80^\circ\text{{S to }}84^\circ\text{{N: }}{}\ \text{{mm}})",
+                r"{}\ \text{{mm}}\quad\text{{anywhere from }}80^\circ\text{{S to }}84^\circ\text{{N:}}\;{}\ \text{{mm}}",
                 fmt_sig(wg * 1000.0, 4),
                 fmt_sig(wg_all * 1000.0, 4)
             ),

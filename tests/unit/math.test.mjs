@@ -35,6 +35,12 @@ describe("splitTerms: sums, lists and rows", () => {
     const { lines } = splitTerms(String.raw`\begin{gathered}\sigma_a = 0.0099 \sqrt{0.1} = 0.003 \\ \Delta(1) = (1,0),\ \Delta(2) = (1,-1)\end{gathered}`);
     assert.deepEqual(lines, [[String.raw`\sigma_a = 0.0099 \sqrt{0.1}`, "= 0.003"], [String.raw`\Delta(1) = (1,0),`, String.raw`\Delta(2) = (1,-1)`]]);
   });
+  it("a long product breaks before each × or ·", () => {
+    assert.deepEqual(splitTerms(String.raw`= 0.9996 \times 6\,367\,449.1 \times 0.0254`).lines, [["= 0.9996", String.raw`\times 6\,367\,449.1`, String.raw`\times 0.0254`]]);
+  });
+  it("factors set apart by a thin space break; digit groups do not", () => {
+    assert.deepEqual(splitTerms(String.raw`= \sqrt{a}\,\sqrt{b} \times 6\,367`).lines, [[String.raw`= \sqrt{a}`, String.raw`\sqrt{b}`, String.raw`\times 6\,367`]]);
+  });
   it("nothing breaks inside a fraction or a root", () => {
     assert.deepEqual(splitTerms(String.raw`\rho = \frac{a + b}{\sqrt{c + d}}`).lines, [[String.raw`\rho = \frac{a + b}{\sqrt{c + d}}`]]);
   });
