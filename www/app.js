@@ -189,7 +189,7 @@ function buildView(entry) {
   const apiToggle = el("label", { class: "api-toggle", for: `api-names-${id}`, title: "The names course authors use in links and in the JS API" }, apiBox, "Show API names");
   const actions = el("div", { class: "actions" }, resetButton, copyButton, apiToggle, copyStatus);
   // practice mode (www/practice/): fresh numbers for this example
-  actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
+  if (entry.practice !== false) actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
   // the same operator on a whole photo, in the image lab
   if (mode === "full" && LAB_FAMILY[id]) actions.append(el("a", { class: "button lab-try", href: `#/lab?family=${LAB_FAMILY[id]}` }, "Try it on a photo"));
   if (mode === "embed") {

@@ -122,6 +122,8 @@ pub struct EntryInfo {
     pub document: String,
     pub summary: &'static str,
     pub status: &'static str,
+    /// Whether practice mode has a generator for this example.
+    pub practice: bool,
     pub inputs: Vec<FieldInfo>,
 }
 
@@ -137,6 +139,7 @@ pub fn catalog() -> Vec<EntryInfo> {
             document: answers::document(e.source),
             summary: e.summary,
             status: if e.solve.is_some() { "ready" } else { "coming" },
+            practice: crate::practice::spec(e.id).is_ok(),
             inputs: (e.fields)().iter().map(FieldInfo::from).collect(),
         })
         .collect()
