@@ -223,6 +223,11 @@ pub fn specs() -> Vec<Spec> {
     all
 }
 
+/// Whether example `id` has practice variants (for the catalog; no lookup of the catalog itself).
+pub fn has(id: &str) -> bool {
+    specs().iter().any(|s| s.id == id)
+}
+
 pub fn spec(id: &str) -> Result<Spec> {
     // Unknown ids get the catalog's own message.
     let known = examples::catalog().iter().any(|e| e.id == id);
