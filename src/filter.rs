@@ -179,6 +179,28 @@ pub fn high_pass() -> Kernel {
     Kernel::literal([[-1, -1, -1], [-1, 8, -1], [-1, -1, -1]], 9.0)
 }
 
+/// A kernel of the course by its name in `filter-window` and the lab
+/// (`mean`, `weighted-mean`, `gaussian-3`, `gaussian-5`, `laplacian-4`,
+/// `laplacian-8`, `laplacian-004`, `log`, `sharpen`, `high-pass`):
+/// `Some(Some(k))`; `Some(None)` for `median` (no kernel); `None` for any
+/// other name (`custom` is built by the caller from its own inputs).
+pub fn by_name(name: &str) -> Option<Option<Kernel>> {
+    Some(Some(match name {
+        "mean" => mean3(),
+        "weighted-mean" => weighted_mean(),
+        "gaussian-3" => gaussian3(),
+        "gaussian-5" => gaussian5(),
+        "laplacian-4" => laplacian4(),
+        "laplacian-8" => laplacian8(),
+        "laplacian-004" => laplacian_seed004_printed(),
+        "log" => log5(),
+        "sharpen" => sharpen(),
+        "high-pass" => high_pass(),
+        "median" => return Some(None),
+        _ => return None,
+    }))
+}
+
 /// Seed 000's `pk_x = [1 1 1; 0 0 0; −1 −1 −1]` (top row minus bottom row).
 pub fn prewitt_x() -> Kernel {
     Kernel::literal([[1, 1, 1], [0, 0, 0], [-1, -1, -1]], 1.0)

@@ -65,18 +65,10 @@ pub fn border(name: &str) -> Result<Border> {
 
 /// A kernel by the `filter-window` example's names (`None` for `median`).
 pub fn kernel(name: &str, custom: Option<(&[Vec<f64>], f64)>) -> Result<Option<Kernel>> {
+    if let Some(k) = filter::by_name(name) {
+        return Ok(k);
+    }
     Ok(Some(match name {
-        "mean" => filter::mean3(),
-        "weighted-mean" => filter::weighted_mean(),
-        "gaussian-3" => filter::gaussian3(),
-        "gaussian-5" => filter::gaussian5(),
-        "laplacian-4" => filter::laplacian4(),
-        "laplacian-8" => filter::laplacian8(),
-        "laplacian-004" => filter::laplacian_seed004_printed(),
-        "log" => filter::log5(),
-        "sharpen" => filter::sharpen(),
-        "high-pass" => filter::high_pass(),
-        "median" => return Ok(None),
         "custom" => match custom {
             Some((rows, d)) => Kernel::new("custom_kernel", rows, d)?,
             None => return Err(Error::input("custom_kernel", "is missing")),

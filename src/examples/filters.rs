@@ -248,18 +248,10 @@ fn border_of(name: &str) -> Result<Border> {
 
 /// The named kernel (`None` for the median).
 fn named_kernel(name: &str, inputs: &Record) -> Result<Option<Kernel>> {
+    if let Some(k) = filter::by_name(name) {
+        return Ok(k);
+    }
     Ok(Some(match name {
-        "mean" => filter::mean3(),
-        "weighted-mean" => filter::weighted_mean(),
-        "gaussian-3" => filter::gaussian3(),
-        "gaussian-5" => filter::gaussian5(),
-        "laplacian-4" => filter::laplacian4(),
-        "laplacian-8" => filter::laplacian8(),
-        "laplacian-004" => filter::laplacian_seed004_printed(),
-        "log" => filter::log5(),
-        "sharpen" => filter::sharpen(),
-        "high-pass" => filter::high_pass(),
-        "median" => return Ok(None),
         "custom" => {
             let k = rows(inputs, "custom_kernel")?;
             let (h, w) = (k.len(), k.first().map_or(0, Vec::len));
