@@ -8,11 +8,11 @@
 // history.replaceState. Nothing read from the URL is ever parsed as HTML.
 
 import { loadCore, messageOf } from "./core.js";
-import { fitFormulas, keepFitted, loadMath } from "./math.js";
+import { keepFitted, loadMath } from "./math.js";
 import { buildHash, parseHash } from "./url.js";
 import { el } from "./dom.js";
 import { buildForm } from "./form.js";
-import { renderAnswer, renderNotes, renderResult, renderSteps } from "./render.js";
+import { renderAnswer, renderNotes, renderResult, updateSteps } from "./render.js";
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
@@ -299,8 +299,7 @@ function renderSolution(solution) {
   const { stepsList, resultBody, notesBody, answerLine } = view.parts;
   answerLine.replaceChildren(...renderAnswer(solution));
   answerLine.hidden = !answerLine.childElementCount;
-  stepsList.replaceChildren(renderSteps(solution));
-  fitFormulas(stepsList);
+  updateSteps(stepsList, solution); // in place: only the formulas that changed are rendered and fitted again
   resultBody.replaceChildren(...renderResult(solution));
   notesBody.replaceChildren(...renderNotes(solution));
   if (view.figure) view.figure.update(solution);
