@@ -464,6 +464,11 @@ const summary = [
 ];
 console.log("");
 for (const s of summary) console.log(s);
+// what the heaviest critical path holds, largest first
+console.log(`\nThe critical path of ${maxBytes.id} (gzip -9 of the dist/ file; fonts and HTML apart):`);
+for (const f of maxBytes.files.filter((x) => x.critical && ["wasm", "js", "css"].includes(x.kind)).sort((a, b) => b.gz - a.gz)) {
+  console.log(`  ${KB(f.gz).padStart(7)} KB  (raw ${KB(f.raw).padStart(7)} KB)  ${f.kind.padEnd(4)} ${f.path}`);
+}
 
 if (jsonFile) {
   fs.writeFileSync(
