@@ -314,7 +314,9 @@ const t0 = Date.now();
 try {
   const all = await catalog();
   if (!all.length) throw new Error("the page's catalog lists no ready example");
-  examples = wanted.length ? wanted.map((id) => all.find((e) => e.id === id) ?? { id, topic: "?" }) : all;
+  const unknown = wanted.filter((id) => !all.some((e) => e.id === id));
+  if (unknown.length) throw new Error(`not in the page's catalog: ${unknown.join(", ")} (it has ${all.map((e) => e.id).join(", ")})`);
+  examples = wanted.length ? wanted.map((id) => all.find((e) => e.id === id)) : all;
   for (const e of examples) results[e.id] = { id: e.id, topic: e.topic, nav: [] };
   const origin = new URL(server.url).origin;
   console.log(`bench-load: ${examples.length} example(s), ${runs} cold loads each (+ floor), throttled: ${throttledSet}, redraw: ${doRedraw ? redraws : "off"}`);
