@@ -7,7 +7,7 @@
 // are drawn as matrices.
 
 import { el } from "./dom.js";
-import { renderFormula } from "./math.js";
+import { fitFormulas, renderFormula } from "./math.js";
 import { agreesWithPrinted, formatDecimals, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
 
 /** Note kinds with their own badge style; any other kind gets the neutral one. */
@@ -41,18 +41,95 @@ export const WORDS = Object.freeze({
   difference: "Difference (exact − printed)",
 });
 
+/** One step as a list item. */
+function stepItem(step, k) {
+  const item = el("li", { class: "step", id: `step-${k + 1}` }, el("h4", { class: "step-title" }, step.title ?? ""));
+  if (step.text) item.append(el("p", { class: "step-text" }, step.text));
+  if (step.formula) item.append(renderFormula(step.formula, "formula formula-symbolic"));
+  if (step.substituted) item.append(renderFormula(step.substituted, "formula formula-substituted"));
+  return item;
+}
+
 /** The steps as an ordered list. */
 export function renderSteps(solution) {
   const list = el("ol", { class: "steps" });
-  (solution.steps ?? []).forEach((step, k) => {
-    const item = el("li", { class: "step", id: `step-${k + 1}` }, el("h4", { class: "step-title" }, step.title ?? ""));
-    if (step.text) item.append(el("p", { class: "step-text" }, step.text));
-    if (step.formula) item.append(renderFormula(step.formula, "formula formula-symbolic"));
-    if (step.substituted) item.append(renderFormula(step.substituted, "formula formula-substituted"));
-    list.append(item);
-  });
+  (solution.steps ?? []).forEach((step, k) => list.append(stepItem(step, k)));
   if (!list.childElementCount) list.append(el("li", { class: "step" }, "This solution has no steps."));
   return list;
+}
+
+/** The steps each list of updateSteps shows, by list. */
+const shownSteps = new WeakMap();
+
+/** What a step's item holds, in order: [class, text or TeX] of its children. */
+function stepParts(step) {
+  const parts = [["step-title", step.title ?? ""]];
+  if (step.text) parts.push(["step-text", step.text]);
+  if (step.formula) parts.push(["formula formula-symbolic", String(step.formula)]);
+  if (step.substituted) parts.push(["formula formula-substituted", String(step.substituted)]);
+  return parts;
+}
+
+/**
+ * Shows `solution`'s steps in `container` as renderSteps and fitFormulas
+ * would, fast after an input change: a list shown before is updated in place,
+ * and only what changed is built again (a formula whose TeX is the same stays
+ * as it was rendered and fitted, so KaTeX and the layout redo only the new
+ * ones). Items another module reshaped (the embed's folded steps) are built
+ * again whole.
+ * @param {Element} container
+ * @param {object} solution
+ */
+export function updateSteps(container, solution) {
+  const steps = solution.steps ?? [];
+  const list = container.firstElementChild;
+  const before = list && container.childElementCount === 1 ? shownSteps.get(list) : undefined;
+  if (!before || !steps.length) {
+    const fresh = renderSteps(solution);
+    container.replaceChildren(fresh);
+    fitFormulas(container);
+    shownSteps.set(fresh, steps.map(stepParts));
+    return;
+  }
+  const items = [...list.children];
+  const fresh = []; // new formula elements, to fit once in the page
+  const rebuilt = [];
+  const now = steps.map((step, k) => {
+    const parts = stepParts(step);
+    const item = items[k];
+    const old = before[k];
+    const plain = item && old && item.childElementCount === old.length && [...item.children].every((c, i) => c.className === old[i][0]);
+    if (!plain || old.length !== parts.length || parts.some(([cls], i) => cls !== old[i][0])) {
+      const next = stepItem(step, k);
+      if (item) item.replaceWith(next);
+      else list.append(next);
+      rebuilt.push(next);
+      return parts;
+    }
+    parts.forEach(([cls, content], i) => {
+      if (content === old[i][1]) return;
+      const child = item.children[i];
+      if (cls.startsWith("formula")) {
+        const node = renderFormula(content, cls);
+        child.replaceWith(node);
+        fresh.push(node);
+      } else {
+        child.textContent = content;
+      }
+    });
+    return parts;
+  });
+  for (const extra of items.slice(steps.length)) extra.remove();
+  shownSteps.set(list, now);
+  rebuilt.forEach(fitFormulas);
+  // fitFormulas fits every formula below a root: the kept ones are fitted already
+  for (const item of new Set(fresh.map((f) => f.parentElement))) {
+    const kept = [...item.querySelectorAll(".formula[data-tex]")].filter((f) => !fresh.includes(f));
+    const tex = kept.map((f) => f.getAttribute("data-tex"));
+    kept.forEach((f) => f.removeAttribute("data-tex"));
+    fitFormulas(item);
+    kept.forEach((f, i) => f.setAttribute("data-tex", tex[i]));
+  }
 }
 
 /** The label of a key: { label, unit } from the solution, or the key itself. */

@@ -708,33 +708,57 @@ function quadricData(solution) {
   };
 }
 
-/** Marching squares: the segments of the level `level` of f sampled on an n×n grid. */
-function isoSegments(f, x0, x1, y0, y1, n, level) {
-  const segs = [];
-  const gx = (i) => x0 + ((x1 - x0) * i) / n;
-  const gy = (j) => y0 + ((y1 - y0) * j) / n;
-  const v = [];
-  for (let j = 0; j <= n; j += 1) v.push(Array.from({ length: n + 1 }, (_, i) => f(gx(i), gy(j)) - level));
+/** f sampled on an (n+1)×(n+1) grid over [x0, x1]×[y0, y1]: { n, gx, gy, v } (v row by row, y outer). */
+function sampleGrid(f, x0, x1, y0, y1, n) {
+  const gx = new Float64Array(n + 1);
+  const gy = new Float64Array(n + 1);
+  for (let i = 0; i <= n; i += 1) gx[i] = x0 + ((x1 - x0) * i) / n;
+  for (let j = 0; j <= n; j += 1) gy[j] = y0 + ((y1 - y0) * j) / n;
+  const v = new Float64Array((n + 1) * (n + 1));
+  for (let j = 0; j <= n; j += 1) for (let i = 0; i <= n; i += 1) v[j * (n + 1) + i] = f(gx[i], gy[j]);
+  return { n, gx, gy, v };
+}
+
+/**
+ * Marching squares on a sampled grid: calls segment(xa, ya, xb, yb) for each
+ * segment of the level `level`, cell by cell (rows outer), edges in the order
+ * bottom, right, top, left of the cell's corners.
+ */
+function isoSegments(grid, level, segment) {
+  const { n, gx, gy, v } = grid;
+  const xs = [0, 0, 0, 0];
+  const ys = [0, 0, 0, 0];
+  const fs = [0, 0, 0, 0];
+  const px = [0, 0, 0, 0];
+  const py = [0, 0, 0, 0];
   const lerp = (a, b, fa, fb) => a + ((b - a) * fa) / (fa - fb);
   for (let j = 0; j < n; j += 1) {
     for (let i = 0; i < n; i += 1) {
-      const corners = [
-        [gx(i), gy(j), v[j][i]],
-        [gx(i + 1), gy(j), v[j][i + 1]],
-        [gx(i + 1), gy(j + 1), v[j + 1][i + 1]],
-        [gx(i), gy(j + 1), v[j + 1][i]],
-      ];
-      const pts = [];
+      xs[0] = gx[i];
+      ys[0] = gy[j];
+      fs[0] = v[j * (n + 1) + i] - level;
+      xs[1] = gx[i + 1];
+      ys[1] = gy[j];
+      fs[1] = v[j * (n + 1) + i + 1] - level;
+      xs[2] = gx[i + 1];
+      ys[2] = gy[j + 1];
+      fs[2] = v[(j + 1) * (n + 1) + i + 1] - level;
+      xs[3] = gx[i];
+      ys[3] = gy[j + 1];
+      fs[3] = v[(j + 1) * (n + 1) + i] - level;
+      let k = 0;
       for (let e = 0; e < 4; e += 1) {
-        const [xa, ya, fa] = corners[e];
-        const [xb, yb, fb] = corners[(e + 1) % 4];
-        if ((fa < 0) !== (fb < 0)) pts.push([lerp(xa, xb, fa, fb), lerp(ya, yb, fa, fb)]);
+        const b = (e + 1) % 4;
+        if ((fs[e] < 0) !== (fs[b] < 0)) {
+          px[k] = lerp(xs[e], xs[b], fs[e], fs[b]);
+          py[k] = lerp(ys[e], ys[b], fs[e], fs[b]);
+          k += 1;
+        }
       }
-      if (pts.length === 2) segs.push(pts);
-      if (pts.length === 4) segs.push([pts[0], pts[1]], [pts[2], pts[3]]);
+      if (k === 2 || k === 4) segment(px[0], py[0], px[1], py[1]);
+      if (k === 4) segment(px[2], py[2], px[3], py[3]);
     }
   }
-  return segs;
 }
 
 function drawQuadric(ctx, width, height, solution) {
@@ -773,14 +797,16 @@ function drawQuadric(ctx, width, height, solution) {
   ctx.save();
   ctx.strokeStyle = COLORS.ink;
   ctx.lineWidth = 1;
+  const grid = sampleGrid(f, c0, c1, r0, r1, 60); // once for every level
+  const segment = (xa, ya, xb, yb) => {
+    ctx.moveTo(X(xa), Y(ya));
+    ctx.lineTo(X(xb), Y(yb));
+  };
   for (let k = 1; k < levels; k += 1) {
     const level = lo + ((hi - lo) * k) / levels;
     ctx.globalAlpha = 0.35 + (0.6 * k) / levels;
     ctx.beginPath();
-    for (const [[xa, ya], [xb, yb]] of isoSegments(f, c0, c1, r0, r1, 60, level)) {
-      ctx.moveTo(X(xa), Y(ya));
-      ctx.lineTo(X(xb), Y(yb));
-    }
+    isoSegments(grid, level, segment);
     ctx.stroke();
   }
   ctx.restore();

@@ -488,10 +488,14 @@ const imageSpec = {
     const L = imageLayout(width, img);
     const X = (c) => L.x0 + c * L.cell; // c zero-based, left edge of the pixel
     const Y = (rr) => L.y0 + rr * L.cell;
+    let shade = -1; // the pattern is mostly flat: set (and parse) a colour only when it changes
     for (let rr = 0; rr < L.side; rr++) {
       for (let c = 0; c < L.side; c++) {
         const g = Math.max(0, Math.min(255, Math.round(img[rr][c])));
-        ctx.fillStyle = `rgb(${g},${g},${g})`;
+        if (g !== shade) {
+          ctx.fillStyle = `rgb(${g},${g},${g})`;
+          shade = g;
+        }
         ctx.fillRect(X(c), Y(rr), L.cell + 0.5, L.cell + 0.5);
       }
     }

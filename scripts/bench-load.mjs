@@ -1,0 +1,481 @@
+// The numbers that matter to a student opening an example (a benchmark, not a
+// test; docs/BENCH-LOAD.md says how to read them). For every example of the
+// catalog (its ids read from the page's own catalog, not from a list here):
+//
+//  1. bytes: the wasm, JS and CSS the browser requested before the page's
+//     `first-solution` mark (the critical path) and in all after network idle,
+//     gzip -9 of the file in dist/ (fonts and HTML apart); what the server
+//     really sent (resource timing's encodedBodySize) beside it;
+//  2. navigation → `first-solution`, cold (a new browser context each load,
+//     service workers blocked), beside a FLOOR page from the same run (one tiny
+//     ES module instantiating a hand-assembled 41-byte wasm and writing one
+//     number), and their ratio;
+//  3. the same under a throttled phone profile (Chrome DevTools Protocol: CPU
+//     4× slower, 1.6 Mbit/s down, 750 kbit/s up, 150 ms latency);
+//  4. an input change → the figure redrawn (the page's `redraw` measure, see
+//     measureRedraw in www/app.js), median and worst of 15 changes;
+//  5. the image lab's size, and that no example requested any of it.
+//
+// The measurement depends on no file name: it sees what the browser requests.
+//
+//   node scripts/bench-load.mjs [--quick] [--example ID ...] [--runs 9]
+//     [--throttled-runs 5] [--throttled topics|all|none] [--redraws 15]
+//     [--no-redraw] [--json FILE]
+import { chromium } from "playwright-core";
+import fs from "node:fs";
+import os from "node:os";
+import path from "node:path";
+import zlib from "node:zlib";
+import { startServer } from "./serve.mjs";
+
+const AIM_KB = 150;
+const AIM_RATIO = 2;
+const AIM_THROTTLED_MS = 2500;
+const AIM_REDRAW_MS = 16;
+const QUICK = ["gsd", "ncc-2d"];
+
+const args = process.argv.slice(2);
+const arg = (name, dflt) => {
+  const i = args.indexOf(name);
+  return i >= 0 && i + 1 < args.length ? args[i + 1] : dflt;
+};
+const DIST = arg("--dist", "dist");
+const argsAll = (name) => args.flatMap((a, i) => (a === name && i + 1 < args.length ? [args[i + 1]] : []));
+const runs = Math.max(1, Number(arg("--runs", 9)));
+const throttledRuns = Math.max(1, Number(arg("--throttled-runs", 5)));
+const throttledSet = arg("--throttled", "topics"); // topics: the heaviest example of each topic
+const redraws = Math.max(1, Number(arg("--redraws", 15)));
+const doRedraw = !args.includes("--no-redraw");
+const jsonFile = arg("--json", null);
+const wanted = args.includes("--quick") ? QUICK : argsAll("--example");
+
+if (!fs.existsSync(path.join(DIST, "index.html"))) {
+  console.error("bench-load: dist/index.html is missing; run `SKIP_SETUP=1 bash scripts/build.sh` first");
+  process.exit(1);
+}
+
+// ---------------------------------------------------------------------------
+// The floor page: generated into a temp dir (never in dist/), served by the
+// same server code (scripts/serve.mjs) in the same process.
+
+// (module (func (export "add") (param i32 i32) (result i32) local.get 0 local.get 1 i32.add))
+const ADD_WASM = Uint8Array.from([
+  0x00, 0x61, 0x73, 0x6d, 0x01, 0x00, 0x00, 0x00, // magic, version
+  0x01, 0x07, 0x01, 0x60, 0x02, 0x7f, 0x7f, 0x01, 0x7f, // type: (i32 i32) -> i32
+  0x03, 0x02, 0x01, 0x00, // function 0 has type 0
+  0x07, 0x07, 0x01, 0x03, 0x61, 0x64, 0x64, 0x00, 0x00, // export "add" = func 0
+  0x0a, 0x09, 0x01, 0x07, 0x00, 0x20, 0x00, 0x20, 0x01, 0x6a, 0x0b, // local.get 0, local.get 1, i32.add
+]);
+const floorDir = fs.mkdtempSync(path.join(os.tmpdir(), "bench-floor-"));
+fs.writeFileSync(path.join(floorDir, "add.wasm"), ADD_WASM);
+fs.writeFileSync(
+  path.join(floorDir, "floor.js"),
+  `const { instance } = await WebAssembly.instantiateStreaming(fetch("./add.wasm"));
+document.getElementById("out").textContent = String(instance.exports.add(40, 2));
+performance.mark("first-solution");
+`,
+);
+fs.writeFileSync(
+  path.join(floorDir, "index.html"),
+  `<!doctype html><html lang="en"><head><meta charset="utf-8"><meta name="viewport" content="width=device-width, initial-scale=1"><title>floor</title>
+<script type="module" src="./floor.js"></script></head><body><p id="out">…</p></body></html>
+`,
+);
+
+// ---------------------------------------------------------------------------
+
+const server = await startServer({ dir: DIST, port: 0 });
+const floorServer = await startServer({ dir: floorDir, port: 0 });
+const browser = await chromium.launch({
+  executablePath: "/usr/bin/chromium",
+  args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+    "--disable-background-networking", "--disable-component-update", "--disable-sync"],
+});
+const DESKTOP = { viewport: { width: 1280, height: 900 }, serviceWorkers: "block" };
+const PHONE = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true, serviceWorkers: "block" };
+const THROTTLE = { cpu: 4, latency: 150, down: 1.6e6 / 8, up: 750e3 / 8 };
+
+const kindOf = (p) => {
+  if (/\.(woff2?|ttf|otf)$/.test(p)) return "font";
+  if (/\.wasm$/.test(p)) return "wasm";
+  if (/\.m?js$/.test(p)) return "js";
+  if (/\.css$/.test(p)) return "css";
+  if (/\.html?$/.test(p) || p.endsWith("/")) return "html";
+  return "other";
+};
+const gzCache = new Map();
+/** gzip -9 and raw size of the dist/ file behind a URL path (null when dist/ has none). */
+function distSize(pathname) {
+  if (!gzCache.has(pathname)) {
+    const file = path.join(DIST, pathname.endsWith("/") ? `${pathname}index.html` : pathname);
+    let v = null;
+    try {
+      const raw = fs.readFileSync(file);
+      v = { raw: raw.length, gz: zlib.gzipSync(raw, { level: 9 }).length };
+    } catch {
+      v = null;
+    }
+    gzCache.set(pathname, v);
+  }
+  return gzCache.get(pathname);
+}
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  if (!s.length) return NaN;
+  const m = Math.floor(s.length / 2);
+  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+};
+const stats = (xs) => ({ median: median(xs), min: Math.min(...xs), max: Math.max(...xs), n: xs.length });
+
+/** One cold load (new context) of `url`; returns the mark's time and the requests (resource timing). */
+async function coldLoad(url, { phone = false, throttle = false, details = false } = {}) {
+  const context = await browser.newContext(phone ? PHONE : DESKTOP);
+  try {
+    const page = await context.newPage();
+    if (throttle) {
+      const cdp = await page.context().newCDPSession(page);
+      await cdp.send("Emulation.setCPUThrottlingRate", { rate: THROTTLE.cpu });
+      await cdp.send("Network.enable");
+      await cdp.send("Network.emulateNetworkConditions", {
+        offline: false,
+        latency: THROTTLE.latency,
+        downloadThroughput: THROTTLE.down,
+        uploadThroughput: THROTTLE.up,
+      });
+    }
+    const requested = [];
+    if (details) {
+      await page.addInitScript(() => performance.setResourceTimingBufferSize(2000));
+      page.on("request", (r) => requested.push(r.url()));
+    }
+    await page.goto(url, { waitUntil: "commit" });
+    await page.waitForFunction(() => performance.getEntriesByName("first-solution").length > 0, null, { timeout: 60000 });
+    const mark = await page.evaluate(() => performance.getEntriesByName("first-solution")[0].startTime);
+    if (!details) return { ms: mark };
+    await page.waitForLoadState("networkidle");
+    const status = await page.evaluate(() => document.body.dataset.status);
+    const resources = await page.evaluate(() =>
+      performance.getEntriesByType("resource").map((e) => ({
+        url: e.name,
+        start: e.startTime,
+        end: e.responseEnd,
+        encoded: e.encodedBodySize,
+        decoded: e.decodedBodySize,
+      })),
+    );
+    return { ms: mark, status, resources, requested };
+  } finally {
+    await context.close();
+  }
+}
+
+/** The bytes of one load: critical path (requested before the mark) and total. */
+function bytesOf(load, origin) {
+  const files = [];
+  const seen = new Set();
+  for (const r of load.resources) {
+    const u = new URL(r.url);
+    if (u.origin !== origin) continue;
+    const key = u.pathname;
+    if (seen.has(key)) continue;
+    seen.add(key);
+    const size = distSize(key);
+    files.push({
+      path: key,
+      kind: kindOf(key),
+      critical: r.start < load.ms,
+      start: r.start,
+      gz: size ? size.gz : r.encoded,
+      raw: size ? size.raw : r.decoded,
+      sent: r.encoded,
+      inDist: Boolean(size),
+    });
+  }
+  // requests the page made that resource timing did not list (should be none)
+  for (const url of load.requested) {
+    const u = new URL(url);
+    if (u.origin !== origin || seen.has(u.pathname) || u.pathname === "/" || kindOf(u.pathname) === "html") continue;
+    seen.add(u.pathname);
+    const size = distSize(u.pathname);
+    files.push({ path: u.pathname, kind: kindOf(u.pathname), critical: false, start: NaN, gz: size?.gz ?? 0, raw: size?.raw ?? 0, sent: NaN, inDist: Boolean(size), untimed: true });
+  }
+  const sum = (f, field = "gz") => files.filter(f).reduce((s, x) => s + (Number.isFinite(x[field]) ? x[field] : 0), 0);
+  const code = (x) => ["wasm", "js", "css"].includes(x.kind);
+  return {
+    files,
+    critical: sum((x) => x.critical && code(x)),
+    total: sum(code),
+    criticalSent: sum((x) => x.critical && code(x), "sent"),
+    totalSent: sum(code, "sent"),
+    fonts: sum((x) => x.kind === "font"),
+    other: sum((x) => x.kind === "other"),
+    lab: files.filter((x) => x.path.includes("/lab/")).map((x) => x.path),
+  };
+}
+
+/** The examples in the page's own catalog (ready ones), with their topics. */
+async function catalog() {
+  const context = await browser.newContext(DESKTOP);
+  try {
+    const page = await context.newPage();
+    await page.goto(`${server.url}#/`);
+    await page.waitForFunction(() => document.body.dataset.status === "home", null, { timeout: 60000 });
+    return await page.evaluate(() =>
+      [...document.querySelectorAll("nav.catalog-detailed .catalog-item[data-status=ready]")].map((li) => ({
+        id: li.dataset.id,
+        topic: li.closest("section")?.querySelector("h2")?.textContent ?? "",
+      })),
+    );
+  } finally {
+    await context.close();
+  }
+}
+
+/**
+ * Input → redrawn figure: opens the example, finds a numeric input whose
+ * nearby value solves, and alternates it with the seed's value `count` times,
+ * reading the page's `redraw` measure after each change.
+ */
+async function redrawTimes(id, count) {
+  const context = await browser.newContext(DESKTOP);
+  try {
+    const page = await context.newPage();
+    await page.goto(`${server.url}#/${id}`);
+    await page.waitForFunction(() => performance.getEntriesByName("first-solution").length > 0, null, { timeout: 60000 });
+    await page.waitForLoadState("networkidle");
+    await page.evaluate(() => document.fonts.ready);
+    return await page.evaluate(async (count) => {
+      const measures = [];
+      new PerformanceObserver((list) => measures.push(...list.getEntriesByName("redraw"))).observe({ type: "measure" });
+      const frame = () => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      const change = async (input, text) => {
+        const before = measures.length;
+        input.value = text;
+        input.dispatchEvent(new Event("input", { bubbles: true }));
+        for (let i = 0; i < 100 && measures.length === before; i++) await frame();
+        const m = measures[measures.length - 1];
+        return measures.length > before ? { ms: m.duration, js: m.detail?.js, frame: m.detail?.frame, ok: document.body.dataset.status === "ok" } : null;
+      };
+      // the numeric inputs first (number, integer), then one number inside a vector, matrix or point list
+      const rank = (w) => (w.classList.contains("field-number") || w.classList.contains("field-integer") ? 0 : 1);
+      const fields = [...document.querySelectorAll(".input-form .field")]
+        .filter((w) => !w.hidden && !w.classList.contains("field-choice") && !w.classList.contains("field-flag"))
+        .sort((a, b) => rank(a) - rank(b))
+        .map((w) => ({ key: w.dataset.key, input: w.querySelector("input[type=text], textarea") }))
+        .filter((f) => f.input && !f.input.disabled && /\d/.test(f.input.value));
+      const near = (token) => {
+        const v = Number(token);
+        if (/^-?\d+$/.test(token)) return [v + 1, v - 1, v + 2].map(String);
+        if (v === 0) return ["0.1", "-0.1", "0.01"];
+        return [v * 1.01, v * 0.99, v + 0.1, v - 0.1].map((x) => String(Number(x.toPrecision(6))));
+      };
+      /** Texts that differ from the seed's in one number (of the first few). */
+      const nearby = (f) => {
+        const text = f.input.value;
+        const out = [];
+        const tokens = [...text.matchAll(/-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?/g)].slice(0, 6);
+        for (const m of tokens) for (const t of near(m[0])) out.push({ text: text.slice(0, m.index) + t + text.slice(m.index + m[0].length), from: m[0], to: t });
+        return out;
+      };
+      const figure = Boolean(document.querySelector(".figure-section canvas"));
+      for (const f of fields) {
+        const seed = f.input.value;
+        for (const { text, from, to } of nearby(f)) {
+          const first = await change(f.input, text);
+          if (!first || !first.ok) {
+            await change(f.input, seed);
+            continue;
+          }
+          const times = [first];
+          for (let i = 1; i < count; i++) {
+            await frame();
+            times.push(await change(f.input, i % 2 ? seed : text));
+          }
+          await change(f.input, seed);
+          return { field: f.key, values: [from, to], figure, times: times.filter(Boolean), allOk: times.every((t) => t && t.ok) };
+        }
+      }
+      return { field: null, figure, times: [], reason: fields.length ? "no nearby value solved" : "no numeric input" };
+    }, count);
+  } finally {
+    await context.close();
+  }
+}
+
+// ---------------------------------------------------------------------------
+
+const results = {};
+let floorDesktop = [];
+let floorThrottled = [];
+let examples = [];
+let lab = null;
+const t0 = Date.now();
+try {
+  const all = await catalog();
+  if (!all.length) throw new Error("the page's catalog lists no ready example");
+  const unknown = wanted.filter((id) => !all.some((e) => e.id === id));
+  if (unknown.length) throw new Error(`not in the page's catalog: ${unknown.join(", ")} (it has ${all.map((e) => e.id).join(", ")})`);
+  examples = wanted.length ? wanted.map((id) => all.find((e) => e.id === id)) : all;
+  for (const e of examples) results[e.id] = { id: e.id, topic: e.topic, nav: [] };
+  const origin = new URL(server.url).origin;
+  console.log(`bench-load: ${examples.length} example(s), ${runs} cold loads each (+ floor), throttled: ${throttledSet}, redraw: ${doRedraw ? redraws : "off"}`);
+
+  // 1 + 2: cold loads, round-robin over the examples, a floor load every 3 examples
+  for (let round = 0; round < runs; round++) {
+    for (let i = 0; i < examples.length; i++) {
+      if (i % 3 === 0) floorDesktop.push((await coldLoad(floorServer.url)).ms);
+      const { id } = examples[i];
+      const load = await coldLoad(`${server.url}#/${id}`, { details: round === 0 });
+      results[id].nav.push(load.ms);
+      if (round === 0) {
+        results[id].status = load.status;
+        results[id].bytes = bytesOf(load, origin);
+      }
+    }
+    process.stdout.write(`  round ${round + 1}/${runs} done (${((Date.now() - t0) / 1000).toFixed(0)} s)\n`);
+  }
+
+  // 3: throttled phone profile
+  if (throttledSet !== "none") {
+    let set = examples;
+    if (throttledSet === "topics") {
+      const byTopic = new Map();
+      for (const e of examples) {
+        const cur = byTopic.get(e.topic);
+        if (!cur || results[e.id].bytes.critical > results[cur.id].bytes.critical) byTopic.set(e.topic, e);
+      }
+      set = [...byTopic.values()];
+    }
+    for (let round = 0; round < throttledRuns; round++) {
+      floorThrottled.push((await coldLoad(floorServer.url, { phone: true, throttle: true })).ms);
+      for (const { id } of set) {
+        (results[id].throttled ??= []).push((await coldLoad(`${server.url}#/${id}`, { phone: true, throttle: true })).ms);
+      }
+      process.stdout.write(`  throttled round ${round + 1}/${throttledRuns} done (${((Date.now() - t0) / 1000).toFixed(0)} s)\n`);
+    }
+  }
+
+  // 4: input → redrawn figure
+  if (doRedraw) {
+    for (const { id } of examples) results[id].redraw = await redrawTimes(id, redraws);
+    process.stdout.write(`  redraws done (${((Date.now() - t0) / 1000).toFixed(0)} s)\n`);
+  }
+} finally {
+  await browser.close();
+  await server.close();
+  await floorServer.close();
+  fs.rmSync(floorDir, { recursive: true, force: true });
+}
+
+// 5: the lab module's size (everything under dist/lab/, sample photos apart)
+{
+  const walk = (dir) => fs.readdirSync(dir, { withFileTypes: true }).flatMap((d) => (d.isDirectory() ? walk(path.join(dir, d.name)) : [path.join(dir, d.name)]));
+  const labDir = path.join(DIST, "lab");
+  if (fs.existsSync(labDir)) {
+    const files = walk(labDir).map((f) => {
+      const raw = fs.readFileSync(f);
+      return { path: "/" + path.relative(DIST, f).split(path.sep).join("/"), raw: raw.length, gz: zlib.gzipSync(raw, { level: 9 }).length };
+    });
+    const photo = (f) => /\.(png|jpe?g|webp|gif|avif)$/i.test(f.path);
+    const mod = files.filter((f) => !photo(f) && !/\.(gz|br)$/.test(f.path));
+    const photos = files.filter(photo);
+    lab = {
+      module_gz: mod.reduce((s, f) => s + f.gz, 0),
+      module_raw: mod.reduce((s, f) => s + f.raw, 0),
+      photos_raw: photos.reduce((s, f) => s + f.raw, 0),
+      photos: photos.length,
+      files: mod.length,
+      requested_by: Object.values(results).filter((r) => r.bytes?.lab.length).map((r) => r.id),
+    };
+  }
+}
+
+// ---------------------------------------------------------------------------
+// 6: one table
+
+const KB = (n) => (Number.isFinite(n) ? (n / 1024).toFixed(1) : "–");
+const MS = (n) => (Number.isFinite(n) ? n.toFixed(0) : "–");
+const floor = stats(floorDesktop);
+const floorT = floorThrottled.length ? stats(floorThrottled) : null;
+const rows = examples.map(({ id, topic }) => {
+  const r = results[id];
+  const nav = stats(r.nav);
+  const th = r.throttled ? stats(r.throttled) : null;
+  const rd = r.redraw?.times?.length ? { ...stats(r.redraw.times.map((t) => t.ms)), js: median(r.redraw.times.map((t) => t.js)), frame: median(r.redraw.times.map((t) => t.frame)) } : null;
+  return {
+    id,
+    topic,
+    status: r.status,
+    critical_gz: r.bytes.critical,
+    total_gz: r.bytes.total,
+    critical_sent: r.bytes.criticalSent,
+    total_sent: r.bytes.totalSent,
+    fonts_gz: r.bytes.fonts,
+    other_gz: r.bytes.other,
+    lab_files: r.bytes.lab,
+    nav_ms: nav,
+    ratio: nav.median / floor.median,
+    throttled_ms: th,
+    redraw_ms: rd,
+    redraw_field: r.redraw?.field ?? null,
+    redraw_values: r.redraw?.values ?? null,
+    redraw_note: r.redraw ? (r.redraw.reason ?? (r.redraw.figure ? "" : "no figure")) : "",
+    files: r.bytes.files,
+  };
+});
+
+const head = ["example", "crit KB gz", "total KB gz", "sent KB", "nav ms med (min–max)", "× floor", "throttled ms", "redraw med/worst ms", "input"];
+const lines = rows.map((r) => [
+  r.id,
+  KB(r.critical_gz),
+  KB(r.total_gz),
+  `${KB(r.critical_sent)}/${KB(r.total_sent)}`,
+  `${MS(r.nav_ms.median)} (${MS(r.nav_ms.min)}–${MS(r.nav_ms.max)})`,
+  r.ratio.toFixed(2),
+  r.throttled_ms ? MS(r.throttled_ms.median) : "",
+  r.redraw_ms ? `${r.redraw_ms.median.toFixed(1)}/${r.redraw_ms.max.toFixed(1)}` : r.redraw_note ? "n/a" : "",
+  r.redraw_field ? `${r.redraw_field} ${r.redraw_values.join("↔")}${r.redraw_note ? ` (${r.redraw_note})` : ""}` : r.redraw_note,
+]);
+const widths = head.map((h, i) => Math.max(h.length, ...lines.map((l) => String(l[i]).length)));
+const fmt = (cells) => cells.map((c, i) => (i === 0 || i === cells.length - 1 ? String(c).padEnd(widths[i]) : String(c).padStart(widths[i]))).join(" | ");
+console.log(`\n${fmt(head)}\n${widths.map((w) => "-".repeat(w)).join("-|-")}`);
+for (const l of lines) console.log(fmt(l));
+
+const maxBy = (f) => rows.reduce((best, r) => (f(r) > f(best) ? r : best), rows[0]);
+const maxBytes = maxBy((r) => r.critical_gz);
+const maxTotal = maxBy((r) => r.total_gz);
+const maxRatio = maxBy((r) => r.ratio);
+const withT = rows.filter((r) => r.throttled_ms);
+const maxT = withT.length ? withT.reduce((b, r) => (r.throttled_ms.median > b.throttled_ms.median ? r : b)) : null;
+const withR = rows.filter((r) => r.redraw_ms);
+const maxR = withR.length ? withR.reduce((b, r) => (r.redraw_ms.median > b.redraw_ms.median ? r : b)) : null;
+const worstR = withR.length ? withR.reduce((b, r) => (r.redraw_ms.max > b.redraw_ms.max ? r : b)) : null;
+const verdict = (ok) => (ok ? "meets the aim" : "OVER the aim");
+const notOk = rows.filter((r) => r.status !== "ok").map((r) => `${r.id} (${r.status})`);
+const summary = [
+  `floor page: median ${MS(floor.median)} ms (min ${MS(floor.min)}, max ${MS(floor.max)}, ${floor.n} cold loads)${floorT ? `; throttled median ${MS(floorT.median)} ms (${floorT.n} loads) — the throttling applies: ${(floorT.median / floor.median).toFixed(1)}× the desktop floor` : ""}`,
+  `largest critical path: ${maxBytes.id} ${KB(maxBytes.critical_gz)} KB gz vs aim ${AIM_KB} KB — ${verdict(maxBytes.critical_gz <= AIM_KB * 1024)}; largest total after network idle: ${maxTotal.id} ${KB(maxTotal.total_gz)} KB gz (fonts apart: ${KB(maxTotal.fonts_gz)} KB)`,
+  `largest ratio to floor: ${maxRatio.id} ${maxRatio.ratio.toFixed(2)}× (${MS(maxRatio.nav_ms.median)} ms) vs aim ${AIM_RATIO}× — ${verdict(maxRatio.ratio <= AIM_RATIO)}`,
+  maxT ? `slowest throttled (${throttledSet === "topics" ? "the heaviest example of each topic" : "every example"}, ${throttledRuns} loads each): ${maxT.id} ${MS(maxT.throttled_ms.median)} ms vs aim ${AIM_THROTTLED_MS} ms — ${verdict(maxT.throttled_ms.median <= AIM_THROTTLED_MS)}` : "throttled: not run",
+  maxR ? `slowest redraw (median): ${maxR.id} ${maxR.redraw_ms.median.toFixed(1)} ms (JS ${maxR.redraw_ms.js.toFixed(1)} + frame ${maxR.redraw_ms.frame.toFixed(1)}); worst single: ${worstR.id} ${worstR.redraw_ms.max.toFixed(1)} ms; aim ${AIM_REDRAW_MS} ms — ${withR.filter((r) => r.redraw_ms.median > AIM_REDRAW_MS).length} example(s) over it by median, ${withR.filter((r) => r.redraw_ms.max > AIM_REDRAW_MS).length} by worst` : "redraw: not run",
+  lab ? `image lab: module ${KB(lab.module_gz)} KB gz (${lab.files} files, raw ${KB(lab.module_raw)} KB), sample photos ${KB(lab.photos_raw)} KB (${lab.photos} files, not compressible); lab files requested by an example: ${lab.requested_by.length ? `YES — ${lab.requested_by.join(", ")}` : "none (off every example's critical path)"}` : "image lab: dist/lab/ not found",
+  notOk.length ? `NOT SOLVED on the first load: ${notOk.join(", ")}` : `every example reached status "ok"`,
+  `untimed requests (not in resource timing): ${rows.flatMap((r) => r.files.filter((f) => f.untimed).map((f) => `${r.id}:${f.path}`)).join(", ") || "none"}; files not in dist/: ${[...new Set(rows.flatMap((r) => r.files.filter((f) => !f.inDist).map((f) => f.path)))].join(", ") || "none"}`,
+  `machine load: ${os.loadavg().map((x) => x.toFixed(2)).join(" ")} (1/5/15 min), ${os.cpus().length} cores; run took ${((Date.now() - t0) / 1000).toFixed(0)} s`,
+];
+console.log("");
+for (const s of summary) console.log(s);
+// what the heaviest critical path holds, largest first
+console.log(`\nThe critical path of ${maxBytes.id} (gzip -9 of the dist/ file; fonts and HTML apart):`);
+for (const f of maxBytes.files.filter((x) => x.critical && ["wasm", "js", "css"].includes(x.kind)).sort((a, b) => b.gz - a.gz)) {
+  console.log(`  ${KB(f.gz).padStart(7)} KB  (raw ${KB(f.raw).padStart(7)} KB)  ${f.kind.padEnd(4)} ${f.path}`);
+}
+
+if (jsonFile) {
+  fs.writeFileSync(
+    jsonFile,
+    JSON.stringify({ date: new Date().toISOString(), runs, throttled_runs: throttledRuns, throttled_set: throttledSet, throttle: THROTTLE, floor_ms: floor, floor_throttled_ms: floorT, lab, examples: rows, summary }, null, 1),
+  );
+  console.log(`written: ${jsonFile}`);
+}
