@@ -516,7 +516,7 @@ async function main() {
   core = coreResult.value;
   if (apiNamesRemembered()) document.body.classList.add("show-api");
   try {
-    entries = plain(core.catalog());
+    entries = core.catalog(); // plain JSON; an entry's inputs arrive with its module (core.load)
   } catch (e) {
     root.replaceChildren(el("div", { class: "error-box", role: "alert" }, `The catalog could not be read: ${messageOf(e)}`));
     setStatus("fatal");

@@ -9,7 +9,11 @@
 // Module URLs are literal strings (no template strings): a build step that
 // renames files can rewrite them, and an import map applies to them too.
 
-/** The catalog: the Rust entries as JSON, with each entry's `module`. */
+/**
+ * The catalog: the Rust entries as JSON, with each entry's `module`, without
+ * their `inputs` (the form's fields: most of the catalog's bytes), which come
+ * with the entry's module (its own `catalog()`) when it loads.
+ */
 const CATALOG_URL = new URL("./catalog.json", import.meta.url);
 
 /** Each module's wasm-bindgen package, imported on demand. */
@@ -35,10 +39,45 @@ export async function loadCatalog() {
   return entries;
 }
 
+/** Modules are loaded once per page, whichever loadCore() asked: name → Promise of the package. */
+const pending = new Map();
+/** name → the initialised package */
+const ready = new Map();
+/** The entry lists of every loadCore(), whose `inputs` a loaded module fills in. */
+const catalogs = new Set();
+
+/** Copies the fields of `mod`'s entries (its own catalog()) into `entries`. */
+function fillInputs(entries, mod) {
+  const own = new Map(mod.catalog().map((e) => [e.id, e.inputs]));
+  for (const entry of entries) if (!entry.inputs && own.has(entry.id)) entry.inputs = own.get(entry.id);
+}
+
+function loadModule(name) {
+  if (!pending.has(name)) {
+    const importer = MODULES[name];
+    if (!importer) return Promise.reject(new Error(`catalog.json names a module “${name}” this page does not know`));
+    const p = importer()
+      .then(async (mod) => {
+        await mod.default();
+        for (const entries of catalogs) fillInputs(entries, mod);
+        ready.set(name, mod);
+        return mod;
+      })
+      .catch((e) => {
+        pending.delete(name); // a later call tries again (a dropped connection)
+        throw e;
+      });
+    pending.set(name, p);
+  }
+  return pending.get(name);
+}
+
 /**
  * Loads the catalog; modules follow on demand. After `await core.load(id)`,
  * `parseInputs(id, …)` and `solve(id, …)` are synchronous (the page redraws on
- * every input change); `await core.loadPractice()` before `practice`/`grade`.
+ * every input change) and entry `id` of `catalog()` has its `inputs`;
+ * `await core.loadPractice()` before `practice`/`grade` (every entry then has
+ * its `inputs`).
  * @returns {Promise<{
  *   catalog: () => any[],
  *   load: (id: string) => Promise<void>,
@@ -55,29 +94,8 @@ export async function loadCatalog() {
 export async function loadCore() {
   const entries = await loadCatalog();
   const moduleById = new Map(entries.map((e) => [e.id, e.module]));
-  /** name → Promise of the initialised package */
-  const pending = new Map();
-  /** name → the initialised package */
-  const ready = new Map();
-
-  function loadModule(name) {
-    if (!pending.has(name)) {
-      const importer = MODULES[name];
-      if (!importer) return Promise.reject(new Error(`catalog.json names a module “${name}” this page does not know`));
-      const p = importer()
-        .then(async (mod) => {
-          await mod.default();
-          ready.set(name, mod);
-          return mod;
-        })
-        .catch((e) => {
-          pending.delete(name); // a later call tries again (a dropped connection)
-          throw e;
-        });
-      pending.set(name, p);
-    }
-    return pending.get(name);
-  }
+  for (const mod of ready.values()) fillInputs(entries, mod);
+  catalogs.add(entries);
 
   function moduleOf(id) {
     const name = moduleById.get(id);
@@ -106,16 +124,19 @@ export async function loadCore() {
     prefetching = true;
     const idle = globalThis.requestIdleCallback ?? ((f) => setTimeout(f, 200));
     const names = [...new Set(entries.map((e) => e.module))].filter((n) => n && MODULES[n]);
+    const tried = new Set();
     const next = () => {
-      const name = names.find((n) => !pending.has(n));
+      const name = names.find((n) => !pending.has(n) && !tried.has(n));
       if (!name) return;
+      tried.add(name); // once: a failed module is loaded again only when its example opens
       idle(() => loadModule(name).then(next, next), { timeout: 5000 });
     };
     next();
   }
 
   return {
-    catalog: () => structuredClone(entries),
+    // the same entry objects every time: an entry's `inputs` appear when its module loads
+    catalog: () => entries,
     load: async (id) => {
       if (ready.has("all")) return;
       await loadModule(moduleOf(id));

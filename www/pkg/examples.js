@@ -21,7 +21,10 @@ function theCore() {
   return core;
 }
 
-/** Every worked example (the whole catalog; no module is loaded). */
+/**
+ * Every worked example (catalog.json; no module is loaded): each entry's
+ * `inputs` (its fields) appear once its example is loaded.
+ */
 export async function catalog() {
   return (await theCore()).catalog();
 }
