@@ -1,30 +1,39 @@
 #!/usr/bin/env bash
 # Builds the release wasm and assembles the static site in dist/:
 #   dist/index.html, embed.html, *.js, style.css   (from www/)
-#   dist/pkg/                                      (wasm-bindgen --target web)
+#   dist/pkg/<module>.js + <module>_bg.wasm        (wasm-bindgen --target web; web/*)
+#   dist/pkg/photogrammetry_playground.js          (the one-package API, www/pkg/)
+#   dist/catalog.json                              (the catalog, from the Rust entries)
 #   dist/vendor/katex/                             (KaTeX from its npm package)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 [ "${SKIP_SETUP:-0}" = 1 ] || bash scripts/setup.sh
 
-echo "build: cargo build --release --target wasm32-unknown-unknown"
-cargo build --release --target wasm32-unknown-unknown --lib
+# One cargo invocation links every wasm module (cargo runs them in parallel):
+# the core (the root crate) is compiled once, and each module is a thin crate
+# that links it: web/<topic>/ (one per topic of examples::MODULES), web/all/
+# (every example and practice mode), lab/ (the image lab).
+echo "build: cargo build --release --target wasm32-unknown-unknown --workspace --lib"
+cargo build --release --target wasm32-unknown-unknown --workspace --lib
 
 rm -rf dist
-mkdir -p dist/pkg dist/vendor/katex
-wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/pkg \
-  target/wasm32-unknown-unknown/release/photogrammetry_playground.wasm
-cp -R www/. dist/
+mkdir -p dist/pkg dist/lab/pkg dist/vendor/katex
+cp -R www/. dist/   # www/pkg/ holds the hand-written packages (photogrammetry_playground.js, examples.js)
+# wasm-bindgen for each module, two at a time: dist/pkg/<name>.js + <name>_bg.wasm
+modules=$(cd web && ls -d */ | tr -d /)
+for name in $modules; do echo "$name"; done | xargs -P 2 -I{} \
+  wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section \
+  --out-dir dist/pkg --out-name {} target/wasm32-unknown-unknown/release/playground_{}.wasm
 # The image lab's own module (lab/), loaded only when #/lab opens.
-echo "build: cargo build --release --target wasm32-unknown-unknown -p photogrammetry-lab"
-cargo build --release --target wasm32-unknown-unknown -p photogrammetry-lab --lib
-mkdir -p dist/lab/pkg
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/lab/pkg \
   target/wasm32-unknown-unknown/release/photogrammetry_lab.wasm
+# The catalog as data, from the Rust entries (pkg/all.js's catalog()), with each entry's module.
+node scripts/catalog-json.mjs dist
 katex=node_modules/katex/dist
 cp "$katex/katex.min.js" "$katex/katex.min.css" dist/vendor/katex/
 mkdir -p dist/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
 node scripts/sw-manifest.mjs dist   # the service worker's version and file list
-echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm $(wc -c < dist/pkg/photogrammetry_playground_bg.wasm) bytes, lab wasm $(wc -c < dist/lab/pkg/photogrammetry_lab_bg.wasm) bytes)"
+sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "dist/pkg/${name}_bg.wasm" | wc -c)"; done)
+echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes; lab wasm $(wc -c < dist/lab/pkg/photogrammetry_lab_bg.wasm) bytes)"

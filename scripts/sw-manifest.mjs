@@ -30,8 +30,12 @@ const version = hash.digest("hex").slice(0, 16);
 const source = fs.readFileSync(sw, "utf8");
 const marker = /^const BUILD = \{ version: "dev", files: \[\] \};.*$/m;
 if (!marker.test(source)) throw new Error("sw-manifest: the BUILD line of sw.js is missing");
-// the lab (its wasm and sample photos, about 1 MB) is cached when first used, not on every first visit
-const lazy = (f) => f.startsWith("lab/");
+// Cached at install: the page and every topic's module (pkg/<topic>*: any
+// example works offline after the first visit). Cached when first used, not on
+// every first visit: the lab (its wasm and sample photos, about 1 MB), and
+// pkg/all* (every example again plus practice, about 310 KB gzipped; loaded
+// by practice mode and the one-package API).
+const lazy = (f) => f.startsWith("lab/") || /^pkg\/all(_bg\.wasm|\.js)$/.test(f);
 const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files.filter((f) => !lazy(f))], lazy: files.filter(lazy) })};`;
 fs.writeFileSync(sw, source.replace(marker, () => line));
 fs.writeFileSync(path.join(dist, "version.json"), `${JSON.stringify({ version, files: files.length })}\n`);

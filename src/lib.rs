@@ -27,8 +27,10 @@
 //!   solvers that turn core results into steps.
 //! - [`practice`]: practice mode: variant codes and generators, answer
 //!   reading and grading with carried-forward errors and known mistakes.
-//! - `wasm`: the thin wasm-bindgen exports (`catalog`, `solve`,
-//!   `parse_inputs`); the only file that knows about JavaScript.
+//! - `wasm`: the thin wasm-bindgen boundary (`catalog`, `solve`,
+//!   `parse_inputs`, `practice`, `grade`) as macros that the page's modules
+//!   (`web/<topic>/`, `web/all/`) invoke; the only file that knows about
+//!   JavaScript.
 
 pub mod chain;
 pub mod coords;
@@ -45,5 +47,5 @@ pub mod raster;
 pub mod resample;
 pub mod solution;
 pub mod transform;
-#[cfg(all(target_arch = "wasm32", feature = "exports"))]
+#[cfg(target_arch = "wasm32")]
 pub mod wasm;

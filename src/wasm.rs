@@ -1,8 +1,19 @@
 //! The wasm-bindgen boundary: thin exports that convert JS values to and from
 //! the core's plain data and turn every [`Error`] into a thrown JS `Error`.
+//!
+//! The page loads one small wasm module per topic (the crates under `web/`)
+//! and practice mode one more; each is a three-line crate that invokes a
+//! macro of this file, so the exports are written once, here:
+//! - [`export_examples!`]`(coordinates::entries, …)`: `catalog`, `solve`
+//!   and `parse_inputs` over those entries only (link-time optimisation
+//!   drops every other topic);
+//! - [`export_all!`]`()`: the same over the whole catalog, plus `practice`
+//!   and `grade` (practice mode and the compatibility package).
+//!
+//! The functions below are what the macros call; they are not exports.
 
 use crate::error::Error;
-use crate::examples;
+use crate::examples::{self, Entry};
 use crate::solution::{Record, Value};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -31,26 +42,27 @@ fn record_from_js(what: &str, v: JsValue) -> Result<Record, JsError> {
     }
 }
 
-/// Every worked example: `[{ id, title, topic, source, summary, status, inputs }]`.
-#[wasm_bindgen]
-pub fn catalog() -> Result<JsValue, JsError> {
+/// `catalog()` of a topic module: its entries only.
+pub fn catalog_of(entries: Vec<Entry>) -> Result<JsValue, JsError> {
+    to_js(&examples::catalog_of(entries))
+}
+
+/// `catalog()` of the whole catalog (with `practice` and `module`).
+pub fn catalog_all() -> Result<JsValue, JsError> {
     to_js(&examples::catalog())
 }
 
-/// Solves example `id` with typed `inputs`; throws an `Error` naming the
-/// field on bad input.
-#[wasm_bindgen]
-pub fn solve(id: &str, inputs: JsValue) -> Result<JsValue, JsError> {
+/// `solve(id, inputs)` among `entries`.
+pub fn solve_in(entries: Vec<Entry>, id: &str, inputs: JsValue) -> Result<JsValue, JsError> {
     let inputs = record_from_js("inputs", inputs)?;
-    let solution = examples::solve(id, &inputs).map_err(js_error)?;
+    let solution = examples::solve_in(entries, id, &inputs).map_err(js_error)?;
     to_js(&solution)
 }
 
-/// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
-#[wasm_bindgen]
-pub fn parse_inputs(id: &str, texts: JsValue) -> Result<JsValue, JsError> {
+/// `parse_inputs(id, texts)` among `entries`.
+pub fn parse_inputs_in(entries: Vec<Entry>, id: &str, texts: JsValue) -> Result<JsValue, JsError> {
     let texts = record_from_js("texts", texts)?;
-    let parsed = examples::parse_inputs(id, &texts).map_err(js_error)?;
+    let parsed = examples::parse_inputs_in(entries, id, &texts).map_err(js_error)?;
     to_js(&parsed)
 }
 
@@ -61,10 +73,7 @@ extern "C" {
     fn math_random() -> f64;
 }
 
-/// A practice variant of example `id`: `{ id, code, inputs, boxes }`; the
-/// variant of `code` when given (a string like `"1K7Q2"`), a new one when
-/// `code` is `undefined` or `null`.
-#[wasm_bindgen]
+/// `practice(id, code)`: see [`export_all!`].
 pub fn practice(id: &str, code: JsValue) -> Result<JsValue, JsError> {
     let code = if code.is_undefined() || code.is_null() {
         None
@@ -79,12 +88,107 @@ pub fn practice(id: &str, code: JsValue) -> Result<JsValue, JsError> {
     to_js(&p)
 }
 
-/// Grades `answers` (`{ box key: text }`) for variant `code` of example `id`:
-/// `{ code, boxes: { key: { verdict, mistake?, message, read, value,
-/// precision, unit, points } }, score, out_of }`.
-#[wasm_bindgen]
+/// `grade(id, code, answers)`: see [`export_all!`].
 pub fn grade(id: &str, code: &str, answers: JsValue) -> Result<JsValue, JsError> {
     let answers = record_from_js("answers", answers)?;
     let g = crate::practice::grade(id, code, &answers).map_err(js_error)?;
     to_js(&g)
+}
+
+/// The exports of a topic module: `catalog`, `solve` and `parse_inputs` over
+/// the given entry lists (`examples::<topic>::entries`), nothing else.
+/// The invoking crate depends on `wasm-bindgen` (the attribute names it).
+#[macro_export]
+macro_rules! export_examples {
+    ($($entries:path),+ $(,)?) => {
+        fn entries() -> ::std::vec::Vec<$crate::examples::Entry> {
+            let mut all = ::std::vec::Vec::new();
+            $(all.extend($entries());)+
+            all
+        }
+
+        /// This module's worked examples: `[{ id, title, topic, source,
+        /// document, summary, status, inputs }]`.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn catalog() -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::catalog_of(entries())
+        }
+
+        /// Solves example `id` with typed `inputs`; throws an `Error` naming
+        /// the field on bad input.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn solve(
+            id: &str,
+            inputs: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::solve_in(entries(), id, inputs)
+        }
+
+        /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn parse_inputs(
+            id: &str,
+            texts: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::parse_inputs_in(entries(), id, texts)
+        }
+    };
+}
+
+/// The exports of the whole catalog: `catalog` (with `practice` and
+/// `module`), `solve`, `parse_inputs`, and practice mode's `practice` and
+/// `grade` (which re-run every solver, so this module carries them all).
+#[macro_export]
+macro_rules! export_all {
+    () => {
+        /// Every worked example: `[{ id, title, topic, source, document,
+        /// summary, status, practice, module, inputs }]`.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn catalog() -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError>
+        {
+            $crate::wasm::catalog_all()
+        }
+
+        /// Solves example `id` with typed `inputs`; throws an `Error` naming
+        /// the field on bad input.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn solve(
+            id: &str,
+            inputs: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::solve_in($crate::examples::entries(), id, inputs)
+        }
+
+        /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn parse_inputs(
+            id: &str,
+            texts: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::parse_inputs_in($crate::examples::entries(), id, texts)
+        }
+
+        /// A practice variant of example `id`: `{ id, code, inputs, boxes }`;
+        /// the variant of `code` when given (a string like `"1K7Q2"`), a new
+        /// one when `code` is `undefined` or `null`.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn practice(
+            id: &str,
+            code: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::practice(id, code)
+        }
+
+        /// Grades `answers` (`{ box key: text }`) for variant `code` of
+        /// example `id`: `{ code, boxes: { key: { verdict, mistake?, message,
+        /// read, value, precision, unit, points } }, score, out_of }`.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn grade(
+            id: &str,
+            code: &str,
+            answers: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::grade(id, code, answers)
+        }
+    };
 }

@@ -4,7 +4,9 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Object, Reflect, JSON};
-use photogrammetry_playground::wasm::{catalog, parse_inputs, solve};
+// The exports as the page's pkg/all.js has them (web/all/): every example
+// and practice mode.
+photogrammetry_playground::export_all!();
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 
@@ -49,6 +51,12 @@ fn catalog_is_plain_data_with_typed_fields() {
         get(&gsd, "topic").as_string().as_deref(),
         Some("Coordinates")
     );
+    // the whole catalog (catalog.json) names each entry's module and practice
+    assert_eq!(
+        get(&gsd, "module").as_string().as_deref(),
+        Some("coordinates")
+    );
+    assert_eq!(get(&gsd, "practice").as_bool(), Some(true));
     let inputs: Array = get(&gsd, "inputs").dyn_into().unwrap();
     let dpi = inputs.get(0);
     assert_eq!(get(&dpi, "key").as_string().as_deref(), Some("dpi"));

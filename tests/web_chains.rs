@@ -5,7 +5,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
-use photogrammetry_playground::wasm::{parse_inputs, solve};
+// The exports as the page's topic module pkg/chains.js (web/chains/) has them.
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::chains::entries);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

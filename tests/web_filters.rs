@@ -4,7 +4,12 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
-use photogrammetry_playground::wasm::{catalog, solve};
+// The exports of a topic module (web/filters/, web/resampling/), here over
+// two topics' entries at once.
+photogrammetry_playground::export_examples!(
+    photogrammetry_playground::examples::filters::entries,
+    photogrammetry_playground::examples::resampling::entries
+);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

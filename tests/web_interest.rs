@@ -5,7 +5,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Object, Reflect, JSON};
-use photogrammetry_playground::wasm::{catalog, parse_inputs, solve};
+// The exports as the page's topic module pkg/interest.js (web/interest/) has them.
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::interest::entries);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

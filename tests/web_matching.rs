@@ -4,7 +4,8 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
-use photogrammetry_playground::wasm::solve;
+// The exports as the page's topic module pkg/matching.js (web/matching/) has them.
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::matching::entries);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

@@ -4,7 +4,9 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Error as JsErr, Reflect, JSON};
-use photogrammetry_playground::wasm::{grade, practice, solve};
+// The exports as the page's pkg/all.js has them (web/all/): every example
+// and practice mode.
+photogrammetry_playground::export_all!();
 use wasm_bindgen::{JsCast, JsError, JsValue};
 use wasm_bindgen_test::*;
 

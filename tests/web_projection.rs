@@ -5,7 +5,10 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Object, Reflect, JSON};
-use photogrammetry_playground::wasm::{catalog, parse_inputs, solve};
+// The exports as the page's topic module pkg/projection.js (web/projection/) has them.
+photogrammetry_playground::export_examples!(
+    photogrammetry_playground::examples::projection::entries
+);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

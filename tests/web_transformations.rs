@@ -4,7 +4,10 @@
 #![cfg(target_arch = "wasm32")]
 
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
-use photogrammetry_playground::wasm::{catalog, parse_inputs, solve};
+// The exports as the page's topic module pkg/transformations.js (web/transformations/) has them.
+photogrammetry_playground::export_examples!(
+    photogrammetry_playground::examples::transformations::entries
+);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

@@ -304,7 +304,10 @@ function renderSolution(solution) {
   notesBody.replaceChildren(...renderNotes(solution));
   if (view.figure) view.figure.update(solution);
   // for `npm run bench`: navigation to the first solution on screen
-  if (!performance.getEntriesByName("first-solution").length) performance.mark("first-solution");
+  if (!performance.getEntriesByName("first-solution").length) {
+    performance.mark("first-solution");
+    core.prefetch(); // the other topics' modules, when the browser is idle
+  }
 }
 
 /**
@@ -470,7 +473,10 @@ async function route({ focus = false } = {}) {
   }
   if (id === "practice" || params.some(([key]) => key === "practice")) {
     destroyView();
-    const { showPractice } = await import("./practice/view.js");
+    setStatus("loading");
+    // practice mode's own module (every example and its generators), loaded when it opens
+    const [{ showPractice }] = await Promise.all([import("./practice/view.js"), core.loadPractice()]);
+    if (location.hash !== hash) return; // the reader moved on; that hashchange routes
     await showPractice({ root, core, entries, id, params, mode, setStatus });
     return;
   }
@@ -484,8 +490,9 @@ async function route({ focus = false } = {}) {
     return;
   }
   if (!(view && view.id === id)) {
-    if (figuresPending(entry.topic)) setStatus("loading");
-    await loadFigures(entry.topic);
+    if (figuresPending(entry.topic) || !core.loaded(id)) setStatus("loading");
+    // the example's own wasm module and its figures, in parallel
+    await Promise.all([core.load(id), loadFigures(entry.topic)]);
     if (location.hash !== hash) return; // the reader moved on; that hashchange routes
   }
   const v = view && view.id === id ? view : buildView(entry);
@@ -512,7 +519,13 @@ async function route({ focus = false } = {}) {
 async function main() {
   setStatus("loading");
   root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
-  const [coreResult] = await Promise.allSettled([loadCore(), loadMath()]);
+  // the example in the address starts loading its module as soon as the catalog names it
+  const early = loadCore().then((c) => {
+    const { id, params } = parseHash(location.hash);
+    if (!params.some(([key]) => key === "practice")) c.load(id).catch(() => {}); // route() reports errors
+    return c;
+  });
+  const [coreResult] = await Promise.allSettled([early, loadMath()]);
   if (coreResult.status !== "fulfilled") {
     root.replaceChildren(
       el(
@@ -528,7 +541,7 @@ async function main() {
   core = coreResult.value;
   if (apiNamesRemembered()) document.body.classList.add("show-api");
   try {
-    entries = plain(core.catalog());
+    entries = core.catalog(); // plain JSON; an entry's inputs arrive with its module (core.load)
   } catch (e) {
     root.replaceChildren(el("div", { class: "error-box", role: "alert" }, `The catalog could not be read: ${messageOf(e)}`));
     setStatus("fatal");

@@ -1,20 +1,156 @@
 // The Rust core, compiled to WebAssembly (docs/API.md is the contract).
-
-const CORE_URL = "./pkg/photogrammetry_playground.js";
+//
+// One small wasm module per topic (dist/pkg/<module>.js, built from web/<module>/):
+// the page loads the catalog (catalog.json, written by the build from the
+// Rust entries) and then only the module of the example on screen; the others
+// are loaded when the browser is idle after the first solution. Practice mode
+// loads pkg/all.js (every example and the practice generators) when it opens.
+//
+// Module URLs are literal strings (no template strings): a build step that
+// renames files can rewrite them, and an import map applies to them too.
 
 /**
- * Loads and initialises the wasm package.
- * @returns {Promise<{ catalog: () => any[], parseInputs: (id: string, texts: object) => { inputs: object, errors: object }, solve: (id: string, inputs: object) => any }>}
+ * The catalog: the Rust entries as JSON, with each entry's `module`, without
+ * their `inputs` (the form's fields: most of the catalog's bytes), which come
+ * with the entry's module (its own `catalog()`) when it loads.
+ */
+const CATALOG_URL = new URL("./catalog.json", import.meta.url);
+
+/** Each module's wasm-bindgen package, imported on demand. */
+const MODULES = Object.freeze({
+  coordinates: () => import("./pkg/coordinates.js"),
+  transformations: () => import("./pkg/transformations.js"),
+  correlation: () => import("./pkg/correlation.js"),
+  matching: () => import("./pkg/matching.js"),
+  resampling: () => import("./pkg/resampling.js"),
+  filters: () => import("./pkg/filters.js"),
+  interest: () => import("./pkg/interest.js"),
+  chains: () => import("./pkg/chains.js"),
+  projection: () => import("./pkg/projection.js"),
+  all: () => import("./pkg/all.js"),
+});
+
+/** The catalog's entries (fetched once per page). */
+export async function loadCatalog() {
+  const response = await fetch(CATALOG_URL);
+  if (!response.ok) throw new Error(`catalog.json: ${response.status} ${response.statusText}`);
+  const entries = await response.json();
+  if (!Array.isArray(entries)) throw new Error("catalog.json: not a list of examples");
+  return entries;
+}
+
+/** Modules are loaded once per page, whichever loadCore() asked: name → Promise of the package. */
+const pending = new Map();
+/** name → the initialised package */
+const ready = new Map();
+/** The entry lists of every loadCore(), whose `inputs` a loaded module fills in. */
+const catalogs = new Set();
+
+/** Copies the fields of `mod`'s entries (its own catalog()) into `entries`. */
+function fillInputs(entries, mod) {
+  const own = new Map(mod.catalog().map((e) => [e.id, e.inputs]));
+  for (const entry of entries) if (!entry.inputs && own.has(entry.id)) entry.inputs = own.get(entry.id);
+}
+
+function loadModule(name) {
+  if (!pending.has(name)) {
+    const importer = MODULES[name];
+    if (!importer) return Promise.reject(new Error(`catalog.json names a module “${name}” this page does not know`));
+    const p = importer()
+      .then(async (mod) => {
+        await mod.default();
+        for (const entries of catalogs) fillInputs(entries, mod);
+        ready.set(name, mod);
+        return mod;
+      })
+      .catch((e) => {
+        pending.delete(name); // a later call tries again (a dropped connection)
+        throw e;
+      });
+    pending.set(name, p);
+  }
+  return pending.get(name);
+}
+
+/**
+ * Loads the catalog; modules follow on demand. After `await core.load(id)`,
+ * `parseInputs(id, …)` and `solve(id, …)` are synchronous (the page redraws on
+ * every input change) and entry `id` of `catalog()` has its `inputs`;
+ * `await core.loadPractice()` before `practice`/`grade` (every entry then has
+ * its `inputs`).
+ * @returns {Promise<{
+ *   catalog: () => any[],
+ *   load: (id: string) => Promise<void>,
+ *   loaded: (id: string) => boolean,
+ *   parseInputs: (id: string, texts: object) => { inputs: object, errors: object },
+ *   solve: (id: string, inputs: object) => any,
+ *   loadPractice: () => Promise<void>,
+ *   practice: (id: string, code?: string | null) => any,
+ *   grade: (id: string, code: string, answers: object) => any,
+ *   prefetch: () => void,
+ *   modulesLoaded: () => string[],
+ * }>}
  */
 export async function loadCore() {
-  const mod = await import(CORE_URL);
-  await mod.default();
+  const entries = await loadCatalog();
+  const moduleById = new Map(entries.map((e) => [e.id, e.module]));
+  for (const mod of ready.values()) fillInputs(entries, mod);
+  catalogs.add(entries);
+
+  function moduleOf(id) {
+    const name = moduleById.get(id);
+    if (!name) throw new Error(`No such example: “${id}”`);
+    return name;
+  }
+
+  /** The initialised package that solves `id` (its topic's, or the whole one). */
+  function packageFor(id) {
+    const mod = ready.get(moduleById.get(id)) ?? ready.get("all");
+    if (mod) return mod;
+    moduleOf(id); // an unknown id says so
+    throw new Error(`${id}: its module is not loaded yet (await core.load("${id}") first)`);
+  }
+
+  function practicePackage() {
+    const mod = ready.get("all");
+    if (!mod) throw new Error("practice mode is not loaded yet (await core.loadPractice() first)");
+    return mod;
+  }
+
+  let prefetching = false;
+  /** Loads every other topic's module, one per idle moment (never on Save-Data). */
+  function prefetch() {
+    if (prefetching || navigator.connection?.saveData) return;
+    prefetching = true;
+    const idle = globalThis.requestIdleCallback ?? ((f) => setTimeout(f, 200));
+    const names = [...new Set(entries.map((e) => e.module))].filter((n) => n && MODULES[n]);
+    const tried = new Set();
+    const next = () => {
+      const name = names.find((n) => !pending.has(n) && !tried.has(n));
+      if (!name) return;
+      tried.add(name); // once: a failed module is loaded again only when its example opens
+      idle(() => loadModule(name).then(next, next), { timeout: 5000 });
+    };
+    next();
+  }
+
   return {
-    catalog: () => mod.catalog(),
-    parseInputs: (id, texts) => mod.parse_inputs(id, texts),
-    solve: (id, inputs) => mod.solve(id, inputs),
-    practice: (id, code) => mod.practice(id, code ?? undefined),
-    grade: (id, code, answers) => mod.grade(id, code, answers),
+    // the same entry objects every time: an entry's `inputs` appear when its module loads
+    catalog: () => entries,
+    load: async (id) => {
+      if (ready.has("all")) return;
+      await loadModule(moduleOf(id));
+    },
+    loaded: (id) => ready.has(moduleById.get(id)) || ready.has("all"),
+    parseInputs: (id, texts) => packageFor(id).parse_inputs(id, texts),
+    solve: (id, inputs) => packageFor(id).solve(id, inputs),
+    loadPractice: async () => {
+      await loadModule("all");
+    },
+    practice: (id, code) => practicePackage().practice(id, code ?? undefined),
+    grade: (id, code, answers) => practicePackage().grade(id, code, answers),
+    prefetch,
+    modulesLoaded: () => [...ready.keys()],
   };
 }
 

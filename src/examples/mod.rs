@@ -44,6 +44,9 @@ pub const TOPICS: [&str; 9] = [
 /// A solver: validated inputs (defaults filled in) to a solution.
 pub type Solver = fn(&Record) -> Result<Solution>;
 
+/// A topic file's list of entries (`coordinates::entries`, …).
+pub type Entries = fn() -> Vec<Entry>;
+
 /// One catalog entry.
 pub struct Entry {
     pub id: &'static str,
@@ -83,17 +86,36 @@ fn coming() -> Vec<Entry> {
     Vec::new()
 }
 
+/// The page's wasm modules of worked examples: one per topic, each its own
+/// small crate under `web/<name>/` that exports only these entries (see
+/// `export_examples!` in `src/wasm.rs`), so that an example's page loads
+/// only its topic's code. `catalog.json` names each entry's module.
+///
+/// A topic module must never call [`entries`], [`catalog`], [`solve`] or
+/// [`parse_inputs`]: those reach every topic and would link them all in.
+pub const MODULES: [(&str, Entries); 9] = [
+    ("coordinates", coordinates::entries),
+    ("transformations", transformations::entries),
+    ("correlation", correlation::entries),
+    ("matching", matching::entries),
+    ("resampling", resampling::entries),
+    ("filters", filters::entries),
+    ("interest", interest::entries),
+    ("chains", chains::entries),
+    ("projection", projection::entries),
+];
+
+/// The module (a name of [`MODULES`]) that solves example `id`.
+pub fn module_of(id: &str) -> Option<&'static str> {
+    MODULES
+        .iter()
+        .find(|(_, entries)| entries().iter().any(|e| e.id == id))
+        .map(|(name, _)| *name)
+}
+
 /// Every entry, grouped by topic in [`TOPICS`] order.
 pub fn entries() -> Vec<Entry> {
-    let mut all = coordinates::entries();
-    all.extend(matching::entries());
-    all.extend(resampling::entries());
-    all.extend(filters::entries());
-    all.extend(correlation::entries());
-    all.extend(chains::entries());
-    all.extend(interest::entries());
-    all.extend(transformations::entries());
-    all.extend(projection::entries());
+    let mut all: Vec<Entry> = MODULES.iter().flat_map(|(_, entries)| entries()).collect();
     all.extend(coming());
     all.sort_by_key(|e| {
         TOPICS
@@ -104,8 +126,8 @@ pub fn entries() -> Vec<Entry> {
     all
 }
 
-fn find(id: &str) -> Result<Entry> {
-    entries()
+fn find(entries: Vec<Entry>, id: &str) -> Result<Entry> {
+    entries
         .into_iter()
         .find(|e| e.id == id)
         .ok_or_else(|| Error::UnknownExample { id: id.to_string() })
@@ -122,16 +144,21 @@ pub struct EntryInfo {
     pub document: String,
     pub summary: &'static str,
     pub status: &'static str,
-    /// Whether practice mode has a generator for this example.
-    pub practice: bool,
+    /// Whether practice mode has a generator for this example (in the whole
+    /// catalog; a topic module's own catalog leaves it out, as it leaves
+    /// practice out).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub practice: Option<bool>,
+    /// The wasm module that solves it (a name of [`MODULES`]; in the whole
+    /// catalog only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub module: Option<&'static str>,
     pub inputs: Vec<FieldInfo>,
 }
 
-/// The catalog: every entry with its status and input fields.
-pub fn catalog() -> Vec<EntryInfo> {
-    entries()
-        .iter()
-        .map(|e| EntryInfo {
+impl EntryInfo {
+    fn new(e: &Entry) -> Self {
+        EntryInfo {
             id: e.id,
             title: e.title,
             topic: e.topic,
@@ -139,16 +166,41 @@ pub fn catalog() -> Vec<EntryInfo> {
             document: answers::document(e.source),
             summary: e.summary,
             status: if e.solve.is_some() { "ready" } else { "coming" },
-            practice: crate::practice::has(e.id),
+            practice: None,
+            module: None,
             inputs: (e.fields)().iter().map(FieldInfo::from).collect(),
+        }
+    }
+}
+
+/// The catalog: every entry with its status, practice, module and input
+/// fields (what the build writes to `catalog.json`).
+pub fn catalog() -> Vec<EntryInfo> {
+    entries()
+        .iter()
+        .map(|e| EntryInfo {
+            practice: Some(crate::practice::has(e.id)),
+            module: module_of(e.id),
+            ..EntryInfo::new(e)
         })
         .collect()
+}
+
+/// The catalog of `entries` only (a topic module's own): without
+/// `practice` and `module`, which would reach every topic.
+pub fn catalog_of(entries: Vec<Entry>) -> Vec<EntryInfo> {
+    entries.iter().map(EntryInfo::new).collect()
 }
 
 /// Solves example `id` with `inputs` (a missing field takes the seed's
 /// default). Inputs are checked before any arithmetic.
 pub fn solve(id: &str, inputs: &Record) -> Result<Solution> {
-    let entry = find(id)?;
+    solve_in(entries(), id, inputs)
+}
+
+/// [`solve`] among `entries` only (a topic module's).
+pub fn solve_in(entries: Vec<Entry>, id: &str, inputs: &Record) -> Result<Solution> {
+    let entry = find(entries, id)?;
     let solver = entry
         .solve
         .ok_or_else(|| Error::NotBuilt { id: id.to_string() })?;
@@ -174,7 +226,12 @@ pub struct Parsed {
 /// Parses the texts of a form or URL (`{key: text}`) into typed inputs with
 /// the same checks as [`solve`]; every failing field gets its own message.
 pub fn parse_inputs(id: &str, texts: &Record) -> Result<Parsed> {
-    let entry = find(id)?;
+    parse_inputs_in(entries(), id, texts)
+}
+
+/// [`parse_inputs`] among `entries` only (a topic module's).
+pub fn parse_inputs_in(entries: Vec<Entry>, id: &str, texts: &Record) -> Result<Parsed> {
+    let entry = find(entries, id)?;
     let fields = (entry.fields)();
     let mut out = Parsed {
         inputs: Record::new(),

@@ -259,7 +259,9 @@ describe("offline after the first visit", { timeout: TEST_TIMEOUT * 2 }, () => {
     const build = JSON.parse(/^const BUILD = (.*);$/m.exec(sw)[1]);
     assert.equal(build.version, version);
     assert.match(version, /^[0-9a-f]{16}$/);
-    for (const f of ["index.html", "embed.html", "embed.js", "pkg/photogrammetry_playground_bg.wasm", "vendor/katex/katex.min.js"]) assert.ok(build.files.includes(f), f);
+    for (const f of ["index.html", "embed.html", "embed.js", "catalog.json", "pkg/coordinates_bg.wasm", "pkg/projection_bg.wasm", "vendor/katex/katex.min.js"]) assert.ok(build.files.includes(f), f);
+    // practice's module (every example again) is cached when first used
+    assert.ok(!build.files.includes("pkg/all_bg.wasm") && build.lazy.includes("pkg/all_bg.wasm"));
     assert.ok(!build.files.includes("sw.js"));
   });
 

@@ -29,6 +29,7 @@ async function variantOf(page, id, code) {
   return page.evaluate(
     async ([i, c]) => {
       const m = await import("./pkg/photogrammetry_playground.js");
+      await m.default(); // the one-package API (a no-op when the page loaded it already)
       const p = m.practice(i, c);
       return { inputs: p.inputs, result: m.solve(i, p.inputs).result };
     },

@@ -1,0 +1,194 @@
+// One wasm module per topic (web/<module>/), loaded on demand:
+// - catalog.json is the Rust catalog (pkg/all.js's catalog()), and each
+//   topic module's own catalog() agrees with its entries there;
+// - every example solves from a cold load of its own address, with the
+//   numbers of the Rust solver, having fetched only its own module before
+//   the first solution (the other topics follow when the page is idle);
+// - practice loads pkg/all.js only when it opens;
+// - the one-package API (pkg/photogrammetry_playground.js) and the lighter
+//   pkg/examples.js both solve an example of every topic in a blank page.
+import { after, before, describe, test } from "node:test";
+import assert from "node:assert/strict";
+import fs from "node:fs";
+import path from "node:path";
+import { pathToFileURL } from "node:url";
+import { DIST, TEST_TIMEOUT, exact, open, start, visit } from "./harness.mjs";
+
+const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, "catalog.json"), "utf8"));
+const MODULES = [...new Set(CATALOG.map((e) => e.module))];
+
+/** A module of dist/pkg, initialised in Node. */
+async function nodeModule(name) {
+  const m = await import(pathToFileURL(path.resolve(DIST, "pkg", `${name}.js`)).href);
+  m.initSync({ module: fs.readFileSync(path.resolve(DIST, "pkg", `${name}_bg.wasm`)) });
+  return m;
+}
+
+const all = await nodeModule("all");
+
+/** The seed's numeric answers of example `id`: [[key, value]]. */
+function seedAnswers(id) {
+  const s = all.solve(id, {});
+  return s.answer.filter((k) => typeof s.result[k] === "number").map((k) => [k, s.result[k]]);
+}
+
+/** One example of each module: [module, id]. */
+const ONE_PER_MODULE = MODULES.map((m) => [m, CATALOG.find((e) => e.module === m && e.status === "ready").id]);
+
+let env;
+before(async () => {
+  env = await start();
+});
+after(async () => {
+  await env?.close();
+});
+
+describe("the catalog as data", () => {
+  test("catalog.json is the Rust catalog, every entry with its module (its fields come with the module)", () => {
+    assert.deepEqual(CATALOG, all.catalog().map(({ inputs: _, ...entry }) => entry));
+    assert.equal(CATALOG.length, 26);
+    for (const e of CATALOG) {
+      assert.equal(typeof e.module, "string", e.id);
+      assert.equal(typeof e.practice, "boolean", e.id);
+    }
+    assert.deepEqual(MODULES, ["coordinates", "transformations", "correlation", "matching", "resampling", "filters", "interest", "chains", "projection"]);
+  });
+
+  test("each topic module's own catalog() is its entries of catalog.json", async () => {
+    for (const name of MODULES) {
+      const m = await nodeModule(name);
+      const expected = all
+        .catalog()
+        .filter((e) => e.module === name)
+        .map(({ practice: _p, module: _m, ...rest }) => rest);
+      assert.deepEqual(m.catalog(), expected, name);
+      const own = m.catalog().map(({ inputs: _, ...rest }) => rest);
+      assert.deepEqual(own, CATALOG.filter((e) => e.module === name).map(({ practice: _p, module: _m, ...rest }) => rest), name);
+      // and it solves its own examples only
+      const other = CATALOG.find((e) => e.module !== name);
+      assert.throws(() => m.solve(other.id, {}), new RegExp(other.id), name);
+    }
+  });
+});
+
+describe("a cold load of each example", () => {
+  for (const entry of CATALOG.filter((e) => e.status === "ready")) {
+    test(`${entry.id}: solves, fetching only pkg/${entry.module} before its first solution`, { timeout: TEST_TIMEOUT }, async () => {
+      const { context, page, log } = await open(env.browser);
+      try {
+        assert.equal(await visit(page, env.url, "index.html", `#/${entry.id}`), "ok");
+        const answers = seedAnswers(entry.id);
+        for (const [key, value] of answers) {
+          const shown = await exact(page, key);
+          assert.ok(Math.abs(shown - value) <= 1e-9 * Math.max(1, Math.abs(value)), `${entry.id} ${key}: page ${shown}, Rust ${value}`);
+        }
+        assert.ok((await page.locator(".answer-line").innerText()).trim().length > 0, "the answer line is shown");
+        const before = await page.evaluate(() => {
+          const mark = performance.getEntriesByName("first-solution")[0];
+          return performance
+            .getEntriesByType("resource")
+            .filter((r) => r.startTime < mark.startTime)
+            .map((r) => new URL(r.name).pathname);
+        });
+        const wasm = before.filter((p) => p.includes("/pkg/"));
+        assert.deepEqual(wasm.sort(), [`/pkg/${entry.module}.js`, `/pkg/${entry.module}_bg.wasm`].sort(), `${entry.id}: ${wasm.join(" ")}`);
+        assert.ok(before.includes("/catalog.json"));
+        assert.deepEqual(log.pageErrors, []);
+        assert.deepEqual(log.consoleErrors, []);
+      } finally {
+        await context.close();
+      }
+    });
+  }
+
+  test("the other topics' modules load when the page is idle; a switch then needs no fetch", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/gsd"), "ok");
+      await page.waitForFunction((n) => performance.getEntriesByType("resource").filter((r) => r.name.endsWith("_bg.wasm")).length >= n, MODULES.length, { timeout: 15_000 });
+      const wasm = log.requests.filter((u) => u.endsWith("_bg.wasm")).map((u) => new URL(u).pathname).sort();
+      assert.deepEqual(wasm, MODULES.map((m) => `/pkg/${m}_bg.wasm`).sort(), "every topic once, not all.js");
+      const count = log.requests.length;
+      await page.evaluate(() => {
+        location.hash = "#/utm";
+      });
+      await page.waitForSelector('article.example[data-id="utm"]');
+      const [[key, value]] = seedAnswers("utm").filter(([k]) => k === "easting");
+      assert.ok(Math.abs((await exact(page, key)) - value) < 1e-6);
+      assert.equal(log.requests.slice(count).filter((u) => u.includes("/pkg/")).length, 0);
+      assert.deepEqual(log.pageErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("practice loads pkg/all.js when it opens, and no topic module", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await page.goto(`${env.url}index.html#/gsd?practice=1K7Q2`);
+      await page.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: 15_000 });
+      const pkg = log.requests.filter((u) => u.includes("/pkg/")).map((u) => new URL(u).pathname);
+      assert.deepEqual(pkg.sort(), ["/pkg/all.js", "/pkg/all_bg.wasm"]);
+      assert.deepEqual(log.pageErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
+describe("the public JS API in a blank page", () => {
+  async function blankPage() {
+    const opened = await open(env.browser);
+    await opened.page.goto(`${env.url}version.json`);
+    await opened.page.setContent("<!doctype html><title>A course page</title><p>blank</p>");
+    return opened;
+  }
+
+  test("the one-package form: init(), then solve/parse_inputs/catalog/practice/grade synchronously", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await blankPage();
+    try {
+      const got = await page.evaluate(async (ids) => {
+        const m = await import("/pkg/photogrammetry_playground.js");
+        await m.default();
+        const out = {};
+        for (const id of ids) out[id] = m.solve(id, m.parse_inputs(id, {}).inputs).result;
+        const p = m.practice("gsd", "1K7Q2");
+        return { out, n: m.catalog().length, code: p.code, score: typeof m.grade("gsd", p.code, {}).out_of };
+      }, ONE_PER_MODULE.map(([, id]) => id));
+      assert.equal(got.n, CATALOG.length);
+      assert.equal(got.code, "1K7Q2");
+      assert.equal(got.score, "number");
+      for (const [, id] of ONE_PER_MODULE) {
+        for (const [key, value] of seedAnswers(id)) assert.equal(got.out[id][key], value, `${id} ${key}`);
+      }
+      assert.deepEqual(log.pageErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("the lighter form: loadExample(id) fetches only that example's module", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await blankPage();
+    try {
+      for (const [name, id] of ONE_PER_MODULE) {
+        const count = log.requests.length;
+        const result = await page.evaluate(async (i) => {
+          const { loadExample } = await import("/pkg/examples.js");
+          const ex = await loadExample(i);
+          return ex.solve(ex.parseInputs({}).inputs).result;
+        }, id);
+        for (const [key, value] of seedAnswers(id)) assert.equal(result[key], value, `${id} ${key}`);
+        const wasm = log.requests.slice(count).filter((u) => u.endsWith("_bg.wasm")).map((u) => new URL(u).pathname);
+        assert.deepEqual(wasm, [`/pkg/${name}_bg.wasm`], id);
+      }
+      const r = await page.evaluate(async () => {
+        const { solve } = await import("/pkg/examples.js");
+        return (await solve("gsd", { dpi: 1200 })).result.gsd_cm;
+      });
+      assert.ok(Math.abs(r - (((25.4 / 1200) * 1920000) / 152) / 10) < 1e-9);
+      assert.deepEqual(log.pageErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+});
