@@ -73,8 +73,11 @@ fn audit(spec: &Spec, seeds: u32, stride: u32, solve_stride: u32) {
             .map(|c| c(&inputs, &Record::new()).expect("chain runs"));
         for b in &boxes {
             let x = value_in(&s, &b.key).unwrap_or_else(|e| panic!("{} {code}: {e}", spec.id));
+            // Metres may be UTM northings (up to 10 000 000 m); everything
+            // else stays below a million.
+            let limit = if b.unit == Some("m") { 1.0e7 } else { 1.0e6 };
             assert!(
-                x.is_finite() && x.abs() < 1e6,
+                x.is_finite() && x.abs() <= limit,
                 "{} {code}: box {} = {x} is not a number a student can handle",
                 spec.id,
                 b.key
@@ -178,6 +181,40 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 }
             }
         }
+        "utm" => {
+            // inside its (standard) zone, near but not on a border
+            let dlon = s
+                .steps
+                .iter()
+                .find_map(|st| st.values.number("dlon"))
+                .unwrap_or(f64::NAN);
+            // Norway's zone 32 reaches 6° west of 9°E, Svalbard's zones 6°
+            // either side of their meridians (and may hold it: Δλ ≈ 0).
+            let (near, edge) = if r.get("zone_rule") == Some(&Value::Text("regular".into())) {
+                (0.1, 3.0)
+            } else {
+                (0.0, 6.0)
+            };
+            if !(dlon.abs() >= near - 1e-9 && dlon.abs() <= edge - 0.1 + 1e-9) {
+                fail(&format!("Δλ = {dlon}° is on or beyond a zone border"))
+            }
+            if num(r, "zone") != num(r, "standard_zone")
+                || r.get("in_legal_range") != Some(&Value::Bool(true))
+            {
+                fail("not the standard zone or not a legal UTM point")
+            }
+            let lat = num(&s.inputs, "latitude");
+            if lat.abs() < 0.5 - 1e-9 || !(-79.5 - 1e-9..=83.8 + 1e-9).contains(&lat) {
+                fail("latitude too near the equator or the UTM limits")
+            }
+        }
+        "utm-inverse" => {
+            let lat = num(r, "latitude");
+            let south = s.inputs.get("hemisphere") == Some(&Value::Text("south".into()));
+            if lat.abs() < 0.49 || lat.abs() > 84.0 || (lat < 0.0) != south {
+                fail("latitude near the equator, beyond UTM, or in the other hemisphere")
+            }
+        }
         _ => {}
     }
 }
@@ -259,25 +296,32 @@ audit_tests! {
     audit_chain_code => "chain-code",
     audit_boundary_length => "boundary-length",
     audit_boundary_shape => "boundary-shape",
+    audit_utm => "utm",
+    audit_utm_inverse => "utm-inverse",
 }
 
 #[test]
-fn every_ready_example_but_utm_has_practice() {
+fn every_ready_example_but_utm_facts_has_practice() {
     let have: Vec<_> = specs().iter().map(|s| s.id).collect();
     let missing: Vec<_> = examples::catalog()
         .into_iter()
-        // UTM has no practice variants yet (the page shows no Practice link for it).
-        .filter(|e| e.status == "ready" && !e.id.starts_with("utm") && !have.contains(&e.id))
+        // utm-facts has no variants: its one input is a parallel, and most
+        // of its answers (k₀, the false easting, the latitude limits, the
+        // zones of Thailand) are the same for every parallel.
+        .filter(|e| e.status == "ready" && e.id != "utm-facts" && !have.contains(&e.id))
         .map(|e| e.id)
         .collect();
     assert_eq!(missing, Vec::<&str>::new());
+    assert!(have.contains(&"utm") && have.contains(&"utm-inverse"));
     // the catalog says which examples have practice, so the page links only to those
     for e in examples::catalog() {
         assert_eq!(e.practice, have.contains(&e.id), "{}", e.id);
     }
     assert!(
-        examples::catalog().iter().any(|e| !e.practice),
-        "utm has none yet"
+        examples::catalog()
+            .iter()
+            .any(|e| e.id == "utm-facts" && !e.practice),
+        "utm-facts has none"
     );
 }
 
@@ -510,6 +554,8 @@ mistake_tests! {
     mistakes_chain_code => "chain-code",
     mistakes_boundary_length => "boundary-length",
     mistakes_boundary_shape => "boundary-shape",
+    mistakes_utm => "utm",
+    mistakes_utm_inverse => "utm-inverse",
 }
 
 #[test]

@@ -1079,7 +1079,12 @@ fn first_iteration_2d(
             .value("gr", Value::matrix(&it.gr.rows()))
             .value("bordered", Value::matrix(&it.bordered.rows())),
     );
-    s.step(normal_step(it, syms));
+    let inc = |k: usize| it.increments.get(k).copied().unwrap_or(0.0);
+    s.step(
+        normal_step(it, syms)
+            .value("c_after_first", it.params.a[2] + 1.0 + inc(0))
+            .value("r_after_first", it.params.a[5] + 1.0 + inc(1)),
+    );
 }
 
 fn ex11_notes(s: &mut Solution, m: &Matching, gradients: Gradients, inputs: &Record) -> Result<()> {
@@ -1307,7 +1312,11 @@ fn lsm_affine(inputs: &Record) -> Result<Solution> {
         ),
     )
     .value("parameters", Value::numbers(&est))
-    .value("true_parameters", Value::numbers(&truth.a));
+    .value("true_parameters", Value::numbers(&truth.a))
+    // the scale and rotation the estimate implies (no shear: the first
+    // column of [a1 a2; a4 a5] is s·(cos θ, sin θ))
+    .value("estimated_scale", est[0].hypot(est[3]))
+    .value("estimated_rotation_deg", est[3].atan2(est[0]).to_degrees());
     if let Some(sd) = &sd {
         step = step.value("std_dev", Value::numbers(sd));
     }

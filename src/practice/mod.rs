@@ -19,6 +19,7 @@ pub mod filters;
 pub mod grade;
 pub mod interest;
 pub mod matching;
+pub mod projection;
 pub mod read;
 pub mod resampling;
 pub mod transformations;
@@ -220,6 +221,7 @@ pub fn specs() -> Vec<Spec> {
     all.extend(filters::specs());
     all.extend(interest::specs());
     all.extend(chains::specs());
+    all.extend(projection::specs());
     all
 }
 
