@@ -106,7 +106,6 @@ fn gen_forward(rng: &mut Rng) -> Record {
         .with("latitude", lat)
         .with("longitude", lon)
         .with("ellipsoid", "wgs84")
-        .with("zone", 0.0)
 }
 
 fn boxes_forward(_: &Record) -> Vec<BoxDef> {
