@@ -320,10 +320,12 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
     // The numbers of the step, or of the step before when the step only
     // states the result (a solution vector): never the answer itself.
     let answer = value_in(s, &b.key).ok().map(crate::solution::num);
+    // The answer as printed, or its first five significant digits (a step
+    // may print it to more digits than `num` does: UTM's ξ, η).
     let gives_away = |t: &str| {
-        answer
-            .as_ref()
-            .is_some_and(|a| a.len() >= 4 && t.contains(a.as_str()))
+        answer.as_ref().is_some_and(|a| {
+            a.len() >= 4 && (t.contains(a.as_str()) || t.contains(leading_digits(a, 5)))
+        })
     };
     let numbers = [step, step.wrapping_sub(1)]
         .iter()
@@ -344,6 +346,21 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
             step,
         },
     }
+}
+
+/// `text` (a number as printed) up to its `n`-th significant digit, or all
+/// of it when it has fewer: "-0.0056488" → "-0.0056488", "1.2796358" → "1.2796".
+fn leading_digits(text: &str, n: usize) -> &str {
+    let mut seen = 0;
+    for (i, ch) in text.char_indices() {
+        if ch.is_ascii_digit() && (seen > 0 || ch != '0') {
+            seen += 1;
+            if seen == n {
+                return &text[..i + ch.len_utf8()];
+            }
+        }
+    }
+    text
 }
 
 /// The tolerance in words.
@@ -526,6 +543,9 @@ mod tests {
             "g = 2 \\cdot 3 = \\;?"
         );
         assert_eq!(without_result("x = (-8.25)"), "x = \\;?");
+        assert_eq!(leading_digits("1.2796358243", 5), "1.2796");
+        assert_eq!(leading_digits("-0.00564888", 5), "-0.0056488");
+        assert_eq!(leading_digits("12.5", 5), "12.5");
         assert_eq!(without_result("x = a + b"), "x = a + b");
     }
 }
