@@ -115,6 +115,7 @@ fn utm_practice_carries_the_students_zone_forward() {
     assert_eq!(text(&p, &["boxes", "0", "key"]), "zone");
     assert_eq!(text(&p, &["boxes", "8", "key"]), "easting");
     assert_eq!(text(&p, &["boxes", "8", "tolerance_text"]), "± 0.01 m");
+    assert_eq!(text(&p, &["boxes", "6", "tolerance_text"]), "± 10⁻⁹");
     let s = solve("utm", at(&p, &["inputs"])).unwrap();
     let zone = at(&s, &["result", "zone"]).as_f64().unwrap();
     // zone off by one, and the central meridian that follows from it
@@ -134,7 +135,10 @@ fn utm_practice_carries_the_students_zone_forward() {
     let g = grade(
         "utm",
         "1K7Q2",
-        obj(&format!(r#"{{"central_meridian": "{}"}}"#, 6.0 * zone - 180.0)),
+        obj(&format!(
+            r#"{{"central_meridian": "{}"}}"#,
+            6.0 * zone - 180.0
+        )),
     )
     .unwrap();
     assert_eq!(

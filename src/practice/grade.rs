@@ -291,10 +291,10 @@ fn grade_box(ctx: &Ctx, k: usize, text: &str) -> (BoxGrade, Option<Answer>) {
             return (g, Some(a));
         }
     }
-    g.message = format!(
-        "Not within {} of the expected value. Try the hints.",
-        super::tolerance_text(tol, b.unit)
-    );
+    g.message = match super::tolerance_text(tol, b.unit).as_str() {
+        "exact" => "Not the expected value. Try the hints.".to_string(),
+        within => format!("Not within {within} of the expected value. Try the hints."),
+    };
     (g, Some(a))
 }
 

@@ -367,8 +367,22 @@ fn leading_digits(text: &str, n: usize) -> &str {
 pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
     let u = unit.map(|u| format!(" {u}")).unwrap_or_default();
     let abs = if t.atol > 0.0 && t.atol < 1e-4 {
-        // 1e-7 rather than 0.0000001
-        format!("{:e}", t.atol)
+        // 10⁻⁷ (or 2.5×10⁻⁷) rather than 0.0000001
+        let e = format!("{:e}", t.atol);
+        let (mantissa, exp) = e.split_once('e').unwrap_or((e.as_str(), "0"));
+        let sup: String = exp
+            .chars()
+            .map(|c| match c {
+                '-' => '⁻',
+                d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                    [d.to_digit(10).unwrap_or(0) as usize],
+            })
+            .collect();
+        if mantissa == "1" {
+            format!("10{sup}")
+        } else {
+            format!("{mantissa}×10{sup}")
+        }
     } else {
         crate::solution::fmt_sig(t.atol, 3)
     };
@@ -525,6 +539,12 @@ mod tests {
         assert!(!t.accepts(10.0, 10.0201));
         assert!(!t.accepts(10.0, 9.9799));
         assert_eq!(tolerance_text(t, Some("mm")), "± (0.01 mm + 0.1 %)");
+        assert_eq!(tolerance_text(Tolerance::abs(1e-9), None), "± 10⁻⁹");
+        assert_eq!(
+            tolerance_text(Tolerance::abs(2.5e-7), Some("°")),
+            "± 2.5×10⁻⁷ °"
+        );
+        assert_eq!(tolerance_text(Tolerance::abs(0.0), None), "exact");
     }
 
     #[test]
