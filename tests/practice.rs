@@ -73,8 +73,11 @@ fn audit(spec: &Spec, seeds: u32, stride: u32, solve_stride: u32) {
             .map(|c| c(&inputs, &Record::new()).expect("chain runs"));
         for b in &boxes {
             let x = value_in(&s, &b.key).unwrap_or_else(|e| panic!("{} {code}: {e}", spec.id));
+            // Metres may be UTM northings (up to 10 000 000 m); everything
+            // else stays below a million.
+            let limit = if b.unit == Some("m") { 1.0e7 } else { 1.0e6 };
             assert!(
-                x.is_finite() && x.abs() < 1e6,
+                x.is_finite() && x.abs() <= limit,
                 "{} {code}: box {} = {x} is not a number a student can handle",
                 spec.id,
                 b.key
@@ -178,6 +181,40 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 }
             }
         }
+        "utm" => {
+            // inside its (standard) zone, near but not on a border
+            let dlon = s
+                .steps
+                .iter()
+                .find_map(|st| st.values.number("dlon"))
+                .unwrap_or(f64::NAN);
+            // Norway's zone 32 reaches 6° west of 9°E, Svalbard's zones 6°
+            // either side of their meridians (and may hold it: Δλ ≈ 0).
+            let (near, edge) = if r.get("zone_rule") == Some(&Value::Text("regular".into())) {
+                (0.1, 3.0)
+            } else {
+                (0.0, 6.0)
+            };
+            if !(dlon.abs() >= near - 1e-9 && dlon.abs() <= edge - 0.1 + 1e-9) {
+                fail(&format!("Δλ = {dlon}° is on or beyond a zone border"))
+            }
+            if num(r, "zone") != num(r, "standard_zone")
+                || r.get("in_legal_range") != Some(&Value::Bool(true))
+            {
+                fail("not the standard zone or not a legal UTM point")
+            }
+            let lat = num(&s.inputs, "latitude");
+            if lat.abs() < 0.5 - 1e-9 || !(-79.5 - 1e-9..=83.8 + 1e-9).contains(&lat) {
+                fail("latitude too near the equator or the UTM limits")
+            }
+        }
+        "utm-inverse" => {
+            let lat = num(r, "latitude");
+            let south = s.inputs.get("hemisphere") == Some(&Value::Text("south".into()));
+            if lat.abs() < 0.49 || lat.abs() > 84.0 || (lat < 0.0) != south {
+                fail("latitude near the equator, beyond UTM, or in the other hemisphere")
+            }
+        }
         _ => {}
     }
 }
@@ -259,18 +296,23 @@ audit_tests! {
     audit_chain_code => "chain-code",
     audit_boundary_length => "boundary-length",
     audit_boundary_shape => "boundary-shape",
+    audit_utm => "utm",
+    audit_utm_inverse => "utm-inverse",
 }
 
 #[test]
-fn every_ready_example_but_utm_has_practice() {
+fn every_ready_example_but_utm_facts_has_practice() {
     let have: Vec<_> = specs().iter().map(|s| s.id).collect();
     let missing: Vec<_> = examples::catalog()
         .into_iter()
-        // UTM has no practice variants yet (the page shows no Practice link for it).
-        .filter(|e| e.status == "ready" && !e.id.starts_with("utm") && !have.contains(&e.id))
+        // utm-facts has no variants: its one input is a parallel, and most
+        // of its answers (k₀, the false easting, the latitude limits, the
+        // zones of Thailand) are the same for every parallel.
+        .filter(|e| e.status == "ready" && e.id != "utm-facts" && !have.contains(&e.id))
         .map(|e| e.id)
         .collect();
     assert_eq!(missing, Vec::<&str>::new());
+    assert!(have.contains(&"utm") && have.contains(&"utm-inverse"));
     // the catalog says which examples have practice, so the page links only to those
     for e in examples::catalog() {
         assert_eq!(e.practice, Some(have.contains(&e.id)), "{}", e.id);
@@ -278,8 +320,8 @@ fn every_ready_example_but_utm_has_practice() {
     assert!(
         examples::catalog()
             .iter()
-            .any(|e| e.practice == Some(false)),
-        "utm has none yet"
+            .any(|e| e.id == "utm-facts" && e.practice == Some(false)),
+        "utm-facts has none"
     );
 }
 
@@ -512,6 +554,8 @@ mistake_tests! {
     mistakes_chain_code => "chain-code",
     mistakes_boundary_length => "boundary-length",
     mistakes_boundary_shape => "boundary-shape",
+    mistakes_utm => "utm",
+    mistakes_utm_inverse => "utm-inverse",
 }
 
 #[test]
@@ -588,4 +632,448 @@ fn the_numbers_hint_does_not_give_the_answer_away() {
             }
         }
     }
+}
+
+/// Error carried forward on a fixed variant: `early` boxes answered wrong
+/// (the exact value plus a delta), then
+/// - the `later` boxes computed correctly *from those wrong values* (by the
+///   example's own chain) are "consistent", naming the wrong step;
+/// - the `later` boxes computed from the right values are "correct";
+/// - an unrelated value in a later box is "wrong".
+fn carries_forward(id: &str, code: &str, early: &[(&str, f64)], later: &[&str]) {
+    let spec = specs().into_iter().find(|s| s.id == id).unwrap();
+    let chain = spec.chain.unwrap_or_else(|| panic!("{id} has no chain"));
+    let p = variant(id, Some(code), 0).unwrap();
+    let mut given = Record::new();
+    let mut wrong: Vec<(String, String)> = Vec::new();
+    for (k, delta) in early {
+        let x = exact(id, code, k) + delta;
+        given.set(k, x);
+        wrong.push((k.to_string(), format!("{x}")));
+    }
+    let implied = chain(&p.inputs, &given).unwrap();
+    let step_of = |k: &str| p.boxes.iter().position(|b| b.key == k).unwrap() + 1;
+    for k in later {
+        let b = p.boxes.iter().find(|b| b.key == *k).unwrap();
+        let (x, y) = (exact(id, code, k), implied.number(k).unwrap());
+        assert!(
+            !b.tolerance.accepts(x, y),
+            "{id} {code} {k}: the wrong start does not change this box ({x} vs {y})"
+        );
+    }
+    let grade_with = |later_values: &[(&str, f64)]| {
+        let mut a = Record::new();
+        for (k, t) in &wrong {
+            a.set(k, Value::Text(t.clone()));
+        }
+        for (k, x) in later_values {
+            a.set(k, Value::Text(format!("{x}")));
+        }
+        grade(id, code, &a).unwrap()
+    };
+    // from the wrong values: consistent
+    let values: Vec<(&str, f64)> = later
+        .iter()
+        .map(|k| (*k, implied.number(k).unwrap()))
+        .collect();
+    let g = grade_with(&values);
+    for (k, _) in early {
+        assert_eq!(verdict(&g, k), "wrong", "{id} {k}: {:?}", g.get(k));
+    }
+    for k in later {
+        let b = g.get(k).unwrap();
+        assert_eq!(verdict(&g, k), "consistent", "{id} {k}: {b:?}");
+        assert!(
+            b.message
+                .contains(&format!("(step {})", step_of(early[0].0))),
+            "{id} {k}: {}",
+            b.message
+        );
+        assert_eq!(b.points, 1.0);
+    }
+    // from the right values: correct
+    let values: Vec<(&str, f64)> = later.iter().map(|k| (*k, exact(id, code, k))).collect();
+    let g = grade_with(&values);
+    for k in later {
+        assert_eq!(verdict(&g, k), "correct", "{id} {k}: {:?}", g.get(k));
+    }
+    // unrelated (one box at a time, beside the wrong start): on the other
+    // side of the exact value, three times as far as the consistent one
+    for k in later {
+        let (x, y) = (exact(id, code, k), implied.number(k).unwrap());
+        let g = grade_with(&[(k, x - 3.0 * (y - x))]);
+        assert_eq!(verdict(&g, k), "wrong", "{id} {k}: {:?}", g.get(k));
+    }
+}
+
+#[test]
+fn carried_forward_ncc_surface() {
+    let p = variant("ncc-surface", Some(P2P), 0).unwrap();
+    let best = p.boxes[3].key.clone();
+    assert!(best.starts_with("rho[") && best != "rho[1,1]");
+    carries_forward(
+        "ncc-surface",
+        P2P,
+        &[("mean_template", 20.0)],
+        &["sum_da2", "rho[1,1]", &best],
+    );
+    // a wrong Σ ΔA² alone carries into both ρ
+    carries_forward(
+        "ncc-surface",
+        "1ZZZZ",
+        &[("sum_da2", 4000.0)],
+        &["rho[1,1]"],
+    );
+}
+
+#[test]
+fn carried_forward_subpixel_2d() {
+    for code in [P2P, "1ZZZZ"] {
+        // b₁ moves the peak's column, b₂ its row
+        carries_forward(
+            "subpixel-2d",
+            code,
+            &[("local_coefficients[2]", 0.05)],
+            &["c_max"],
+        );
+        carries_forward(
+            "subpixel-2d",
+            code,
+            &[("local_coefficients[3]", -0.05)],
+            &["r_max"],
+        );
+    }
+}
+
+#[test]
+fn carried_forward_filter_window() {
+    for code in [P2P, "1ZZZZ", "10000"] {
+        carries_forward(
+            "filter-window",
+            code,
+            &[("numerator_sum", 10.0)],
+            &["output[1,1]"],
+        );
+    }
+}
+
+#[test]
+fn carried_forward_fiducials_and_fits() {
+    for id in ["fiducial-similarity", "fiducial-affine", "transform-fit"] {
+        for code in [P2P, "1ZZZZ"] {
+            // a shift off by half a unit: σ₀ from the student's parameters
+            carries_forward(id, code, &[("parameters[3]", 0.5)], &["sigma0"]);
+        }
+    }
+}
+
+#[test]
+fn carried_forward_lsm() {
+    carries_forward(
+        "lsm-1d",
+        P2P,
+        &[("AtL[1]", 50.0)],
+        &["first_dc", "c_after_first"],
+    );
+    carries_forward("lsm-1d", "1ZZZZ", &[("first_dc", 0.2)], &["c_after_first"]);
+    carries_forward(
+        "lsm-2d",
+        P2P,
+        &[("first_dc", 0.2), ("first_dr", -0.15)],
+        &["c_after_first", "r_after_first"],
+    );
+    carries_forward(
+        "lsm-affine",
+        P2P,
+        &[("parameters[1]", 0.05)],
+        &["estimated_scale", "estimated_rotation_deg"],
+    );
+}
+
+#[test]
+fn carried_forward_forstner_image() {
+    for code in [P2P, "1ZZZZ"] {
+        carries_forward(
+            "forstner-image",
+            code,
+            &[("n[1,1]", 3000.0)],
+            &["w", "q", "weak_angle_deg"],
+        );
+    }
+}
+
+/// The first variant (from 0) of `id` whose inputs pass `pred`.
+fn find_variant(id: &str, pred: impl Fn(&Record) -> bool) -> String {
+    (0..2000)
+        .map(encode)
+        .find(|c| pred(&variant(id, Some(c), 0).unwrap().inputs))
+        .unwrap_or_else(|| panic!("no such {id} variant"))
+}
+
+#[test]
+fn carried_forward_utm_from_the_zone_and_meridian() {
+    let later = [
+        "central_meridian",
+        "dlon",
+        "xi_prime",
+        "eta_prime",
+        "xi",
+        "eta",
+        "easting",
+        "northing",
+        "scale_factor",
+        "convergence",
+    ];
+    let north = find_variant("utm", |i| i.number("latitude").unwrap() > 0.0);
+    let south = find_variant("utm", |i| i.number("latitude").unwrap() < 0.0);
+    for code in [&north, &south] {
+        // the zone off by one: everything after it follows from it
+        carries_forward("utm", code, &[("zone", 1.0)], &later);
+        // the meridian 6·zone − 180 (the −3 left out)
+        carries_forward("utm", code, &[("central_meridian", 3.0)], &later[1..]);
+    }
+    // the inverse: a wrong meridian moves only the longitude; a wrong y
+    // carries through the series to the latitude
+    let inv = find_variant("utm-inverse", |_| true);
+    carries_forward(
+        "utm-inverse",
+        &inv,
+        &[("central_meridian", 6.0)],
+        &["longitude"],
+    );
+    carries_forward(
+        "utm-inverse",
+        &inv,
+        &[("y", 20_000.0)],
+        &[
+            "xi",
+            "xi_prime",
+            "eta_prime",
+            "tau_prime",
+            "latitude",
+            "dlon",
+            "longitude",
+            "convergence",
+        ],
+    );
+    // a wrong x moves the scale factor (k grows away from the meridian)
+    carries_forward(
+        "utm-inverse",
+        &inv,
+        &[("x", 20_000.0)],
+        &[
+            "eta",
+            "eta_prime",
+            "dlon",
+            "longitude",
+            "scale_factor",
+            "convergence",
+        ],
+    );
+}
+
+/// The UTM mistakes the course warns about, each named on a variant where
+/// it applies.
+#[test]
+fn utm_mistakes_are_named() {
+    let named = |id: &str, code: &str, key: &str, text: String| {
+        let g = grade(id, code, &answers(&[(key, &text)])).unwrap();
+        let b = g.get(key).unwrap();
+        assert_eq!(
+            b.verdict,
+            practice::grade::Verdict::Wrong,
+            "{key} {text}: {b:?}"
+        );
+        b.mistake.unwrap_or("none").to_string()
+    };
+    let north = find_variant("utm", |i| i.number("latitude").unwrap() > 0.0);
+    let south = find_variant("utm", |i| i.number("latitude").unwrap() < 0.0);
+    let norway = find_variant("utm", |i| {
+        let (lat, lon) = (
+            i.number("latitude").unwrap(),
+            i.number("longitude").unwrap(),
+        );
+        (56.0..64.0).contains(&lat) && (3.0..6.0).contains(&lon)
+    });
+    for code in [&north, &south, &norway] {
+        let x = |k: &str| exact("utm", code, k);
+        let z = x("zone");
+        assert_eq!(
+            named(
+                "utm",
+                code,
+                "central_meridian",
+                format!("{}", 6.0 * z - 180.0)
+            ),
+            "6·zone − 180 without the −3"
+        );
+        assert_eq!(
+            named(
+                "utm",
+                code,
+                "central_meridian",
+                format!("{}", x("central_meridian") + 6.0)
+            ),
+            "zone off by one"
+        );
+        assert_eq!(
+            named("utm", code, "dlon", format!("{}", x("dlon").to_radians())),
+            "degrees vs radians"
+        );
+        assert_eq!(
+            named(
+                "utm",
+                code,
+                "easting",
+                format!("{:.3}", x("easting") - 500_000.0)
+            ),
+            "false easting forgotten"
+        );
+        assert_eq!(
+            named(
+                "utm",
+                code,
+                "easting",
+                format!("{:.3}", 500_000.0 + (x("easting") - 500_000.0) / 0.9996)
+            ),
+            "k₀ = 0.9996 forgotten"
+        );
+        assert_eq!(
+            named(
+                "utm",
+                code,
+                "scale_factor",
+                format!("{}", x("scale_factor") / 0.9996)
+            ),
+            "k₀ = 0.9996 forgotten"
+        );
+        assert_eq!(
+            named(
+                "utm",
+                code,
+                "convergence",
+                format!("{}", x("convergence").to_radians())
+            ),
+            "degrees vs radians"
+        );
+    }
+    let n = exact("utm", &north, "northing");
+    assert_eq!(
+        named(
+            "utm",
+            &north,
+            "northing",
+            format!("{:.3}", n + 10_000_000.0)
+        ),
+        "false northing applied in the north"
+    );
+    let s = exact("utm", &south, "northing");
+    assert_eq!(
+        named(
+            "utm",
+            &south,
+            "northing",
+            format!("{:.3}", s - 10_000_000.0)
+        ),
+        "false northing forgotten"
+    );
+    // latitude and longitude swapped: the zone of φ taken as a longitude
+    let i = variant("utm", Some(&north), 0).unwrap().inputs;
+    let lat = i.number("latitude").unwrap();
+    let zone_of_lat = ((lat + 180.0) / 6.0).floor() + 1.0;
+    if zone_of_lat != exact("utm", &north, "zone") {
+        assert_eq!(
+            named("utm", &north, "zone", format!("{zone_of_lat}")),
+            "latitude and longitude swapped"
+        );
+    }
+    // Norway: the regular rule gives zone 31, the exception 32
+    assert_eq!(exact("utm", &norway, "zone"), 32.0);
+    assert_eq!(
+        named("utm", &norway, "zone", "31".into()),
+        "Norway/Svalbard exception missed"
+    );
+    // the inverse: false easting, false northing in the north, k₀, conformal latitude
+    let inv = find_variant("utm-inverse", |i| {
+        i.get("hemisphere") == Some(&Value::Text("north".into()))
+    });
+    let p = variant("utm-inverse", Some(&inv), 0).unwrap().inputs;
+    let x = |k: &str| exact("utm-inverse", &inv, k);
+    assert_eq!(
+        named(
+            "utm-inverse",
+            &inv,
+            "x",
+            format!("{}", p.number("easting").unwrap())
+        ),
+        "false easting forgotten"
+    );
+    assert_eq!(
+        named(
+            "utm-inverse",
+            &inv,
+            "y",
+            format!("{}", p.number("northing").unwrap() - 1e7)
+        ),
+        "false northing applied in the north"
+    );
+    assert_eq!(
+        named("utm-inverse", &inv, "xi", format!("{}", x("xi") * 0.9996)),
+        "k₀ = 0.9996 forgotten"
+    );
+    assert_eq!(
+        named(
+            "utm-inverse",
+            &inv,
+            "latitude",
+            format!("{}", x("tau_prime").atan().to_degrees())
+        ),
+        "conformal latitude taken for the latitude"
+    );
+    assert_eq!(
+        named(
+            "utm-inverse",
+            &inv,
+            "longitude",
+            format!("{}", x("latitude"))
+        ),
+        "latitude and longitude swapped"
+    );
+}
+
+/// UTM variants: both hemispheres and both exceptions turn up, and no
+/// point sits on a zone border.
+#[test]
+fn utm_variants_cover_both_hemispheres_and_the_exceptions() {
+    let (mut north, mut south, mut norway, mut svalbard) = (0, 0, 0, 0);
+    for v in 0..400 {
+        let i = variant("utm", Some(&encode(v)), 0).unwrap().inputs;
+        let (lat, lon) = (
+            i.number("latitude").unwrap(),
+            i.number("longitude").unwrap(),
+        );
+        if lat > 0.0 {
+            north += 1
+        } else {
+            south += 1
+        }
+        let (zone, rule) = photogrammetry_playground::projection::utm::standard_zone(lat, lon);
+        use photogrammetry_playground::projection::utm::ZoneRule;
+        match rule {
+            ZoneRule::Norway => norway += 1,
+            ZoneRule::Svalbard => svalbard += 1,
+            _ => {
+                let d = lon - photogrammetry_playground::projection::utm::central_meridian(zone);
+                assert!(
+                    d.abs() >= 0.1 - 1e-9 && d.abs() <= 2.9 + 1e-9,
+                    "{v}: Δλ = {d}"
+                );
+            }
+        }
+    }
+    assert!(north > 100 && south > 100, "{north} north, {south} south");
+    assert!(
+        norway > 20 && svalbard > 20,
+        "{norway} Norway, {svalbard} Svalbard"
+    );
 }

@@ -110,3 +110,41 @@ fn bad_input_is_a_clear_error() {
     let g = grade("gsd", "1K7Q2", JsValue::UNDEFINED).unwrap();
     assert_eq!(text(&g, &["boxes", "gsd_cm", "verdict"]), "empty");
 }
+
+#[wasm_bindgen_test]
+fn utm_practice_carries_the_students_zone_forward() {
+    let p = practice("utm", JsValue::from_str("1K7Q2")).unwrap();
+    assert_eq!(text(&p, &["boxes", "0", "key"]), "zone");
+    assert_eq!(text(&p, &["boxes", "8", "key"]), "easting");
+    assert_eq!(text(&p, &["boxes", "8", "tolerance_text"]), "± 0.01 m");
+    assert_eq!(text(&p, &["boxes", "6", "tolerance_text"]), "± 10⁻⁹");
+    let s = solve("utm", at(&p, &["inputs"])).unwrap();
+    let zone = at(&s, &["result", "zone"]).as_f64().unwrap();
+    // zone off by one, and the central meridian that follows from it
+    let answers = obj(&format!(
+        r#"{{"zone": "{}", "central_meridian": "{}"}}"#,
+        zone + 1.0,
+        6.0 * (zone + 1.0) - 183.0
+    ));
+    let g = grade("utm", "1K7Q2", answers).unwrap();
+    assert_eq!(text(&g, &["boxes", "zone", "verdict"]), "wrong");
+    assert_eq!(
+        text(&g, &["boxes", "central_meridian", "verdict"]),
+        "consistent"
+    );
+    assert!(text(&g, &["boxes", "central_meridian", "message"]).contains("Zone (step 1)"));
+    // the −3 left out is named
+    let g = grade(
+        "utm",
+        "1K7Q2",
+        obj(&format!(
+            r#"{{"central_meridian": "{}"}}"#,
+            6.0 * zone - 180.0
+        )),
+    )
+    .unwrap();
+    assert_eq!(
+        text(&g, &["boxes", "central_meridian", "mistake"]),
+        "6·zone − 180 without the −3"
+    );
+}

@@ -27,7 +27,7 @@ pub fn specs() -> Vec<Spec> {
             id: "ncc-surface",
             generate: gen_surface,
             boxes: boxes_surface,
-            chain: None,
+            chain: Some(chain_surface),
             mistakes: mistakes_surface,
         },
         Spec {
@@ -41,7 +41,7 @@ pub fn specs() -> Vec<Spec> {
             id: "subpixel-2d",
             generate: gen_sub_2d,
             boxes: boxes_sub_2d,
-            chain: None,
+            chain: Some(chain_sub_2d),
             mistakes: mistakes_sub_2d,
         },
     ]
@@ -335,6 +335,11 @@ fn surface_best(i: &Record) -> Result<(f64, f64)> {
 fn boxes_surface(i: &Record) -> Vec<BoxDef> {
     let (c, r) = surface_best(i).unwrap_or((2.0, 2.0));
     vec![
+        BoxDef::new("mean_template", "Template mean Ā", None, tol::GREY)
+            .nudge("Nine grey values: add them, divide by 9."),
+        BoxDef::new("sum_da2", "Σ ΔA² of the template", None, tol::SUM).nudge(
+            "Subtract Ā from each template value, square, add. It is the same for every position.",
+        ),
         BoxDef::new("rho[1,1]", "ρ at the top-left position", None, tol::RHO)
             .nudge("The sub-window whose top-left pixel is the search array's top-left pixel."),
         BoxDef::new(
@@ -356,6 +361,50 @@ fn boxes_surface(i: &Record) -> Vec<BoxDef> {
     ]
 }
 
+/// ρ at surface position (row `pr`, column `pc`), 1-based, from the
+/// template's mean and Σ ΔA² (the student's, when given).
+fn surface_rho(t: &[f64], ma: f64, aa: f64, s: &[Vec<f64>], pr: usize, pc: usize) -> f64 {
+    let w: Vec<f64> = s
+        .iter()
+        .skip(pr - 1)
+        .take(3)
+        .flat_map(|row| row.iter().skip(pc - 1).take(3).copied())
+        .collect();
+    let mb = mean(&w);
+    let (mut ab, mut bb) = (0.0, 0.0);
+    for (x, y) in t.iter().zip(&w) {
+        ab += (x - ma) * (y - mb);
+        bb += (y - mb) * (y - mb);
+    }
+    ab / (aa * bb).sqrt()
+}
+
+fn chain_surface(i: &Record, g: &Record) -> Result<Record> {
+    let (c, r) = surface_best(i)?;
+    let t = rows_of(i, "template").concat();
+    let s = rows_of(i, "search");
+    let ma = or_given(g, "mean_template", mean(&t));
+    let aa = or_given(
+        g,
+        "sum_da2",
+        t.iter().map(|x| (x - ma) * (x - ma)).sum::<f64>(),
+    );
+    let (br, bc) = (r as usize - 1, c as usize - 1);
+    let best = format!("rho[{br},{bc}]");
+    let mut out = Record::new()
+        .with("mean_template", ma)
+        .with("sum_da2", aa)
+        .with(
+            "rho[1,1]",
+            or_given(g, "rho[1,1]", surface_rho(&t, ma, aa, &s, 1, 1)),
+        );
+    out.set(
+        &best,
+        or_given(g, &best, surface_rho(&t, ma, aa, &s, br, bc)),
+    );
+    Ok(out.with("best_c", c).with("best_r", r))
+}
+
 fn mistakes_surface(i: &Record) -> Result<Vec<Mistake>> {
     let (c, r) = surface_best(i)?;
     let t = rows_of(i, "template").concat();
@@ -365,6 +414,12 @@ fn mistakes_surface(i: &Record) -> Result<Vec<Mistake>> {
     const CORNER: &str =
         "The position asked for is the centre pixel of the sub-window, not its top-left corner.";
     Ok(vec![
+        Mistake::new(
+            "sum_da2",
+            "mean not subtracted",
+            "Σ ΔA² adds the squared deviations from the mean, not the squared grey values.",
+            t.iter().map(|x| x * x).sum(),
+        ),
         Mistake::new(
             "rho[1,1]",
             "mean not subtracted",
@@ -463,32 +518,80 @@ fn gen_sub_2d(rng: &mut Rng) -> Record {
         .with("rho", mat(&rho))
 }
 
+/// The centred coefficients b₁ … b₅ (u = c − c̄, v = r − r̄) that the peak
+/// follows from: four decimals are plenty.
+const LOCAL: Tolerance = Tolerance::abs(0.0005);
+
 fn boxes_sub_2d(_: &Record) -> Vec<BoxDef> {
     let t = Tolerance::abs(0.01);
+    let fit = "Fit ρ = b₀ + b₁u + b₂v + b₃uv + b₄u² + b₅v² by least squares in the centred coordinates u = c − c̄, v = r − r̄ (each −1, 0 or 1): the normal equations nearly separate.";
     vec![
-        BoxDef::new("c_max", "Peak column c_max", Some("px"), t)
-            .nudge("Fit ρ = a₀ + a₁c + a₂r + a₃c² + a₄cr + a₅r² by least squares; the peak is where both derivatives are zero."),
+        BoxDef::new("local_coefficients[2]", "b₁ (u)", None, LOCAL)
+            .nudge("Σ u·ρ over Σ u²: the right column minus the left, over 6."),
+        BoxDef::new("local_coefficients[3]", "b₂ (v)", None, LOCAL)
+            .nudge("Σ v·ρ over Σ v²: the bottom row minus the top, over 6."),
+        BoxDef::new("local_coefficients[4]", "b₃ (uv)", None, LOCAL)
+            .nudge("Σ uv·ρ over Σ u²v²: the four corners, over 4."),
+        BoxDef::new("local_coefficients[5]", "b₄ (u²)", None, LOCAL).nudge(fit),
+        BoxDef::new("local_coefficients[6]", "b₅ (v²)", None, LOCAL).nudge(fit),
+        BoxDef::new("c_max", "Peak column c_max", Some("px"), t).nudge(
+            "Both slopes zero: b₁ + b₃v + 2b₄u = 0 and b₂ + b₃u + 2b₅v = 0; then c = c̄ + u.",
+        ),
         BoxDef::new("r_max", "Peak row r_max", Some("px"), t)
-            .nudge("Solve the two derivative equations together."),
+            .nudge("Solve the two derivative equations together; r = r̄ + v."),
     ]
+}
+
+fn chain_sub_2d(i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve("subpixel-2d", i)?;
+    let mut out = Record::new();
+    let mut b = [0.0; 6];
+    for (k, bk) in b.iter_mut().enumerate().skip(1) {
+        let key = format!("local_coefficients[{}]", k + 1);
+        *bk = or_given(g, &key, super::value_in(&s, &key)?);
+        out.set(&key, *bk);
+    }
+    let (cc, rc) = (
+        super::value_in(&s, "centre[1]")?,
+        super::value_in(&s, "centre[2]")?,
+    );
+    let det = 4.0 * b[4] * b[5] - b[3] * b[3];
+    let u = (-2.0 * b[1] * b[5] + b[2] * b[3]) / det;
+    let v = (-2.0 * b[2] * b[4] + b[1] * b[3]) / det;
+    Ok(out
+        .with("c_max", or_given(g, "c_max", cc + u))
+        .with("r_max", or_given(g, "r_max", rc + v)))
 }
 
 fn mistakes_sub_2d(i: &Record) -> Result<Vec<Mistake>> {
     let swapped = i.clone().with("rho", mat(&transpose(&rows_of(i, "rho"))));
     let s = examples::solve("subpixel-2d", &swapped)?;
     const SWAP: &str = "The rows of the ρ table are the rows r; its columns are the columns c.";
-    Ok(vec![
-        Mistake::new(
-            "c_max",
+    let mut out = Vec::new();
+    for k in [2, 3] {
+        let key = format!("local_coefficients[{k}]");
+        out.push(Mistake::new(
+            &key,
             "rows and columns swapped",
             SWAP,
-            s.result.number("c_max").unwrap_or(f64::NAN),
-        ),
-        Mistake::new(
-            "r_max",
-            "rows and columns swapped",
-            SWAP,
-            s.result.number("r_max").unwrap_or(f64::NAN),
-        ),
-    ])
+            super::value_in(&s, &key)?,
+        ));
+    }
+    Ok(out
+        .into_iter()
+        .chain(vec![
+            Mistake::new(
+                "c_max",
+                "rows and columns swapped",
+                SWAP,
+                s.result.number("c_max").unwrap_or(f64::NAN),
+            ),
+            Mistake::new(
+                "r_max",
+                "rows and columns swapped",
+                SWAP,
+                s.result.number("r_max").unwrap_or(f64::NAN),
+            ),
+        ])
+        .collect())
 }

@@ -14,7 +14,7 @@ pub fn specs() -> Vec<Spec> {
             id: "filter-window",
             generate: gen_filter,
             boxes: boxes_filter,
-            chain: None,
+            chain: Some(chain_filter),
             mistakes: mistakes_filter,
         },
         Spec {
@@ -84,7 +84,15 @@ fn gen_filter(rng: &mut Rng) -> Record {
 const FILTER_BOXES: [(usize, usize); 3] = [(1, 1), (2, 2), (3, 2)];
 
 fn boxes_filter(_: &Record) -> Vec<BoxDef> {
-    FILTER_BOXES
+    let first = BoxDef::new(
+        "numerator_sum",
+        "Sum of numerator × grey value at row 1, column 1 (before dividing)",
+        None,
+        tol::GREY,
+    )
+    .nudge("The kernel's numerators (its weights times the divisor) on the 3×3 neighbourhood of window pixel (2, 2): multiply each pair and add. Applied as written: no flip.");
+    std::iter::once(first)
+        .chain(FILTER_BOXES
         .iter()
         .map(|&(r, c)| {
             BoxDef::new(
@@ -94,8 +102,23 @@ fn boxes_filter(_: &Record) -> Vec<BoxDef> {
                 tol::GREY,
             )
             .nudge("Lay the kernel on the window with its centre on the pixel, multiply each pair, add, divide by the kernel's divisor. Applied as written: no flip.")
-        })
+        }))
         .collect()
+}
+
+/// The first output pixel from the student's sum of numerators.
+fn chain_filter(i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve("filter-window", i)?;
+    let sum = or_given(g, "numerator_sum", value_in(&s, "numerator_sum")?);
+    let divisor = value_in(&s, "divisor")?;
+    let mut out = Record::new()
+        .with("numerator_sum", sum)
+        .with("output[1,1]", or_given(g, "output[1,1]", sum / divisor));
+    for &(r, c) in &FILTER_BOXES[1..] {
+        let key = format!("output[{r},{c}]");
+        out.set(&key, value_in(&s, &key)?);
+    }
+    Ok(out)
 }
 
 fn output(i: &Record, r: usize, c: usize) -> Result<f64> {
@@ -127,6 +150,22 @@ fn mistakes_filter(i: &Record) -> Result<Vec<Mistake>> {
         None
     };
     let mut out = Vec::new();
+    if let Some(f) = &flipped {
+        out.push(Mistake::new(
+            "numerator_sum",
+            "kernel flipped",
+            "The seeds apply the kernel as written (correlation); flipping it first is convolution.",
+            value_in(&examples::solve("filter-window", f)?, "numerator_sum")?,
+        ));
+    }
+    if divisor != 1.0 {
+        out.push(Mistake::new(
+            "numerator_sum",
+            "divided already",
+            "This box asks for the sum before dividing by the divisor.",
+            value_in(&s, "numerator_sum")? / divisor,
+        ));
+    }
     for &(r, c) in &FILTER_BOXES {
         let key = format!("output[{r},{c}]");
         let x = value_in(&s, &key)?;

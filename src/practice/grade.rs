@@ -256,6 +256,10 @@ fn grade_box(ctx: &Ctx, k: usize, text: &str) -> (BoxGrade, Option<Answer>) {
             ok(&mut g, Verdict::Correct, msg);
             return (g, Some(a));
         }
+        if let Some(msg) = from_own_rounding(ctx, chain, k, a.x) {
+            ok(&mut g, Verdict::Correct, msg);
+            return (g, Some(a));
+        }
     }
     let generic = [
         (
@@ -287,10 +291,10 @@ fn grade_box(ctx: &Ctx, k: usize, text: &str) -> (BoxGrade, Option<Answer>) {
             return (g, Some(a));
         }
     }
-    g.message = format!(
-        "Not within {} of the expected value. Try the hints.",
-        super::tolerance_text(tol, b.unit)
-    );
+    g.message = match super::tolerance_text(tol, b.unit).as_str() {
+        "exact" => "Not the expected value. Try the hints.".to_string(),
+        within => format!("Not within {within} of the expected value. Try the hints."),
+    };
     (g, Some(a))
 }
 
@@ -324,6 +328,30 @@ fn carried(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option<String> {
     } else {
         None
     }
+}
+
+/// Every earlier box within its tolerance, but this answer follows from
+/// them as typed (rounded) rather than from the exact values: correct. A
+/// long chain (UTM's series, a fit's σ₀) magnifies an intermediate's
+/// allowed rounding beyond a later box's tolerance.
+fn from_own_rounding(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option<String> {
+    let mut given = Record::new();
+    for (j, a) in ctx.earlier.iter().enumerate() {
+        if let Some(a) = a {
+            if !ctx.boxes[j].tolerance.accepts(ctx.exact[j], a.x) {
+                return None;
+            }
+            given.set(&ctx.boxes[j].key, a.x);
+        }
+    }
+    if given.is_empty() {
+        return None;
+    }
+    let b = &ctx.boxes[k];
+    let value = chain(ctx.inputs, &given).ok()?.number(&b.key)?;
+    b.tolerance
+        .accepts(value, x)
+        .then(|| "Correct: it follows from your own (rounded) earlier answers.".to_string())
 }
 
 /// An answer that follows from an earlier value rounded as shown (to 3, 4

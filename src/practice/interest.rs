@@ -14,7 +14,7 @@ pub fn specs() -> Vec<Spec> {
             id: "forstner-window",
             generate: gen_forstner,
             boxes: boxes_forstner,
-            chain: Some(chain_forstner),
+            chain: Some(|i, g| chain_forstner("forstner-window", i, g)),
             mistakes: |i| forstner_mistakes(&examples::solve("forstner-window", i)?),
         },
         Spec {
@@ -34,7 +34,7 @@ pub fn specs() -> Vec<Spec> {
                     .filter(|b| b.key != "det_n")
                     .collect()
             },
-            chain: None,
+            chain: Some(|i, g| chain_forstner("forstner-image", i, g)),
             mistakes: |i| {
                 let all = forstner_mistakes(&examples::solve("forstner-image", i)?)?;
                 Ok(all.into_iter().filter(|m| m.key != "det_n").collect())
@@ -104,8 +104,9 @@ fn boxes_forstner(_: &Record) -> Vec<BoxDef> {
     ]
 }
 
-fn chain_forstner(i: &Record, g: &Record) -> Result<Record> {
-    let s = examples::solve("forstner-window", i)?;
+/// The later boxes from the student's N (and det N, where it has a box).
+fn chain_forstner(id: &str, i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve(id, i)?;
     let a = or_given(g, "n[1,1]", value_in(&s, "n[1,1]")?);
     let b = or_given(g, "n[1,2]", value_in(&s, "n[1,2]")?);
     let d = or_given(g, "n[2,2]", value_in(&s, "n[2,2]")?);

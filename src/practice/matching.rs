@@ -2,7 +2,8 @@
 //! matching. The iterations are long by hand, so the boxes ask for the
 //! first shift (one linear least-squares step) and the converged position.
 
-use super::{mat, nums, value_in, BoxDef, Mistake, Rng, Spec, Tolerance};
+use super::grade::tol;
+use super::{mat, nums, or_given, value_in, BoxDef, Mistake, Rng, Spec, Tolerance};
 use crate::error::Result;
 use crate::examples;
 use crate::solution::Record;
@@ -14,14 +15,20 @@ pub fn specs() -> Vec<Spec> {
             generate: gen_1d,
             boxes: |_| {
                 vec![
+                    BoxDef::new("N[1,1]", "N = Σ g² (iteration 1)", None, tol::SUM)
+                        .nudge("g is the search window's gradient at each template pixel, (g(c+1) − g(c−1)) / 2; square and add."),
+                    BoxDef::new("AtL[1]", "AᵀdL = Σ g·dL (iteration 1)", None, tol::SUM)
+                        .nudge("dL is the template minus the search patch at the start position; multiply by g and add."),
                     BoxDef::new("first_dc", "First shift Δc", Some("px"), SHIFT)
-                        .nudge("Gradient of the search window at each template pixel, then Δc = Σ g·Δg / Σ g²."),
+                        .nudge("Δc = AᵀdL / N."),
+                    BoxDef::new("c_after_first", "Position after the first iteration", Some("px"), SHIFT)
+                        .nudge("The start position plus the first shift."),
                     BoxDef::new("c", "Converged position c", Some("px"), SHIFT)
                         .nudge("Resample, repeat until the shift is tiny."),
                 ]
             },
-            chain: None,
-            mistakes: |i| swap_sign(&examples::solve("lsm-1d", i)?, &["first_dc"]),
+            chain: Some(chain_1d),
+            mistakes: mistakes_1d,
         },
         Spec {
             id: "lsm-2d",
@@ -32,13 +39,17 @@ pub fn specs() -> Vec<Spec> {
                         .nudge("Gradients gc, gr of the search window; the normal equations of Δc, Δr, Δa, Δb."),
                     BoxDef::new("first_dr", "First shift Δr", Some("px"), SHIFT)
                         .nudge("The second unknown of the same system."),
+                    BoxDef::new("c_after_first", "Column after the first iteration", Some("px"), SHIFT)
+                        .nudge("The start column plus Δc."),
+                    BoxDef::new("r_after_first", "Row after the first iteration", Some("px"), SHIFT)
+                        .nudge("The start row plus Δr."),
                     BoxDef::new("c", "Converged column c", Some("px"), SHIFT)
                         .nudge("Resample by bilinear interpolation and iterate."),
                     BoxDef::new("r", "Converged row r", Some("px"), SHIFT)
                         .nudge("The row of the converged position."),
                 ]
             },
-            chain: None,
+            chain: Some(chain_2d),
             mistakes: mistakes_2d,
         },
         Spec {
@@ -46,27 +57,130 @@ pub fn specs() -> Vec<Spec> {
             generate: gen_affine,
             boxes: |_| {
                 vec![
+                    BoxDef::new("parameters[1]", "a₁ (converged)", None, AFFINE)
+                        .nudge("The affine model's first parameter after convergence: s·cos θ when there is no shear."),
+                    BoxDef::new("parameters[4]", "a₄ (converged)", None, AFFINE)
+                        .nudge("The fourth parameter: s·sin θ when there is no shear."),
                     BoxDef::new("parameters[3]", "Shift a₃ (columns)", Some("px"), SHIFT)
                         .nudge("The affine model's column shift after convergence."),
                     BoxDef::new("parameters[6]", "Shift a₆ (rows)", Some("px"), SHIFT)
                         .nudge("The row shift after convergence."),
+                    BoxDef::new("estimated_scale", "Scale s = √(a₁² + a₄²)", None, AFFINE)
+                        .nudge("[a₁ a₂; a₄ a₅] = s·R(θ) without shear: the first column is s·(cos θ, sin θ)."),
+                    BoxDef::new("estimated_rotation_deg", "Rotation θ = atan2(a₄, a₁)", Some("°"), Tolerance::abs(0.05))
+                        .nudge("The angle of the first column (a₁, a₄), in degrees."),
                 ]
             },
-            chain: None,
-            mistakes: |i| {
-                let s = examples::solve("lsm-affine", i)?;
-                let (a3, a6) = (
-                    value_in(&s, "parameters[3]")?,
-                    value_in(&s, "parameters[6]")?,
-                );
-                const SWAP: &str = "a₃ shifts the columns c, a₆ the rows r.";
-                Ok(vec![
-                    Mistake::new("parameters[3]", "rows and columns swapped", SWAP, a6),
-                    Mistake::new("parameters[6]", "rows and columns swapped", SWAP, a3),
-                ])
-            },
+            chain: Some(chain_affine),
+            mistakes: mistakes_affine,
         },
     ]
+}
+
+/// The affine part's parameters and the scale: to 0.001 (0.1 %).
+const AFFINE: Tolerance = Tolerance::abs(0.001);
+
+fn chain_1d(i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve("lsm-1d", i)?;
+    let n = or_given(g, "N[1,1]", value_in(&s, "N[1,1]")?);
+    let atl = or_given(g, "AtL[1]", value_in(&s, "AtL[1]")?);
+    let dc = or_given(g, "first_dc", atl / n);
+    let c0 = i.number("c0").unwrap_or(f64::NAN);
+    Ok(Record::new()
+        .with("N[1,1]", n)
+        .with("AtL[1]", atl)
+        .with("first_dc", dc)
+        .with("c_after_first", or_given(g, "c_after_first", c0 + dc))
+        .with("c", value_in(&s, "c")?))
+}
+
+fn mistakes_1d(i: &Record) -> Result<Vec<Mistake>> {
+    let s = examples::solve("lsm-1d", i)?;
+    const HALF: &str = "The gradient is (g(c+1) − g(c−1)) / 2: without the ½ it is twice too big.";
+    let (n, atl, dc) = (
+        value_in(&s, "N[1,1]")?,
+        value_in(&s, "AtL[1]")?,
+        value_in(&s, "first_dc")?,
+    );
+    let c0 = i.number("c0").unwrap_or(f64::NAN);
+    let mut out = swap_sign(&s, &["AtL[1]", "first_dc"])?;
+    out.extend([
+        Mistake::new("N[1,1]", "½ forgotten in the gradient", HALF, 4.0 * n),
+        Mistake::new("AtL[1]", "½ forgotten in the gradient", HALF, 2.0 * atl),
+        Mistake::new(
+            "first_dc",
+            "N over AᵀdL",
+            "The shift is AᵀdL / N, not its inverse.",
+            n / atl,
+        ),
+        Mistake::new(
+            "c_after_first",
+            "shift subtracted",
+            "The new position is the old one plus the increment.",
+            c0 - dc,
+        ),
+    ]);
+    Ok(out)
+}
+
+fn chain_2d(i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve("lsm-2d", i)?;
+    let dc = or_given(g, "first_dc", value_in(&s, "first_dc")?);
+    let dr = or_given(g, "first_dr", value_in(&s, "first_dr")?);
+    let (c0, r0) = (
+        i.number("c0").unwrap_or(f64::NAN),
+        i.number("r0").unwrap_or(f64::NAN),
+    );
+    Ok(Record::new()
+        .with("first_dc", dc)
+        .with("first_dr", dr)
+        .with("c_after_first", or_given(g, "c_after_first", c0 + dc))
+        .with("r_after_first", or_given(g, "r_after_first", r0 + dr))
+        .with("c", value_in(&s, "c")?)
+        .with("r", value_in(&s, "r")?))
+}
+
+fn chain_affine(i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve("lsm-affine", i)?;
+    let mut out = Record::new();
+    let mut p = [0.0; 7];
+    for k in [1, 4, 3, 6] {
+        let key = format!("parameters[{k}]");
+        p[k] = or_given(g, &key, value_in(&s, &key)?);
+        out.set(&key, p[k]);
+    }
+    let scale = or_given(g, "estimated_scale", p[1].hypot(p[4]));
+    Ok(out
+        .with("estimated_scale", scale)
+        .with("estimated_rotation_deg", p[4].atan2(p[1]).to_degrees()))
+}
+
+fn mistakes_affine(i: &Record) -> Result<Vec<Mistake>> {
+    let s = examples::solve("lsm-affine", i)?;
+    let (a1, a4, a3, a6) = (
+        value_in(&s, "parameters[1]")?,
+        value_in(&s, "parameters[4]")?,
+        value_in(&s, "parameters[3]")?,
+        value_in(&s, "parameters[6]")?,
+    );
+    const SWAP: &str = "a₃ shifts the columns c, a₆ the rows r.";
+    let theta = a4.atan2(a1);
+    Ok(vec![
+        Mistake::new("parameters[3]", "rows and columns swapped", SWAP, a6),
+        Mistake::new("parameters[6]", "rows and columns swapped", SWAP, a3),
+        Mistake::new(
+            "estimated_rotation_deg",
+            "degrees vs radians",
+            "atan2 gives radians; the box asks for degrees (× 180/π).",
+            theta,
+        ),
+        Mistake::new(
+            "estimated_scale",
+            "a₁ taken as the scale",
+            "a₁ = s·cos θ: the scale is the length of the column (a₁, a₄).",
+            a1,
+        ),
+    ])
 }
 
 const SHIFT: Tolerance = Tolerance::abs(0.01);

@@ -19,6 +19,7 @@ pub mod filters;
 pub mod grade;
 pub mod interest;
 pub mod matching;
+pub mod projection;
 pub mod read;
 pub mod resampling;
 pub mod transformations;
@@ -220,6 +221,7 @@ pub fn specs() -> Vec<Spec> {
     all.extend(filters::specs());
     all.extend(interest::specs());
     all.extend(chains::specs());
+    all.extend(projection::specs());
     all
 }
 
@@ -318,10 +320,12 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
     // The numbers of the step, or of the step before when the step only
     // states the result (a solution vector): never the answer itself.
     let answer = value_in(s, &b.key).ok().map(crate::solution::num);
+    // The answer as printed, or its first five significant digits (a step
+    // may print it to more digits than `num` does: UTM's ξ, η).
     let gives_away = |t: &str| {
-        answer
-            .as_ref()
-            .is_some_and(|a| a.len() >= 4 && t.contains(a.as_str()))
+        answer.as_ref().is_some_and(|a| {
+            a.len() >= 4 && (t.contains(a.as_str()) || t.contains(leading_digits(a, 5)))
+        })
     };
     let numbers = [step, step.wrapping_sub(1)]
         .iter()
@@ -344,12 +348,41 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
     }
 }
 
+/// `text` (a number as printed) up to its `n`-th significant digit, or all
+/// of it when it has fewer: "-0.0056488" → "-0.0056488", "1.2796358" → "1.2796".
+fn leading_digits(text: &str, n: usize) -> &str {
+    let mut seen = 0;
+    for (i, ch) in text.char_indices() {
+        if ch.is_ascii_digit() && (seen > 0 || ch != '0') {
+            seen += 1;
+            if seen == n {
+                return &text[..i + ch.len_utf8()];
+            }
+        }
+    }
+    text
+}
+
 /// The tolerance in words.
 pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
     let u = unit.map(|u| format!(" {u}")).unwrap_or_default();
     let abs = if t.atol > 0.0 && t.atol < 1e-4 {
-        // 1e-7 rather than 0.0000001
-        format!("{:e}", t.atol)
+        // 10⁻⁷ (or 2.5×10⁻⁷) rather than 0.0000001
+        let e = format!("{:e}", t.atol);
+        let (mantissa, exp) = e.split_once('e').unwrap_or((e.as_str(), "0"));
+        let sup: String = exp
+            .chars()
+            .map(|c| match c {
+                '-' => '⁻',
+                d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                    [d.to_digit(10).unwrap_or(0) as usize],
+            })
+            .collect();
+        if mantissa == "1" {
+            format!("10{sup}")
+        } else {
+            format!("{mantissa}×10{sup}")
+        }
     } else {
         crate::solution::fmt_sig(t.atol, 3)
     };
@@ -506,6 +539,12 @@ mod tests {
         assert!(!t.accepts(10.0, 10.0201));
         assert!(!t.accepts(10.0, 9.9799));
         assert_eq!(tolerance_text(t, Some("mm")), "± (0.01 mm + 0.1 %)");
+        assert_eq!(tolerance_text(Tolerance::abs(1e-9), None), "± 10⁻⁹");
+        assert_eq!(
+            tolerance_text(Tolerance::abs(2.5e-7), Some("°")),
+            "± 2.5×10⁻⁷ °"
+        );
+        assert_eq!(tolerance_text(Tolerance::abs(0.0), None), "exact");
     }
 
     #[test]
@@ -524,6 +563,9 @@ mod tests {
             "g = 2 \\cdot 3 = \\;?"
         );
         assert_eq!(without_result("x = (-8.25)"), "x = \\;?");
+        assert_eq!(leading_digits("1.2796358243", 5), "1.2796");
+        assert_eq!(leading_digits("-0.00564888", 5), "-0.0056488");
+        assert_eq!(leading_digits("12.5", 5), "12.5");
         assert_eq!(without_result("x = a + b"), "x = a + b");
     }
 }

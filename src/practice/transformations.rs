@@ -13,21 +13,21 @@ pub fn specs() -> Vec<Spec> {
             id: "fiducial-similarity",
             generate: gen_fiducials,
             boxes: |_| fiducial_boxes(false),
-            chain: None,
+            chain: Some(|i, g| chain_sigma0("fiducial-similarity", i, g)),
             mistakes: |i| fiducial_mistakes("fiducial-similarity", i, 4),
         },
         Spec {
             id: "fiducial-affine",
             generate: gen_fiducials,
             boxes: |_| fiducial_boxes(true),
-            chain: None,
+            chain: Some(|i, g| chain_sigma0("fiducial-affine", i, g)),
             mistakes: |i| fiducial_mistakes("fiducial-affine", i, 6),
         },
         Spec {
             id: "transform-fit",
             generate: gen_fit,
             boxes: boxes_fit,
-            chain: Some(chain_fit),
+            chain: Some(|i, g| chain_sigma0("transform-fit", i, g)),
             mistakes: mistakes_fit,
         },
     ]
@@ -216,10 +216,22 @@ fn boxes_fit(i: &Record) -> Vec<BoxDef> {
     b
 }
 
-fn chain_fit(i: &Record, g: &Record) -> Result<Record> {
-    // σ0 from the student's parameters: V = A·X − L with their X.
-    let s = examples::solve("transform-fit", i)?;
-    let n = if is_affine(i) { 6 } else { 4 };
+/// A step's value `key`, alone in a record.
+fn step_value(s: &crate::solution::Solution, key: &str) -> Record {
+    s.steps
+        .iter()
+        .find_map(|st| st.values.get(key))
+        .map(|v| Record::new().with(key, v.clone()))
+        .unwrap_or_default()
+}
+
+/// σ₀ from the student's parameters: V = A·X − L with their X (A and L do
+/// not depend on X: the fits are linear), over the redundancy.
+fn chain_sigma0(id: &str, i: &Record, g: &Record) -> Result<Record> {
+    let s = examples::solve(id, i)?;
+    let a = rows_of(&step_value(&s, "A"), "A");
+    let l = super::correlation::list(&step_value(&s, "L"), "L");
+    let n = a.first().map_or(0, Vec::len);
     let mut out = Record::new();
     let mut x = Vec::new();
     for k in 1..=n {
@@ -228,20 +240,13 @@ fn chain_fit(i: &Record, g: &Record) -> Result<Record> {
         x.push(v);
         out.set(&key, v);
     }
-    let (a, b, c, d) = (x[0], x[1], x[2], x[3]);
-    let mut vv = 0.0;
-    let pts = rows_of(i, "points");
-    for p in &pts {
-        let (u, v) = (p[0], p[1]);
-        let (fx, fy) = if n == 6 {
-            (a * u + b * v + c, d * u + x[4] * v + x[5])
-        } else {
-            (a * u + b * v + c, -b * u + a * v + d)
-        };
-        vv += (fx - p[2]).powi(2) + (fy - p[3]).powi(2);
-    }
-    let redundancy = 2 * pts.len() - n;
-    out.set("sigma0", (vv / redundancy as f64).sqrt());
+    let vv: f64 = a
+        .iter()
+        .zip(&l)
+        .map(|(row, li)| (row.iter().zip(&x).map(|(p, q)| p * q).sum::<f64>() - li).powi(2))
+        .sum();
+    let redundancy = value_in(&s, "redundancy")?;
+    out.set("sigma0", or_given(g, "sigma0", (vv / redundancy).sqrt()));
     Ok(out)
 }
 

@@ -57,10 +57,21 @@ export function expectedValue(solution, key) {
   return typeof v === "number" ? v : null;
 }
 
-/** An expected value for the answer key: up to 7 significant digits. */
-export function keyNumber(x) {
+/**
+ * An expected value for the answer key: 7 significant digits, or more when
+ * the box's tolerance (`{ atol, rtol }`) asks for them (a UTM easting to the
+ * centimetre, ξ to 1e-9), so the key is never coarser than the tolerance.
+ */
+export function keyNumber(x, tolerance = null) {
   if (typeof x !== "number") return "—";
   if (Number.isInteger(x)) return givenNumber(x);
-  const s = Math.abs(x) >= 1e-4 && Math.abs(x) < 1e7 ? String(Number(x.toPrecision(7))) : x.toExponential(6);
+  let digits = 7;
+  const allowed = tolerance ? (tolerance.atol ?? 0) + (tolerance.rtol ?? 0) * Math.abs(x) : 0;
+  if (allowed > 0 && x !== 0) {
+    // decimals to the tolerance's first digit: half a unit in the last place within it
+    const decimals = Math.ceil(-Math.log10(allowed));
+    digits = Math.min(15, Math.max(digits, Math.floor(Math.log10(Math.abs(x))) + 1 + decimals));
+  }
+  const s = Math.abs(x) >= 1e-4 && Math.abs(x) < 1e8 ? String(Number(x.toPrecision(digits))) : x.toExponential(digits - 1);
   return s.replace("-", MINUS);
 }

@@ -155,7 +155,7 @@ export function showWorksheet({ root, core, entries, setStatus }, what, nText, c
       el(
         "table",
         { class: "ws-key-table" },
-        el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(expectedValue(solution, b.key))}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
+        el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(expectedValue(solution, b.key), b.tolerance)}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
       ),
     );
   });

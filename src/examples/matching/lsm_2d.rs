@@ -168,7 +168,12 @@ pub(super) fn first_iteration_2d(
             .value("gr", Value::matrix(&it.gr.rows()))
             .value("bordered", Value::matrix(&it.bordered.rows())),
     );
-    s.step(normal_step(it, syms));
+    let inc = |k: usize| it.increments.get(k).copied().unwrap_or(0.0);
+    s.step(
+        normal_step(it, syms)
+            .value("c_after_first", it.params.a[2] + 1.0 + inc(0))
+            .value("r_after_first", it.params.a[5] + 1.0 + inc(1)),
+    );
 }
 
 pub(super) fn ex11_notes(

@@ -123,7 +123,11 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
         ),
     )
     .value("parameters", Value::numbers(&est))
-    .value("true_parameters", Value::numbers(&truth.a));
+    .value("true_parameters", Value::numbers(&truth.a))
+    // the scale and rotation the estimate implies (no shear: the first
+    // column of [a1 a2; a4 a5] is s·(cos θ, sin θ))
+    .value("estimated_scale", est[0].hypot(est[3]))
+    .value("estimated_rotation_deg", est[3].atan2(est[0]).to_degrees());
     if let Some(sd) = &sd {
         step = step.value("std_dev", Value::numbers(sd));
     }
