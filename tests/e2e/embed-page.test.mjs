@@ -259,7 +259,12 @@ describe("offline after the first visit", { timeout: TEST_TIMEOUT * 2 }, () => {
     const build = JSON.parse(/^const BUILD = (.*);$/m.exec(sw)[1]);
     assert.equal(build.version, version);
     assert.match(version, /^[0-9a-f]{16}$/);
-    for (const f of ["index.html", "embed.html", "embed.js", "pkg/photogrammetry_playground_bg.wasm", "vendor/katex/katex.min.js"]) assert.ok(build.files.includes(f), f);
+    // the names the page asks for: content-hashed where scripts/assets.mjs hashed them
+    const hashed = JSON.parse(fs.readFileSync(`${DIST}/assets.json`, "utf8"));
+    for (const f of ["index.html", "embed.html", "embed.js", "pkg/photogrammetry_playground_bg.wasm", "vendor/katex/katex.min.js"]) {
+      assert.ok(build.files.includes(hashed[f] ?? f), f);
+    }
+    assert.ok(!build.files.some((f) => /\.(gz|br)$/.test(f)), "no precompressed copies in the precache list");
     assert.ok(!build.files.includes("sw.js"));
   });
 
@@ -279,7 +284,7 @@ describe("offline after the first visit", { timeout: TEST_TIMEOUT * 2 }, () => {
       });
       assert.equal(cached.names.length, 1);
       assert.ok(cached.urls.every((u) => u.startsWith(server.url)), "only our own origin");
-      assert.ok(cached.urls.some((u) => u.endsWith("_bg.wasm")));
+      assert.ok(cached.urls.some((u) => /_bg(\.[0-9a-f]{8})?\.wasm$/.test(u)));
       await server.close();
       stopped = true;
       await page.goto(`${server.url}embed.html#/gsd?dpi=1500`);
