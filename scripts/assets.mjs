@@ -261,10 +261,16 @@ export function hashAssets(dist) {
     noMap.add(f);
     for (const r of refs.get(f) ?? []) if (r.kind === "import") queue.push(r.target);
   }
+  // such a file importing a computed specifier (a loader picking a module by
+  // name) finds the modules of its folder under their logical names: those
+  // keep a copy under that name beside the hashed one
+  const keepLogical = new Set();
   for (const f of noMap) {
-    if (/\bimport\s*\(\s*[^\s"'`)]/.test(texts.get(f) ?? "")) {
-      console.warn(`assets: WARNING ${f} runs without the import map and imports a computed specifier: its hashed targets will not be found`);
-    }
+    if (!/\bimport\s*\(\s*(?:[^\s"'`)]|`[^`]*\$\{)/.test(texts.get(f) ?? "")) continue;
+    const dir = path.posix.dirname(f);
+    const near = all.filter((g) => JS.test(g) && (dir === "." ? !g.includes("/") : g.startsWith(`${dir}/`)) && !stable.has(g));
+    for (const g of near) keepLogical.add(g);
+    console.log(`assets: ${f} imports a computed specifier without the import map: ${near.length} modules of ${dir}/ keep a copy under their own name`);
   }
   const rewritten = (f, r) => willHash.has(r.target) && (r.kind === "url" || noMap.has(f));
 
@@ -285,7 +291,8 @@ export function hashAssets(dist) {
     if (!willHash.has(f)) continue;
     const to = hashedName(f, bytes);
     fs.writeFileSync(path.join(dist, to), bytes);
-    fs.rmSync(path.join(dist, f));
+    if (keepLogical.has(f)) fs.writeFileSync(path.join(dist, f), bytes);
+    else fs.rmSync(path.join(dist, f));
     map.set(f, to);
   }
   // a stable ES module the page itself imports also gets a hashed copy: the
@@ -373,9 +380,11 @@ function buildHtml(dist, f, source, map, files) {
   for (const [logical, hashed] of [...map].sort()) if (isModule(dist, hashed) || logical.endsWith(".json")) imports[`./${logical}`] = rel(hashed);
   const json = JSON.stringify({ imports });
   hashes.push(sha256(json));
-  const first = /^([ \t]*)<(?:script|link)\b[^>]*(?:type=["']module["']|rel=["']modulepreload["'])/m.exec(out);
+  const first = /<(?:script|link)\b[^>]*(?:type=["']module["']|rel=["']modulepreload["'])/.exec(out);
   if (!first) throw new Error(`assets: ${f} has no module script`);
-  out = `${out.slice(0, first.index)}${first[1]}<script type="importmap">${json}</script>\n${out.slice(first.index)}`;
+  const indent = /(?:^|\n)([ \t]*)$/.exec(out.slice(0, first.index));
+  const tag = `<script type="importmap">${json}</script>`;
+  out = out.slice(0, first.index) + (indent ? `${tag}\n${indent[1]}` : tag) + out.slice(first.index);
   // the CSP admits exactly these inline scripts
   let csp = false;
   out = out.replace(/(<meta http-equiv="Content-Security-Policy" content="[^"]*?script-src )([^;"]*)/i, (all, head, list) => {

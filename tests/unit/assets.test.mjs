@@ -83,6 +83,24 @@ describe("assets.mjs: hashed names, references, the import map", () => {
     assert.ok(css.includes(`url(${path.basename(map.get("f.woff2"))})`));
     assert.ok(!css.includes(".ttf"));
   });
+  it("a stable entry that imports by a computed name still finds its folder's modules under their own names", () => {
+    const loader = site({
+      "index.html": `<head>${CSP}<script type="module" src="./app.js"></script></head>`,
+      "app.js": 'import("./pkg/photogrammetry_playground.js");\n',
+      "pkg/photogrammetry_playground.js": "export const load = (topic) => import(`./${topic}.js`);\n",
+      "pkg/coordinates.js": "export const x = new URL('coordinates_bg.wasm', import.meta.url);\n",
+      "pkg/coordinates_bg.wasm": "\0asm",
+    });
+    const { map } = hashAssets(loader);
+    const hashed = map.get("pkg/coordinates.js");
+    assert.ok(hashed && fs.existsSync(path.join(loader, hashed)));
+    assert.equal(read(loader, "pkg/coordinates.js"), read(loader, hashed), "the logical copy is the hashed file's bytes");
+    assert.ok(read(loader, hashed).includes(path.basename(map.get("pkg/coordinates_bg.wasm"))));
+    // the page's own import map points at the hashed copies, the stable entry included
+    const { imports } = JSON.parse(/<script type="importmap">(.*?)<\/script>/.exec(read(loader, "index.html"))[1]);
+    assert.equal(imports["./pkg/coordinates.js"], `./${hashed}`);
+    assert.equal(imports["./pkg/photogrammetry_playground.js"], `./${map.get("pkg/photogrammetry_playground.js")}`);
+  });
   it("fails loudly on a cycle of literal references", () => {
     const cyclic = site({
       "index.html": `<head>${CSP}<script type="module" src="./c1.js"></script></head>`,
