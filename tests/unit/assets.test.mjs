@@ -1,6 +1,6 @@
 // The build's assets step (scripts/assets.mjs) on a small made-up site, and
 // the plain-text formulas shown before KaTeX arrives (www/math.js).
-import { describe, it } from "node:test";
+import { after, describe, it } from "node:test";
 import assert from "node:assert/strict";
 import crypto from "node:crypto";
 import fs from "node:fs";
@@ -9,8 +9,12 @@ import path from "node:path";
 import { contentHash, fontFaces, hashAssets, jsRefs } from "../../scripts/assets.mjs";
 import { plainTex } from "../../www/math.js";
 
+const made = [];
+after(() => made.forEach((dir) => fs.rmSync(dir, { recursive: true, force: true })));
+
 function site(files) {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), "assets-test-"));
+  made.push(dir);
   for (const [name, text] of Object.entries(files)) {
     fs.mkdirSync(path.dirname(path.join(dir, name)), { recursive: true });
     fs.writeFileSync(path.join(dir, name), text);
