@@ -34,6 +34,7 @@ katex=node_modules/katex/dist
 cp "$katex/katex.min.js" "$katex/katex.min.css" dist/vendor/katex/
 mkdir -p dist/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
-node scripts/sw-manifest.mjs dist   # the service worker's version and file list
 sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "dist/pkg/${name}_bg.wasm" | wc -c)"; done)
-echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes; lab wasm $(wc -c < dist/lab/pkg/photogrammetry_lab_bg.wasm) bytes)"
+# hashed names, import map, .gz/.br, _headers, then the service worker's list (sw-manifest.mjs)
+node scripts/assets.mjs dist
+echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes)"

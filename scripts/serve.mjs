@@ -1,5 +1,8 @@
 // Serves a folder of static files on 127.0.0.1 with the right MIME types
-// (application/wasm for .wasm). No dependencies.
+// (application/wasm for .wasm). No dependencies. As a static host should:
+// the build's .br / .gz copies when the request accepts them (Content-Encoding,
+// Vary: Accept-Encoding), and long-lived caching for content-hashed names
+// (dist/assets.json), no-cache for the HTML and the stable names.
 //   node scripts/serve.mjs [--dir dist] [--port 8080]   (PORT env also works)
 // Also importable: const { url, close } = await startServer({ dir, port: 0 }).
 import http from "node:http";
@@ -23,8 +26,35 @@ const TYPES = {
   ".txt": "text/plain; charset=utf-8",
 };
 
+/** The build's precompressed copies, best first (scripts/assets.mjs writes them). */
+const ENCODINGS = [
+  ["br", ".br"],
+  ["gzip", ".gz"],
+];
+
+/** The encodings an Accept-Encoding header admits (q=0 refuses one). */
+function accepted(header) {
+  const ok = new Set();
+  for (const part of String(header || "").split(",")) {
+    const [name, ...params] = part.trim().toLowerCase().split(";");
+    const q = params.map((p) => /^\s*q=([\d.]+)/.exec(p)).find(Boolean);
+    if (name && !(q && Number(q[1]) === 0)) ok.add(name);
+  }
+  return ok;
+}
+
+/** The content-hashed names of a build (the values of dist/assets.json), as paths from its root. */
+function hashedNames(root) {
+  try {
+    return new Set(Object.values(JSON.parse(fs.readFileSync(path.join(root, "assets.json"), "utf8"))).map((f) => `/${f}`));
+  } catch {
+    return new Set(); // an unhashed build: everything revalidated
+  }
+}
+
 export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = {}) {
   const root = path.resolve(dir);
+  const hashed = hashedNames(root);
   const server = http.createServer((req, res) => {
     let pathname;
     try {
@@ -39,13 +69,22 @@ export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = 
       res.writeHead(403).end("forbidden");
       return;
     }
-    fs.readFile(file, (err, data) => {
+    const type = TYPES[path.extname(file).toLowerCase()] || "application/octet-stream";
+    const headers = {
+      "content-type": type,
+      "cache-control": hashed.has(pathname) ? "public, max-age=31536000, immutable" : "no-cache",
+    };
+    const wanted = accepted(req.headers["accept-encoding"]);
+    const copies = ENCODINGS.filter(([name, ext]) => fs.existsSync(file + ext));
+    if (copies.length) headers.vary = "Accept-Encoding";
+    const copy = copies.find(([name]) => wanted.has(name));
+    fs.readFile(copy ? file + copy[1] : file, (err, data) => {
       if (err) {
         res.writeHead(404, { "content-type": "text/plain; charset=utf-8" }).end("not found");
         return;
       }
-      const type = TYPES[path.extname(file).toLowerCase()] || "application/octet-stream";
-      res.writeHead(200, { "content-type": type, "cache-control": "no-cache" });
+      if (copy) headers["content-encoding"] = copy[0];
+      res.writeHead(200, headers);
       res.end(data);
     });
   });

@@ -1,5 +1,7 @@
 // Writes the build's version and file list into dist/sw.js (see www/sw.js):
 //   node scripts/sw-manifest.mjs [dist]
+// Run by scripts/assets.mjs after it has given the files their hashed names,
+// so the precache list holds the names the page asks for.
 // The version is a hash of every file's path and bytes, so any change to the
 // site makes a new service worker, and an unchanged rebuild keeps the old one.
 import crypto from "node:crypto";
@@ -18,7 +20,8 @@ function walk(dir) {
 
 const files = walk(dist)
   .map((p) => path.relative(dist, p).split(path.sep).join("/"))
-  .filter((f) => f !== "sw.js")
+  // not the worker itself, nor the precompressed copies and the host's rules (scripts/assets.mjs)
+  .filter((f) => f !== "sw.js" && f !== "_headers" && f !== "assets.json" && !/\.(gz|br)$/.test(f))
   .sort();
 const hash = crypto.createHash("sha256");
 for (const f of files) {
@@ -35,7 +38,7 @@ if (!marker.test(source)) throw new Error("sw-manifest: the BUILD line of sw.js 
 // every first visit: the lab (its wasm and sample photos, about 1 MB), and
 // pkg/all* (every example again plus practice, about 310 KB gzipped; loaded
 // by practice mode and the one-package API).
-const lazy = (f) => f.startsWith("lab/") || /^pkg\/all(_bg\.wasm|\.js)$/.test(f);
+const lazy = (f) => f.startsWith("lab/") || /^pkg\/all(_bg)?(\.[0-9a-f]{8})?\.(wasm|js)$/.test(f);
 const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files.filter((f) => !lazy(f))], lazy: files.filter(lazy) })};`;
 fs.writeFileSync(sw, source.replace(marker, () => line));
 fs.writeFileSync(path.join(dist, "version.json"), `${JSON.stringify({ version, files: files.length })}\n`);

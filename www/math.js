@@ -17,9 +17,18 @@
 // katex.render builds the DOM itself and escapes its input; when it fails
 // (bad LaTeX, or KaTeX did not load) the raw LaTeX is shown as text.
 
+// KaTeX is off the critical path (issue 19): the first numbers do not wait for
+// it. A formula asked for before KaTeX has arrived is drawn at once as plain
+// text (plainTex: the numbers readable, the room taken) and marked
+// .formula-pending; the first such formula starts loading KaTeX (script and
+// stylesheet), and when both are in every pending formula is typeset in place
+// and fitted. <html data-math> says where that is: "loading", "ready" or
+// "failed" (then the raw LaTeX stays, as before).
+//
 // The minified UMD build (76 KB gzipped) rather than katex.mjs (146 KB
 // gzipped, not minified): loaded by a script element, it sets window.katex.
 const KATEX_URL = "./vendor/katex/katex.min.js";
+const KATEX_CSS = "./vendor/katex/katex.min.css";
 const KATEX_OPTIONS = Object.freeze({
   displayMode: false, // terms are inline boxes; \displaystyle keeps display-size fractions
   throwOnError: true,
@@ -32,24 +41,111 @@ const KATEX_OPTIONS = Object.freeze({
 
 let katex = null;
 let loadError = null;
+let loading = null;
+/** Formulas drawn before KaTeX arrived, typeset when it does (attached to the page or not). */
+const pending = new Set();
 
-/** Loads KaTeX once; the page works without it (raw LaTeX shown). */
-export async function loadMath() {
-  if (katex || loadError) return;
-  try {
-    await new Promise((resolve, reject) => {
-      const script = document.createElement("script");
-      script.src = KATEX_URL;
-      script.onload = resolve;
-      script.onerror = () => reject(new Error(`${KATEX_URL} did not load`));
-      document.head.append(script);
-    });
-    if (!window.katex) throw new Error("katex.min.js loaded but defined no katex");
-    katex = window.katex;
-  } catch (e) {
-    loadError = e;
-    console.warn("KaTeX did not load; formulas are shown as LaTeX source.", e);
+function loadOne(tag, attrs, what) {
+  return new Promise((resolve, reject) => {
+    const node = document.createElement(tag);
+    Object.assign(node, attrs);
+    node.onload = resolve;
+    node.onerror = () => reject(new Error(`${what} did not load`));
+    document.head.append(node);
+  });
+}
+
+/** Starts loading KaTeX once; resolves when it is in (or has failed: the page works without it). */
+function startMath() {
+  if (katex || loadError) return Promise.resolve();
+  if (loading) return loading;
+  if (typeof document === "undefined") return Promise.resolve();
+  document.documentElement.dataset.math = "loading";
+  loading = Promise.all([
+    loadOne("link", { rel: "stylesheet", href: KATEX_CSS }, KATEX_CSS),
+    loadOne("script", { src: KATEX_URL }, KATEX_URL),
+  ])
+    .then(() => {
+      if (!window.katex) throw new Error("katex.min.js loaded but defined no katex");
+      katex = window.katex;
+    })
+    .catch((e) => {
+      loadError = e;
+      console.warn("KaTeX did not load; formulas are shown as LaTeX source.", e);
+    })
+    .then(typesetPending);
+  return loading;
+}
+
+/**
+ * Makes KaTeX available without holding anything up: resolves at once (the
+ * formulas drawn meanwhile are typeset when it arrives). `whenMath()` waits.
+ */
+export async function loadMath() {}
+
+/** Resolves when KaTeX has loaded (or failed), starting the load if needed. */
+export function whenMath() {
+  return startMath();
+}
+
+function typesetPending() {
+  const nodes = [...pending];
+  pending.clear();
+  for (const node of nodes) {
+    const fresh = renderFormula(node.dataset.tex, node.dataset.className);
+    node.className = fresh.className;
+    node.removeAttribute("aria-busy");
+    delete node.dataset.className;
+    node.replaceChildren(...fresh.childNodes);
   }
+  // fitted after every formula is in: one layout, not one per formula
+  for (const node of nodes) if (node.isConnected && katex) fitOne(node);
+  document.documentElement.dataset.math = katex ? "ready" : "failed";
+}
+
+/** Greek letters and symbols plainTex writes as characters. */
+const PLAIN_SYMBOLS = {
+  cdot: "·", times: "×", approx: "≈", pm: "±", mp: "∓", le: "≤", leq: "≤", ge: "≥", geq: "≥", neq: "≠", ne: "≠",
+  circ: "°", degree: "°", infty: "∞", sum: "Σ", prod: "Π", partial: "∂", to: "→", rightarrow: "→", lvert: "|", rvert: "|",
+  alpha: "α", beta: "β", gamma: "γ", delta: "δ", epsilon: "ε", varepsilon: "ε", zeta: "ζ", eta: "η", theta: "θ",
+  kappa: "κ", lambda: "λ", mu: "μ", nu: "ν", xi: "ξ", pi: "π", rho: "ρ", sigma: "σ", tau: "τ", phi: "φ",
+  varphi: "φ", chi: "χ", psi: "ψ", omega: "ω", Gamma: "Γ", Delta: "Δ", Theta: "Θ", Lambda: "Λ", Sigma: "Σ",
+  Phi: "Φ", Psi: "Ψ", Omega: "Ω", ldots: "…", cdots: "⋯", dots: "…", vdots: "⋮", quad: "  ", qquad: "   ",
+};
+const SUPERSCRIPTS = { 0: "⁰", 1: "¹", 2: "²", 3: "³", 4: "⁴", 5: "⁵", 6: "⁶", 7: "⁷", 8: "⁸", 9: "⁹", "-": "⁻", "+": "⁺" };
+
+/**
+ * A formula as plain text, shown until KaTeX has arrived: every number as
+ * written, \frac{a}{b} as (a)/(b), \sqrt{x} as √(x), Greek letters and
+ * operators as characters, matrices as [a b; c d].
+ * @param {string} tex
+ */
+export function plainTex(tex) {
+  let s = String(tex);
+  const arg = String.raw`\{([^{}]*)\}`;
+  for (let k = 0; k < 8; k++) {
+    const before = s;
+    s = s
+      .replace(new RegExp(String.raw`\\[dt]?frac\s*${arg}\s*${arg}`, "g"), (m, a, b) => `${/^[\w.]+$/.test(a) ? a : `(${a})`}/${/^[\w.]+$/.test(b) ? b : `(${b})`}`)
+      .replace(new RegExp(String.raw`\\sqrt\s*(?:\[([^\]]*)\])?\s*${arg}`, "g"), (m, n, a) => `${n ? SUPERSCRIPTS[n] ?? n : ""}√(${a})`)
+      .replace(new RegExp(String.raw`\\(?:text|mathrm|mathbf|mathit|operatorname|boldsymbol|mathsf|textbf|textit|hat|bar|tilde|vec|overline)\s*${arg}`, "g"), "$1")
+      .replace(new RegExp(String.raw`\^${arg}`, "g"), (m, a) => ([...a].every((c) => SUPERSCRIPTS[c]) ? [...a].map((c) => SUPERSCRIPTS[c]).join("") : `^(${a})`))
+      .replace(new RegExp(String.raw`_${arg}`, "g"), (m, a) => (a.length > 1 ? `_(${a})` : `_${a}`));
+    if (s === before) break;
+  }
+  return s
+    .replace(/\\begin\{[a-z]*matrix\}([\s\S]*?)\\end\{[a-z]*matrix\}/g, (m, body) => `[${body.replace(/\s*&\s*/g, " ").replace(/\s*\\\\\s*/g, "; ").trim()}]`)
+    .replace(/\\(begin|end)\{[A-Za-z*]+\}(\{[^{}]*\})?/g, " ")
+    .replace(/\^([0-9])/g, (m, d) => SUPERSCRIPTS[d])
+    .replace(/\\\\/g, "; ")
+    .replace(/&/g, " ")
+    .replace(/\\(left|right|big|Big|bigl|bigr|Bigl|Bigr|displaystyle|small|footnotesize|scriptsize|hline)\b/g, "")
+    .replace(/\\([A-Za-z]+)/g, (m, name) => PLAIN_SYMBOLS[name] ?? name)
+    .replace(/\\[,;:! ]/g, " ")
+    .replace(/\\([{}%$#_])/g, "$1")
+    .replace(/[{}]/g, "")
+    .replace(/\s+/g, " ")
+    .trim();
 }
 
 // ---------------------------------------------------------------------------
@@ -451,6 +547,20 @@ export function renderFormula(tex, className = "formula") {
       el.append(code, why);
       return el;
     }
+  }
+  if (!loadError) {
+    // KaTeX is on its way: the numbers now, typeset when it is in
+    el.classList.add("formula-pending");
+    el.dataset.tex = String(tex);
+    el.dataset.className = className;
+    el.setAttribute("aria-busy", "true");
+    const text = document.createElement("span");
+    text.className = "formula-plain";
+    text.textContent = plainTex(tex);
+    el.append(text);
+    pending.add(el);
+    startMath();
+    return el;
   }
   el.classList.add("formula-raw");
   const code = document.createElement("code");

@@ -57,7 +57,7 @@ async function embedFrame(page, selector) {
   const handle = await page.waitForSelector(selector, { state: "attached", timeout: WAIT });
   const frame = await handle.contentFrame();
   assert.ok(frame, `${selector} has a frame`);
-  await frame.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
+  await frame.waitForFunction(() => document.body?.dataset.status === "ok", null, { timeout: WAIT });
   return { handle, frame };
 }
 
@@ -96,12 +96,12 @@ describe("embedding on another origin", { timeout: TEST_TIMEOUT * 2 }, () => {
       const first = await fitsContent(page, "#a iframe", frame);
       // an invalid input adds its message and the stale banner: the content grows
       await frame.fill('[data-key="dpi"] input', "-5");
-      await frame.waitForFunction(() => document.body.dataset.status === "invalid", null, { timeout: WAIT });
+      await frame.waitForFunction(() => document.body?.dataset.status === "invalid", null, { timeout: WAIT });
       const taller = await fitsContent(page, "#a iframe", frame);
       assert.ok(taller.content > first.content + 20, `taller: ${first.content} → ${taller.content}`);
       // and shrinks back
       await frame.fill('[data-key="dpi"] input', "1200");
-      await frame.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
+      await frame.waitForFunction(() => document.body?.dataset.status === "ok", null, { timeout: WAIT });
       const back = await fitsContent(page, "#a iframe", frame);
       assert.ok(Math.abs(back.content - first.content) <= 2, `back: ${back.content} vs ${first.content}`);
       assert.deepEqual(log.pageErrors, []);
@@ -123,7 +123,7 @@ describe("embedding on another origin", { timeout: TEST_TIMEOUT * 2 }, () => {
       assert.equal(lastMsg.subject, "lti.frameResize");
       assert.equal(lastMsg.height, fit.content);
       await frame.fill('[data-key="dpi"] input', "abc");
-      await frame.waitForFunction(() => document.body.dataset.status === "invalid", null, { timeout: WAIT });
+      await frame.waitForFunction(() => document.body?.dataset.status === "invalid", null, { timeout: WAIT });
       const taller = await fitsContent(page, "#plain", frame);
       assert.ok(taller.content > fit.content, `taller: ${fit.content} → ${taller.content}`);
     } finally {
@@ -145,7 +145,7 @@ describe("embedding on another origin", { timeout: TEST_TIMEOUT * 2 }, () => {
         tab2.hidden = true;
         document.getElementById("b").playground.setState({ dpi: "x" });
       });
-      await frame.waitForFunction(() => document.body.dataset.status === "invalid", null, { timeout: WAIT });
+      await frame.waitForFunction(() => document.body?.dataset.status === "invalid", null, { timeout: WAIT });
       await page.evaluate(() => (tab2.hidden = false));
       const after = await fitsContent(page, "#b iframe", frame);
       assert.ok(after.content > fit.content, `${fit.content} → ${after.content}`);
@@ -162,7 +162,7 @@ describe("embedding on another origin", { timeout: TEST_TIMEOUT * 2 }, () => {
       const fit = await fitsContent(page, "#a iframe", frame);
       // the third frame is a real playground page (dpi 600, id "a") that embed.js did not make
       const third = await (await page.$("#third")).contentFrame();
-      await third.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
+      await third.waitForFunction(() => document.body?.dataset.status === "ok", null, { timeout: WAIT });
       // and it forges a resize and a change as well
       await third.evaluate(() => {
         const base = { version: 1, id: "a" };

@@ -74,7 +74,8 @@ export async function open(browser, options = {}) {
 
 /** Waits until the page has settled after a load or an edit. */
 export async function settled(page) {
-  await page.waitForFunction((states) => states.includes(document.body.dataset.status), SETTLED, { timeout: WAIT });
+  // the status, and the formulas typeset once KaTeX has arrived (math.js: <html data-math>)
+  await page.waitForFunction((states) => states.includes(document.body.dataset.status) && document.documentElement.dataset.math !== "loading", SETTLED, { timeout: WAIT });
   return page.evaluate(() => document.body.dataset.status);
 }
 

@@ -1,0 +1,454 @@
+// The build's last step over dist/ (issue 19: everything on the critical path
+// earns its bytes). Generic over whatever files the build put there:
+//   node scripts/assets.mjs [dist]
+//  1. HTML includes: `<!-- include: head.partial.html -->` is replaced by that
+//     file (one source for the <head> of index.html and embed.html); every
+//     *.partial.html is then removed.
+//  2. Content-hashed names (`render.3f9a2c1b.js`) for JS, wasm, CSS, JSON,
+//     fonts and images, except STABLE names (fixed public URLs) and files that
+//     no literal names (fetched by a computed URL: they keep their name).
+//     References are rewritten where no import map applies: string literals
+//     in JS that name a file (`new URL("x_bg.wasm", import.meta.url)`,
+//     `script.src = "./vendor/…"`), every import specifier of files that run
+//     without the page's import map (workers, the stable entries third-party
+//     pages import, what they import), url(…) in CSS, src/href in HTML.
+//     Page modules keep their logical import specifiers: an import map in the
+//     HTML maps each logical URL to its hashed one (dynamic import() with a
+//     computed specifier included). Files are hashed leaves first; a cycle of
+//     literal references fails the build.
+//  3. The HTML: import map (its sha256 added to the CSP's script-src), small
+//     classic scripts inlined (same), `<!-- modulepreload -->` replaced by
+//     modulepreload links for the static import graph of the page's module
+//     scripts, every src/href rewritten.
+//  4. dist/assets.json (logical → hashed), dist/_headers (cache rules for
+//     Netlify / Cloudflare Pages), then scripts/sw-manifest.mjs (the service
+//     worker's precache list of the final names), then .gz (zlib level 9)
+//     and .br (brotli quality 11) beside every compressible file.
+import crypto from "node:crypto";
+import { spawnSync } from "node:child_process";
+import fs from "node:fs";
+import path from "node:path";
+import zlib from "node:zlib";
+import { fileURLToPath } from "node:url";
+
+/**
+ * Names other sites or the browser reference by a fixed URL (never hashed):
+ * the pages, the service worker (a worker keeps its URL), the course
+ * authors' host script, the documented JS API entries (docs/API.md, README),
+ * and the build's version file. Files this step writes are never hashed.
+ */
+export const STABLE = [
+  "index.html", // the site's address
+  "embed.html", // iframes of course pages (README, embed.js)
+  "sw.js", // a service worker must keep its URL
+  "embed.js", // <script src=".../embed.js"> on course pages (README)
+  "pkg/photogrammetry_playground.js", // the JS API entry (docs/API.md, README)
+  "pkg/examples.js", // the lighter JS API entry, one topic module per example (docs/API.md)
+  "lab/pkg/photogrammetry_lab.js", // the lab module's API entry (docs/API.md)
+  "version.json", // the build's version (sw-manifest.mjs)
+  "assets.json", // this step's manifest
+  "_headers", // read by the static host
+];
+const HASHED_EXT = /\.(m?js|wasm|css|json|woff2?|ttf|otf|eot|png|jpe?g|gif|webp|avif|svg|ico)$/i;
+const COMPRESSIBLE = /\.(m?js|wasm|css|json|html|svg|txt|map)$/i;
+const JS = /\.m?js$/i;
+/** A hashed name: stem.<8 hex>.ext */
+export const HASHED_NAME = /\.[0-9a-f]{8}\.[A-Za-z0-9]+$/;
+/** Classic scripts up to this size are inlined into the HTML (one request fewer before first paint). */
+const INLINE_MAX = 1024;
+export const IMMUTABLE = "public, max-age=31536000, immutable";
+export const REVALIDATE = "no-cache";
+
+const posix = (p) => p.split(path.sep).join("/");
+
+function walk(dir, root = dir) {
+  return fs.readdirSync(dir, { withFileTypes: true }).flatMap((d) => {
+    const p = path.join(dir, d.name);
+    return d.isDirectory() ? walk(p, root) : [posix(path.relative(root, p))];
+  });
+}
+
+/** The content hash of a name: the first 8 hex digits of its SHA-256. */
+export function contentHash(bytes) {
+  return crypto.createHash("sha256").update(bytes).digest("hex").slice(0, 8);
+}
+
+export function hashedName(file, bytes) {
+  const dir = path.posix.dirname(file);
+  const base = path.posix.basename(file);
+  const dot = base.lastIndexOf(".");
+  const name = `${base.slice(0, dot)}.${contentHash(bytes)}${base.slice(dot)}`;
+  return dir === "." ? name : `${dir}/${name}`;
+}
+
+/**
+ * Resolves a reference written in `from` (a dist-relative path) to a file of
+ * `files`, or null: relative to the file's folder first (import specifiers,
+ * `new URL(x, import.meta.url)`, CSS), else to the site's root (strings a
+ * module hands to the document: `script.src = "./vendor/…"`).
+ */
+export function resolveRef(from, ref, files) {
+  if (!ref || /^[a-z][a-z0-9+.-]*:/i.test(ref) || ref.startsWith("//") || ref.startsWith("#")) return null;
+  const clean = ref.replace(/[?#].*$/, "");
+  if (!clean || clean.endsWith("/")) return null;
+  const dir = path.posix.dirname(from);
+  const candidates = clean.startsWith("/") ? [clean.slice(1)] : [path.posix.join(dir, clean), path.posix.normalize(clean)];
+  for (const c of candidates) if (!c.startsWith("..") && files.has(c)) return c;
+  return null;
+}
+
+/** A quoted string that looks like a file path ("./a/b.js", 'x_bg.wasm', `../c.css`). */
+const JS_LITERAL = /(["'`])((?:\.{1,2}\/|\/)?[\w@~.-]+(?:\/[\w@~.-]+)*\.[A-Za-z0-9]+)\1/g;
+const IMPORT_BEFORE = /(?:\bfrom|\bimport|\bimport\s*\()\s*$/;
+const WORKER_BEFORE = /\bnew\s+(?:Shared)?Worker\s*\(\s*(?:new\s+URL\s*\(\s*)?$/;
+
+/** The references of a JS file: { start, end, ref, kind: "import" | "url", worker }. */
+export function jsRefs(source) {
+  const refs = [];
+  for (const m of source.matchAll(JS_LITERAL)) {
+    const before = source.slice(Math.max(0, m.index - 60), m.index);
+    refs.push({
+      start: m.index + 1,
+      end: m.index + 1 + m[2].length,
+      ref: m[2],
+      kind: IMPORT_BEFORE.test(before) ? "import" : "url",
+      worker: WORKER_BEFORE.test(before),
+    });
+  }
+  return refs;
+}
+
+/** The url(…) and @import references of a CSS file. */
+export function cssRefs(source) {
+  const refs = [];
+  const re = /url\(\s*(["']?)([^"')\s]+)\1\s*\)|@import\s+(["'])([^"']+)\3/g;
+  for (const m of source.matchAll(re)) {
+    const ref = m[2] ?? m[4];
+    const start = m.index + m[0].indexOf(ref);
+    refs.push({ start, end: start + ref.length, ref, kind: "url" });
+  }
+  return refs;
+}
+
+/** The src/href attributes of an HTML file. */
+export function htmlRefs(source) {
+  const refs = [];
+  for (const m of source.matchAll(/\s(?:src|href)\s*=\s*(["'])([^"']+)\1/g)) {
+    const start = m.index + m[0].lastIndexOf(m[2]);
+    refs.push({ start, end: start + m[2].length, ref: m[2], kind: "url" });
+  }
+  return refs;
+}
+
+/**
+ * Every @font-face shows text at once in a fallback font (font-display:
+ * swap), and lists only the font files the build ships (KaTeX names .woff
+ * and .ttf beside the .woff2 that every current browser takes).
+ */
+export function fontFaces(f, css, files) {
+  return css.replace(/@font-face\s*\{[^}]*\}/g, (face) => {
+    let out = /font-display\s*:/.test(face) ? face.replace(/font-display\s*:\s*[a-z]+/, "font-display:swap") : face.replace("{", "{font-display:swap;");
+    out = out.replace(/(src\s*:\s*)([^;}]*)/, (all, head, list) => {
+      const sources = list.split(/,(?=\s*(?:url|local)\()/);
+      const kept = sources.filter((s) => {
+        const m = /url\(\s*["']?([^"')\s]+)/.exec(s);
+        return !m || resolveRef(f, m[1], files);
+      });
+      return head + (kept.length ? kept : sources).join(",");
+    });
+    return out;
+  });
+}
+
+function rewrite(source, refs, replace) {
+  let out = "";
+  let at = 0;
+  for (const r of [...refs].sort((a, b) => a.start - b.start)) {
+    const next = replace(r);
+    if (next === null) continue;
+    out += source.slice(at, r.start) + next;
+    at = r.end;
+  }
+  return out + source.slice(at);
+}
+
+/** `ref` with its last path segment replaced by the basename of `target`. */
+function retarget(ref, target) {
+  const m = /^(.*?)([^/?#]*)([?#].*)?$/.exec(ref);
+  return m[1] + path.posix.basename(target) + (m[3] ?? "");
+}
+
+const sha256 = (text) => `'sha256-${crypto.createHash("sha256").update(text, "utf8").digest("base64")}'`;
+
+/** Topological order (leaves first) of `nodes` under `edges` (node → targets); throws on a cycle. */
+function leavesFirst(nodes, edges) {
+  const order = [];
+  const state = new Map();
+  const visit = (n, trail) => {
+    if (state.get(n) === 2) return;
+    if (state.get(n) === 1) {
+      const cycle = [...trail.slice(trail.indexOf(n)), n];
+      throw new Error(`assets: a cycle of literal references cannot be content-hashed: ${cycle.join(" → ")}`);
+    }
+    state.set(n, 1);
+    for (const t of edges.get(n) ?? []) visit(t, [...trail, n]);
+    state.set(n, 2);
+    order.push(n);
+  };
+  for (const n of nodes) visit(n, []);
+  return order;
+}
+
+/** Replaces `<!-- include: x -->` in every HTML file, then removes the *.partial.html files. */
+function includePartials(dist) {
+  const files = walk(dist);
+  for (const f of files.filter((f) => f.endsWith(".html") && !f.endsWith(".partial.html"))) {
+    const file = path.join(dist, f);
+    const source = fs.readFileSync(file, "utf8");
+    const out = source.replace(/^([ \t]*)<!--\s*include:\s*(\S+)\s*-->[ \t]*\n?/gm, (all, indent, name) => {
+      const part = path.join(path.dirname(file), name);
+      if (!fs.existsSync(part)) throw new Error(`assets: ${f} includes ${name}, which does not exist`);
+      return fs
+        .readFileSync(part, "utf8")
+        .split("\n")
+        .map((l) => (l ? indent + l : l))
+        .join("\n")
+        .replace(/\n*$/, "\n");
+    });
+    if (out !== source) fs.writeFileSync(file, out);
+  }
+  for (const f of files.filter((f) => f.endsWith(".partial.html"))) fs.rmSync(path.join(dist, f));
+}
+
+export function hashAssets(dist) {
+  includePartials(dist);
+  const all = walk(dist).filter((f) => !/\.(gz|br)$/.test(f));
+  const files = new Set(all);
+  const stable = new Set(STABLE.filter((f) => files.has(f)));
+  const html = all.filter((f) => f.endsWith(".html"));
+  const texts = new Map(); // file → source, for JS and CSS
+  const refs = new Map(); // file → resolved references
+  for (const f of all) {
+    if (!JS.test(f) && !f.endsWith(".css")) continue;
+    let source = fs.readFileSync(path.join(dist, f), "utf8");
+    if (f.endsWith(".css")) source = fontFaces(f, source, files);
+    texts.set(f, source);
+    const found = (JS.test(f) ? jsRefs(source) : cssRefs(source))
+      .map((r) => ({ ...r, target: resolveRef(f, r.ref, files) }))
+      .filter((r) => r.target && r.target !== f);
+    refs.set(f, found);
+  }
+  const htmlSources = new Map(html.map((f) => [f, fs.readFileSync(path.join(dist, f), "utf8")]));
+  const named = new Set(); // files some literal, url() or attribute names
+  for (const list of refs.values()) for (const r of list) named.add(r.target);
+  for (const [f, s] of htmlSources) for (const r of htmlRefs(s)) {
+    const t = resolveRef(f, r.ref, files);
+    if (t) named.add(t);
+  }
+  // JS is reachable through the import map whatever the specifier; anything
+  // else that nothing names is fetched by a computed URL and keeps its name
+  const hashable = all.filter((f) => HASHED_EXT.test(f) && !stable.has(f) && !f.endsWith(".html") && (JS.test(f) || named.has(f)));
+  const willHash = new Set(hashable);
+  const keptNames = all.filter((f) => HASHED_EXT.test(f) && !stable.has(f) && !willHash.has(f) && !f.endsWith(".html"));
+
+  // files that run without the page's import map: workers, the stable JS
+  // entries (imported by other sites), and whatever they import
+  const noMap = new Set();
+  const queue = [...stable].filter((f) => JS.test(f));
+  for (const list of refs.values()) for (const r of list) if (r.worker && JS.test(r.target)) queue.push(r.target);
+  while (queue.length) {
+    const f = queue.pop();
+    if (noMap.has(f)) continue;
+    noMap.add(f);
+    for (const r of refs.get(f) ?? []) if (r.kind === "import") queue.push(r.target);
+  }
+  // such a file importing a computed specifier (a loader picking a module by
+  // name) finds the modules of its folder under their logical names: those
+  // keep a copy under that name beside the hashed one
+  const keepLogical = new Set();
+  for (const f of noMap) {
+    if (!/\bimport\s*\(\s*(?:[^\s"'`)]|`[^`]*\$\{)/.test(texts.get(f) ?? "")) continue;
+    const dir = path.posix.dirname(f);
+    const near = all.filter((g) => JS.test(g) && (dir === "." ? !g.includes("/") : g.startsWith(`${dir}/`)) && !stable.has(g));
+    for (const g of near) keepLogical.add(g);
+    console.log(`assets: ${f} imports a computed specifier without the import map: ${near.length} modules of ${dir}/ keep a copy under their own name`);
+  }
+  const rewritten = (f, r) => willHash.has(r.target) && (r.kind === "url" || noMap.has(f));
+
+  const edges = new Map();
+  for (const [f, list] of refs) edges.set(f, [...new Set(list.filter((r) => rewritten(f, r)).map((r) => r.target))]);
+  const order = leavesFirst([...texts.keys(), ...hashable], edges);
+
+  const map = new Map(); // logical → hashed
+  for (const f of order) {
+    let bytes;
+    if (texts.has(f)) {
+      const out = rewrite(texts.get(f), refs.get(f), (r) => (rewritten(f, r) ? retarget(r.ref, map.get(r.target)) : null));
+      bytes = Buffer.from(out, "utf8");
+      if (stable.has(f) || !willHash.has(f)) fs.writeFileSync(path.join(dist, f), bytes);
+    } else {
+      bytes = fs.readFileSync(path.join(dist, f));
+    }
+    if (!willHash.has(f)) continue;
+    const to = hashedName(f, bytes);
+    fs.writeFileSync(path.join(dist, to), bytes);
+    if (keepLogical.has(f)) fs.writeFileSync(path.join(dist, f), bytes);
+    else fs.rmSync(path.join(dist, f));
+    map.set(f, to);
+  }
+  // a stable ES module the page itself imports also gets a hashed copy: the
+  // page's import map points at it (immutable), other sites keep the stable URL
+  const pageNamed = new Set();
+  for (const [f, list] of refs) if (!noMap.has(f)) for (const r of list) pageNamed.add(r.target);
+  for (const s of htmlSources.values()) for (const r of htmlRefs(s)) pageNamed.add(resolveRef("index.html", r.ref, files));
+  for (const f of stable) {
+    if (!JS.test(f) || f === "sw.js" || !pageNamed.has(f)) continue;
+    const bytes = fs.readFileSync(path.join(dist, f));
+    if (!/^\s*(import|export)\b/m.test(bytes.toString("utf8"))) continue; // a classic script
+    const to = hashedName(f, bytes);
+    fs.writeFileSync(path.join(dist, to), bytes);
+    map.set(f, to);
+  }
+
+  const now = new Set(walk(dist));
+  for (const [f, source] of htmlSources) fs.writeFileSync(path.join(dist, f), buildHtml(dist, f, source, map, now));
+  return { map, stable: [...stable], keptNames };
+}
+
+/** Whether a file is an ES module (classic scripts such as KaTeX's UMD build need no import map entry). */
+function isModule(dist, file) {
+  return JS.test(file) && /^\s*(import|export)\b/m.test(fs.readFileSync(path.join(dist, file), "utf8"));
+}
+
+/** The static import graph of `entry` (logical names), entry excluded. */
+function staticImports(dist, entry, map) {
+  const seen = new Set();
+  const queue = [entry];
+  const files = new Set([...walk(dist), ...map.keys()]);
+  while (queue.length) {
+    const f = queue.pop();
+    const onDisk = map.get(f) ?? f;
+    if (!fs.existsSync(path.join(dist, onDisk))) continue;
+    const source = fs.readFileSync(path.join(dist, onDisk), "utf8");
+    // static imports only: `import … from "x"`, `import "x"`, `export … from "x"` (not import())
+    for (const m of source.matchAll(/(?:^|[;\n])\s*(?:import|export)\s*(?:[\w*{}\s,$]+?\s*from\s*)?(["'])([^"']+)\1/g)) {
+      const t = resolveRef(f, m[2], files);
+      if (t && !seen.has(t) && t !== entry) {
+        seen.add(t);
+        queue.push(t);
+      }
+    }
+  }
+  return [...seen];
+}
+
+function buildHtml(dist, f, source, map, files) {
+  const rel = (logical) => {
+    const hashed = map.get(logical) ?? logical;
+    const from = path.posix.dirname(f);
+    const r = path.posix.relative(from, hashed);
+    return r.startsWith(".") ? r : `./${r}`;
+  };
+  const resolve = (ref) => resolveRef(f, ref, new Set([...files, ...map.keys()]));
+  let out = source;
+  // modulepreload links for the static graph of the module scripts (before rewriting)
+  const entries = [...out.matchAll(/<script\b[^>]*type=["']module["'][^>]*\ssrc=["']([^"']+)["']/g)].map((m) => resolve(m[1])).filter(Boolean);
+  out = out.replace(/^([ \t]*)<!--\s*modulepreload\s*-->[ \t]*\n/m, (all, indent) => {
+    const listed = new Set([...out.matchAll(/rel=["']modulepreload["'][^>]*href=["']([^"']+)["']/g)].map((m) => resolve(m[1])));
+    const graph = [...new Set(entries.flatMap((e) => staticImports(dist, e, map)))].filter((m) => !listed.has(m) && !entries.includes(m));
+    return graph.map((m) => `${indent}<link rel="modulepreload" href="./${m}">\n`).join("");
+  });
+  // src/href → hashed names
+  out = rewrite(out, htmlRefs(out), (r) => {
+    const t = resolve(r.ref);
+    if (!t) return null;
+    if (!files.has(map.get(t) ?? t)) throw new Error(`assets: ${f} references ${r.ref}, which does not exist`);
+    return map.has(t) ? retarget(r.ref, map.get(t)) : null;
+  });
+  const hashes = [];
+  // small classic scripts inline
+  out = out.replace(/<script src=["']([^"']+)["']><\/script>/g, (all, ref) => {
+    const t = resolveRef(f, ref, files);
+    if (!t || fs.statSync(path.join(dist, t)).size > INLINE_MAX) return all;
+    // its leading comment lines stay in the file, not in every page
+    const code = fs.readFileSync(path.join(dist, t), "utf8").replace(/^(\s*\/\/.*\n)+/, "").trim();
+    if (code.includes("</script")) return all;
+    hashes.push(sha256(code));
+    return `<script>${code}</script>`;
+  });
+  // the import map, before any module script or modulepreload
+  const imports = {};
+  for (const [logical, hashed] of [...map].sort()) if (isModule(dist, hashed) || logical.endsWith(".json")) imports[`./${logical}`] = rel(hashed);
+  const json = JSON.stringify({ imports });
+  hashes.push(sha256(json));
+  const first = /<(?:script|link)\b[^>]*(?:type=["']module["']|rel=["']modulepreload["'])/.exec(out);
+  if (!first) throw new Error(`assets: ${f} has no module script`);
+  const indent = /(?:^|\n)([ \t]*)$/.exec(out.slice(0, first.index));
+  const tag = `<script type="importmap">${json}</script>`;
+  out = out.slice(0, first.index) + (indent ? `${tag}\n${indent[1]}` : tag) + out.slice(first.index);
+  // the CSP admits exactly these inline scripts
+  let csp = false;
+  out = out.replace(/(<meta http-equiv="Content-Security-Policy" content="[^"]*?script-src )([^;"]*)/i, (all, head, list) => {
+    csp = true;
+    return `${head}${list} ${hashes.join(" ")}`;
+  });
+  if (!csp && /Content-Security-Policy/i.test(out)) throw new Error(`assets: ${f}: no script-src in its CSP to admit the import map`);
+  // the source's comments are for its readers, not for every first load
+  return out.replace(/^[ \t]*<!--[\s\S]*?-->[ \t]*\n/gm, "");
+}
+
+/** dist/_headers: immutable for hashed names (a folder with nothing else: one rule), no-cache for the rest. */
+export function headersFile(dist, map) {
+  const hashed = new Set(map.values());
+  const files = walk(dist).filter((f) => !/\.(gz|br)$/.test(f) && f !== "_headers");
+  const dirs = new Set(files.map((f) => path.posix.dirname(f)).filter((d) => d !== "."));
+  // the top-most folders whose every file is hashed
+  const allHashed = [...dirs].filter((d) => files.filter((f) => f.startsWith(`${d}/`)).every((f) => hashed.has(f)));
+  const folders = allHashed.filter((d) => !allHashed.some((o) => o !== d && d.startsWith(`${o}/`))).sort();
+  const inFolder = (f) => folders.some((d) => f.startsWith(`${d}/`));
+  const lines = ["# Cache rules (scripts/assets.mjs): content-hashed names never change; everything else is revalidated.", ""];
+  for (const d of folders) lines.push(`/${d}/*`, `  Cache-Control: ${IMMUTABLE}`);
+  for (const f of [...hashed].filter((f) => !inFolder(f)).sort()) lines.push(`/${f}`, `  Cache-Control: ${IMMUTABLE}`);
+  lines.push("/", `  Cache-Control: ${REVALIDATE}`);
+  for (const f of files.filter((f) => !hashed.has(f) && !inFolder(f)).sort()) lines.push(`/${f}`, `  Cache-Control: ${REVALIDATE}`);
+  const rules = lines.filter((l) => l.startsWith("/")).length;
+  if (rules > 100) console.warn(`assets: _headers has ${rules} rules (Cloudflare Pages reads the first 100)`);
+  fs.writeFileSync(path.join(dist, "_headers"), `${lines.join("\n")}\n`);
+  return rules;
+}
+
+/** .gz and .br beside every compressible file. */
+export function compressAll(dist) {
+  let n = 0;
+  for (const f of walk(dist)) {
+    if (!COMPRESSIBLE.test(f)) continue;
+    const file = path.join(dist, f);
+    const bytes = fs.readFileSync(file);
+    fs.writeFileSync(`${file}.gz`, zlib.gzipSync(bytes, { level: 9 }));
+    fs.writeFileSync(
+      `${file}.br`,
+      zlib.brotliCompressSync(bytes, {
+        params: {
+          [zlib.constants.BROTLI_PARAM_QUALITY]: 11,
+          [zlib.constants.BROTLI_PARAM_SIZE_HINT]: bytes.length,
+          [zlib.constants.BROTLI_PARAM_MODE]: /\.wasm$/.test(f) ? zlib.constants.BROTLI_MODE_GENERIC : zlib.constants.BROTLI_MODE_TEXT,
+        },
+      }),
+    );
+    n += 1;
+  }
+  return n;
+}
+
+export { COMPRESSIBLE, HASHED_EXT };
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.argv[1])) {
+  const dist = path.resolve(process.argv[2] || "dist");
+  const { map, stable, keptNames } = hashAssets(dist);
+  fs.writeFileSync(path.join(dist, "assets.json"), `${JSON.stringify(Object.fromEntries([...map].sort()), null, 1)}\n`);
+  const rules = headersFile(dist, map);
+  const sw = spawnSync(process.execPath, [path.join(path.dirname(fileURLToPath(import.meta.url)), "sw-manifest.mjs"), dist], { stdio: "inherit" });
+  if (sw.status !== 0) process.exit(sw.status ?? 1);
+  const n = compressAll(dist);
+  console.log(`assets: ${map.size} hashed names (dist/assets.json), ${stable.length} stable, ${keptNames.length} named only by computed URLs (kept: ${keptNames.join(", ") || "none"}); _headers ${rules} rules; .gz + .br for ${n} files`);
+}
