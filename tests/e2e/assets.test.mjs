@@ -15,7 +15,7 @@ import { startServer } from "../../scripts/serve.mjs";
 const COMPRESSIBLE = /\.(m?js|wasm|css|json|html|svg|txt|map)$/;
 const HASHED = /\.([0-9a-f]{8})\.[A-Za-z0-9]+$/;
 /** Fixed public URLs: never hashed (scripts/assets.mjs STABLE). */
-const STABLE = ["index.html", "embed.html", "sw.js", "embed.js", "pkg/photogrammetry_playground.js", "lab/pkg/photogrammetry_lab.js", "version.json"];
+const STABLE = ["index.html", "embed.html", "sw.js", "embed.js", "pkg/photogrammetry_playground.js", "pkg/examples.js", "lab/pkg/photogrammetry_lab.js", "version.json"];
 
 function walk(dir) {
   return fs.readdirSync(dir, { withFileTypes: true }).flatMap((d) => (d.isDirectory() ? walk(path.join(dir, d.name)) : [path.join(dir, d.name)]));
@@ -134,7 +134,7 @@ describe("scripts/serve.mjs as a static host", () => {
     });
 
   test("sends .br or .gz as the request allows, with Vary; long caching for hashed names only", async () => {
-    const wasm = assets["pkg/photogrammetry_playground_bg.wasm"];
+    const wasm = assets["pkg/coordinates_bg.wasm"];
     const bytes = fs.readFileSync(path.join(DIST, wasm));
     const br = await get(wasm, "gzip, deflate, br");
     assert.equal(br.headers["content-encoding"], "br");

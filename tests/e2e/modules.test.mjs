@@ -14,13 +14,19 @@ import path from "node:path";
 import { pathToFileURL } from "node:url";
 import { DIST, TEST_TIMEOUT, exact, open, start, visit } from "./harness.mjs";
 
-const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, "catalog.json"), "utf8"));
+// the build names files by their content (scripts/assets.mjs): dist/assets.json maps
+// a logical name to the file, and `logical` turns a requested path back
+const ASSETS = JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
+const built = (f) => ASSETS[f] ?? f;
+const logical = (p) => p.replace(/\.[0-9a-f]{8}(\.[A-Za-z0-9]+)$/, "$1");
+const WASM = /_bg(\.[0-9a-f]{8})?\.wasm$/;
+const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, built("catalog.json")), "utf8"));
 const MODULES = [...new Set(CATALOG.map((e) => e.module))];
 
 /** A module of dist/pkg, initialised in Node. */
 async function nodeModule(name) {
-  const m = await import(pathToFileURL(path.resolve(DIST, "pkg", `${name}.js`)).href);
-  m.initSync({ module: fs.readFileSync(path.resolve(DIST, "pkg", `${name}_bg.wasm`)) });
+  const m = await import(pathToFileURL(path.resolve(DIST, built(`pkg/${name}.js`))).href);
+  m.initSync({ module: fs.readFileSync(path.resolve(DIST, built(`pkg/${name}_bg.wasm`))) });
   return m;
 }
 
@@ -90,9 +96,9 @@ describe("a cold load of each example", () => {
             .filter((r) => r.startTime < mark.startTime)
             .map((r) => new URL(r.name).pathname);
         });
-        const wasm = before.filter((p) => p.includes("/pkg/"));
+        const wasm = before.filter((p) => p.includes("/pkg/")).map(logical);
         assert.deepEqual(wasm.sort(), [`/pkg/${entry.module}.js`, `/pkg/${entry.module}_bg.wasm`].sort(), `${entry.id}: ${wasm.join(" ")}`);
-        assert.ok(before.includes("/catalog.json"));
+        assert.ok(before.map(logical).includes("/catalog.json"));
         assert.deepEqual(log.pageErrors, []);
         assert.deepEqual(log.consoleErrors, []);
       } finally {
@@ -105,8 +111,8 @@ describe("a cold load of each example", () => {
     const { context, page, log } = await open(env.browser);
     try {
       assert.equal(await visit(page, env.url, "index.html", "#/gsd"), "ok");
-      await page.waitForFunction((n) => performance.getEntriesByType("resource").filter((r) => r.name.endsWith("_bg.wasm")).length >= n, MODULES.length, { timeout: 15_000 });
-      const wasm = log.requests.filter((u) => u.endsWith("_bg.wasm")).map((u) => new URL(u).pathname).sort();
+      await page.waitForFunction(([n, re]) => performance.getEntriesByType("resource").filter((r) => new RegExp(re).test(r.name)).length >= n, [MODULES.length, WASM.source], { timeout: 15_000 });
+      const wasm = log.requests.filter((u) => WASM.test(u)).map((u) => logical(new URL(u).pathname)).sort();
       assert.deepEqual(wasm, MODULES.map((m) => `/pkg/${m}_bg.wasm`).sort(), "every topic once, not all.js");
       const count = log.requests.length;
       await page.evaluate(() => {
@@ -127,7 +133,7 @@ describe("a cold load of each example", () => {
     try {
       await page.goto(`${env.url}index.html#/gsd?practice=1K7Q2`);
       await page.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: 15_000 });
-      const pkg = log.requests.filter((u) => u.includes("/pkg/")).map((u) => new URL(u).pathname);
+      const pkg = log.requests.filter((u) => u.includes("/pkg/")).map((u) => logical(new URL(u).pathname));
       assert.deepEqual(pkg.sort(), ["/pkg/all.js", "/pkg/all_bg.wasm"]);
       assert.deepEqual(log.pageErrors, []);
     } finally {
@@ -178,7 +184,7 @@ describe("the public JS API in a blank page", () => {
           return ex.solve(ex.parseInputs({}).inputs).result;
         }, id);
         for (const [key, value] of seedAnswers(id)) assert.equal(result[key], value, `${id} ${key}`);
-        const wasm = log.requests.slice(count).filter((u) => u.endsWith("_bg.wasm")).map((u) => new URL(u).pathname);
+        const wasm = log.requests.slice(count).filter((u) => WASM.test(u)).map((u) => logical(new URL(u).pathname));
         assert.deepEqual(wasm, [`/pkg/${name}_bg.wasm`], id);
       }
       const r = await page.evaluate(async () => {
