@@ -288,15 +288,13 @@ fn bicubic_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: 
 }
 
 /// Bicubic over a run of interior columns, `f64x2` lanes: the fractions of
-/// `u` and `v` share the weight polynomials (one lane each), each row's
-/// four bytes become two `f64x2` by one shuffle against `2⁵²` and one
-/// subtraction, and the 16 products are summed in `f64` as in the scalar
-/// path.
+/// `u` and `v` share the weight polynomials (one lane each), the 16 bytes
+/// are widened together and each row's four become two `f64x2`, and the
+/// 16 products are summed in `f64` as in the scalar path.
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 fn bicubic_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: &mut [f32]) {
     use core::arch::wasm32::*;
     let (src, w) = (img.data(), img.width());
-    let magic = f64x2_splat(4_503_599_627_370_496.0); // 2^52: bits 0x4330_0000_0000_0000
     let (one, two) = (f64x2_splat(1.0), f64x2_splat(2.0));
     let (a2, a3) = (f64x2_splat(a + 2.0), f64x2_splat(a + 3.0));
     let (av, a5, a8, a4) = (
@@ -341,19 +339,24 @@ fn bicubic_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: 
             (src.as_ptr().add(top + j * w) as *const u32).read_unaligned()
         };
         let bytes = u32x4(q(0), q(1), q(2), q(3));
-        macro_rules! pair {
-            ($b0:literal, $b1:literal) => {
-                f64x2_sub(
-                    i8x16_shuffle::<$b0, 17, 18, 19, 20, 21, 22, 23, $b1, 25, 26, 27, 28, 29, 30, 31>(bytes, magic),
-                    magic,
-                )
-            };
-        }
-        let row = |lo: v128, hi: v128| f64x2_add(f64x2_mul(lo, wc01), f64x2_mul(hi, wc23));
-        let r0 = row(pair!(0, 1), pair!(2, 3));
-        let r1 = row(pair!(4, 5), pair!(6, 7));
-        let r2 = row(pair!(8, 9), pair!(10, 11));
-        let r3 = row(pair!(12, 13), pair!(14, 15));
+        // bytes → u16 → u32 (rows 0, 1 | rows 2, 3), then per row
+        // [p0, p1] and [p2, p3] as f64 (the integers are exact)
+        let (h01, h23) = (
+            u16x8_extend_low_u8x16(bytes),
+            u16x8_extend_high_u8x16(bytes),
+        );
+        let rows = [
+            u32x4_extend_low_u16x8(h01),
+            u32x4_extend_high_u16x8(h01),
+            u32x4_extend_low_u16x8(h23),
+            u32x4_extend_high_u16x8(h23),
+        ];
+        let row = |p: v128| {
+            let lo = f64x2_convert_low_i32x4(p);
+            let hi = f64x2_convert_low_i32x4(i64x2_shuffle::<1, 1>(p, p));
+            f64x2_add(f64x2_mul(lo, wc01), f64x2_mul(hi, wc23))
+        };
+        let (r0, r1, r2, r3) = (row(rows[0]), row(rows[1]), row(rows[2]), row(rows[3]));
         let acc = f64x2_add(
             f64x2_add(
                 f64x2_mul(r0, i64x2_shuffle::<1, 1>(f0, f0)),
