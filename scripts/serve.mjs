@@ -2,6 +2,9 @@
 // (application/wasm for .wasm). No dependencies.
 //   node scripts/serve.mjs [--dir dist] [--port 8080]   (PORT env also works)
 // Also importable: const { url, close } = await startServer({ dir, port: 0 }).
+// --isolate (or ISOLATE=1; startServer({ isolate: true })) adds the
+// cross-origin isolation headers (COOP same-origin, COEP require-corp), under
+// which the lab splits image-wide operators over several workers.
 import http from "node:http";
 import fs from "node:fs";
 import path from "node:path";
@@ -23,7 +26,9 @@ const TYPES = {
   ".txt": "text/plain; charset=utf-8",
 };
 
-export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = {}) {
+const ISOLATION = { "cross-origin-opener-policy": "same-origin", "cross-origin-embedder-policy": "require-corp" };
+
+export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1", isolate = false } = {}) {
   const root = path.resolve(dir);
   const server = http.createServer((req, res) => {
     let pathname;
@@ -45,7 +50,7 @@ export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = 
         return;
       }
       const type = TYPES[path.extname(file).toLowerCase()] || "application/octet-stream";
-      res.writeHead(200, { "content-type": type, "cache-control": "no-cache" });
+      res.writeHead(200, { "content-type": type, "cache-control": "no-cache", ...(isolate ? ISOLATION : {}) });
       res.end(data);
     });
   });
@@ -74,8 +79,9 @@ if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.a
     console.error(`serve: ${dir}/index.html is missing; run "npm run build" first`);
     process.exit(1);
   }
-  startServer({ dir, port }).then(
-    ({ url }) => console.log(`Photogrammetry Playground: ${url}  (Ctrl+C to stop)`),
+  const isolate = args.includes("--isolate") || process.env.ISOLATE === "1";
+  startServer({ dir, port, isolate }).then(
+    ({ url }) => console.log(`Photogrammetry Playground: ${url}${isolate ? " (cross-origin isolated)" : ""}  (Ctrl+C to stop)`),
     (e) => {
       console.error(`serve: cannot listen on port ${port}: ${e.message} (set PORT or --port)`);
       process.exit(1);

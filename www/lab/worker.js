@@ -72,6 +72,10 @@ const handlers = {
   neighbourhood({ slot = "a", c, r, w, h, border }) {
     return need(slot).neighbourhood(c, r, w, h, border);
   },
+  size({ slot = "a" }) {
+    const img = need(slot);
+    return { width: img.width(), height: img.height() };
+  },
   window({ slot = "a", c, r, w, h }) {
     return need(slot).window(c, r, w, h);
   },
