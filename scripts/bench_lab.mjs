@@ -48,8 +48,10 @@ const OPS = [
 ];
 
 // ------------------------------------------------------------------ Node
-const lab = await import(new URL("../dist/lab/pkg/photogrammetry_lab.js", import.meta.url));
-lab.initSync({ module: fs.readFileSync(new URL("../dist/lab/pkg/photogrammetry_lab_bg.wasm", import.meta.url)) });
+// the build the worker loads where there is SIMD (pkg-simd), else the scalar one
+const pkg = fs.existsSync(new URL("../dist/lab/pkg-simd/photogrammetry_lab.js", import.meta.url)) && process.env.BENCH_LAB_SCALAR !== "1" ? "pkg-simd" : "pkg";
+const lab = await import(new URL(`../dist/lab/${pkg}/photogrammetry_lab.js`, import.meta.url));
+lab.initSync({ module: fs.readFileSync(new URL(`../dist/lab/${pkg}/photogrammetry_lab_bg.wasm`, import.meta.url)) });
 const call = (img, type, a) => {
   switch (type) {
     case "filter": return lab.run_filter(img, a.kernel, a.border);
@@ -122,6 +124,10 @@ try {
       for (let i = 0; i < REPS; i++) ts.push(await ask(type, a));
       out[name] = Math.min(...ts);
     }
+    out.engine = await new Promise((resolve) => {
+      w.addEventListener("message", (ev) => ev.data.id === -1 && resolve(ev.data.ok ? ev.data.result.build : "unknown (no engine request)"));
+      w.postMessage({ id: -1, type: "engine" });
+    });
     w.terminate();
     return out;
   }, { OPS, N, REPS, bytesSmall, bytesBig });
@@ -132,12 +138,13 @@ try {
 }
 
 console.log(`\nThe image lab's operators on a ${N} × ${N} image (ms, best of ${REPS} after a warm-up on 256 × 256):`);
+console.log(`  Node: dist/lab/${pkg}; Chromium worker: the ${chrome.engine} build`);
 console.log(`  ${"operator".padEnd(62)} ${"Node".padStart(9)} ${"Chromium worker".padStart(16)}`);
 for (const [name] of OPS) console.log(`  ${name.padEnd(62)} ${node[name].toFixed(0).padStart(9)} ${chrome[name].toFixed(0).padStart(16)}`);
 
 const gz = (f) => zlib.gzipSync(fs.readFileSync(f), { level: 9 }).length;
-const files = ["dist/lab/pkg/photogrammetry_lab_bg.wasm", "dist/lab/pkg/photogrammetry_lab.js", ...fs.readdirSync("dist/lab").filter((f) => /\.(js|css)$/.test(f)).map((f) => `dist/lab/${f}`)];
-const total = files.reduce((s, f) => s + gz(f), 0);
-console.log(`\nThe lab module, gzip -9 (loaded only when #/lab opens):`);
+const files = ["dist/lab/pkg/photogrammetry_lab_bg.wasm", ...(fs.existsSync("dist/lab/pkg-simd") ? ["dist/lab/pkg-simd/photogrammetry_lab_bg.wasm"] : []), "dist/lab/pkg/photogrammetry_lab.js", ...fs.readdirSync("dist/lab").filter((f) => /\.(js|css)$/.test(f)).map((f) => `dist/lab/${f}`)];
+const total = files.filter((f) => !f.includes("pkg-simd")).reduce((s, f) => s + gz(f), 0);
+console.log(`\nThe lab module, gzip -9 (loaded only when #/lab opens; one of the two wasm builds):`);
 for (const f of files) console.log(`  ${(gz(f) / 1024).toFixed(1).padStart(7)} KiB  ${f}`);
-console.log(`  ${(total / 1024).toFixed(1).padStart(7)} KiB  in all`);
+console.log(`  ${(total / 1024).toFixed(1).padStart(7)} KiB  in all with the scalar wasm`);

@@ -30,11 +30,20 @@ wasm-bindgen --target web --no-typescript --remove-name-section --remove-produce
   target/wasm32-unknown-unknown/release/photogrammetry_lab.wasm
 # The catalog as data, from the Rust entries (pkg/all.js's catalog()), with each entry's module.
 node scripts/catalog-json.mjs dist
+# ... and its SIMD128 build (profile `fast`, the target dir `npm run bench -- ops`
+# also uses), which the lab's worker loads where the browser has SIMD.
+echo "build: cargo build --profile fast --target wasm32-unknown-unknown -p photogrammetry-lab (+simd128)"
+RUSTFLAGS="-C target-feature=+simd128" cargo build --profile fast --target wasm32-unknown-unknown \
+  -p photogrammetry-lab --lib --target-dir target/bench-simd
+mkdir -p dist/lab/pkg-simd
+wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/lab/pkg-simd \
+  target/bench-simd/wasm32-unknown-unknown/fast/photogrammetry_lab.wasm
 katex=node_modules/katex/dist
 cp "$katex/katex.min.js" "$katex/katex.min.css" dist/vendor/katex/
 mkdir -p dist/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
 sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "dist/pkg/${name}_bg.wasm" | wc -c)"; done)
+lab="lab $(gzip -9c dist/lab/pkg/photogrammetry_lab_bg.wasm | wc -c), lab SIMD $(gzip -9c dist/lab/pkg-simd/photogrammetry_lab_bg.wasm | wc -c)"
 # hashed names, import map, .gz/.br, _headers, then the service worker's list (sw-manifest.mjs)
 node scripts/assets.mjs dist
-echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes)"
+echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes; $lab)"

@@ -5,6 +5,9 @@
 // (dist/assets.json), no-cache for the HTML and the stable names.
 //   node scripts/serve.mjs [--dir dist] [--port 8080]   (PORT env also works)
 // Also importable: const { url, close } = await startServer({ dir, port: 0 }).
+// --isolate (or ISOLATE=1; startServer({ isolate: true })) adds the
+// cross-origin isolation headers (COOP same-origin, COEP require-corp), under
+// which the lab splits image-wide operators over several workers.
 import http from "node:http";
 import fs from "node:fs";
 import path from "node:path";
@@ -52,7 +55,9 @@ function hashedNames(root) {
   }
 }
 
-export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = {}) {
+const ISOLATION = { "cross-origin-opener-policy": "same-origin", "cross-origin-embedder-policy": "require-corp" };
+
+export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1", isolate = false } = {}) {
   const root = path.resolve(dir);
   const hashed = hashedNames(root);
   const server = http.createServer((req, res) => {
@@ -84,7 +89,7 @@ export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1" } = 
         return;
       }
       if (copy) headers["content-encoding"] = copy[0];
-      res.writeHead(200, headers);
+      res.writeHead(200, isolate ? { ...headers, ...ISOLATION } : headers);
       res.end(data);
     });
   });
@@ -113,8 +118,9 @@ if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.a
     console.error(`serve: ${dir}/index.html is missing; run "npm run build" first`);
     process.exit(1);
   }
-  startServer({ dir, port }).then(
-    ({ url }) => console.log(`Photogrammetry Playground: ${url}  (Ctrl+C to stop)`),
+  const isolate = args.includes("--isolate") || process.env.ISOLATE === "1";
+  startServer({ dir, port, isolate }).then(
+    ({ url }) => console.log(`Photogrammetry Playground: ${url}${isolate ? " (cross-origin isolated)" : ""}  (Ctrl+C to stop)`),
     (e) => {
       console.error(`serve: cannot listen on port ${port}: ${e.message} (set PORT or --port)`);
       process.exit(1);

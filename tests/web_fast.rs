@@ -479,3 +479,91 @@ fn contours_are_every_border_exactly() {
         }
     }
 }
+
+/// The warps where the cubic weights cancel hardest: 0/255 checkerboards
+/// and stripes (neighbours of opposite sign weights at full contrast),
+/// fractions next to 0, ½ and 1 and exactly on pixel centres, values near
+/// zero (the tolerance is absolute there). The interior runs compute
+/// positions along the row ([`fast::warp_affine`]'s `along`) and sum in
+/// `f64`, so the only loss is the `f32` store: 1e-6 relative holds with a
+/// wide margin below the 1e-4 rule.
+#[test]
+fn warps_hold_the_tolerance_where_weights_cancel() {
+    use photogrammetry_playground::resample::{self, fast as rfast, Method};
+    let (w, h) = (37, 29);
+    let images: [Vec<u8>; 3] = [
+        (0..w * h)
+            .map(|i| if (i % w + i / w) % 2 == 0 { 0 } else { 255 })
+            .collect(),
+        (0..w * h)
+            .map(|i| if (i % w) % 4 < 2 { 255 } else { 0 })
+            .collect(),
+        (0..w * h)
+            .map(|i| if (i / w) % 3 == 0 { 255 } else { 0 })
+            .collect(),
+    ];
+    let shifts = [
+        0.0,
+        1e-12,
+        1e-7,
+        0.25,
+        0.5 - 1e-9,
+        0.5,
+        0.5 + 1e-9,
+        1.0 - 1e-7,
+        1.0 - 1e-12,
+    ];
+    for bytes in &images {
+        let img = Gray::new("img", bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        for &sx in &shifts {
+            for &sy in &shifts {
+                for m in [
+                    [[1.0, 0.0, sx], [0.0, 1.0, sy]],
+                    [[0.999_999, 1e-7, sx + 0.5], [-1e-7, 1.000_001, sy]],
+                    [[0.5, 0.0, sx + 3.0], [0.0, 0.25, sy + 2.0]],
+                ] {
+                    for a in [resample::SEED_A, -0.75, -0.5] {
+                        let mut out = vec![0.0f32; w * h];
+                        rfast::warp_affine(img, &m, Method::Bicubic, a, -1.0, (w, h), &mut out)
+                            .unwrap();
+                        for r in 0..h {
+                            for c in 0..w {
+                                let (x, y) = (
+                                    m[0][0] * c as f64 + m[0][1] * r as f64 + m[0][2],
+                                    m[1][0] * c as f64 + m[1][1] * r as f64 + m[1][2],
+                                );
+                                let want =
+                                    resample::bicubic(&grid, x, y, a).map_or(-1.0, |b| b.value);
+                                let got = out[r * w + c];
+                                let err = (f64::from(got) - want).abs();
+                                assert!(
+                                    err <= 1e-6 * want.abs().max(1.0),
+                                    "a={a} map {m:?} at ({c}, {r}): fast {got}, reference {want}"
+                                );
+                            }
+                        }
+                        let mut lin = vec![0.0f32; w * h];
+                        rfast::warp_affine(img, &m, Method::Bilinear, 0.0, -1.0, (w, h), &mut lin)
+                            .unwrap();
+                        for r in 0..h {
+                            for c in 0..w {
+                                let (x, y) = (
+                                    m[0][0] * c as f64 + m[0][1] * r as f64 + m[0][2],
+                                    m[1][0] * c as f64 + m[1][1] * r as f64 + m[1][2],
+                                );
+                                let want = resample::value_at(&grid, x, y, Method::Bilinear)
+                                    .unwrap_or(-1.0);
+                                let err = (f64::from(lin[r * w + c]) - want).abs();
+                                assert!(
+                                    err <= 1e-6 * want.abs().max(1.0),
+                                    "bilinear map {m:?} at ({c}, {r})"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

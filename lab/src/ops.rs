@@ -9,7 +9,7 @@ use photogrammetry_playground::error::{Error, Result};
 use photogrammetry_playground::filter::{self, Kernel, Region};
 use photogrammetry_playground::interest::{self, Measures};
 use photogrammetry_playground::matching::{self, Gradients, Matching, Model, Params, Settings};
-use photogrammetry_playground::raster::{Border, Grid};
+use photogrammetry_playground::raster::{Border, Gray, Grid};
 use photogrammetry_playground::resample::{self, Method};
 use photogrammetry_playground::transform::{self, Fit, PointPair};
 
@@ -96,48 +96,145 @@ pub fn filter_image(
     Ok(Layer::from_grid(kernel_name, &f.output, f.region, signed))
 }
 
-/// The 3×3 median of an 8-bit image by `filter::fast` (tied to
-/// `filter::median` at every pixel by the core's tests/web_fast.rs; integer
-/// values, so exactly the worked example's numbers); `None` for other
-/// kernels or images, which take the reference path. (The fast 3×3 mean
-/// writes f32, as the benchmark's contract asks; the lab's layers and the
-/// worked examples are f64, so the mean stays on the reference path here.)
-fn fast_filter(img: &Grid, kernel_name: &str, border: Border) -> Result<Option<Layer>> {
-    use photogrammetry_playground::raster::Gray;
-    let (w, h) = (img.width(), img.height());
-    let (Some(bytes), Some(region)) = (
-        (kernel_name == "median").then(|| img.to_u8()).flatten(),
-        filter::output_region(w, h, 1, 1, border),
-    ) else {
-        return Ok(None);
-    };
-    let g = Gray::new("image", &bytes, w, h)?;
-    let mut out = vec![0u8; w * h];
-    filter::fast::median3(g, border, &mut out)?;
-    let data = (region.r0..region.r0 + region.height)
+/// The separable integer kernels of the menu as `(kx, ky, divisor)`:
+/// `kernel = ky ⊗ kx / divisor` entry by entry (lab/tests/operators.rs
+/// checks each against `filter::by_name`).
+pub fn separable_taps(name: &str) -> Option<(&'static [f32], &'static [f32], f64)> {
+    Some(match name {
+        "mean" => (&[1.0; 3], &[1.0; 3], 9.0),
+        "gaussian-3" => (&[1.0, 2.0, 1.0], &[1.0, 2.0, 1.0], 16.0),
+        "gaussian-5" => (
+            &[1.0, 4.0, 6.0, 4.0, 1.0],
+            &[1.0, 4.0, 6.0, 4.0, 1.0],
+            256.0,
+        ),
+        _ => return None,
+    })
+}
+
+/// The 8-bit bytes of `img` and the output region `border` leaves for a
+/// `(2·hx+1) × (2·hy+1)` window, when the fast paths apply.
+fn fast_input(img: &Grid, hx: usize, hy: usize, border: Border) -> Option<(Vec<u8>, Region)> {
+    let bytes = img.to_u8()?;
+    let region = filter::output_region(img.width(), img.height(), hx, hy, border)?;
+    Some((bytes, region))
+}
+
+/// The part of a full-size fast output that `region` covers, as `f64`
+/// through `f`.
+fn cut_region<T: Copy>(full: &[T], w: usize, region: Region, f: impl Fn(T) -> f64) -> Vec<f64> {
+    (region.r0..region.r0 + region.height)
         .flat_map(|r| {
             let start = r * w + region.c0;
-            out.get(start..start + region.width)
+            full.get(start..start + region.width)
                 .unwrap_or(&[])
                 .iter()
-                .map(|&v| f64::from(v))
+                .map(|&v| f(v))
                 .collect::<Vec<f64>>()
         })
-        .collect();
-    Ok(Some(Layer {
-        name: kernel_name.to_string(),
+        .collect()
+}
+
+fn region_layer(name: &str, region: Region, data: Vec<f64>, signed: bool) -> Layer {
+    Layer {
+        name: name.to_string(),
         width: region.width,
         height: region.height,
         c0: region.c0,
         r0: region.r0,
         data,
-        signed: false,
+        signed,
+    }
+}
+
+/// An integer-kernel response by `filter::fast::separable` with divisor 1:
+/// every partial sum is an integer below 2²⁴, so the `f32` sums are exact,
+/// and dividing them in `f64` gives the bits of the reference's
+/// `Σ n·f / divisor` (`+ 0.0` turns a `−0` sum into the reference's `0`).
+fn integer_response(
+    g: Gray,
+    kx: &[f32],
+    ky: &[f32],
+    divisor: f64,
+    border: Border,
+    region: Region,
+) -> Result<Vec<f64>> {
+    let w = g.width();
+    let mut out = vec![0.0f32; w * g.height()];
+    filter::fast::separable(g, kx, ky, 1.0, border, &mut out)?;
+    Ok(cut_region(&out, w, region, |v| {
+        (f64::from(v) + 0.0) / divisor
     }))
+}
+
+/// The menu's filters on an 8-bit image by the core's fast paths, with the
+/// worked example's exact numbers (so "explain this pixel" shows the same
+/// value the example computes): the 3×3 median by `filter::fast::median3`
+/// (integers), the separable integer kernels ([`separable_taps`]) by
+/// [`integer_response`]. `None` for other kernels and other images, which
+/// take the reference path. Tied to `filter::correlate` / `filter::median`
+/// bit for bit at every pixel by lab/tests/operators.rs.
+pub fn fast_filter(img: &Grid, kernel_name: &str, border: Border) -> Result<Option<Layer>> {
+    let taps = separable_taps(kernel_name);
+    let half = match (kernel_name, taps) {
+        ("median", _) => 1,
+        (_, Some((kx, _, _))) => kx.len() / 2,
+        _ => return Ok(None),
+    };
+    let (w, h) = (img.width(), img.height());
+    let Some((bytes, region)) = fast_input(img, half, half, border) else {
+        return Ok(None);
+    };
+    let g = Gray::new("image", &bytes, w, h)?;
+    let data = match taps {
+        Some((kx, ky, divisor)) => integer_response(g, kx, ky, divisor, border, region)?,
+        None => {
+            let mut out = vec![0u8; w * h];
+            filter::fast::median3(g, border, &mut out)?;
+            cut_region(&out, w, region, f64::from)
+        }
+    };
+    Ok(Some(region_layer(kernel_name, region, data, false)))
+}
+
+/// Prewitt or Sobel on an 8-bit image by the fast separable path:
+/// `gx`, `gy` exact integer sums (see [`integer_response`]), magnitude and
+/// direction from them in `f64` as [`edges`] computes them. `None` when
+/// the image is not 8-bit or `border` leaves no pixel.
+pub fn fast_edges(img: &Grid, operator: &str, border: Border) -> Result<Option<Vec<Layer>>> {
+    // gx: top minus bottom (ky = [1 0 −1]); gy: right minus left (kx = [−1 0 1])
+    let (sx, sy): (&[f32], &[f32]) = match operator {
+        "prewitt" => (&[1.0, 1.0, 1.0], &[1.0, 1.0, 1.0]),
+        "sobel" => (&[1.0, 2.0, 1.0], &[1.0, 2.0, 1.0]),
+        _ => return Ok(None),
+    };
+    let (w, h) = (img.width(), img.height());
+    let Some((bytes, region)) = fast_input(img, 1, 1, border) else {
+        return Ok(None);
+    };
+    let g = Gray::new("image", &bytes, w, h)?;
+    let gx = integer_response(g, sx, &[1.0, 0.0, -1.0], 1.0, border, region)?;
+    let gy = integer_response(g, &[-1.0, 0.0, 1.0], sy, 1.0, border, region)?;
+    let mag = gx.iter().zip(&gy).map(|(x, y)| x.hypot(*y)).collect();
+    let dir = gx
+        .iter()
+        .zip(&gy)
+        .map(|(x, y)| y.atan2(*x).to_degrees())
+        .collect();
+    Ok(Some(vec![
+        region_layer("gx", region, gx, true),
+        region_layer("gy", region, gy, true),
+        region_layer("magnitude", region, mag, false),
+        region_layer("direction", region, dir, true),
+    ]))
 }
 
 /// Prewitt or Sobel `gx`, `gy`, magnitude and direction (`atan2(gy, gx)`
 /// in degrees) over the whole image: `filter::gradient`.
 pub fn edges(img: &Grid, operator: &str, border: Border) -> Result<Vec<Layer>> {
+    if let Some(layers) = fast_edges(img, operator, border)? {
+        return Ok(layers);
+    }
     let (kx, ky) = match operator {
         "prewitt" => (filter::prewitt_x(), filter::prewitt_y()),
         "sobel" => (filter::sobel_x(), filter::sobel_y()),

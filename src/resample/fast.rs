@@ -116,9 +116,25 @@ fn sample(src: &[u8], w: usize, method: Method, a: f64, loc: (usize, usize, f64,
     v as f32
 }
 
+/// The position of column `x` on a row whose constant part is `base`
+/// (`m·(0, y, 1)`): one product and one sum per coordinate, monotone in `x`
+/// (rounding is monotone), so the interior test at the two ends of a run
+/// holds for every column between. It differs from [`pos`] by at most a
+/// rounding of the last bit; both interpolations are continuous, so a
+/// `floor` that flips at an exact integer changes the value by nothing
+/// visible at `1e-4`.
+#[inline(always)]
+fn along(m: &Affine, base: (f64, f64), x: f64) -> (f64, f64) {
+    (m[0][0] * x + base.0, m[1][0] * x + base.1)
+}
+
+fn row_base(m: &Affine, y: f64) -> (f64, f64) {
+    (m[0][1] * y + m[0][2], m[1][1] * y + m[1][2])
+}
+
 /// The first and last column of row `y` whose positions are all interior
 /// (`None` when there is none): solved from the linear map, then proven at
-/// both ends.
+/// both ends with the expression the run uses ([`along`]).
 fn interior_run(rule: Rule, m: &Affine, y: f64, width: usize) -> Option<(usize, usize)> {
     let (w, h) = (rule.w as f64, rule.h as f64);
     let (lo_u, hi_u, lo_v, hi_v) = match rule.method {
@@ -127,18 +143,19 @@ fn interior_run(rule: Rule, m: &Affine, y: f64, width: usize) -> Option<(usize, 
         // rounding `u + 0.5` near the last pixel: always the checked path
         Method::Nearest => return None,
     };
+    let base = row_base(m, y);
     let mut lo = 0.0f64;
     let mut hi = width as f64 - 1.0;
     for (k, (a, b)) in [(lo_u, hi_u), (lo_v, hi_v)].into_iter().enumerate() {
         let slope = m[k][0];
-        let base = m[k][1] * y + m[k][2];
+        let b0 = if k == 0 { base.0 } else { base.1 };
         if slope == 0.0 {
-            if !(base >= a && base < b) {
+            if !(b0 >= a && b0 < b) {
                 return None;
             }
             continue;
         }
-        let (t1, t2) = ((a - base) / slope, (b - base) / slope);
+        let (t1, t2) = ((a - b0) / slope, (b - b0) / slope);
         let (t_lo, t_hi) = if slope > 0.0 { (t1, t2) } else { (t2, t1) };
         lo = lo.max(t_lo.ceil() + 1.0);
         hi = hi.min(t_hi.floor() - 1.0);
@@ -147,8 +164,8 @@ fn interior_run(rule: Rule, m: &Affine, y: f64, width: usize) -> Option<(usize, 
         return None;
     }
     let (c0, c1) = (lo as usize, hi as usize);
-    let (u0, v0) = pos(m, c0 as f64, y);
-    let (u1, v1) = pos(m, c1 as f64, y);
+    let (u0, v0) = along(m, base, c0 as f64);
+    let (u1, v1) = along(m, base, c1 as f64);
     (rule.interior(u0, v0) && rule.interior(u1, v1)).then_some((c0, c1))
 }
 
@@ -194,9 +211,10 @@ pub fn warp_affine(
             *o = checked(x);
         }
         let run = row.get_mut(c0..=c1).unwrap_or(&mut []);
+        let base = row_base(m, yf);
         match method {
-            Method::Bilinear => bilinear_run(src, w, m, yf, c0, run),
-            Method::Bicubic => bicubic_run(src, w, m, yf, c0, a, run),
+            Method::Bilinear => bilinear_run(img, m, base, c0, run),
+            Method::Bicubic => bicubic_run(img, m, base, c0, a, run),
             Method::Nearest => {
                 for (k, o) in run.iter_mut().enumerate() {
                     *o = checked(c0 + k);
@@ -207,17 +225,36 @@ pub fn warp_affine(
     Ok(())
 }
 
-/// Bilinear over a run of interior columns starting at `c0`.
-fn bilinear_run(src: &[u8], w: usize, m: &Affine, y: f64, c0: usize, run: &mut [f32]) {
+/// Pixel `i` of an interior neighbourhood, unchecked.
+///
+/// Safety: `i < src.len()`. The runs call it only for columns between the
+/// two ends [`interior_run`] proved interior (positions monotone along the
+/// row, [`along`]), whose neighbourhoods lie inside the `w × h` image, and
+/// [`Gray`] holds exactly `w·h` bytes.
+#[inline(always)]
+unsafe fn px(src: &[u8], i: usize) -> f64 {
+    debug_assert!(i < src.len());
+    f64::from(*src.get_unchecked(i))
+}
+
+/// Bilinear over a run of interior columns starting at `c0`: positions
+/// along the row ([`along`]), no position test and no bounds check.
+fn bilinear_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, run: &mut [f32]) {
+    let (src, w) = (img.data(), img.width());
     for (k, o) in run.iter_mut().enumerate() {
-        let (u, v) = pos(m, (c0 + k) as f64, y);
+        let (u, v) = along(m, base, (c0 + k) as f64);
         let (fu, fv) = (u.floor(), v.floor());
         let i = fv as usize * w + fu as usize;
         let (dc, dr) = (u - fu, v - fv);
-        let q = src.get(i..i + 2).unwrap_or(&[0, 0]);
-        let s = src.get(i + w..i + w + 2).unwrap_or(&[0, 0]);
-        let (p0, p1) = (f64::from(q[0]), f64::from(q[1]));
-        let (p2, p3) = (f64::from(s[0]), f64::from(s[1]));
+        // SAFETY: an interior position (see `px`): i + w + 1 < w·h.
+        let (p0, p1, p2, p3) = unsafe {
+            (
+                px(src, i),
+                px(src, i + 1),
+                px(src, i + w),
+                px(src, i + w + 1),
+            )
+        };
         let i1 = p0 + dc * (p1 - p0);
         let i2 = p2 + dc * (p3 - p2);
         *o = (i1 + dr * (i2 - i1)) as f32;
@@ -225,22 +262,111 @@ fn bilinear_run(src: &[u8], w: usize, m: &Affine, y: f64, c0: usize, run: &mut [
 }
 
 /// Bicubic over a run of interior columns starting at `c0`.
-fn bicubic_run(src: &[u8], w: usize, m: &Affine, y: f64, c0: usize, a: f64, run: &mut [f32]) {
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+fn bicubic_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: &mut [f32]) {
+    let (src, w) = (img.data(), img.width());
     for (k, o) in run.iter_mut().enumerate() {
-        let (u, v) = pos(m, (c0 + k) as f64, y);
+        let (u, v) = along(m, base, (c0 + k) as f64);
         let (fu, fv) = (u.floor(), v.floor());
         let (wc, wr) = (cubic4(u - fu, a), cubic4(v - fv, a));
         let top = (fv as usize - 1) * w + fu as usize - 1;
         let mut acc = 0.0f64;
         for (j, wj) in wr.iter().enumerate() {
             let s = top + j * w;
-            let p = src.get(s..s + 4).unwrap_or(&[0, 0, 0, 0]);
-            let row = f64::from(p[0]) * wc[0]
-                + f64::from(p[1]) * wc[1]
-                + f64::from(p[2]) * wc[2]
-                + f64::from(p[3]) * wc[3];
+            // SAFETY: an interior position (see `px`): the 4×4 block from
+            // `top` lies inside the image.
+            let row = unsafe {
+                px(src, s) * wc[0]
+                    + px(src, s + 1) * wc[1]
+                    + px(src, s + 2) * wc[2]
+                    + px(src, s + 3) * wc[3]
+            };
             acc += wj * row;
         }
         *o = acc as f32;
+    }
+}
+
+/// Bicubic over a run of interior columns, `f64x2` lanes: the fractions of
+/// `u` and `v` share the weight polynomials (one lane each), the 16 bytes
+/// are widened together and each row's four become two `f64x2`, and the
+/// 16 products are summed in `f64` as in the scalar path.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+fn bicubic_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: &mut [f32]) {
+    use core::arch::wasm32::*;
+    let (src, w) = (img.data(), img.width());
+    let (one, two) = (f64x2_splat(1.0), f64x2_splat(2.0));
+    let (a2, a3) = (f64x2_splat(a + 2.0), f64x2_splat(a + 3.0));
+    let (av, a5, a8, a4) = (
+        f64x2_splat(a),
+        f64x2_splat(5.0 * a),
+        f64x2_splat(8.0 * a),
+        f64x2_splat(4.0 * a),
+    );
+    let near = |x: v128| {
+        f64x2_add(
+            f64x2_mul(f64x2_sub(f64x2_mul(a2, x), a3), f64x2_mul(x, x)),
+            one,
+        )
+    };
+    let far = |x: v128| {
+        f64x2_sub(
+            f64x2_mul(
+                f64x2_add(f64x2_mul(f64x2_sub(f64x2_mul(av, x), a5), x), a8),
+                x,
+            ),
+            a4,
+        )
+    };
+    let slope = f64x2(m[0][0], m[1][0]);
+    let b = f64x2(base.0, base.1);
+    for (k, o) in run.iter_mut().enumerate() {
+        let uv = f64x2_add(f64x2_mul(slope, f64x2_splat((c0 + k) as f64)), b);
+        let fl = f64x2_floor(uv);
+        let st = f64x2_sub(uv, fl);
+        let n0 = near(st); // [wc1, wr1]
+        let n1 = near(f64x2_sub(one, st)); // [wc2, wr2]
+        let f0 = far(f64x2_add(one, st)); // [wc0, wr0]
+        let f1 = far(f64x2_sub(two, st)); // [wc3, wr3]
+        let wc01 = i64x2_shuffle::<0, 2>(f0, n0);
+        let wc23 = i64x2_shuffle::<0, 2>(n1, f1);
+        let (fu, fv) = (f64x2_extract_lane::<0>(fl), f64x2_extract_lane::<1>(fl));
+        let top = (fv as usize - 1) * w + fu as usize - 1;
+        // SAFETY: an interior position (see `px`): the 4×4 block from `top`
+        // lies inside the image, so each 4-byte read is in bounds.
+        let q = |j: usize| unsafe {
+            debug_assert!(top + j * w + 4 <= src.len());
+            (src.as_ptr().add(top + j * w) as *const u32).read_unaligned()
+        };
+        let bytes = u32x4(q(0), q(1), q(2), q(3));
+        // bytes → u16 → u32 (rows 0, 1 | rows 2, 3), then per row
+        // [p0, p1] and [p2, p3] as f64 (the integers are exact)
+        let (h01, h23) = (
+            u16x8_extend_low_u8x16(bytes),
+            u16x8_extend_high_u8x16(bytes),
+        );
+        let rows = [
+            u32x4_extend_low_u16x8(h01),
+            u32x4_extend_high_u16x8(h01),
+            u32x4_extend_low_u16x8(h23),
+            u32x4_extend_high_u16x8(h23),
+        ];
+        let row = |p: v128| {
+            let lo = f64x2_convert_low_i32x4(p);
+            let hi = f64x2_convert_low_i32x4(i64x2_shuffle::<1, 1>(p, p));
+            f64x2_add(f64x2_mul(lo, wc01), f64x2_mul(hi, wc23))
+        };
+        let (r0, r1, r2, r3) = (row(rows[0]), row(rows[1]), row(rows[2]), row(rows[3]));
+        let acc = f64x2_add(
+            f64x2_add(
+                f64x2_mul(r0, i64x2_shuffle::<1, 1>(f0, f0)),
+                f64x2_mul(r1, i64x2_shuffle::<1, 1>(n0, n0)),
+            ),
+            f64x2_add(
+                f64x2_mul(r2, i64x2_shuffle::<1, 1>(n1, n1)),
+                f64x2_mul(r3, i64x2_shuffle::<1, 1>(f1, f1)),
+            ),
+        );
+        *o = (f64x2_extract_lane::<0>(acc) + f64x2_extract_lane::<1>(acc)) as f32;
     }
 }

@@ -2,6 +2,10 @@
 // recovery. The worker is replaced (a fresh wasm instance) when its wasm
 // traps, when it dies, or when a long request is cancelled; `restore()`
 // (given by the lab) then puts the student's image back into the new one.
+// Cross-origin isolated pages split filters and edges over several workers
+// by row tiles (tiles.js); `threads` says how many run (1: single-threaded).
+
+import { Tiles } from "./tiles.js";
 
 export class LabClient {
   /**
@@ -11,6 +15,8 @@ export class LabClient {
     this.hooks = hooks;
     this.nextId = 1;
     this.pending = new Map();
+    this.tiles = Tiles.available() ? new Tiles(Math.min(4, navigator.hardwareConcurrency)) : null;
+    this.threads = this.tiles ? this.tiles.n : 1;
     this.start();
   }
 
@@ -39,6 +45,10 @@ export class LabClient {
 
   /** Sends a request; resolves with its result, rejects with an Error naming the field. */
   call(type, args = {}, transfer = []) {
+    if (this.tiles?.handles(type, args)) {
+      this.tiling = (this.tiling || 0) + 1;
+      return this.tiles.run(this, type, args).finally(() => this.tiling--);
+    }
     const id = this.nextId++;
     return new Promise((resolve, reject) => {
       this.pending.set(id, { resolve, reject, type });
@@ -48,7 +58,7 @@ export class LabClient {
 
   /** Whether a request is running. */
   get busy() {
-    return this.pending.size > 0;
+    return this.pending.size > 0 || this.tiling > 0;
   }
 
   /** Stops whatever runs: the worker is replaced and the image restored. */
@@ -57,6 +67,7 @@ export class LabClient {
   }
 
   replace(why) {
+    this.tiles?.reset();
     this.worker.terminate();
     const err = new Error(why === "cancelled" ? "Cancelled." : why);
     err.cancelled = why === "cancelled";
@@ -70,6 +81,7 @@ export class LabClient {
   }
 
   close() {
+    this.tiles?.reset();
     this.worker.terminate();
     this.pending.clear();
   }

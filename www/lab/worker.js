@@ -6,9 +6,25 @@
 // A wasm trap (WebAssembly.RuntimeError) is reported as `trapped`: the page
 // then drops this worker and starts a fresh one.
 
-import init, * as lab from "./pkg/photogrammetry_lab.js";
-
-const ready = init();
+// The SIMD128 build (pkg-simd/, profile `fast`) where the browser validates
+// a tiny SIMD module (every current one does), the scalar build (pkg/)
+// otherwise or when pkg-simd/ is missing; scripts/build.sh writes both.
+const SIMD_PROBE = new Uint8Array([
+  0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11,
+]);
+const simd = WebAssembly.validate(SIMD_PROBE);
+let lab;
+let build = "scalar";
+async function init(m) {
+  await m.default();
+  return m;
+}
+// literal import() specifiers: the build (scripts/assets.mjs) rewrites them to hashed names
+const ready = (simd ? import("./pkg-simd/photogrammetry_lab.js").then(init).then((m) => ((build = "simd128"), m)) : Promise.reject(new Error("no SIMD")))
+  .catch(() => import("./pkg/photogrammetry_lab.js").then(init))
+  .then((m) => {
+    lab = m;
+  });
 /** The images by slot: "a" (the open photo), "b" (the second photo of a pair). */
 const images = {};
 
@@ -56,6 +72,10 @@ const handlers = {
   neighbourhood({ slot = "a", c, r, w, h, border }) {
     return need(slot).neighbourhood(c, r, w, h, border);
   },
+  size({ slot = "a" }) {
+    const img = need(slot);
+    return { width: img.width(), height: img.height() };
+  },
   window({ slot = "a", c, r, w, h }) {
     return need(slot).window(c, r, w, h);
   },
@@ -101,6 +121,10 @@ const handlers = {
   },
   trap() {
     lab.trap_for_tests();
+  },
+  /** Which build runs: "simd128" or "scalar", and whether the browser has SIMD. */
+  engine() {
+    return { build, simd };
   },
 };
 
