@@ -48,10 +48,13 @@ const OPS = [
 ];
 
 // ------------------------------------------------------------------ Node
+// the build names files by their content: dist/assets.json maps logical names to them
+const ASSETS = fs.existsSync("dist/assets.json") ? JSON.parse(fs.readFileSync("dist/assets.json", "utf8")) : {};
+const built = (f) => ASSETS[f] ?? f;
 // the build the worker loads where there is SIMD (pkg-simd), else the scalar one
 const pkg = fs.existsSync(new URL("../dist/lab/pkg-simd/photogrammetry_lab.js", import.meta.url)) && process.env.BENCH_LAB_SCALAR !== "1" ? "pkg-simd" : "pkg";
-const lab = await import(new URL(`../dist/lab/${pkg}/photogrammetry_lab.js`, import.meta.url));
-lab.initSync({ module: fs.readFileSync(new URL(`../dist/lab/${pkg}/photogrammetry_lab_bg.wasm`, import.meta.url)) });
+const lab = await import(new URL(`../dist/${built(`lab/${pkg}/photogrammetry_lab.js`)}`, import.meta.url));
+lab.initSync({ module: fs.readFileSync(new URL(`../dist/${built(`lab/${pkg}/photogrammetry_lab_bg.wasm`)}`, import.meta.url)) });
 const call = (img, type, a) => {
   switch (type) {
     case "filter": return lab.run_filter(img, a.kernel, a.border);
@@ -95,8 +98,8 @@ try {
   await page.goto(`${server.url}index.html`);
   const bytesSmall = Array.from(image(256));
   const bytesBig = Array.from(image(N));
-  const result = await page.evaluate(async ({ OPS, N, REPS, bytesSmall, bytesBig }) => {
-    const w = new Worker("./lab/worker.js", { type: "module" });
+  const result = await page.evaluate(async ({ OPS, N, REPS, bytesSmall, bytesBig, WORKER }) => {
+    const w = new Worker(WORKER, { type: "module" });
     let id = 0;
     const ask = (type, args, transfer = []) => new Promise((resolve, reject) => {
       const my = ++id;
@@ -130,7 +133,7 @@ try {
     });
     w.terminate();
     return out;
-  }, { OPS, N, REPS, bytesSmall, bytesBig });
+  }, { OPS, N, REPS, bytesSmall, bytesBig, WORKER: `./${built("lab/worker.js")}` });
   Object.assign(chrome, result);
 } finally {
   await browser.close();
@@ -143,7 +146,7 @@ console.log(`  ${"operator".padEnd(62)} ${"Node".padStart(9)} ${"Chromium worker
 for (const [name] of OPS) console.log(`  ${name.padEnd(62)} ${node[name].toFixed(0).padStart(9)} ${chrome[name].toFixed(0).padStart(16)}`);
 
 const gz = (f) => zlib.gzipSync(fs.readFileSync(f), { level: 9 }).length;
-const files = ["dist/lab/pkg/photogrammetry_lab_bg.wasm", ...(fs.existsSync("dist/lab/pkg-simd") ? ["dist/lab/pkg-simd/photogrammetry_lab_bg.wasm"] : []), "dist/lab/pkg/photogrammetry_lab.js", ...fs.readdirSync("dist/lab").filter((f) => /\.(js|css)$/.test(f)).map((f) => `dist/lab/${f}`)];
+const files = [`dist/${built("lab/pkg/photogrammetry_lab_bg.wasm")}`, ...(fs.existsSync("dist/lab/pkg-simd") ? [`dist/${built("lab/pkg-simd/photogrammetry_lab_bg.wasm")}`] : []), "dist/lab/pkg/photogrammetry_lab.js", ...fs.readdirSync("dist/lab").filter((f) => /\.(js|css)$/.test(f)).map((f) => `dist/lab/${f}`)];
 const total = files.filter((f) => !f.includes("pkg-simd")).reduce((s, f) => s + gz(f), 0);
 console.log(`\nThe lab module, gzip -9 (loaded only when #/lab opens; one of the two wasm builds):`);
 for (const f of files) console.log(`  ${(gz(f) / 1024).toFixed(1).padStart(7)} KiB  ${f}`);
