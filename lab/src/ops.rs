@@ -601,3 +601,147 @@ pub fn fit_fiducials(measured: &[(f64, f64)], calibrated: &[[f64; 2]]) -> Result
         transform::fit(transform::Model::FiducialAffine, &pairs)?,
     ))
 }
+
+// ---------------------------------------------------------------------------
+// The custom kernel of the filters family, and Förstner's maps kept for a
+// live threshold (the slider re-thresholds the maps, it does not recompute
+// them).
+
+/// The largest custom kernel side, as in the `filter-window` example.
+pub const MAX_CUSTOM_KERNEL: usize = 15;
+
+/// A custom kernel typed by the student: rows separated by new lines or
+/// `;`, numbers by spaces or `,`. `divisor` `None` normalises (divides by
+/// the sum of the weights, added row by row). Returns the rows and the
+/// divisor; every error names `custom_kernel` or `custom_divisor`.
+pub fn custom_kernel(text: &str, divisor: Option<f64>) -> Result<(Vec<Vec<f64>>, f64)> {
+    let field = "custom_kernel";
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    for line in text.split(['\n', ';']) {
+        let line = line.trim();
+        if line.is_empty() {
+            continue;
+        }
+        let mut row = Vec::new();
+        for token in line.split([' ', ',', '\t', '\r']).filter(|t| !t.is_empty()) {
+            match token.parse::<f64>() {
+                Ok(v) if v.is_finite() => row.push(v),
+                _ => {
+                    return Err(Error::input(
+                        field,
+                        format!("row {}: \"{token}\" is not a number", rows.len() + 1),
+                    ))
+                }
+            }
+        }
+        if let Some(first) = rows.first() {
+            if first.len() != row.len() {
+                return Err(Error::input(
+                    field,
+                    format!(
+                        "row {} has {} numbers but row 1 has {}; every row needs the same number",
+                        rows.len() + 1,
+                        row.len(),
+                        first.len()
+                    ),
+                ));
+            }
+        }
+        rows.push(row);
+    }
+    let (h, w) = (rows.len(), rows.first().map_or(0, Vec::len));
+    if h == 0 {
+        return Err(Error::input(
+            field,
+            "is empty; type rows of numbers, e.g. 1 2 1 / 2 4 2 / 1 2 1 on three lines",
+        ));
+    }
+    if h > MAX_CUSTOM_KERNEL || w > MAX_CUSTOM_KERNEL {
+        return Err(Error::input(
+            field,
+            format!("is {h}×{w} (rows × columns); at most {MAX_CUSTOM_KERNEL}×{MAX_CUSTOM_KERNEL} is allowed"),
+        ));
+    }
+    if h % 2 == 0 || w % 2 == 0 {
+        return Err(Error::input(
+            field,
+            format!("is {h}×{w} (rows × columns); a kernel needs an odd number of rows and of columns, so that it has a centre pixel"),
+        ));
+    }
+    if rows.iter().flatten().all(|&v| v == 0.0) {
+        return Err(Error::input(
+            field,
+            "all weights are 0: the result would be 0 everywhere",
+        ));
+    }
+    let d = match divisor {
+        Some(d) if d.is_finite() && d != 0.0 => d,
+        Some(_) => {
+            return Err(Error::input(
+                "custom_divisor",
+                "must be a finite number other than 0",
+            ))
+        }
+        None => {
+            let sum: f64 = rows.iter().flatten().sum();
+            if sum == 0.0 {
+                return Err(Error::input(
+                    "custom_divisor",
+                    "the weights sum to 0, so the kernel cannot be normalised; give a divisor (1 applies it as written)",
+                ));
+            }
+            sum
+        }
+    };
+    Ok((rows, d))
+}
+
+/// Förstner's map over `size × size` windows (`interest::forstner_map`),
+/// kept by the lab so that a new threshold re-uses it.
+pub fn forstner_maps(img: &Grid, size: usize) -> Result<interest::Map<Measures>> {
+    interest::forstner_map(img, size)
+}
+
+/// The `w` and `q` layers of a Förstner map.
+pub fn forstner_layers(map: &interest::Map<Measures>) -> Vec<Layer> {
+    vec![
+        map_layer("w", map, |m: Measures| Some(m.w)),
+        map_layer("q", map, |m: Measures| m.q),
+    ]
+}
+
+/// Seed 003's threshold and suppression on a computed map
+/// (`interest::forstner_points`), each point with its error ellipse: the
+/// points of [`forstner`] without recomputing the map.
+pub fn forstner_detect(
+    map: &interest::Map<Measures>,
+    sigma_n: f64,
+    threshold_px: f64,
+    q_min: f64,
+) -> Result<Vec<Point>> {
+    for (field, v) in [("sigma_n", sigma_n), ("threshold_px", threshold_px)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(Error::input(field, "must be a number greater than 0"));
+        }
+    }
+    if !q_min.is_finite() {
+        return Err(Error::input("q_min", "must be a number"));
+    }
+    let det = interest::forstner_points(map, sigma_n, threshold_px, q_min);
+    Ok(det
+        .points
+        .iter()
+        .filter_map(|p| {
+            let m: Measures = map.get(p.c, p.r)?;
+            let pr = interest::precision(&m, sigma_n, threshold_px);
+            Some(Point {
+                c: p.c,
+                r: p.r,
+                score: p.score,
+                major: pr.sigma_max?,
+                minor: pr.sigma_min?,
+                angle: m.weak_angle,
+            })
+        })
+        .collect())
+}

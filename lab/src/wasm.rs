@@ -208,11 +208,78 @@ pub fn scanned_frame_truth() -> Result<JsValue, JsError> {
 }
 
 /// A filter by the `filter-window` example's kernel names, whole image.
+/// For `kernel` `custom`, `custom` is the kernel's text (rows on lines or
+/// separated by `;`, numbers by spaces or commas, odd sizes up to 15×15)
+/// and `divisor` its divisor (`undefined`: normalised by the weights' sum);
+/// both are ignored for the named kernels.
 #[wasm_bindgen]
-pub fn run_filter(img: &LabImage, kernel: &str, border: &str) -> Result<JsValue, JsError> {
+pub fn run_filter(
+    img: &LabImage,
+    kernel: &str,
+    border: &str,
+    custom: Option<String>,
+    divisor: Option<f64>,
+) -> Result<JsValue, JsError> {
     let b = ops::border(border).map_err(js_error)?;
-    let l = ops::filter_image(&img.grid, kernel, b, None).map_err(js_error)?;
+    let parsed = match (kernel, custom) {
+        ("custom", Some(text)) => Some(ops::custom_kernel(&text, divisor).map_err(js_error)?),
+        ("custom", None) => return Err(JsError::new("custom_kernel: is missing")),
+        _ => None,
+    };
+    let l = ops::filter_image(
+        &img.grid,
+        kernel,
+        b,
+        parsed.as_ref().map(|(rows, d)| (rows.as_slice(), *d)),
+    )
+    .map_err(js_error)?;
     layers_js(&[l])
+}
+
+/// A custom kernel checked as [`run_filter`] reads it: `{ rows: [[…]…],
+/// divisor }`, or the error naming `custom_kernel` / `custom_divisor`.
+#[wasm_bindgen]
+pub fn check_custom_kernel(text: &str, divisor: Option<f64>) -> Result<JsValue, JsError> {
+    let (rows, d) = ops::custom_kernel(text, divisor).map_err(js_error)?;
+    let a = Array::new();
+    for row in &rows {
+        a.push(&Float64Array::from(row.as_slice()).into());
+    }
+    obj(&[("rows", a.into()), ("divisor", num(d))])
+}
+
+/// Förstner's map of an image, kept in wasm memory: its `w` and `q`
+/// layers once, then points for any threshold without recomputing it
+/// (the lab's live threshold slider).
+#[wasm_bindgen]
+pub struct ForstnerMaps {
+    map: photogrammetry_playground::interest::Map<photogrammetry_playground::interest::Measures>,
+}
+
+/// Förstner's `w`, `q` map over `size × size` windows (`interest::forstner_map`).
+#[wasm_bindgen]
+pub fn forstner_maps(img: &LabImage, size: usize) -> Result<ForstnerMaps, JsError> {
+    Ok(ForstnerMaps {
+        map: ops::forstner_maps(&img.grid, size).map_err(js_error)?,
+    })
+}
+
+#[wasm_bindgen]
+impl ForstnerMaps {
+    /// The window size the map was computed with.
+    pub fn size(&self) -> usize {
+        self.map.size
+    }
+    /// The `w` and `q` layers (as [`run_forstner`]'s).
+    pub fn layers(&self) -> Result<JsValue, JsError> {
+        layers_js(&ops::forstner_layers(&self.map))
+    }
+    /// Seed 003's threshold and suppression on the kept map: points
+    /// `[c, r, λmax(Σuv), σmax, σmin, angle]…` (as [`run_forstner`]'s).
+    pub fn points(&self, sigma_n: f64, threshold_px: f64, q_min: f64) -> Result<JsValue, JsError> {
+        let ps = ops::forstner_detect(&self.map, sigma_n, threshold_px, q_min).map_err(js_error)?;
+        Ok(points_js(&ps))
+    }
 }
 
 /// Prewitt or Sobel: layers gx, gy, magnitude, direction.
