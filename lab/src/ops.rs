@@ -745,3 +745,88 @@ pub fn forstner_detect(
         })
         .collect())
 }
+
+/// A Förstner map with its suppression done for one `σn` and roundness
+/// `q_min`, so that a new threshold `T` costs only a pass over the kept
+/// local maxima (the live threshold slider).
+///
+/// Why this equals [`forstner_detect`] (seed 003's rule) for every `T`: a
+/// pixel is kept there when it passes the threshold (`λmax(Σuv) ≤ T²`,
+/// `q ≥ q_min`) and no candidate in its window scores higher (or the same
+/// and comes first). The score is `−λmax(Σuv)`, and a pixel with a higher
+/// score (a smaller `λmax(Σuv)`) that passes the roundness test passes the
+/// threshold whenever a lower-scored one does. So the higher-scored
+/// candidates in a window are the same for every `T`: the pixels kept
+/// for `T` are the local maxima among the round pixels (found once) whose
+/// `λmax(Σuv) ≤ T²`. Tested against [`forstner_detect`] at every pixel.
+#[derive(Debug, Clone)]
+pub struct ForstnerKept {
+    pub map: interest::Map<Measures>,
+    /// `(σn, q_min)` of `maxima`, and the maxima: cell index and `λmax(Σuv)`.
+    suppressed: Option<(f64, f64, Vec<(usize, f64)>)>,
+}
+
+impl ForstnerKept {
+    pub fn new(map: interest::Map<Measures>) -> Self {
+        ForstnerKept {
+            map,
+            suppressed: None,
+        }
+    }
+
+    /// The points for `T` (as [`forstner_detect`]); the suppression is
+    /// redone only when `σn` or `q_min` changed.
+    pub fn points(&mut self, sigma_n: f64, threshold_px: f64, q_min: f64) -> Result<Vec<Point>> {
+        for (field, v) in [("sigma_n", sigma_n), ("threshold_px", threshold_px)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::input(field, "must be a number greater than 0"));
+            }
+        }
+        if !q_min.is_finite() {
+            return Err(Error::input("q_min", "must be a number"));
+        }
+        let fresh = matches!(&self.suppressed, Some((s, q, _)) if *s == sigma_n && *q == q_min);
+        if !fresh {
+            let var = sigma_n * sigma_n;
+            let scores: Vec<Option<f64>> = self
+                .map
+                .cells
+                .iter()
+                .map(|m| {
+                    let m = (*m)?;
+                    let round = q_min <= 0.0 || m.q.is_some_and(|q| q >= q_min);
+                    // interest::precision's λmax(Σuv) = σn² / λmin(N)
+                    (round && m.lambda_min > 0.0).then(|| -(var / m.lambda_min))
+                })
+                .collect();
+            let maxima =
+                interest::suppress(&scores, self.map.width, self.map.height, self.map.size / 2)
+                    .into_iter()
+                    .filter_map(|i| scores[i].map(|s| (i, -s)))
+                    .collect();
+            self.suppressed = Some((sigma_n, q_min, maxima));
+        }
+        let Some((_, _, maxima)) = &self.suppressed else {
+            return Ok(Vec::new());
+        };
+        let t2 = threshold_px * threshold_px;
+        let w = self.map.width.max(1);
+        Ok(maxima
+            .iter()
+            .filter(|(_, l)| *l <= t2)
+            .filter_map(|&(i, l)| {
+                let (c, r) = (i % w, i / w);
+                let m: Measures = self.map.get(c, r)?;
+                let pr = interest::precision(&m, sigma_n, threshold_px);
+                Some(Point {
+                    c,
+                    r,
+                    score: l,
+                    major: pr.sigma_max?,
+                    minor: pr.sigma_min?,
+                    angle: m.weak_angle,
+                })
+            })
+            .collect())
+    }
+}

@@ -253,14 +253,14 @@ pub fn check_custom_kernel(text: &str, divisor: Option<f64>) -> Result<JsValue, 
 /// (the lab's live threshold slider).
 #[wasm_bindgen]
 pub struct ForstnerMaps {
-    map: photogrammetry_playground::interest::Map<photogrammetry_playground::interest::Measures>,
+    kept: ops::ForstnerKept,
 }
 
 /// Förstner's `w`, `q` map over `size × size` windows (`interest::forstner_map`).
 #[wasm_bindgen]
 pub fn forstner_maps(img: &LabImage, size: usize) -> Result<ForstnerMaps, JsError> {
     Ok(ForstnerMaps {
-        map: ops::forstner_maps(&img.grid, size).map_err(js_error)?,
+        kept: ops::ForstnerKept::new(ops::forstner_maps(&img.grid, size).map_err(js_error)?),
     })
 }
 
@@ -268,16 +268,26 @@ pub fn forstner_maps(img: &LabImage, size: usize) -> Result<ForstnerMaps, JsErro
 impl ForstnerMaps {
     /// The window size the map was computed with.
     pub fn size(&self) -> usize {
-        self.map.size
+        self.kept.map.size
     }
     /// The `w` and `q` layers (as [`run_forstner`]'s).
     pub fn layers(&self) -> Result<JsValue, JsError> {
-        layers_js(&ops::forstner_layers(&self.map))
+        layers_js(&ops::forstner_layers(&self.kept.map))
     }
     /// Seed 003's threshold and suppression on the kept map: points
-    /// `[c, r, λmax(Σuv), σmax, σmin, angle]…` (as [`run_forstner`]'s).
-    pub fn points(&self, sigma_n: f64, threshold_px: f64, q_min: f64) -> Result<JsValue, JsError> {
-        let ps = ops::forstner_detect(&self.map, sigma_n, threshold_px, q_min).map_err(js_error)?;
+    /// `[c, r, λmax(Σuv), σmax, σmin, angle]…` (as [`run_forstner`]'s);
+    /// a new `threshold_px` alone re-uses the suppression
+    /// (`ops::ForstnerKept`).
+    pub fn points(
+        &mut self,
+        sigma_n: f64,
+        threshold_px: f64,
+        q_min: f64,
+    ) -> Result<JsValue, JsError> {
+        let ps = self
+            .kept
+            .points(sigma_n, threshold_px, q_min)
+            .map_err(js_error)?;
         Ok(points_js(&ps))
     }
 }
@@ -589,6 +599,53 @@ pub fn run_fiducials(img: &LabImage, approx: &[f64]) -> Result<JsValue, JsError>
         ("marks", Float64Array::from(flat.as_slice()).into()),
         ("similarity", fit_js(&sim)?),
         ("affine", fit_js(&aff)?),
+    ])
+}
+
+/// Refines one fiducial the student clicked at `(c, r)`: the mark's template
+/// matched by NCC within ±12 pixels, its subpixel peak, then LSM (shift +
+/// radiometric), as [`run_fiducials`] measures each mark. Returns `[c, r,
+/// ρ, LSM iterations]` (iterations 0: the subpixel peak, LSM did not
+/// converge).
+#[wasm_bindgen]
+pub fn refine_mark(img: &LabImage, c: f64, r: f64) -> Result<Float64Array, JsError> {
+    let (w, h) = (img.grid.width() as f64, img.grid.height() as f64);
+    if !(c.is_finite() && r.is_finite() && c >= 0.0 && r >= 0.0 && c < w && r < h) {
+        return Err(JsError::new("mark: the click must lie inside the image"));
+    }
+    let template = sample::mark_template(21).map_err(js_error)?;
+    let marks = ops::measure_marks(&img.grid, &template, &[(c, r)], 12).map_err(js_error)?;
+    let m = marks
+        .first()
+        .ok_or_else(|| JsError::new("mark: could not be measured"))?;
+    Ok(Float64Array::from(
+        &[m.measured.0, m.measured.1, m.ncc, m.iterations as f64][..],
+    ))
+}
+
+/// Example 4's similarity and affine transformations fitted to four
+/// measured marks `[c, r]×4` (the student's), against the calibrated
+/// positions: `{ similarity, affine }`, each `{ params, residuals: [vx,
+/// vy]×4 (mm), sigma0 }`.
+#[wasm_bindgen]
+pub fn fit_fiducial_marks(measured: &[f64]) -> Result<JsValue, JsError> {
+    if measured.len() != 8 || measured.iter().any(|v| !v.is_finite()) {
+        return Err(JsError::new("marks: need four measured positions [c, r]×4"));
+    }
+    let pts: Vec<(f64, f64)> = measured.chunks(2).map(|p| (p[0], p[1])).collect();
+    let (sim, aff) = ops::fit_fiducials(&pts, &sample::calibrated()).map_err(js_error)?;
+    obj(&[("similarity", fit_js(&sim)?), ("affine", fit_js(&aff)?)])
+}
+
+fn fit_js(f: &photogrammetry_playground::transform::Fit) -> Result<JsValue, JsError> {
+    let residuals: Vec<f64> = f.point_residuals.iter().flatten().copied().collect();
+    obj(&[
+        (
+            "params",
+            Float64Array::from(f.transform.params.as_slice()).into(),
+        ),
+        ("residuals", Float64Array::from(residuals.as_slice()).into()),
+        ("sigma0", f.adjustment.sigma0.map_or(JsValue::NULL, num)),
     ])
 }
 

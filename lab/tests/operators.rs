@@ -490,3 +490,33 @@ fn forstner_points_from_a_kept_map_equal_a_full_run_for_every_threshold() {
         .to_string()
         .starts_with("threshold_px: "));
 }
+
+#[test]
+fn the_kept_suppression_gives_seed_003s_points_for_every_threshold() {
+    // a noisy pattern (many candidates, ties of equal windows) and a random image
+    for img in [
+        interest::test_pattern(64, 3.0, 9).unwrap(),
+        random(40, 33, 11),
+    ] {
+        for size in [3, 5, 7] {
+            let map = ops::forstner_maps(&img, size).unwrap();
+            let mut kept = ops::ForstnerKept::new(map.clone());
+            for (sigma, q) in [(8.0, 0.5), (8.0, 0.0), (2.5, 0.75)] {
+                for t in [0.05, 0.2, 0.35, 0.5, 0.8, 1.0, 1.7, 3.0, 100.0] {
+                    let want = ops::forstner_detect(&map, sigma, t, q).unwrap();
+                    assert_eq!(
+                        kept.points(sigma, t, q).unwrap(),
+                        want,
+                        "size {size} σn {sigma} q {q} T {t}"
+                    );
+                }
+            }
+        }
+    }
+    let mut kept = ops::ForstnerKept::new(ops::forstner_maps(&random(9, 9, 1), 3).unwrap());
+    assert!(kept
+        .points(8.0, f64::NAN, 0.5)
+        .unwrap_err()
+        .to_string()
+        .starts_with("threshold_px: "));
+}

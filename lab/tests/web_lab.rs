@@ -204,3 +204,31 @@ fn a_custom_kernel_and_a_kept_forstner_map_across_the_boundary() {
     let m = message(maps.points(8.0, -1.0, 0.5).err().unwrap());
     assert!(m.starts_with("threshold_px: "), "{m}");
 }
+
+#[wasm_bindgen_test]
+fn the_students_fiducial_clicks_are_refined_and_fitted() {
+    let frame = scanned_frame();
+    let truth = scanned_frame_truth().unwrap();
+    let true_marks = Float64Array::from(get(&truth, "marks")).to_vec();
+    // clicks 3 px off each true mark are refined onto it
+    let mut measured = Vec::new();
+    for k in 0..4 {
+        let (c, r) = (true_marks[2 * k] + 3.0, true_marks[2 * k + 1] - 2.0);
+        let m = refine_mark(&frame, c, r).unwrap().to_vec();
+        let d = (m[0] - true_marks[2 * k]).hypot(m[1] - true_marks[2 * k + 1]);
+        assert!(d < 0.1, "mark {k}: {d} px");
+        measured.extend([m[0], m[1]]);
+    }
+    let fit = fit_fiducial_marks(&measured).unwrap();
+    let p = Float64Array::from(get(&get(&fit, "affine"), "params")).to_vec();
+    let t = Float64Array::from(get(&truth, "affine")).to_vec();
+    for i in [0, 1, 3, 4] {
+        assert!((p[i] - t[i]).abs() < 1e-4, "{p:?} vs {t:?}");
+    }
+    let res = Float64Array::from(get(&get(&fit, "similarity"), "residuals")).to_vec();
+    assert_eq!(res.len(), 8);
+    let m = message(refine_mark(&frame, -1.0, 5.0).err().unwrap());
+    assert!(m.starts_with("mark: "), "{m}");
+    let m = message(fit_fiducial_marks(&[1.0, 2.0]).err().unwrap());
+    assert!(m.starts_with("marks: "), "{m}");
+}

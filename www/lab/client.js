@@ -11,6 +11,7 @@ export class LabClient {
     this.hooks = hooks;
     this.nextId = 1;
     this.pending = new Map();
+    this.sent = {};
     this.start();
   }
 
@@ -40,6 +41,8 @@ export class LabClient {
   /** Sends a request; resolves with its result, rejects with an Error naming the field. */
   call(type, args = {}, transfer = []) {
     const id = this.nextId++;
+    // requests sent, by type (the live slider's tests count them)
+    this.sent[type] = (this.sent[type] ?? 0) + 1;
     return new Promise((resolve, reject) => {
       this.pending.set(id, { resolve, reject, type });
       this.worker.postMessage({ id, type, ...args }, transfer);
