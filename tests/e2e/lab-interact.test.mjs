@@ -36,24 +36,19 @@ async function sample(page, id) {
   await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
 }
 
-/** The page position (CSS px, relative to the canvas) of image position (x, y), pixel centres at integers, the image fitted. */
-async function pagePos(page, x, y, selector = ".lab-canvas") {
-  const g = await page.$eval(selector, (cv) => {
-    const b = cv.getBoundingClientRect();
-    return { w: b.width, h: b.height, cw: cv.width, ch: cv.height, left: b.left, top: b.top };
-  });
-  const [, w, h] = (await page.textContent("#lab-info")).match(/(\d+) × (\d+) pixels/).map(Number);
-  const zoom = Math.min(g.cw / w, g.ch / h);
-  const ox = (g.cw - w * zoom) / 2;
-  const oy = (g.ch - h * zoom) / 2;
-  const px = ((x + 0.5) * zoom + ox) * (g.w / g.cw);
-  const py = ((y + 0.5) * zoom + oy) * (g.h / g.ch);
-  return { x: px, y: py, pageX: g.left + px, pageY: g.top + py, scale: zoom * (g.w / g.cw) };
+/** The page position of image position (x, y) in the main view (pixel centres at integers): relative to the canvas (x, y) and to the page. */
+async function pagePos(page, x, y) {
+  await page.locator("#lab-stage .lab-canvas").scrollIntoViewIfNeeded();
+  const g = await page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+  const px = ((x + 0.5) * g.zoom + g.ox) * (g.w / g.cw);
+  const py = ((y + 0.5) * g.zoom + g.oy) * (g.h / g.ch);
+  return { x: px, y: py, pageX: g.left + px, pageY: g.top + py };
 }
 
+/** Clicks image position (x, y) of the main view (page coordinates: Playwright's element positions start inside the border). */
 async function clickAt(page, x, y) {
   const p = await pagePos(page, x, y);
-  await page.click(".lab-canvas", { position: { x: p.x, y: p.y } });
+  await page.mouse.click(p.pageX, p.pageY);
 }
 
 /** Follows a link and reads the example's exact result `key` (indexed by `index`). */
@@ -118,7 +113,7 @@ test("a custom kernel: checked at its field, run over the photo, explained by fi
   let sum = 0;
   for (let r = 0; r < 3; r++) for (let c = 0; c < 5; c++) sum += k[r][c] * grey[r * 5 + c];
   assert.ok(Math.abs(want - sum / 4) < 1e-9, `${want} vs ${sum / 4}`);
-  await page.click(".lab-canvas", { position: (await pagePos(page, 200, 300)) });
+  await clickAt(page, 200, 300);
   await page.waitForSelector("#lab-explain-link");
   const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
   assert.equal(shown, want);
@@ -136,7 +131,7 @@ test("a custom kernel: checked at its field, run over the photo, explained by fi
   await page.click("#lab-run");
   await page.waitForFunction(() => document.body.dataset.filterShown === "custom");
   await idle(page);
-  await page.click(".lab-canvas", { position: (await pagePos(page, 100, 50)) });
+  await clickAt(page, 100, 50);
   await page.waitForSelector("#lab-explain-link");
   const shown2 = Number(await page.getAttribute("#lab-explain-value", "data-value"));
   const g2 = await page.evaluate(async () => (await import("./lab/lab.js")).greyForTests([99, 50, 3, 1]));
@@ -221,7 +216,11 @@ test("fiducials: the student clicks the four marks, refines them, redoes one, an
   const moved = await page.locator("#lab-fid-table tr:nth-child(2) td:nth-child(4)").textContent();
   assert.match(moved, /^1\.[5-9]\d* px|^1\.[5-9] px/, moved);
   let res = JSON.parse(await page.evaluate(() => document.body.dataset.fidResiduals));
-  for (const v of [...res.affine, ...res.similarity]) assert.ok(Math.abs(v) < 0.01, `residual ${v} mm`);
+  // the affine model fits the frame's distortion: residuals of the measuring noise only;
+  // the similarity cannot take the two scales 0.2 % apart and the shear: ~0.1 mm
+  for (const v of res.affine) assert.ok(Math.abs(v) < 0.01, `affine residual ${v} mm`);
+  const simMax = Math.max(...res.similarity.map(Math.abs));
+  assert.ok(simMax > 0.05 && simMax < 0.3, `similarity residuals up to ${simMax} mm`);
   const A = (await page.evaluate(() => document.body.dataset.fidAffine)).split(",").map(Number);
   for (const i of [0, 1, 3, 4]) assert.ok(Math.abs(A[i] - truth.affine[i]) < 1e-4, `${A} vs ${truth.affine}`);
   assert.match(await page.textContent("#lab-fid-scale"), new RegExp(`drawn ${res.times}× enlarged; the black bar is [\\d.]+ µm`));

@@ -62,6 +62,14 @@ export function greyForTests([c, r, w, h]) {
   return out;
 }
 
+/** Test hook: the main view's geometry (canvas pixels: zoom, offset; CSS box). */
+export function viewForTests() {
+  const v = current?.viewer;
+  if (!v) return null;
+  const b = v.canvas.getBoundingClientRect();
+  return { zoom: v.zoom, ox: v.ox, oy: v.oy, cw: v.canvas.width, ch: v.canvas.height, left: b.left, top: b.top, w: b.width, h: b.height };
+}
+
 /** Test hook: the generated frame's truth as plain arrays. */
 export function truthForTests() {
   const t = current?.image?.truth;
