@@ -762,8 +762,16 @@ pub fn forstner_detect(
 #[derive(Debug, Clone)]
 pub struct ForstnerKept {
     pub map: interest::Map<Measures>,
-    /// `(σn, q_min)` of `maxima`, and the maxima: cell index and `λmax(Σuv)`.
-    suppressed: Option<(f64, f64, Vec<(usize, f64)>)>,
+    suppressed: Option<Suppressed>,
+}
+
+/// The local maxima of one suppression: `(σn, q_min)` and the maxima
+/// (cell index, `λmax(Σuv)`).
+#[derive(Debug, Clone)]
+struct Suppressed {
+    sigma_n: f64,
+    q_min: f64,
+    maxima: Vec<(usize, f64)>,
 }
 
 impl ForstnerKept {
@@ -785,7 +793,7 @@ impl ForstnerKept {
         if !q_min.is_finite() {
             return Err(Error::input("q_min", "must be a number"));
         }
-        let fresh = matches!(&self.suppressed, Some((s, q, _)) if *s == sigma_n && *q == q_min);
+        let fresh = matches!(&self.suppressed, Some(s) if s.sigma_n == sigma_n && s.q_min == q_min);
         if !fresh {
             let var = sigma_n * sigma_n;
             let scores: Vec<Option<f64>> = self
@@ -804,9 +812,13 @@ impl ForstnerKept {
                     .into_iter()
                     .filter_map(|i| scores[i].map(|s| (i, -s)))
                     .collect();
-            self.suppressed = Some((sigma_n, q_min, maxima));
+            self.suppressed = Some(Suppressed {
+                sigma_n,
+                q_min,
+                maxima,
+            });
         }
-        let Some((_, _, maxima)) = &self.suppressed else {
+        let Some(Suppressed { maxima, .. }) = &self.suppressed else {
             return Ok(Vec::new());
         };
         let t2 = threshold_px * threshold_px;

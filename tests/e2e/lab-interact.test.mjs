@@ -223,7 +223,7 @@ test("fiducials: the student clicks the four marks, refines them, redoes one, an
   assert.ok(simMax > 0.05 && simMax < 0.3, `similarity residuals up to ${simMax} mm`);
   const A = (await page.evaluate(() => document.body.dataset.fidAffine)).split(",").map(Number);
   for (const i of [0, 1, 3, 4]) assert.ok(Math.abs(A[i] - truth.affine[i]) < 1e-4, `${A} vs ${truth.affine}`);
-  assert.match(await page.textContent("#lab-fid-scale"), new RegExp(`drawn ${res.times}× enlarged; the black bar is [\\d.]+ µm`));
+  assert.match(await page.textContent("#lab-fid-scale"), new RegExp(`drawn ${res.times}× enlarged; the yellow bar is [\\d.]+ µm`));
   assert.match(await page.textContent("#lab-fid-truth"), /from the true mark centres; your affine differs from the true one by at most [\d.]+ µm/);
 
   // redo mark 2 without refinement, 4 px to the right of the truth

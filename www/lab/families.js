@@ -114,8 +114,8 @@ const filters = {
     const customBox = el("div", { class: "lab-custom", id: "lab-custom-box" },
       el("label", {}, "Kernel rows ", customText), " ",
       el("label", {}, "Divisor ", divisor),
-      el("p", { class: "muted", id: "lab-custom-help" }, `One row per line (or rows separated by ;), numbers by spaces or commas; odd sizes up to ${MAX_KERNEL}×${MAX_KERNEL}, rows and columns may differ. Applied as written (no flip). Leave the divisor empty to normalise (divide by the sum of the weights).`),
-      customError);
+      customError,
+      el("p", { class: "muted", id: "lab-custom-help" }, `One row per line (or rows separated by ;), numbers by spaces or commas; odd sizes up to ${MAX_KERNEL}×${MAX_KERNEL}, rows and columns may differ. Applied as written (no flip). Leave the divisor empty to normalise (divide by the sum of the weights).`));
     box.append(kernelLabel, " ", sizeLabel, " ", borderLabel, " ", run, customBox);
     let used = null;
     const sync = () => {

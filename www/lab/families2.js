@@ -350,7 +350,7 @@ export function niceFloor(v) {
  * ([c, r]×4) enlarged so that the largest is about `reach` image pixels.
  * Returns the enlargement, the arrows, and a scale bar of a nice length.
  */
-export function residualArrows(marks, sets, pixelMm, reach = 80) {
+export function residualArrows(marks, sets, pixelMm, reach = 120) {
   const biggest = Math.max(1e-9, ...sets.flatMap(({ v }) => v.map(Math.abs)));
   const times = niceFloor((reach * pixelMm) / biggest);
   const arrows = [];
@@ -465,8 +465,8 @@ const fiducials = {
       const { times, arrows, barMm, barPx } = residualArrows(measured, [{ v: sim, colour: "#1f77b4" }, { v: aff, colour: "#d62728" }], truth.pixel_mm);
       const y0 = lab.image.height - 40;
       const bar = [
-        { kind: "line", from: [30, y0], to: [30 + barPx, y0], colour: "#000", width: 3 },
-        { kind: "text", c: 30, r: y0 - 16, text: `${um(barMm)} µm (arrows × ${times})`, colour: "#000" },
+        { kind: "line", from: [30, y0], to: [30 + barPx, y0], colour: "#ffd43b", width: 4 },
+        { kind: "text", c: 30, r: y0 - 18, text: `${um(barMm)} µm (arrows × ${times})`, colour: "#ffd43b", halo: "#000" },
       ];
       lab.viewer.setShapes(shapesOf([...arrows, ...bar]));
       // the fitted affine against the truth: the largest difference of the two maps over the frame's corners
@@ -488,7 +488,7 @@ const fiducials = {
           el("tr", {}, ["mark", "similarity vx, vy (µm)", "affine vx, vy (µm)"].map((h) => el("th", {}, h))),
           [0, 1, 2, 3].map((k) => el("tr", {}, el("td", {}, `${k + 1} (${MARK_NAMES[k]})`),
             el("td", {}, `${um(sim[2 * k])}, ${um(sim[2 * k + 1])}`), el("td", {}, `${um(aff[2 * k])}, ${um(aff[2 * k + 1])}`)))),
-        el("p", { id: "lab-fid-scale" }, `Residual arrows (blue: similarity, red: affine) are drawn ${times}× enlarged; the black bar is ${um(barMm)} µm.`),
+        el("p", { id: "lab-fid-scale" }, `Residual arrows (blue: similarity, red: affine) are drawn ${times}× enlarged; the yellow bar is ${um(barMm)} µm.`),
         el("p", {}, `Similarity [a, b, c, d]: ${params(res.similarity.params)}; σ0 = ${fmt(res.similarity.sigma0 ?? NaN)} mm.`),
         el("p", {}, `Affine [a, b, e, c, d, f]: ${params(A)}; σ0 = ${fmt(res.affine.sigma0 ?? NaN)} mm.`),
         el("p", { id: "lab-fid-truth" }, `The truth of the generated frame: affine ${params(T)}. Your marks are ${fmt(rms, 3)} px (RMS) from the true mark centres; your affine differs from the true one by at most ${um(worst)} µm over the frame (corners).`),

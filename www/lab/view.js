@@ -429,7 +429,7 @@ export class Viewer {
         ctx.textAlign = s.align || "left";
         ctx.textBaseline = "middle";
         ctx.lineWidth = 3 * px * (this.dpr || 1);
-        ctx.strokeStyle = "#fff";
+        ctx.strokeStyle = s.halo || "#fff";
         ctx.strokeText(s.text, s.c, s.r);
         ctx.fillText(s.text, s.c, s.r);
         continue;
