@@ -329,6 +329,7 @@ test("live sliders on a 2048² image: the newest filter size wins (the running o
   await page.waitForFunction(() => document.body.dataset.filterShown === "mean 13×13", null, { timeout: 90_000 });
   await idle(page);
   const cancels = Number(await page.evaluate(() => document.body.dataset.filterCancels));
+  console.log(`# ${cancels} filter runs cancelled; the last restart (new worker, the 2048² photo back) took ${await page.evaluate(() => document.body.dataset.restartMs)} ms`);
   assert.ok(cancels >= 3, `cancels: ${cancels}`);
   for (const [c, r] of [[1000, 1000], [3, 2], [2047, 640]]) {
     s = await labState(page, c, r);

@@ -67,8 +67,11 @@ export class LabClient {
     for (const p of this.pending.values()) p.reject(err);
     this.pending.clear();
     this.start();
+    const t0 = performance.now();
     this.restarting = this.hooks.onRestart(why).finally(() => {
       this.restarting = null;
+      // ms from the old worker's end to the photo back in the new one (reported by the live sliders)
+      this.lastRestartMs = performance.now() - t0;
     });
   }
 

@@ -6,10 +6,11 @@
 // gets the photo back (the lab keeps its bytes), and the new request goes
 // right behind that. This was chosen over cutting the work into row bands
 // with a cancel check between them: it needs no change in any operator,
-// stops a run at once instead of at the end of a band, and the restart
-// (a compiled module from the cache and one copy of the photo) costs a few
-// tens of milliseconds, well under the runs it cancels (seconds on a
-// 2048² photo). Cheap requests (a new threshold on a kept Förstner map) are
+// stops a run at once instead of at the end of a band. Its price is the
+// restart: a new wasm instance and the photo copied back before the new run
+// starts (2 s for a 2048² photo measured on the shared 2-core machine at a
+// load of 30, where the runs it cancels took 10–60 s; the e2e test prints
+// it). Cheap requests (a new threshold on a kept Förstner map) are
 // not cancelled but coalesced: while one runs, only the newest waiting one
 // is kept. A result older than the one on screen is never drawn.
 //
@@ -58,6 +59,7 @@ export class Live {
     document.body.dataset[`${this.name}Live`] = "busy";
     const r = await this.lab.run(req.type, req.args, req.label, [], { quietCancel: true });
     if (this.running === req) this.running = null;
+    if (this.lab.client.lastRestartMs !== undefined) document.body.dataset.restartMs = this.lab.client.lastRestartMs.toFixed(0);
     if (r && req.gen > this.shown) {
       this.shown = req.gen;
       req.apply(r);
