@@ -698,3 +698,244 @@ pub fn fit_fiducials(measured: &[(f64, f64)], calibrated: &[[f64; 2]]) -> Result
         transform::fit(transform::Model::FiducialAffine, &pairs)?,
     ))
 }
+
+// ---------------------------------------------------------------------------
+// The custom kernel of the filters family, and Förstner's maps kept for a
+// live threshold (the slider re-thresholds the maps, it does not recompute
+// them).
+
+/// The largest custom kernel side, as in the `filter-window` example.
+pub const MAX_CUSTOM_KERNEL: usize = 15;
+
+/// A custom kernel typed by the student: rows separated by new lines or
+/// `;`, numbers by spaces or `,`. `divisor` `None` normalises (divides by
+/// the sum of the weights, added row by row). Returns the rows and the
+/// divisor; every error names `custom_kernel` or `custom_divisor`.
+pub fn custom_kernel(text: &str, divisor: Option<f64>) -> Result<(Vec<Vec<f64>>, f64)> {
+    let field = "custom_kernel";
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    for line in text.split(['\n', ';']) {
+        let line = line.trim();
+        if line.is_empty() {
+            continue;
+        }
+        let mut row = Vec::new();
+        for token in line.split([' ', ',', '\t', '\r']).filter(|t| !t.is_empty()) {
+            match token.parse::<f64>() {
+                Ok(v) if v.is_finite() => row.push(v),
+                _ => {
+                    return Err(Error::input(
+                        field,
+                        format!("row {}: \"{token}\" is not a number", rows.len() + 1),
+                    ))
+                }
+            }
+        }
+        if let Some(first) = rows.first() {
+            if first.len() != row.len() {
+                return Err(Error::input(
+                    field,
+                    format!(
+                        "row {} has {} numbers but row 1 has {}; every row needs the same number",
+                        rows.len() + 1,
+                        row.len(),
+                        first.len()
+                    ),
+                ));
+            }
+        }
+        rows.push(row);
+    }
+    let (h, w) = (rows.len(), rows.first().map_or(0, Vec::len));
+    if h == 0 {
+        return Err(Error::input(
+            field,
+            "is empty; type rows of numbers, e.g. 1 2 1 / 2 4 2 / 1 2 1 on three lines",
+        ));
+    }
+    if h > MAX_CUSTOM_KERNEL || w > MAX_CUSTOM_KERNEL {
+        return Err(Error::input(
+            field,
+            format!("is {h}×{w} (rows × columns); at most {MAX_CUSTOM_KERNEL}×{MAX_CUSTOM_KERNEL} is allowed"),
+        ));
+    }
+    if h % 2 == 0 || w % 2 == 0 {
+        return Err(Error::input(
+            field,
+            format!("is {h}×{w} (rows × columns); a kernel needs an odd number of rows and of columns, so that it has a centre pixel"),
+        ));
+    }
+    if rows.iter().flatten().all(|&v| v == 0.0) {
+        return Err(Error::input(
+            field,
+            "all weights are 0: the result would be 0 everywhere",
+        ));
+    }
+    let d = match divisor {
+        Some(d) if d.is_finite() && d != 0.0 => d,
+        Some(_) => {
+            return Err(Error::input(
+                "custom_divisor",
+                "must be a finite number other than 0",
+            ))
+        }
+        None => {
+            let sum: f64 = rows.iter().flatten().sum();
+            if sum == 0.0 {
+                return Err(Error::input(
+                    "custom_divisor",
+                    "the weights sum to 0, so the kernel cannot be normalised; give a divisor (1 applies it as written)",
+                ));
+            }
+            sum
+        }
+    };
+    Ok((rows, d))
+}
+
+/// Förstner's map over `size × size` windows (`interest::forstner_map`),
+/// kept by the lab so that a new threshold re-uses it.
+pub fn forstner_maps(img: &Grid, size: usize) -> Result<interest::Map<Measures>> {
+    interest::forstner_map(img, size)
+}
+
+/// The `w` and `q` layers of a Förstner map.
+pub fn forstner_layers(map: &interest::Map<Measures>) -> Vec<Layer> {
+    vec![
+        map_layer("w", map, |m: Measures| Some(m.w)),
+        map_layer("q", map, |m: Measures| m.q),
+    ]
+}
+
+/// Seed 003's threshold and suppression on a computed map
+/// (`interest::forstner_points`), each point with its error ellipse: the
+/// points of [`forstner`] without recomputing the map.
+pub fn forstner_detect(
+    map: &interest::Map<Measures>,
+    sigma_n: f64,
+    threshold_px: f64,
+    q_min: f64,
+) -> Result<Vec<Point>> {
+    for (field, v) in [("sigma_n", sigma_n), ("threshold_px", threshold_px)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(Error::input(field, "must be a number greater than 0"));
+        }
+    }
+    if !q_min.is_finite() {
+        return Err(Error::input("q_min", "must be a number"));
+    }
+    let det = interest::forstner_points(map, sigma_n, threshold_px, q_min);
+    Ok(det
+        .points
+        .iter()
+        .filter_map(|p| {
+            let m: Measures = map.get(p.c, p.r)?;
+            let pr = interest::precision(&m, sigma_n, threshold_px);
+            Some(Point {
+                c: p.c,
+                r: p.r,
+                score: p.score,
+                major: pr.sigma_max?,
+                minor: pr.sigma_min?,
+                angle: m.weak_angle,
+            })
+        })
+        .collect())
+}
+
+/// A Förstner map with its suppression done for one `σn` and roundness
+/// `q_min`, so that a new threshold `T` costs only a pass over the kept
+/// local maxima (the live threshold slider).
+///
+/// Why this equals [`forstner_detect`] (seed 003's rule) for every `T`: a
+/// pixel is kept there when it passes the threshold (`λmax(Σuv) ≤ T²`,
+/// `q ≥ q_min`) and no candidate in its window scores higher (or the same
+/// and comes first). The score is `−λmax(Σuv)`, and a pixel with a higher
+/// score (a smaller `λmax(Σuv)`) that passes the roundness test passes the
+/// threshold whenever a lower-scored one does. So the higher-scored
+/// candidates in a window are the same for every `T`: the pixels kept
+/// for `T` are the local maxima among the round pixels (found once) whose
+/// `λmax(Σuv) ≤ T²`. Tested against [`forstner_detect`] at every pixel.
+#[derive(Debug, Clone)]
+pub struct ForstnerKept {
+    pub map: interest::Map<Measures>,
+    suppressed: Option<Suppressed>,
+}
+
+/// The local maxima of one suppression: `(σn, q_min)` and the maxima
+/// (cell index, `λmax(Σuv)`).
+#[derive(Debug, Clone)]
+struct Suppressed {
+    sigma_n: f64,
+    q_min: f64,
+    maxima: Vec<(usize, f64)>,
+}
+
+impl ForstnerKept {
+    pub fn new(map: interest::Map<Measures>) -> Self {
+        ForstnerKept {
+            map,
+            suppressed: None,
+        }
+    }
+
+    /// The points for `T` (as [`forstner_detect`]); the suppression is
+    /// redone only when `σn` or `q_min` changed.
+    pub fn points(&mut self, sigma_n: f64, threshold_px: f64, q_min: f64) -> Result<Vec<Point>> {
+        for (field, v) in [("sigma_n", sigma_n), ("threshold_px", threshold_px)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::input(field, "must be a number greater than 0"));
+            }
+        }
+        if !q_min.is_finite() {
+            return Err(Error::input("q_min", "must be a number"));
+        }
+        let fresh = matches!(&self.suppressed, Some(s) if s.sigma_n == sigma_n && s.q_min == q_min);
+        if !fresh {
+            let var = sigma_n * sigma_n;
+            let scores: Vec<Option<f64>> = self
+                .map
+                .cells
+                .iter()
+                .map(|m| {
+                    let m = (*m)?;
+                    let round = q_min <= 0.0 || m.q.is_some_and(|q| q >= q_min);
+                    // interest::precision's λmax(Σuv) = σn² / λmin(N)
+                    (round && m.lambda_min > 0.0).then(|| -(var / m.lambda_min))
+                })
+                .collect();
+            let maxima =
+                interest::suppress(&scores, self.map.width, self.map.height, self.map.size / 2)
+                    .into_iter()
+                    .filter_map(|i| scores[i].map(|s| (i, -s)))
+                    .collect();
+            self.suppressed = Some(Suppressed {
+                sigma_n,
+                q_min,
+                maxima,
+            });
+        }
+        let Some(Suppressed { maxima, .. }) = &self.suppressed else {
+            return Ok(Vec::new());
+        };
+        let t2 = threshold_px * threshold_px;
+        let w = self.map.width.max(1);
+        Ok(maxima
+            .iter()
+            .filter(|(_, l)| *l <= t2)
+            .filter_map(|&(i, l)| {
+                let (c, r) = (i % w, i / w);
+                let m: Measures = self.map.get(c, r)?;
+                let pr = interest::precision(&m, sigma_n, threshold_px);
+                Some(Point {
+                    c,
+                    r,
+                    score: l,
+                    major: pr.sigma_max?,
+                    minor: pr.sigma_min?,
+                    angle: m.weak_angle,
+                })
+            })
+            .collect())
+    }
+}

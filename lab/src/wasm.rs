@@ -208,11 +208,88 @@ pub fn scanned_frame_truth() -> Result<JsValue, JsError> {
 }
 
 /// A filter by the `filter-window` example's kernel names, whole image.
+/// For `kernel` `custom`, `custom` is the kernel's text (rows on lines or
+/// separated by `;`, numbers by spaces or commas, odd sizes up to 15×15)
+/// and `divisor` its divisor (`undefined`: normalised by the weights' sum);
+/// both are ignored for the named kernels.
 #[wasm_bindgen]
-pub fn run_filter(img: &LabImage, kernel: &str, border: &str) -> Result<JsValue, JsError> {
+pub fn run_filter(
+    img: &LabImage,
+    kernel: &str,
+    border: &str,
+    custom: Option<String>,
+    divisor: Option<f64>,
+) -> Result<JsValue, JsError> {
     let b = ops::border(border).map_err(js_error)?;
-    let l = ops::filter_image(&img.grid, kernel, b, None).map_err(js_error)?;
+    let parsed = match (kernel, custom) {
+        ("custom", Some(text)) => Some(ops::custom_kernel(&text, divisor).map_err(js_error)?),
+        ("custom", None) => return Err(JsError::new("custom_kernel: is missing")),
+        _ => None,
+    };
+    let l = ops::filter_image(
+        &img.grid,
+        kernel,
+        b,
+        parsed.as_ref().map(|(rows, d)| (rows.as_slice(), *d)),
+    )
+    .map_err(js_error)?;
     layers_js(&[l])
+}
+
+/// A custom kernel checked as [`run_filter`] reads it: `{ rows: [[…]…],
+/// divisor }`, or the error naming `custom_kernel` / `custom_divisor`.
+#[wasm_bindgen]
+pub fn check_custom_kernel(text: &str, divisor: Option<f64>) -> Result<JsValue, JsError> {
+    let (rows, d) = ops::custom_kernel(text, divisor).map_err(js_error)?;
+    let a = Array::new();
+    for row in &rows {
+        a.push(&Float64Array::from(row.as_slice()).into());
+    }
+    obj(&[("rows", a.into()), ("divisor", num(d))])
+}
+
+/// Förstner's map of an image, kept in wasm memory: its `w` and `q`
+/// layers once, then points for any threshold without recomputing it
+/// (the lab's live threshold slider).
+#[wasm_bindgen]
+pub struct ForstnerMaps {
+    kept: ops::ForstnerKept,
+}
+
+/// Förstner's `w`, `q` map over `size × size` windows (`interest::forstner_map`).
+#[wasm_bindgen]
+pub fn forstner_maps(img: &LabImage, size: usize) -> Result<ForstnerMaps, JsError> {
+    Ok(ForstnerMaps {
+        kept: ops::ForstnerKept::new(ops::forstner_maps(&img.grid, size).map_err(js_error)?),
+    })
+}
+
+#[wasm_bindgen]
+impl ForstnerMaps {
+    /// The window size the map was computed with.
+    pub fn size(&self) -> usize {
+        self.kept.map.size
+    }
+    /// The `w` and `q` layers (as [`run_forstner`]'s).
+    pub fn layers(&self) -> Result<JsValue, JsError> {
+        layers_js(&ops::forstner_layers(&self.kept.map))
+    }
+    /// Seed 003's threshold and suppression on the kept map: points
+    /// `[c, r, λmax(Σuv), σmax, σmin, angle]…` (as [`run_forstner`]'s);
+    /// a new `threshold_px` alone re-uses the suppression
+    /// (`ops::ForstnerKept`).
+    pub fn points(
+        &mut self,
+        sigma_n: f64,
+        threshold_px: f64,
+        q_min: f64,
+    ) -> Result<JsValue, JsError> {
+        let ps = self
+            .kept
+            .points(sigma_n, threshold_px, q_min)
+            .map_err(js_error)?;
+        Ok(points_js(&ps))
+    }
 }
 
 /// Prewitt or Sobel: layers gx, gy, magnitude, direction.
@@ -522,6 +599,53 @@ pub fn run_fiducials(img: &LabImage, approx: &[f64]) -> Result<JsValue, JsError>
         ("marks", Float64Array::from(flat.as_slice()).into()),
         ("similarity", fit_js(&sim)?),
         ("affine", fit_js(&aff)?),
+    ])
+}
+
+/// Refines one fiducial the student clicked at `(c, r)`: the mark's template
+/// matched by NCC within ±12 pixels, its subpixel peak, then LSM (shift +
+/// radiometric), as [`run_fiducials`] measures each mark. Returns `[c, r,
+/// ρ, LSM iterations]` (iterations 0: the subpixel peak, LSM did not
+/// converge).
+#[wasm_bindgen]
+pub fn refine_mark(img: &LabImage, c: f64, r: f64) -> Result<Float64Array, JsError> {
+    let (w, h) = (img.grid.width() as f64, img.grid.height() as f64);
+    if !(c.is_finite() && r.is_finite() && c >= 0.0 && r >= 0.0 && c < w && r < h) {
+        return Err(JsError::new("mark: the click must lie inside the image"));
+    }
+    let template = sample::mark_template(21).map_err(js_error)?;
+    let marks = ops::measure_marks(&img.grid, &template, &[(c, r)], 12).map_err(js_error)?;
+    let m = marks
+        .first()
+        .ok_or_else(|| JsError::new("mark: could not be measured"))?;
+    Ok(Float64Array::from(
+        &[m.measured.0, m.measured.1, m.ncc, m.iterations as f64][..],
+    ))
+}
+
+/// Example 4's similarity and affine transformations fitted to four
+/// measured marks `[c, r]×4` (the student's), against the calibrated
+/// positions: `{ similarity, affine }`, each `{ params, residuals: [vx,
+/// vy]×4 (mm), sigma0 }`.
+#[wasm_bindgen]
+pub fn fit_fiducial_marks(measured: &[f64]) -> Result<JsValue, JsError> {
+    if measured.len() != 8 || measured.iter().any(|v| !v.is_finite()) {
+        return Err(JsError::new("marks: need four measured positions [c, r]×4"));
+    }
+    let pts: Vec<(f64, f64)> = measured.chunks(2).map(|p| (p[0], p[1])).collect();
+    let (sim, aff) = ops::fit_fiducials(&pts, &sample::calibrated()).map_err(js_error)?;
+    obj(&[("similarity", fit_js(&sim)?), ("affine", fit_js(&aff)?)])
+}
+
+fn fit_js(f: &photogrammetry_playground::transform::Fit) -> Result<JsValue, JsError> {
+    let residuals: Vec<f64> = f.point_residuals.iter().flatten().copied().collect();
+    obj(&[
+        (
+            "params",
+            Float64Array::from(f.transform.params.as_slice()).into(),
+        ),
+        ("residuals", Float64Array::from(residuals.as_slice()).into()),
+        ("sigma0", f.adjustment.sigma0.map_or(JsValue::NULL, num)),
     ])
 }
 

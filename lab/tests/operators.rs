@@ -484,3 +484,151 @@ fn fast_routes_give_the_reference_bits_at_every_pixel() {
             .is_none()
     );
 }
+
+#[test]
+fn a_custom_kernel_is_checked_field_by_field() {
+    let err = |text: &str, d: Option<f64>| ops::custom_kernel(text, d).unwrap_err().to_string();
+    assert!(err("1 2 x", None).starts_with("custom_kernel: row 1: \"x\" is not a number"));
+    assert!(err("1 2 1\n2 4", None).contains("row 2 has 2 numbers but row 1 has 3"));
+    assert!(err("1 1\n1 1", None).contains("is 2×2 (rows × columns); a kernel needs an odd number"));
+    let big = vec!["1 ".repeat(17); 17].join("\n");
+    assert!(err(&big, None).contains("is 17×17 (rows × columns); at most 15×15"));
+    assert!(err("  \n ", None).starts_with("custom_kernel: is empty"));
+    assert!(err("0 0 0", None).contains("all weights are 0"));
+    assert!(err("-1 0 1", None).starts_with("custom_divisor: the weights sum to 0"));
+    assert!(
+        err("1 2 1", Some(0.0)).starts_with("custom_divisor: must be a finite number other than 0")
+    );
+    // rows on lines or after `;`, numbers by spaces or commas; normalised by the sum
+    let (rows, d) = ops::custom_kernel("1, 2, 1; 2 4 2\n 1 2 1 ", None).unwrap();
+    assert_eq!(
+        rows,
+        vec![
+            vec![1.0, 2.0, 1.0],
+            vec![2.0, 4.0, 2.0],
+            vec![1.0, 2.0, 1.0]
+        ]
+    );
+    assert_eq!(d, 16.0);
+    assert_eq!(ops::custom_kernel("-1 0 1", Some(2.0)).unwrap().1, 2.0);
+}
+
+/// The worked example `filter-window` on `window` (rows) with a custom
+/// kernel: its output's centre (the crop interior's middle pixel).
+fn filter_window_custom(window: &[Vec<f64>], kernel: &[Vec<f64>], divisor: f64) -> f64 {
+    use photogrammetry_playground::examples::solve;
+    use photogrammetry_playground::solution::{Record, Value};
+    let s = solve(
+        "filter-window",
+        &Record::new()
+            .with("window", Value::matrix(window))
+            .with("kernel", "custom")
+            .with("custom_kernel", Value::matrix(kernel))
+            .with("custom_divisor", divisor)
+            .with("border", "crop"),
+    )
+    .unwrap();
+    match s.result.get("output").unwrap() {
+        Value::List(rows) => match &rows[1] {
+            Value::List(row) => match &row[1] {
+                Value::Number(v) => *v,
+                other => panic!("{other:?}"),
+            },
+            other => panic!("{other:?}"),
+        },
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn a_custom_kernel_over_the_image_equals_filter_window_at_every_pixel() {
+    let img = random(13, 11, 7);
+    // a 5×3 (rows × columns) asymmetric kernel, normalised by its sum (10)
+    let (rows, d) = ops::custom_kernel("1 0 2\n-1 3 1\n0 1 1\n2 0 -1\n1 0 0", None).unwrap();
+    assert_eq!(d, 10.0);
+    let kernel = filter::Kernel::new("custom_kernel", &rows, d).unwrap();
+    for b in BORDERS {
+        let border = ops::border(b).unwrap();
+        let layer = ops::filter_image(&img, "custom", border, Some((&rows, d))).unwrap();
+        assert_eq!(layer.name, "custom");
+        for r in 0..11 {
+            for c in 0..13 {
+                let want = filter::pixel_sum(&img, &kernel, c, r, border).map(|p| p.value);
+                assert_eq!(layer.at(c, r), want, "{b} ({c}, {r})");
+                let Some(v) = want else { continue };
+                // the lab's "explain": the (k+2)-sized neighbourhood under the
+                // same border, solved by the worked example with the kernel
+                // (under crop it exists only a pixel further inside)
+                let Some(win) = neighbourhood(&img, c, r, 5, 7, border) else {
+                    assert!(
+                        b == "crop" && (c < 2 || r < 3 || c > 10 || r > 7),
+                        "({c}, {r})"
+                    );
+                    continue;
+                };
+                let win: Vec<Vec<f64>> = win.chunks(5).map(<[f64]>::to_vec).collect();
+                if (c + r) % 3 == 0 {
+                    assert_eq!(filter_window_custom(&win, &rows, d), v, "{b} ({c}, {r})");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn forstner_points_from_a_kept_map_equal_a_full_run_for_every_threshold() {
+    let img = interest::test_pattern(64, 3.0, 5).unwrap();
+    let map = ops::forstner_maps(&img, 5).unwrap();
+    let layers = ops::forstner_layers(&map);
+    for (t, q) in [(0.3, 0.5), (0.5, 0.5), (1.0, 0.0), (2.0, 0.7)] {
+        let (ls, ps) = ops::forstner(&img, 5, 8.0, t, q).unwrap();
+        let bits = |ls: &[ops::Layer]| -> Vec<Vec<u64>> {
+            ls.iter()
+                .map(|l| l.data.iter().map(|v| v.to_bits()).collect())
+                .collect()
+        };
+        assert_eq!(bits(&ls), bits(&layers));
+        assert_eq!(
+            ops::forstner_detect(&map, 8.0, t, q).unwrap(),
+            ps,
+            "T = {t}"
+        );
+    }
+    // a lower threshold keeps no more points than a higher one
+    let n = |t| ops::forstner_detect(&map, 8.0, t, 0.0).unwrap().len();
+    assert!(n(0.3) <= n(1.0) && n(1.0) > 0, "{} {}", n(0.3), n(1.0));
+    assert!(ops::forstner_detect(&map, 8.0, 0.0, 0.5)
+        .unwrap_err()
+        .to_string()
+        .starts_with("threshold_px: "));
+}
+
+#[test]
+fn the_kept_suppression_gives_seed_003s_points_for_every_threshold() {
+    // a noisy pattern (many candidates, ties of equal windows) and a random image
+    for img in [
+        interest::test_pattern(64, 3.0, 9).unwrap(),
+        random(40, 33, 11),
+    ] {
+        for size in [3, 5, 7] {
+            let map = ops::forstner_maps(&img, size).unwrap();
+            let mut kept = ops::ForstnerKept::new(map.clone());
+            for (sigma, q) in [(8.0, 0.5), (8.0, 0.0), (2.5, 0.75)] {
+                for t in [0.05, 0.2, 0.35, 0.5, 0.8, 1.0, 1.7, 3.0, 100.0] {
+                    let want = ops::forstner_detect(&map, sigma, t, q).unwrap();
+                    assert_eq!(
+                        kept.points(sigma, t, q).unwrap(),
+                        want,
+                        "size {size} σn {sigma} q {q} T {t}"
+                    );
+                }
+            }
+        }
+    }
+    let mut kept = ops::ForstnerKept::new(ops::forstner_maps(&random(9, 9, 1), 3).unwrap());
+    assert!(kept
+        .points(8.0, f64::NAN, 0.5)
+        .unwrap_err()
+        .to_string()
+        .starts_with("threshold_px: "));
+}

@@ -248,16 +248,17 @@ test("resampling side by side, boundaries with chain code, and the fiducial work
   await page.waitForSelector("#lab-sample");
   await sample(page, "frame");
   await page.selectOption("#lab-family", "fiducials");
+  // the lab measures the four marks itself (the student's own clicks: lab-interact.test.mjs)
   await page.click("#lab-run");
-  await page.waitForSelector("#lab-fiducials");
+  await page.waitForSelector("#lab-fid-fit");
   await idle(page);
   const params = (await page.evaluate(() => document.body.dataset.fiducials)).split(",").map(Number);
   const truth = [0.2502, 0.0004, 0.12 - 0.2502 * 499.5 + 0.0004 * 499.5, -0.0003, 0.2497, 0.08 + 0.0003 * 499.5 + 0.2497 * 499.5];
   for (const i of [0, 1, 3, 4]) assert.ok(Math.abs(params[i] - truth[i]) < 1e-4, `${params} vs ${truth}`);
   for (const i of [2, 5]) assert.ok(Math.abs(params[i] - truth[i]) < 0.03, `${params} vs ${truth}`);
-  const rows = await page.locator("#lab-fiducials tr").count();
+  const rows = await page.locator("#lab-fid-table tr").count();
   assert.equal(rows, 5);
-  await page.click("#lab-fiducial-link");
+  await page.click("#lab-fid-link");
   assert.equal(await settled(page), "ok");
   const fitted = JSON.parse(await page.locator('.result-table tr[data-key="parameters"] td.exact').getAttribute("data-value"));
   for (let i = 0; i < 6; i++) assert.ok(Math.abs(fitted[i] - params[i]) < 1e-9, `${fitted} vs ${params}`);

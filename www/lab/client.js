@@ -17,6 +17,7 @@ export class LabClient {
     this.pending = new Map();
     this.tiles = Tiles.available() ? new Tiles(Math.min(4, navigator.hardwareConcurrency)) : null;
     this.threads = this.tiles ? this.tiles.n : 1;
+    this.sent = {};
     this.start();
   }
 
@@ -50,6 +51,8 @@ export class LabClient {
       return this.tiles.run(this, type, args).finally(() => this.tiling--);
     }
     const id = this.nextId++;
+    // requests sent, by type (the live slider's tests count them)
+    this.sent[type] = (this.sent[type] ?? 0) + 1;
     return new Promise((resolve, reject) => {
       this.pending.set(id, { resolve, reject, type });
       this.worker.postMessage({ id, type, ...args }, transfer);
@@ -75,8 +78,11 @@ export class LabClient {
     for (const p of this.pending.values()) p.reject(err);
     this.pending.clear();
     this.start();
+    const t0 = performance.now();
     this.restarting = this.hooks.onRestart(why).finally(() => {
       this.restarting = null;
+      // ms from the old worker's end to the photo back in the new one (reported by the live sliders)
+      this.lastRestartMs = performance.now() - t0;
     });
   }
 

@@ -35,6 +35,24 @@ export function filterLink(kernel, window, side) {
   };
 }
 
+/**
+ * filter-window with a custom kernel (`rows`, `divisor`): the neighbourhood
+ * one pixel wider than the kernel on each side, `w` columns; the example's
+ * `output` is its 3×3 interior under crop, whose centre is the lab's pixel.
+ */
+export function customFilterLink(rows, divisor, window, w) {
+  return {
+    hash: buildHash("filter-window", [
+      ["window", matrixText(toRows(window, w))],
+      ["kernel", "custom"],
+      ["custom_kernel", matrixText(rows)],
+      ["custom_divisor", String(divisor)],
+    ]),
+    key: "output",
+    index: [1, 1],
+  };
+}
+
 /** edge-window: the 5×5 neighbourhood; gx, gy, magnitude at the centre of the 3×3 interior. */
 export function edgeLink(operator, window, layerName) {
   const key = layerName === "direction" ? "magnitude" : layerName;

@@ -5,6 +5,7 @@
 
 import { el } from "../dom.js";
 import * as X from "./explain.js";
+import { Live } from "./live.js";
 
 const BORDERS = [["replicate", "replicate the edge"], ["reflect", "reflect at the edge"], ["zero", "zero outside"], ["crop", "crop (interior only)"]];
 const KERNELS = [
@@ -48,28 +49,141 @@ function currentLayer(lab) {
 
 // ---------------------------------------------------------------- filters
 
+/** The largest custom kernel side (as in filter-window and lab/src/ops.rs). */
+export const MAX_KERNEL = 15;
+
+/**
+ * A custom kernel typed as rows of numbers (rows on lines or after ";",
+ * numbers by spaces or commas) and a divisor (blank: normalised by the
+ * weights' sum). The same rules and messages as ops::custom_kernel in
+ * Rust (which checks it again): `{ rows, divisor }` or `{ field, error }`.
+ */
+export function parseKernel(text, divisorText = "") {
+  const rows = [];
+  for (const line of text.split(/[\n;]/)) {
+    if (!line.trim()) continue;
+    const row = [];
+    for (const token of line.trim().split(/[ ,\t\r]+/).filter(Boolean)) {
+      const v = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(token) ? Number(token) : NaN;
+      if (!Number.isFinite(v)) return { field: "custom_kernel", error: `row ${rows.length + 1}: "${token}" is not a number` };
+      row.push(v);
+    }
+    if (rows.length && rows[0].length !== row.length) {
+      return { field: "custom_kernel", error: `row ${rows.length + 1} has ${row.length} numbers but row 1 has ${rows[0].length}; every row needs the same number` };
+    }
+    rows.push(row);
+  }
+  const h = rows.length;
+  const w = h ? rows[0].length : 0;
+  if (!h) return { field: "custom_kernel", error: "is empty; type rows of numbers, e.g. 1 2 1 / 2 4 2 / 1 2 1 on three lines" };
+  if (h > MAX_KERNEL || w > MAX_KERNEL) return { field: "custom_kernel", error: `is ${h}×${w} (rows × columns); at most ${MAX_KERNEL}×${MAX_KERNEL} is allowed` };
+  if (h % 2 === 0 || w % 2 === 0) return { field: "custom_kernel", error: `is ${h}×${w} (rows × columns); a kernel needs an odd number of rows and of columns, so that it has a centre pixel` };
+  if (rows.flat().every((v) => v === 0)) return { field: "custom_kernel", error: "all weights are 0: the result would be 0 everywhere" };
+  let divisor;
+  if (divisorText.trim() === "") {
+    divisor = rows.flat().reduce((a, b) => a + b, 0);
+    if (divisor === 0) return { field: "custom_divisor", error: "the weights sum to 0, so the kernel cannot be normalised; give a divisor (1 applies it as written)" };
+  } else {
+    divisor = Number(divisorText);
+    if (!Number.isFinite(divisor) || divisor === 0) return { field: "custom_divisor", error: "must be a finite number other than 0" };
+  }
+  return { rows, divisor, width: w, height: h, normalised: divisorText.trim() === "" };
+}
+
+/** The k×k mean as a custom kernel (ones, divisor k²): the size slider's kernel. */
+export function meanKernel(k) {
+  return { rows: Array.from({ length: k }, () => Array(k).fill(1)), divisor: k * k, width: k, height: k };
+}
+
 const filters = {
   id: "filters",
-  title: "Filters (smoothing, Laplacian, sharpening, median)",
+  title: "Filters (smoothing, Laplacian, sharpening, median, custom)",
   create(lab, box) {
-    const [kernel, kernelLabel] = select("lab-kernel", "Kernel", KERNELS, "mean");
+    const kernels = [...KERNELS, ["mean-k", "k×k mean (size slider, live)"], ["custom", "Custom kernel (type it)"]];
+    const [kernel, kernelLabel] = select("lab-kernel", "Kernel", kernels, "mean");
     const [border, borderLabel] = select("lab-border", "Border", BORDERS, "replicate");
     const run = runButton();
-    box.append(kernelLabel, " ", borderLabel, " ", run);
+    // the size slider: recomputes while dragged (a new value cancels the run)
+    const size = el("input", { type: "range", id: "lab-size", min: "3", max: String(MAX_KERNEL), step: "2", value: "5", "aria-describedby": "lab-size-out" });
+    const sizeOut = el("output", { id: "lab-size-out", for: "lab-size" }, "5×5");
+    const sizeLabel = el("label", { class: "lab-slider" }, "Size ", size, " ", sizeOut);
+    // the custom kernel: text, divisor, the message at the field
+    const customText = el("textarea", { id: "lab-custom", rows: "4", cols: "24", spellcheck: "false", "aria-describedby": "lab-custom-help lab-custom-error" }, "1 2 1\n2 4 2\n1 2 1");
+    const divisor = el("input", { id: "lab-divisor", type: "text", inputmode: "decimal", size: "8", placeholder: "normalise", "aria-describedby": "lab-custom-help lab-custom-error" });
+    const customError = el("p", { class: "field-error lab-field-error", id: "lab-custom-error", role: "alert", hidden: true });
+    const customBox = el("div", { class: "lab-custom", id: "lab-custom-box" },
+      el("label", {}, "Kernel rows ", customText), " ",
+      el("label", {}, "Divisor ", divisor),
+      customError,
+      el("p", { class: "muted", id: "lab-custom-help" }, `One row per line (or rows separated by ;), numbers by spaces or commas; odd sizes up to ${MAX_KERNEL}×${MAX_KERNEL}, rows and columns may differ. Applied as written (no flip). Leave the divisor empty to normalise (divide by the sum of the weights).`));
+    box.append(kernelLabel, " ", sizeLabel, " ", borderLabel, " ", run, customBox);
     let used = null;
-    run.addEventListener("click", async () => {
+    const sync = () => {
+      sizeLabel.hidden = kernel.value !== "mean-k";
+      customBox.hidden = kernel.value !== "custom";
+      sizeOut.textContent = `${size.value}×${size.value}`;
+    };
+    const check = () => {
+      const k = parseKernel(customText.value, divisor.value);
+      customError.hidden = !k.error;
+      customError.textContent = k.error ? `${k.field === "custom_divisor" ? "Divisor" : "Kernel"}: ${k.error}` : "";
+      customText.setAttribute("aria-invalid", String(k.field === "custom_kernel"));
+      divisor.setAttribute("aria-invalid", String(k.field === "custom_divisor"));
+      return k;
+    };
+    kernel.addEventListener("change", sync);
+    customText.addEventListener("input", check);
+    divisor.addEventListener("input", check);
+    sync();
+    const live = new Live(lab, "filter");
+    const go = () => {
       if (!needImage(lab)) return;
-      const args = { kernel: kernel.value, border: border.value };
-      const r = await lab.run("filter", args, "Filtering");
-      if (!r) return;
-      used = args;
-      lab.setLayers(r.layers);
+      const name = kernel.value;
+      let args = { kernel: name, border: border.value };
+      let custom = null;
+      if (name === "custom") {
+        custom = check();
+        if (custom.error) {
+          (custom.field === "custom_divisor" ? divisor : customText).focus();
+          return;
+        }
+        args = { ...args, kernel: "custom", custom: customText.value, divisor: custom.normalised ? undefined : custom.divisor };
+      } else if (name === "mean-k") {
+        const k = Number(size.value);
+        custom = meanKernel(k);
+        args = { ...args, kernel: "custom", custom: custom.rows.map((r) => r.join(" ")).join("\n"), divisor: custom.divisor };
+      }
+      const layerName = name === "mean-k" ? `mean ${size.value}×${size.value}` : name;
+      live.request({
+        type: "filter",
+        args,
+        label: `Filtering (${layerName})`,
+        cancel: true,
+        apply(r) {
+          used = { ...args, name, custom };
+          r.layers[0].name = layerName;
+          lab.setLayers(r.layers);
+          document.body.dataset.filterShown = layerName;
+        },
+      });
+    };
+    run.addEventListener("click", go);
+    size.addEventListener("input", () => {
+      sync();
+      if (lab.image) go();
     });
     return {
       async pick(c, r) {
         const layer = currentLayer(lab);
         const v = layerValue(layer, c, r);
         if (!used || v === null) return;
+        if (used.custom) {
+          const { rows, divisor: d, width, height } = used.custom;
+          const win = await lab.run("neighbourhood", { c, r, w: width + 2, h: height + 2, border: used.border }, "Reading the window");
+          const link = win ? X.customFilterLink(rows, d, win, width + 2) : null;
+          lab.showExplain(`${layer.name} at column ${c}, row ${r}:`, v, link);
+          return;
+        }
         const k = X.kernelSide(used.kernel);
         const side = k + 2;
         const win = await lab.run("neighbourhood", { c, r, w: side, h: side, border: used.border }, "Reading the window");
@@ -127,7 +241,10 @@ const interest = {
     const [op, opLabel] = select("lab-interest", "Operator", [["forstner", "Förstner"], ["moravec", "Moravec"]], "forstner");
     const [size, sizeLabel] = number("lab-window", "Window", 5, { min: "3", max: "15", step: "1" });
     const [sigma, sigmaLabel] = number("lab-sigma", "σn (grey values)", 8, { min: "0.01" });
-    const [thr, thrLabel] = number("lab-threshold", "Threshold T (px)", 0.5, { min: "0.01" });
+    // the threshold is a live slider: it re-thresholds the kept map
+    const thr = el("input", { type: "range", id: "lab-threshold", min: "0.05", max: "3", step: "0.05", value: "0.5", "aria-describedby": "lab-threshold-out" });
+    const thrOut = el("output", { id: "lab-threshold-out", for: "lab-threshold" }, "0.5 px");
+    const thrLabel = el("label", { class: "lab-slider" }, "Threshold T ", thr, " ", thrOut);
     const [qmin, qLabel] = number("lab-qmin", "Roundness q ≥", 0.5, { min: "0", max: "1" });
     const [mthr, mthrLabel] = number("lab-mthreshold", "Moravec threshold", 2000, { min: "0" });
     const run = runButton();
@@ -146,15 +263,8 @@ const interest = {
     sync();
     box.append(opLabel, " ", sizeLabel, " ", sigmaLabel, " ", thrLabel, " ", qLabel, " ", mthrLabel, " ", run, note);
     let used = null;
-    run.addEventListener("click", async () => {
-      if (!needImage(lab)) return;
-      const args = { size: Number(size.value), sigmaN: Number(sigma.value), thresholdPx: Number(thr.value), qMin: Number(qmin.value), threshold: Number(mthr.value) };
-      const r = await lab.run(op.value, args, op.value === "forstner" ? "Förstner operator" : "Moravec operator");
-      if (!r) return;
-      used = { op: op.value, ...args };
-      lab.setLayers(r.layers);
+    const drawPoints = (p) => {
       const shapes = [];
-      const p = r.points;
       for (let i = 0; i < p.length; i += 6) {
         if (used.op === "forstner") {
           shapes.push({ kind: "ellipse", c: p[i], r: p[i + 1], a: p[i + 3] * ELLIPSE_MAGNIFY, b: p[i + 4] * ELLIPSE_MAGNIFY, angle: p[i + 5] + Math.PI / 2, colour: "#ff8c00" });
@@ -163,10 +273,73 @@ const interest = {
         }
       }
       lab.viewer.setShapes(shapes);
-      lab.say(`${p.length / 6} interest points found.`);
+      lab.say(`${p.length / 6} interest points found${used.op === "forstner" ? ` with T = ${used.thresholdPx} px` : ""}.`);
       document.body.dataset.points = String(p.length / 6);
+    };
+    // Förstner: the map once per window size (a new size cancels a running
+    // map), then points for the current T, σn, q from the kept map
+    const live = new Live(lab, "forstner");
+    let mapSize = null;
+    const params = () => ({ size: Number(size.value), sigmaN: Number(sigma.value), thresholdPx: Number(thr.value), qMin: Number(qmin.value), threshold: Number(mthr.value) });
+    const points = () => {
+      const args = params();
+      live.request({
+        type: "forstnerPoints",
+        args: { sigmaN: args.sigmaN, thresholdPx: args.thresholdPx, qMin: args.qMin },
+        label: "Thresholding the kept map",
+        apply(r) {
+          used = { op: "forstner", ...args, size: r.size };
+          drawPoints(r.points);
+          document.body.dataset.threshold = String(r.thresholdPx);
+          document.body.dataset.mapRuns = String(r.mapRuns);
+          document.body.dataset.pointsMs = r.pointsMs.toFixed(1);
+        },
+      });
+    };
+    const maps = () => {
+      const n = Number(size.value);
+      mapSize = null;
+      live.request({
+        type: "forstnerMaps",
+        args: { size: n },
+        label: `Förstner operator (${n}×${n} windows)`,
+        cancel: true,
+        apply(r) {
+          mapSize = r.size;
+          used = { op: "forstner", ...params(), size: r.size };
+          lab.setLayers(r.layers);
+          document.body.dataset.mapRuns = String(r.mapRuns);
+          points();
+        },
+      });
+    };
+    const retune = () => {
+      thrOut.textContent = `${thr.value} px`;
+      if (op.value !== "forstner" || !lab.image) return;
+      if (mapSize !== null && mapSize === Number(size.value)) points();
+      // (while a map is computed, its points follow with the newest values)
+    };
+    for (const input of [thr, sigma, qmin]) input.addEventListener("input", retune);
+    size.addEventListener("change", () => {
+      if (op.value === "forstner" && lab.image && (mapSize !== null || live.busy)) maps();
+    });
+    run.addEventListener("click", async () => {
+      if (!needImage(lab)) return;
+      if (op.value === "forstner") {
+        maps();
+        return;
+      }
+      const args = params();
+      const r = await lab.run(op.value, args, "Moravec operator");
+      if (!r) return;
+      used = { op: op.value, ...args };
+      lab.setLayers(r.layers);
+      drawPoints(r.points);
     });
     return {
+      imageChanged() {
+        mapSize = null;
+      },
       async pick(c, r) {
         const layer = currentLayer(lab);
         const v = layerValue(layer, c, r);

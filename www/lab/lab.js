@@ -36,6 +36,47 @@ export function openLab(root, { family = null } = {}) {
   return current;
 }
 
+/** Test hook: opens `width × height` grey bytes as the photo (e.g. a 2048² test image). */
+export function openRawForTests(width, height, bytes, name = "raw") {
+  return current?.openRaw(name, width, height, bytes);
+}
+
+/** Test hook: requests sent to the worker by type, and the shown layer's value at (c, r). */
+export function stateForTests(c = 0, r = 0) {
+  const lab = current;
+  if (!lab) return null;
+  const layer = lab.layers[Number(lab.layerSelect.value)] ?? null;
+  let value = null;
+  if (layer && c >= layer.c0 && r >= layer.r0 && c < layer.c0 + layer.width && r < layer.r0 + layer.height) {
+    value = layer.data[(r - layer.r0) * layer.width + (c - layer.c0)];
+  }
+  return { sent: { ...lab.client.sent }, layer: layer?.name ?? null, value };
+}
+
+/** Test hook: the open photo's grey values in the box [c, r, w, h], row-major. */
+export function greyForTests([c, r, w, h]) {
+  const img = current?.image;
+  if (!img) return null;
+  const out = [];
+  for (let y = r; y < r + h; y++) for (let x = c; x < c + w; x++) out.push(img.grey[y * img.width + x]);
+  return out;
+}
+
+/** Test hook: the main view's geometry (canvas pixels: zoom, offset; CSS box). */
+export function viewForTests() {
+  const v = current?.viewer;
+  if (!v) return null;
+  const b = v.canvas.getBoundingClientRect();
+  return { zoom: v.zoom, ox: v.ox, oy: v.oy, cw: v.canvas.width, ch: v.canvas.height, left: b.left, top: b.top, w: b.width, h: b.height };
+}
+
+/** Test hook: the generated frame's truth as plain arrays. */
+export function truthForTests() {
+  const t = current?.image?.truth;
+  if (!t) return null;
+  return Object.fromEntries(Object.entries(t).map(([k, v]) => [k, typeof v === "number" ? v : Array.from(v)]));
+}
+
 /** Test hook: makes the worker's wasm trap (the lab must recover). */
 export function trapForTests() {
   return current?.run("trap", {}, "Trapping");
@@ -194,7 +235,7 @@ class Lab {
    * Runs a worker request with progress and cancel after SLOW_MS; errors go
    * to the error box (and return null) unless `quiet`.
    */
-  async run(type, args = {}, label = "Working", transfer = []) {
+  async run(type, args = {}, label = "Working", transfer = [], { quietCancel = false } = {}) {
     this.clearError();
     const t0 = performance.now();
     let timer = null;
@@ -207,20 +248,28 @@ class Lab {
       timer = setTimeout(showProgress, 250);
     };
     timer = setTimeout(showProgress, SLOW_MS);
+    // several requests may overlap (a live slider's new run starts while the
+    // cancelled one winds down): idle only when the last one ends
+    this.active = (this.active ?? 0) + 1;
     document.body.dataset.lab = "busy";
     try {
       const result = await this.client.call(type, args, transfer);
       return result;
     } catch (e) {
-      if (e.cancelled) this.say("Cancelled. The photo and the settings are kept.");
+      if (e.cancelled) {
+        if (!quietCancel) this.say("Cancelled. The photo and the settings are kept.");
+      }
       else if (!e.trapped) this.showError(e.message);
       return null;
     } finally {
       clearTimeout(timer);
-      this.progress.hidden = true;
-      this.progress.replaceChildren();
       if (this.client.restarting) await this.client.restarting;
-      document.body.dataset.lab = "idle";
+      this.active--;
+      if (this.active === 0) {
+        this.progress.hidden = true;
+        this.progress.replaceChildren();
+        document.body.dataset.lab = "idle";
+      }
     }
   }
 
@@ -232,6 +281,10 @@ class Lab {
     if (!this.source) return;
     try {
       if (this.source.sample === "frame") await this.client.call("frame");
+      else if (this.source.raw) {
+        const { width, height, bytes } = this.source.raw;
+        await this.client.call("raw", { width, height, bytes: bytes.slice(0) });
+      }
       else await this.client.call("load", { name: this.source.name, bytes: this.source.bytes.slice(0) });
     } catch (e) {
       this.showError(`The image could not be reloaded after the restart: ${e.message}`);
@@ -280,6 +333,15 @@ class Lab {
     if (!r) return; // the error names the file; the lab keeps what it had
     this.source = { sample: sample?.id ?? null, name, bytes: keep };
     this.setImage({ ...r, name }, sample);
+  }
+
+  /** Opens raw 8-bit grey bytes (`width × height`, row-major) as the photo. */
+  async openRaw(name, width, height, bytes) {
+    const keep = new Uint8Array(bytes);
+    const r = await this.run("raw", { width, height, bytes: keep.slice(0) }, `Opening ${name}`);
+    if (!r) return;
+    this.source = { sample: null, name, raw: { width, height, bytes: keep } };
+    this.setImage({ name, width, height, grey: Float64Array.from(keep), format: "raw", colour: "grey", bits: 8, maxValue: 255 }, null);
   }
 
   setImage(img, sample) {

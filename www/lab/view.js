@@ -227,10 +227,13 @@ export class Viewer {
     const pointers = new Map();
     let moved = 0;
     let pinch = null;
+    // a shape being dragged (dragHandler: { start(pos) → grabbed?, move(pos), end(pos) }, image positions)
+    let dragging = null;
     cv.addEventListener("pointerdown", (ev) => {
       cv.setPointerCapture(ev.pointerId);
       pointers.set(ev.pointerId, pos(ev));
       moved = 0;
+      if (pointers.size === 1 && this.image && this.dragHandler?.start?.(this.toImage(...pos(ev)))) dragging = ev.pointerId;
       if (pointers.size === 2) {
         const [a, b] = [...pointers.values()];
         pinch = Math.hypot(a[0] - b[0], a[1] - b[1]);
@@ -253,9 +256,10 @@ export class Viewer {
         moved += 10;
         return;
       }
-      if (this.dragHandler?.move) {
+      if (dragging === ev.pointerId) {
         moved += Math.abs(p[0] - last[0]) + Math.abs(p[1] - last[1]);
-        if (this.dragHandler.move(this.toImage(...p))) return;
+        this.dragHandler?.move?.(this.toImage(...p));
+        return;
       }
       moved += Math.abs(p[0] - last[0]) + Math.abs(p[1] - last[1]);
       this.ox += p[0] - last[0];
@@ -266,8 +270,12 @@ export class Viewer {
       const p = pointers.get(ev.pointerId);
       pointers.delete(ev.pointerId);
       if (pointers.size < 2) pinch = null;
+      if (dragging === ev.pointerId) {
+        dragging = null;
+        if (this.image) this.dragHandler?.end?.(this.toImage(...p), moved);
+        return;
+      }
       if (!p || !this.image) return;
-      if (this.dragHandler?.end && this.dragHandler.end(this.toImage(...p), moved)) return;
       if (moved < 6) {
         const [x, y] = this.toImage(p[0], p[1]);
         const c = Math.round(x);
@@ -276,7 +284,13 @@ export class Viewer {
       }
     };
     cv.addEventListener("pointerup", up);
-    cv.addEventListener("pointercancel", (ev) => pointers.delete(ev.pointerId));
+    cv.addEventListener("pointercancel", (ev) => {
+      pointers.delete(ev.pointerId);
+      if (dragging === ev.pointerId) {
+        dragging = null;
+        this.dragHandler?.end?.(null, 0);
+      }
+    });
     cv.addEventListener("pointerleave", () => this.opts.onHover?.(null));
     cv.addEventListener("keydown", (ev) => {
       const step = 40 * (this.dpr || 1);
@@ -389,9 +403,36 @@ export class Viewer {
       } else if (s.kind === "poly") {
         s.points.forEach(([c, r], i) => (i ? ctx.lineTo(c + 0.5, r + 0.5) : ctx.moveTo(c + 0.5, r + 0.5)));
         if (s.closed) ctx.closePath();
-      } else if (s.kind === "line") {
-        ctx.moveTo(s.from[0] + 0.5, s.from[1] + 0.5);
-        ctx.lineTo(s.to[0] + 0.5, s.to[1] + 0.5);
+      } else if (s.kind === "line" || s.kind === "arrow") {
+        const [x0, y0, x1, y1] = [s.from[0] + 0.5, s.from[1] + 0.5, s.to[0] + 0.5, s.to[1] + 0.5];
+        ctx.moveTo(x0, y0);
+        ctx.lineTo(x1, y1);
+        const len = Math.hypot(x1 - x0, y1 - y0);
+        if (s.kind === "arrow" && len > 0) {
+          // a head of 8 screen pixels (at most a third of the arrow)
+          const head = Math.min(8 * px * (this.dpr || 1), len / 3);
+          const a = Math.atan2(y1 - y0, x1 - x0);
+          for (const t of [a + 2.7, a - 2.7]) {
+            ctx.moveTo(x1, y1);
+            ctx.lineTo(x1 + head * Math.cos(t), y1 + head * Math.sin(t));
+          }
+        }
+      } else if (s.kind === "cross") {
+        const h = (s.size || 6) * px * (this.dpr || 1);
+        ctx.moveTo(s.c + 0.5 - h, s.r + 0.5);
+        ctx.lineTo(s.c + 0.5 + h, s.r + 0.5);
+        ctx.moveTo(s.c + 0.5, s.r + 0.5 - h);
+        ctx.lineTo(s.c + 0.5, s.r + 0.5 + h);
+      } else if (s.kind === "text") {
+        // a label of ~13 screen pixels at image position (c, r)
+        ctx.font = `${13 * px * (this.dpr || 1)}px sans-serif`;
+        ctx.textAlign = s.align || "left";
+        ctx.textBaseline = "middle";
+        ctx.lineWidth = 3 * px * (this.dpr || 1);
+        ctx.strokeStyle = s.halo || "#fff";
+        ctx.strokeText(s.text, s.c, s.r);
+        ctx.fillText(s.text, s.c, s.r);
+        continue;
       }
       if (s.fill) ctx.fill();
       else ctx.stroke();

@@ -56,6 +56,16 @@ function need(slot) {
 function put(slot, img) {
   images[slot]?.free();
   images[slot] = img;
+  if (slot === "a") dropForstner();
+}
+
+/** Förstner's map of image "a", kept so that a new threshold re-uses it. */
+let forstnerKept = null;
+/** How many Förstner maps this worker has computed (the page's tests read it). */
+let forstnerMapRuns = 0;
+function dropForstner() {
+  forstnerKept?.free();
+  forstnerKept = null;
 }
 
 const handlers = {
@@ -79,8 +89,25 @@ const handlers = {
   window({ slot = "a", c, r, w, h }) {
     return need(slot).window(c, r, w, h);
   },
-  filter({ kernel, border }, transfer) {
-    return { layers: layersOut(lab.run_filter(need("a"), kernel, border), transfer) };
+  filter({ kernel, border, custom, divisor }, transfer) {
+    return { layers: layersOut(lab.run_filter(need("a"), kernel, border, custom, divisor), transfer) };
+  },
+  checkKernel({ custom, divisor }) {
+    return lab.check_custom_kernel(custom, divisor);
+  },
+  // the live threshold: the map once (forstnerMaps), then points for any
+  // threshold from the kept map (forstnerPoints), without recomputing it
+  forstnerMaps({ size }, transfer) {
+    dropForstner();
+    forstnerKept = lab.forstner_maps(need("a"), size);
+    forstnerMapRuns++;
+    return { layers: layersOut(forstnerKept.layers(), transfer), size, mapRuns: forstnerMapRuns };
+  },
+  forstnerPoints({ sigmaN, thresholdPx, qMin }) {
+    if (!forstnerKept) throw new Error("threshold_px: no Förstner map is kept (press Run first)");
+    const t0 = performance.now();
+    const points = forstnerKept.points(sigmaN, thresholdPx, qMin);
+    return { points, thresholdPx, size: forstnerKept.size(), mapRuns: forstnerMapRuns, pointsMs: performance.now() - t0 };
   },
   edges({ operator, border }, transfer) {
     return { layers: layersOut(lab.run_edges(need("a"), operator, border), transfer) };
@@ -114,6 +141,12 @@ const handlers = {
   },
   fiducials({ approx }) {
     return lab.run_fiducials(need("a"), Float64Array.from(approx));
+  },
+  refineMark({ c, r }) {
+    return lab.refine_mark(need("a"), c, r);
+  },
+  fitMarks({ measured }) {
+    return lab.fit_fiducial_marks(Float64Array.from(measured));
   },
   raw({ slot = "a", width, height, bytes }) {
     put(slot, lab.image_from_u8(width, height, new Uint8Array(bytes)));

@@ -1,0 +1,373 @@
+// The lab's interactive pieces in Chromium: the custom kernel of the
+// filters family (checked at its field, explained by filter-window with the
+// same number), the template box dragged by mouse and touch and moved by
+// the keyboard, the student's own fiducial measurements from clicks to
+// residuals, and the live sliders on a 2048² image (the newest value wins,
+// a running computation is cancelled, the Förstner threshold re-uses the
+// kept map).
+
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
+
+let env;
+before(async () => {
+  env = await start();
+});
+after(async () => {
+  await env?.close();
+});
+
+async function openLab(options) {
+  const o = await open(env.browser, options);
+  await o.page.goto(`${env.url}index.html#/lab`);
+  await o.page.waitForSelector("#lab-sample");
+  return o;
+}
+
+async function idle(page) {
+  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+}
+
+async function sample(page, id) {
+  await page.selectOption("#lab-sample", id);
+  await page.click("#lab-open-sample");
+  await idle(page);
+  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
+}
+
+/** The page position of image position (x, y) in the main view (pixel centres at integers): relative to the canvas (x, y) and to the page. */
+async function pagePos(page, x, y) {
+  await page.locator("#lab-stage .lab-canvas").scrollIntoViewIfNeeded();
+  const g = await page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+  const px = ((x + 0.5) * g.zoom + g.ox) * (g.w / g.cw);
+  const py = ((y + 0.5) * g.zoom + g.oy) * (g.h / g.ch);
+  return { x: px, y: py, pageX: g.left + px, pageY: g.top + py };
+}
+
+/** Clicks image position (x, y) of the main view (page coordinates: Playwright's element positions start inside the border). */
+async function clickAt(page, x, y) {
+  const p = await pagePos(page, x, y);
+  await page.mouse.click(p.pageX, p.pageY);
+}
+
+/** Follows a link and reads the example's exact result `key` (indexed by `index`). */
+async function followExplain(page, selector, key = null) {
+  const a = page.locator(selector).first();
+  key ??= await a.getAttribute("data-key");
+  const index = (await a.getAttribute("data-index")) || "";
+  const href = await a.getAttribute("href");
+  await page.goto(new URL(href, page.url()).href);
+  assert.equal(await settled(page), "ok", `${href} did not solve`);
+  const raw = await page.locator(`.result-table tr[data-key="${key}"] td.exact`).getAttribute("data-value");
+  let v = JSON.parse(raw);
+  for (const i of index.split(",").filter(Boolean).map(Number)) v = v[i];
+  return { v, key, href };
+}
+
+const labState = (page, c = 0, r = 0) => page.evaluate(async ([c, r]) => (await import("./lab/lab.js")).stateForTests(c, r), [c, r]);
+
+test("a custom kernel: checked at its field, run over the photo, explained by filter-window with the same number", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "camera.png");
+  await page.selectOption("#lab-family", "filters");
+  await page.selectOption("#lab-kernel", "custom");
+  assert.equal(await page.locator("#lab-custom").isVisible(), true);
+  const big = Array.from({ length: 17 }, () => Array(17).fill(1).join(" ")).join("\n");
+  for (const [text, divisor, says] of [
+    ["1 2 x", "", 'Kernel: row 1: "x" is not a number'],
+    ["1 2 1\n2 4", "", "Kernel: row 2 has 2 numbers but row 1 has 3"],
+    ["1 1\n1 1", "", "Kernel: is 2×2 (rows × columns); a kernel needs an odd number"],
+    [big, "", "Kernel: is 17×17 (rows × columns); at most 15×15"],
+    ["0 0 0", "", "Kernel: all weights are 0"],
+    ["-1 0 1", "", "Divisor: the weights sum to 0, so the kernel cannot be normalised"],
+    ["1 2 1", "0", "Divisor: must be a finite number other than 0"],
+  ]) {
+    await page.fill("#lab-custom", text);
+    await page.fill("#lab-divisor", divisor);
+    const msg = await page.textContent("#lab-custom-error");
+    assert.ok(msg.startsWith(says), msg);
+    assert.equal(await page.locator("#lab-custom-error").isVisible(), true);
+    // Run refuses it: no layer
+    await page.click("#lab-run");
+    assert.equal(await page.evaluate(() => document.body.dataset.filterShown ?? null), null);
+  }
+  // a 3×5 (rows × columns) signed kernel with divisor 4
+  await page.fill("#lab-custom", "1 2 3 2 1\n0 0 0 0 0\n-1 -2 -3 -2 -1");
+  await page.fill("#lab-divisor", "4");
+  assert.equal(await page.locator("#lab-custom-error").isHidden(), true);
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.filterShown === "custom");
+  await idle(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.layer), "custom");
+  // the value at (200, 300) from the photo's grey values by hand
+  const want = await page.evaluate(async () => {
+    const lab = await import("./lab/lab.js");
+    return lab.stateForTests(200, 300).value;
+  });
+  const grey = await page.evaluate(async () => {
+    const s = await import("./lab/lab.js");
+    return s.greyForTests([198, 299, 5, 3]);
+  });
+  const k = [[1, 2, 3, 2, 1], [0, 0, 0, 0, 0], [-1, -2, -3, -2, -1]];
+  let sum = 0;
+  for (let r = 0; r < 3; r++) for (let c = 0; c < 5; c++) sum += k[r][c] * grey[r * 5 + c];
+  assert.ok(Math.abs(want - sum / 4) < 1e-9, `${want} vs ${sum / 4}`);
+  await clickAt(page, 200, 300);
+  await page.waitForSelector("#lab-explain-link");
+  const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+  assert.equal(shown, want);
+  const { v, href } = await followExplain(page, "#lab-explain-link");
+  assert.ok(href.includes("kernel=custom") && href.includes("custom_divisor=4"), href);
+  assert.equal(v, shown, `${href}: the example gives ${v}, the lab showed ${shown}`);
+  // normalised (no divisor): [1 2 1] / 4, explained the same way
+  await page.goBack();
+  await page.waitForSelector("#lab-sample");
+  await sample(page, "camera.png");
+  await page.selectOption("#lab-family", "filters");
+  await page.selectOption("#lab-kernel", "custom");
+  await page.fill("#lab-custom", "1, 2, 1");
+  await page.fill("#lab-divisor", "");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.filterShown === "custom");
+  await idle(page);
+  await clickAt(page, 100, 50);
+  await page.waitForSelector("#lab-explain-link");
+  const shown2 = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+  const g2 = await page.evaluate(async () => (await import("./lab/lab.js")).greyForTests([99, 50, 3, 1]));
+  assert.ok(Math.abs(shown2 - (g2[0] + 2 * g2[1] + g2[2]) / 4) < 1e-12);
+  const r2 = await followExplain(page, "#lab-explain-link");
+  assert.equal(r2.v, shown2);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("the template box is dragged by mouse and touch and moved by the keyboard; the matching runs again where it is dropped", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab({ hasTouch: true });
+  await sample(page, "aero1.jpg");
+  await page.selectOption("#lab-family", "correlation");
+  await page.selectOption("#lab-second", "same");
+  await page.selectOption("#lab-template", "11");
+  await page.fill("#lab-reach", "12");
+  await clickAt(page, 300, 200);
+  await page.waitForFunction(() => document.body.dataset.matched === "300,200");
+  await idle(page);
+  assert.match(await page.textContent("#lab-template-pos"), /centred on column 300, row 200/);
+  // drag with the mouse: grab the box's centre, move by (+40, +30) image pixels
+  const from = await pagePos(page, 300, 200);
+  const to = await pagePos(page, 340, 230);
+  await page.mouse.move(from.pageX, from.pageY);
+  await page.mouse.down();
+  for (let i = 1; i <= 5; i++) await page.mouse.move(from.pageX + ((to.pageX - from.pageX) * i) / 5, from.pageY + ((to.pageY - from.pageY) * i) / 5);
+  assert.match(await page.textContent("#lab-template-pos"), /\(moving\)/);
+  await page.mouse.up();
+  await page.waitForFunction(() => document.body.dataset.matched && document.body.dataset.matched === document.body.dataset.template && document.body.dataset.matched !== "300,200");
+  await idle(page);
+  const [c1, r1] = (await page.evaluate(() => document.body.dataset.template)).split(",").map(Number);
+  assert.ok(Math.abs(c1 - 340) <= 1 && Math.abs(r1 - 230) <= 1, `${c1}, ${r1}`);
+  // the template found in its own photo where it was cut out: ρ = 1 at its centre
+  assert.match(await page.textContent("#lab-match"), new RegExp(`c ${c1}, r ${r1}, ρ = 1(?![.\\d])`));
+  // drag by touch (pointer events from touch input)
+  const cdp = await context.newCDPSession(page);
+  const a = await pagePos(page, c1, r1);
+  const b = await pagePos(page, c1 - 50, r1 + 20);
+  await cdp.send("Input.dispatchTouchEvent", { type: "touchStart", touchPoints: [{ x: a.pageX, y: a.pageY }] });
+  for (let i = 1; i <= 5; i++) {
+    await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: [{ x: a.pageX + ((b.pageX - a.pageX) * i) / 5, y: a.pageY + ((b.pageY - a.pageY) * i) / 5 }] });
+  }
+  await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
+  await page.waitForFunction((old) => document.body.dataset.matched === document.body.dataset.template && document.body.dataset.matched !== old, `${c1},${r1}`);
+  await idle(page);
+  const [c2, r2] = (await page.evaluate(() => document.body.dataset.template)).split(",").map(Number);
+  assert.ok(Math.abs(c2 - (c1 - 50)) <= 1 && Math.abs(r2 - (r1 + 20)) <= 1, `${c2}, ${r2}`);
+  // the keyboard: three steps right, one big step down (Shift: 10 pixels)
+  await page.focus("#lab-template-handle");
+  for (let i = 0; i < 3; i++) await page.keyboard.press("ArrowRight");
+  await page.keyboard.press("Shift+ArrowDown");
+  const want = `${c2 + 3},${r2 + 10}`;
+  assert.match(await page.textContent("#lab-template-pos"), new RegExp(`column ${c2 + 3}, row ${r2 + 10}`));
+  assert.equal(await page.getAttribute("#lab-template-pos", "aria-live"), "polite");
+  await page.waitForFunction((w) => document.body.dataset.matched === w, want);
+  await idle(page);
+  assert.match(await page.textContent("#lab-match"), new RegExp(`c ${c2 + 3}, r ${r2 + 10}, ρ = 1(?![.\\d])`));
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("fiducials: the student clicks the four marks, refines them, redoes one, and the fits' residuals are drawn and checked", { timeout: TEST_TIMEOUT * 3 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "frame");
+  await page.selectOption("#lab-family", "fiducials");
+  const truth = await page.evaluate(async () => (await import("./lab/lab.js")).truthForTests());
+  assert.equal(await page.evaluate(() => document.body.dataset.fidNext), "1");
+  assert.match(await page.textContent("#lab-fid-prompt"), /Click fiducial 1 \(left/);
+  // click each mark a little off its true centre; the refinement finds it
+  const off = [[1.5, -1], [-1, 1.2], [0.8, 1.4], [-1.3, -0.7]];
+  for (let k = 0; k < 4; k++) {
+    await clickAt(page, truth.marks[2 * k] + off[k][0], truth.marks[2 * k + 1] + off[k][1]);
+    await page.waitForFunction((n) => document.body.dataset.fidNext === n, k === 3 ? "done" : String(k + 2));
+    if (k < 3) assert.match(await page.textContent("#lab-fid-prompt"), new RegExp(`Click fiducial ${k + 2} \\(`));
+  }
+  await page.waitForSelector("#lab-fid-fit");
+  await idle(page);
+  const errors = (await page.locator("#lab-fid-table td.lab-fid-error").allTextContents()).map(Number);
+  assert.equal(errors.length, 4);
+  for (const e of errors) assert.ok(e < 0.1, `refined mark ${e} px from the truth`);
+  const moved = await page.locator("#lab-fid-table tr:nth-child(2) td:nth-child(4)").textContent();
+  assert.match(moved, /^1\.[5-9]\d* px|^1\.[5-9] px/, moved);
+  let res = JSON.parse(await page.evaluate(() => document.body.dataset.fidResiduals));
+  // the affine model fits the frame's distortion: residuals of the measuring noise only;
+  // the similarity cannot take the two scales 0.2 % apart and the shear: ~0.1 mm
+  for (const v of res.affine) assert.ok(Math.abs(v) < 0.01, `affine residual ${v} mm`);
+  const simMax = Math.max(...res.similarity.map(Math.abs));
+  assert.ok(simMax > 0.05 && simMax < 0.3, `similarity residuals up to ${simMax} mm`);
+  const A = (await page.evaluate(() => document.body.dataset.fidAffine)).split(",").map(Number);
+  for (const i of [0, 1, 3, 4]) assert.ok(Math.abs(A[i] - truth.affine[i]) < 1e-4, `${A} vs ${truth.affine}`);
+  assert.match(await page.textContent("#lab-fid-scale"), new RegExp(`drawn ${res.times}× enlarged; the yellow bar is [\\d.]+ µm`));
+  assert.match(await page.textContent("#lab-fid-truth"), /from the true mark centres; your affine differs from the true one by at most [\d.]+ µm/);
+
+  // redo mark 2 without refinement, 4 px to the right of the truth
+  await page.uncheck("#lab-fid-refine");
+  await page.click("#lab-fid-redo-2");
+  assert.match(await page.textContent("#lab-fid-prompt"), /Click fiducial 2 \(right\) again/);
+  const clickC = truth.marks[2] + 4;
+  await clickAt(page, clickC, truth.marks[3]);
+  await page.waitForFunction(() => document.body.dataset.fidNext === "done");
+  await page.waitForFunction((old) => document.body.dataset.fidResiduals !== old, JSON.stringify(res));
+  await idle(page);
+  res = JSON.parse(await page.evaluate(() => document.body.dataset.fidResiduals));
+  const err2 = Number(await page.locator("#lab-fid-table tr:nth-child(3) td.lab-fid-error").textContent());
+  assert.ok(Math.abs(err2 - 4) < 1, `mark 2 clicked ${err2} px from the truth`);
+  // 4 px = 1 mm along x at mark 2: the affine's residuals take up part of it
+  const biggest = Math.max(...res.affine.map(Math.abs));
+  assert.ok(biggest > 0.1 && biggest < 1, `largest affine residual ${biggest} mm`);
+  // the arrows are drawn (red, the affine's) on the photo
+  const red = await page.$eval(".lab-canvas", (cv) => {
+    const d = cv.getContext("2d").getImageData(0, 0, cv.width, cv.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] > 180 && d[i + 1] < 90 && d[i + 2] < 90) n++;
+    return n;
+  });
+  assert.ok(red > 20, `red arrow pixels: ${red}`);
+  // Example 4 with these measurements gives the same residuals (the same core fit)
+  const { v } = await followExplain(page, "#lab-fid-link", "point_residuals");
+  const flat = v.flat();
+  for (let i = 0; i < 8; i++) assert.ok(Math.abs(flat[i] - res.affine[i]) < 1e-12, `${flat} vs ${res.affine}`);
+
+  // the keyboard alternative: the four true positions typed, no refinement: a perfect fit
+  await page.goBack();
+  await page.waitForSelector("#lab-sample");
+  await sample(page, "frame");
+  await page.selectOption("#lab-family", "fiducials");
+  await page.uncheck("#lab-fid-refine");
+  const typed = [0, 1, 2, 3].map((k) => `${truth.marks[2 * k]}, ${truth.marks[2 * k + 1]}`).join("; ");
+  await page.fill("#lab-fid-typed", typed);
+  await page.click("#lab-fid-use");
+  await page.waitForSelector("#lab-fid-fit");
+  await idle(page);
+  res = JSON.parse(await page.evaluate(() => document.body.dataset.fidResiduals));
+  for (const x of res.affine) assert.ok(Math.abs(x) < 1e-9, `affine residual ${x} mm for the true positions`);
+  await page.fill("#lab-fid-typed", "1, 2; 3");
+  await page.click("#lab-fid-use");
+  assert.match(await page.textContent("#lab-error"), /^positions: type four positions/);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+/** A 2048² test image: 64-pixel checkerboard (50/200) with a texture. */
+async function openBig(page) {
+  await page.evaluate(async () => {
+    const n = 2048;
+    const bytes = new Uint8Array(n * n);
+    for (let r = 0; r < n; r++) for (let c = 0; c < n; c++) bytes[r * n + c] = (((c >> 6) + (r >> 6)) & 1 ? 200 : 50) + ((c * 7 + r * 13) % 17);
+    await (await import("./lab/lab.js")).openRawForTests(n, n, bytes, "big2048");
+  });
+  await page.waitForFunction(() => document.body.dataset.image === "big2048");
+  await idle(page);
+}
+
+const bigGrey = (c, r) => (((c >> 6) + (r >> 6)) & 1 ? 200 : 50) + ((c * 7 + r * 13) % 17);
+
+/** The k×k mean of the big image at (c, r), replicating the edge. */
+function bigMean(c, r, k) {
+  const h = (k - 1) / 2;
+  let s = 0;
+  for (let dr = -h; dr <= h; dr++) for (let dc = -h; dc <= h; dc++) s += bigGrey(Math.min(2047, Math.max(0, c + dc)), Math.min(2047, Math.max(0, r + dr)));
+  return s / (k * k);
+}
+
+async function setRange(page, selector, values, gapMs) {
+  await page.evaluate(async ([sel, vs, gap]) => {
+    const input = document.querySelector(sel);
+    for (const v of vs) {
+      input.value = String(v);
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      await new Promise((res) => setTimeout(res, gap));
+    }
+  }, [selector, values, gapMs]);
+}
+
+test("live sliders on a 2048² image: the newest filter size wins (the running one is cancelled), the Förstner threshold re-uses the kept map", { timeout: TEST_TIMEOUT * 5 }, async () => {
+  const { page, log, context } = await openLab();
+  await openBig(page);
+  await page.selectOption("#lab-family", "filters");
+  await page.selectOption("#lab-kernel", "mean-k");
+  await page.selectOption("#lab-border", "replicate");
+  await setRange(page, "#lab-size", [5], 0);
+  await page.waitForFunction(() => document.body.dataset.filterShown === "mean 5×5", null, { timeout: 60_000 });
+  await idle(page);
+  let s = await labState(page, 1000, 1000);
+  assert.ok(Math.abs(s.value - bigMean(1000, 1000, 5)) < 1e-9);
+  // a fast drag: 7, 9, 11, 13 — 40 ms apart
+  await setRange(page, "#lab-size", [7, 9, 11, 13], 40);
+  // meanwhile the last result stays on screen, the progress shows with Cancel
+  s = await labState(page, 1000, 1000);
+  assert.equal(s.layer, "mean 5×5");
+  await page.waitForSelector("#lab-progress:not([hidden]) #lab-cancel");
+  assert.match(await page.textContent("#lab-progress"), /Filtering \(mean 13×13\)…/);
+  assert.match(await page.textContent("#lab-notice"), /stopped for the newer setting/);
+  await page.waitForFunction(() => document.body.dataset.filterShown === "mean 13×13", null, { timeout: 90_000 });
+  await idle(page);
+  const cancels = Number(await page.evaluate(() => document.body.dataset.filterCancels));
+  console.log(`# ${cancels} filter runs cancelled; the last restart (new worker, the 2048² photo back) took ${await page.evaluate(() => document.body.dataset.restartMs)} ms`);
+  assert.ok(cancels >= 3, `cancels: ${cancels}`);
+  for (const [c, r] of [[1000, 1000], [3, 2], [2047, 640]]) {
+    s = await labState(page, c, r);
+    assert.equal(s.layer, "mean 13×13");
+    assert.ok(Math.abs(s.value - bigMean(c, r, 13)) < 1e-9, `(${c}, ${r}): ${s.value} vs ${bigMean(c, r, 13)}`);
+  }
+  // nothing stale arrives afterwards
+  await page.waitForTimeout(1500);
+  assert.equal(await page.evaluate(() => document.body.dataset.filterShown), "mean 13×13");
+  assert.equal((await labState(page, 1000, 1000)).layer, "mean 13×13");
+  assert.equal(await page.locator("#lab-progress").isHidden(), true);
+
+  // Förstner: the map once, then the threshold slider only re-thresholds it
+  await page.selectOption("#lab-family", "interest");
+  await page.selectOption("#lab-interest", "forstner");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.threshold === "0.5" && document.body.dataset.forstnerLive === "idle", null, { timeout: 90_000 });
+  await idle(page);
+  const sent0 = (await labState(page)).sent;
+  assert.equal(sent0.forstnerMaps, 1);
+  const runs0 = await page.evaluate(() => document.body.dataset.mapRuns);
+  await setRange(page, "#lab-threshold", [0.3, 0.6, 0.9, 1.2, 1.5], 10);
+  await page.waitForFunction(() => document.body.dataset.threshold === "1.5" && document.body.dataset.forstnerLive === "idle", null, { timeout: 30_000 });
+  const sent1 = (await labState(page)).sent;
+  assert.equal(sent1.forstnerMaps, 1, "a threshold change asked for a new map");
+  assert.equal(await page.evaluate(() => document.body.dataset.mapRuns), runs0, "the worker computed a map again");
+  assert.ok(sent1.forstnerPoints - sent0.forstnerPoints >= 1 && sent1.forstnerPoints - sent0.forstnerPoints <= 5);
+  const livePoints = Number(await page.evaluate(() => document.body.dataset.points));
+  const pointsMs = Number(await page.evaluate(() => document.body.dataset.pointsMs));
+  console.log(`# Förstner re-threshold of the kept 2048² map: ${pointsMs} ms in the worker; ${livePoints} points at T = 1.5 px`);
+  await page.waitForTimeout(500);
+  assert.equal(await page.evaluate(() => document.body.dataset.threshold), "1.5");
+  // the same points as a full run at T = 1.5 (map and points computed afresh)
+  await page.click("#lab-run");
+  await page.waitForFunction((r) => document.body.dataset.mapRuns !== r && document.body.dataset.forstnerLive === "idle", runs0, { timeout: 90_000 });
+  await idle(page);
+  assert.equal(Number(await page.evaluate(() => document.body.dataset.points)), livePoints);
+  assert.ok(livePoints > 100, `${livePoints} points on the checkerboard`);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
