@@ -142,6 +142,36 @@ describe("a practice variant", () => {
     }
   });
 
+  test("UTM: the zone and easting graded, the forgotten false easting named, the meridian carried from the student's zone", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", `#/utm?practice=${CODE}`);
+      const v = await variantOf(page, "utm", CODE);
+      assert.equal(await page.locator(".answer").count(), 12);
+      // a zone off by one, then the central meridian that follows from it: consistent
+      const zone = v.result.zone + 1;
+      await answer(page, "zone", String(zone));
+      assert.equal(await box(page, "zone").getAttribute("data-verdict"), "wrong");
+      await answer(page, "central_meridian", String(6 * zone - 183));
+      assert.equal(await box(page, "central_meridian").getAttribute("data-verdict"), "consistent");
+      assert.match(await feedback(page, "central_meridian"), /Consistent with your Zone \(step 1\)/);
+      // the right zone: correct
+      await answer(page, "zone", String(v.result.zone));
+      assert.equal(await box(page, "zone").getAttribute("data-verdict"), "correct");
+      // the easting without its 500 000 m: named
+      await answer(page, "easting", (v.result.easting - 500000).toFixed(3));
+      assert.equal(await box(page, "easting").getAttribute("data-verdict"), "wrong");
+      assert.equal(await box(page, "easting").getAttribute("data-mistake"), "false easting forgotten");
+      // the easting to the centimetre (the box's tolerance), with a decimal comma
+      await answer(page, "easting", v.result.easting.toFixed(2).replace(".", ","));
+      assert.equal(await box(page, "easting").getAttribute("data-verdict"), "correct");
+      assert.match(await box(page, "easting").innerText(), /Tolerance ± 0\.01 m/);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("the hint ladder: nudge, formula, numbers, worked step, and the page says what was revealed", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {
@@ -152,7 +182,8 @@ describe("a practice variant", () => {
       assert.match(await b.locator('.hint[data-rung="1"]').innerText(), /pixel size times the scale number/);
       assert.match(await page.locator(".practice-revealed").innerText(), /a nudge \(1 of 4\)/);
       await button.click();
-      assert.ok((await b.locator('.hint[data-rung="2"] .katex').count()) >= 1);
+      // the formula is typeset when KaTeX has arrived (it loads after the first numbers)
+      await b.locator('.hint[data-rung="2"] .katex').first().waitFor({ timeout: WAIT });
       await button.click();
       const numbers = await b.locator('.hint[data-rung="3"]').innerText();
       assert.ok(numbers.includes("?"), numbers);
