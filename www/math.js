@@ -15,7 +15,8 @@
 //      8", a table keeping its first column); what still cannot fit (one
 //      huge atom) becomes a labelled, focusable scroll region.
 // katex.render builds the DOM itself and escapes its input; when it fails
-// (bad LaTeX, or KaTeX did not load) the raw LaTeX is shown as text.
+// on bad LaTeX the raw LaTeX is shown as text; when KaTeX did not load, the
+// plain-text form (plainTex) stays.
 
 // KaTeX is off the critical path (issue 19): the first numbers do not wait for
 // it. A formula asked for before KaTeX has arrived is drawn at once as plain
@@ -23,7 +24,7 @@
 // .formula-pending; the first such formula starts loading KaTeX (script and
 // stylesheet), and when both are in every pending formula is typeset in place
 // and fitted. <html data-math> says where that is: "loading", "ready" or
-// "failed" (then the raw LaTeX stays, as before).
+// "failed" (then the plain text stays).
 //
 // The minified UMD build (76 KB gzipped) rather than katex.mjs (146 KB
 // gzipped, not minified): loaded by a script element, it sets window.katex.
@@ -114,8 +115,12 @@ const PLAIN_SYMBOLS = {
 };
 const SUPERSCRIPTS = { 0: "⁰", 1: "¹", 2: "²", 3: "³", 4: "⁴", 5: "⁵", 6: "⁶", 7: "⁷", 8: "⁸", 9: "⁹", "-": "⁻", "+": "⁺" };
 
+/** Combining marks for accents: \bar{A} → Ā (A + U+0304). */
+const ACCENTS = { bar: "\u0304", overline: "\u0305", hat: "\u0302", tilde: "\u0303", vec: "\u20d7" };
+const accented = (a, acc) => (/^[A-Za-z]$/.test(a) ? a + ACCENTS[acc] : `${a}${ACCENTS[acc]}`);
+
 /**
- * A formula as plain text, shown until KaTeX has arrived: every number as
+ * A formula as plain text, shown until KaTeX has arrived (and kept if it cannot load): every number as
  * written, \frac{a}{b} as (a)/(b), \sqrt{x} as √(x), Greek letters and
  * operators as characters, matrices as [a b; c d].
  * @param {string} tex
@@ -128,7 +133,9 @@ export function plainTex(tex) {
     s = s
       .replace(new RegExp(String.raw`\\[dt]?frac\s*${arg}\s*${arg}`, "g"), (m, a, b) => `${/^[\w.]+$/.test(a) ? a : `(${a})`}/${/^[\w.]+$/.test(b) ? b : `(${b})`}`)
       .replace(new RegExp(String.raw`\\sqrt\s*(?:\[([^\]]*)\])?\s*${arg}`, "g"), (m, n, a) => `${n ? SUPERSCRIPTS[n] ?? n : ""}√(${a})`)
-      .replace(new RegExp(String.raw`\\(?:text|mathrm|mathbf|mathit|operatorname|boldsymbol|mathsf|textbf|textit|hat|bar|tilde|vec|overline)\s*${arg}`, "g"), "$1")
+      .replace(new RegExp(String.raw`\\(bar|overline|hat|tilde|vec)\s*${arg}`, "g"), (m, acc, a) => accented(a, acc))
+      .replace(/\\(bar|hat|tilde|vec)\s+([A-Za-z])/g, (m, acc, a) => accented(a, acc))
+      .replace(new RegExp(String.raw`\\(?:text|mathrm|mathbf|mathit|operatorname|boldsymbol|mathsf|textbf|textit)\s*${arg}`, "g"), "$1")
       .replace(new RegExp(String.raw`\^${arg}`, "g"), (m, a) => ([...a].every((c) => SUPERSCRIPTS[c]) ? [...a].map((c) => SUPERSCRIPTS[c]).join("") : `^(${a})`))
       .replace(new RegExp(String.raw`_${arg}`, "g"), (m, a) => (a.length > 1 ? `_(${a})` : `_${a}`));
     if (s === before) break;
@@ -562,10 +569,13 @@ export function renderFormula(tex, className = "formula") {
     startMath();
     return el;
   }
+  // KaTeX could not be loaded: the plain text stays (readable numbers, not LaTeX source)
   el.classList.add("formula-raw");
-  const code = document.createElement("code");
-  code.textContent = String(tex);
-  el.append(code);
+  el.dataset.tex = String(tex);
+  const text = document.createElement("span");
+  text.className = "formula-plain";
+  text.textContent = plainTex(tex);
+  el.append(text);
   return el;
 }
 

@@ -114,6 +114,25 @@ describe("network", () => {
   });
 });
 
+describe("numbers before formulas", () => {
+  test("with KaTeX unreachable the first solution still shows every number, formulas as plain text", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page } = await open(env.browser);
+    try {
+      await page.route(/\/vendor\/katex\//, (route) => route.abort());
+      assert.equal(await visit(page, env.url, "index.html", "#/gsd"), "ok");
+      assert.equal(await page.evaluate(() => document.documentElement.dataset.math), "failed");
+      assert.ok(await page.evaluate(() => performance.getEntriesByName("first-solution").length === 1));
+      // the answer and the results are there, and the formulas are readable text
+      assert.ok(Math.abs((await exact(page, "gsd_cm")) - 35.6491) < 1e-3);
+      assert.match(await page.locator(".answer-line, .answer").first().innerText(), /35\.649/);
+      assert.equal(await page.locator(".steps .katex").count(), 0);
+      assert.match(await page.locator(".steps").innerText(), /GSD = p · m/);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
 describe("catalog and embed", () => {
   test("the catalog lists every example of CATALOG.md, grouped by topic, coming ones marked", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page } = await open(env.browser);

@@ -138,6 +138,7 @@ describe("assets.mjs: finding references", () => {
 describe("plainTex: a formula readable before KaTeX arrives", () => {
   it("keeps every number and writes fractions, products, roots and Greek letters as text", () => {
     assert.equal(plainTex(String.raw`\frac{1}{m} = \frac{f}{H}`), "1/m = f/H");
+    assert.equal(plainTex(String.raw`\bar A = 529/9, \bar{B} = 59.11`), "A\u0304 = 529/9, B\u0304 = 59.11");
     assert.equal(plainTex(String.raw`\text{GSD} = p \cdot m = 356.4912\ \text{mm}`), "GSD = p · m = 356.4912 mm");
     assert.equal(plainTex(String.raw`\rho = \frac{1149.222}{\sqrt{843.5556 \times 2604.889}}`), "ρ = 1149.222/(√(843.5556 × 2604.889))");
     assert.equal(plainTex(String.raw`\sigma^{2} + x_{i}`), "σ² + x_i");
