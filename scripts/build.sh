@@ -2,7 +2,7 @@
 # Builds the release wasm and assembles the static site in dist/:
 #   dist/index.html, embed.html, *.js, style.css   (from www/)
 #   dist/pkg/<module>.js + <module>_bg.wasm        (wasm-bindgen --target web; web/*)
-#   dist/pkg/photogrammetry_playground.js          (the one-package API, www/pkg/)
+#   dist/pkg/photogrammetry_playground.js, examples.js  (the JS API entries, hand-written in www/api/)
 #   dist/catalog.json                              (the catalog, from the Rust entries)
 #   dist/vendor/katex/                             (KaTeX from its npm package)
 set -euo pipefail
@@ -19,7 +19,9 @@ cargo build --release --target wasm32-unknown-unknown --workspace --lib
 
 rm -rf dist
 mkdir -p dist/pkg dist/lab/pkg dist/vendor/katex
-cp -R www/. dist/   # www/pkg/ holds the hand-written packages (photogrammetry_playground.js, examples.js)
+cp -R www/. dist/
+# the hand-written API entries (www/api/) sit beside the generated modules they load
+mv dist/api/* dist/pkg/ && rmdir dist/api
 # wasm-bindgen for each module, two at a time: dist/pkg/<name>.js + <name>_bg.wasm
 modules=$(cd web && ls -d */ | tr -d /)
 for name in $modules; do echo "$name"; done | xargs -P 2 -I{} \

@@ -92,9 +92,9 @@ fn matrix_text_round_trip_and_ragged_rows() {
 }
 
 #[test]
-fn validate_fills_defaults_and_rejects_unknown() {
+fn validate_fills_defaults_and_rejects_unknown() -> crate::error::Result<()> {
     let fields = [dpi()];
-    let used = validate(&fields, &Record::new()).unwrap();
+    let used = validate(&fields, &Record::new())?;
     assert_eq!(used.number("dpi"), Some(600.0));
     assert!(is_seed(&fields, &used));
     let e = validate(&fields, &Record::new().with("dpu", 3.0)).unwrap_err();
@@ -102,4 +102,5 @@ fn validate_fills_defaults_and_rejects_unknown() {
         e.to_string(),
         "dpu: unknown field (this example takes: dpi)"
     );
+    Ok(())
 }
