@@ -7,6 +7,7 @@
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
+import fs from "node:fs";
 import path from "node:path";
 import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
 
@@ -70,6 +71,13 @@ async function clickPixel(page, c, r, selector = ".lab-canvas") {
   await page.click(selector, { position: { x, y } });
 }
 
+/** Moves the mouse over image pixel (c, r) of the main view. */
+async function hoverPixel(page, c, r) {
+  await page.locator("#lab-stage .lab-canvas").scrollIntoViewIfNeeded();
+  const g = await page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+  await page.mouse.move(g.left + ((c + 0.5) * g.zoom + g.ox) * (g.w / g.cw), g.top + ((r + 0.5) * g.zoom + g.oy) * (g.h / g.ch));
+}
+
 /** Follows the explain link and reads the example's exact result. */
 async function followExplain(page, selector = "#lab-explain-link") {
   const a = page.locator(selector).first();
@@ -97,6 +105,12 @@ test("the lab loads its own module only when it opens, and every sample opens", 
     if (w) assert.match(info, new RegExp(`${w} × ${h} pixels`), info);
     const s = await canvasStats(page);
     assert.ok(s.sum > 0, `${id}: nothing drawn`);
+    // OpenCV's photos link their licence's full text (kept beside them)
+    const licence = page.locator("#lab-sample-licence");
+    if (/^(aero|left)/.test(id)) {
+      const text = await page.evaluate(async (href) => (await fetch(href)).text(), await licence.getAttribute("href"));
+      assert.match(text, /Apache License\s+Version 2\.0, January 2004/);
+    } else assert.equal(await licence.count(), 0, id);
   }
   assert.ok(log.requests.some((u) => /photogrammetry_lab_bg(\.[0-9a-f]{8})?\.wasm$/.test(u)));
   assert.deepEqual(log.pageErrors, []);
@@ -130,10 +144,15 @@ test("files of each format open; a bad file says its name and why, and the lab k
     const info = await page.textContent("#lab-info");
     assert.ok(info.includes(`${w} × ${h} pixels`) && info.includes(kind), info);
   }
-  // the 16-bit value is kept: hover the last pixel of grey16.png
+  // the 16-bit value is kept: hover the last pixel of grey16.png, whose value make_corpus.py
+  // writes as 1000·c + 20000·r + 7 = 43007 at (3, 2) (more than 8 bits can hold)
   await page.setInputFiles("#lab-file", path.join(CORPUS, "grey16.png"));
   await page.waitForFunction(() => document.body.dataset.image === "grey16.png");
   await idle(page);
+  for (const [c, r] of [[3, 2], [0, 0], [1, 2]]) {
+    await hoverPixel(page, c, r);
+    assert.equal(await page.textContent("#lab-inspector"), `c ${c}, r ${r} · grey ${1000 * c + 20000 * r + 7}`);
+  }
   for (const [file, says] of [["truncated.png", "PNG"], ["bad_crc.png", "damaged"], ["zero_width.png", "PNG"], ["huge_header.png", "too large"],
     ["bomb.png", "megapixels"], ["missing_tag.tif", "TIFF"], ["text.png", "not a PNG, JPEG or TIFF"], ["empty.png", "empty"], ["truncated.jpg", "cut short"]]) {
     await page.setInputFiles("#lab-file", path.join(CORPUS, file));
@@ -154,13 +173,215 @@ test("files of each format open; a bad file says its name and why, and the lab k
   await context.close();
 });
 
-test("each operator family draws its layer, and a clicked pixel opens its example with the same number", { timeout: TEST_TIMEOUT * 4 }, async () => {
+test("a file dropped on the lab or pasted into it opens, its pixels decoded", { timeout: TEST_TIMEOUT }, async () => {
+  const { page, log, context } = await openLab();
+  const file = async (name, type) => ({ name, type, bytes: [...fs.readFileSync(path.join(CORPUS, name))] });
+  // drop: a drop event on the lab carrying a DataTransfer with the file
+  await page.evaluate(({ name, type, bytes }) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([new Uint8Array(bytes)], name, { type }));
+    const lab = document.getElementById("lab");
+    lab.dispatchEvent(new DragEvent("dragover", { dataTransfer: dt, bubbles: true, cancelable: true }));
+    lab.dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, await file("grey8_strips.tif", "image/tiff"));
+  await page.waitForFunction(() => document.body.dataset.image === "grey8_strips.tif");
+  await idle(page);
+  assert.match(await page.textContent("#lab-info"), /4 × 3 pixels, TIFF, grey, 8-bit/);
+  assert.equal(await page.evaluate(() => document.getElementById("lab").classList.contains("lab-drop")), false);
+  // grey8 in make_corpus.py: 10·c + 40·r
+  const grey8 = (c, r) => 10 * c + 40 * r;
+  assert.deepEqual(await page.evaluate(async () => (await import("./lab/lab.js")).greyForTests([0, 0, 4, 3])),
+    [0, 1, 2].flatMap((r) => [0, 1, 2, 3].map((c) => grey8(c, r))));
+  // paste: a paste event whose clipboard holds the file
+  await page.evaluate(({ name, type, bytes }) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([new Uint8Array(bytes)], name, { type }));
+    document.dispatchEvent(new ClipboardEvent("paste", { clipboardData: dt, bubbles: true, cancelable: true }));
+  }, await file("grey16.png", "image/png"));
+  await page.waitForFunction(() => document.body.dataset.image === "grey16.png");
+  await idle(page);
+  assert.deepEqual(await page.evaluate(async () => (await import("./lab/lab.js")).greyForTests([0, 0, 4, 3])),
+    [0, 1, 2].flatMap((r) => [0, 1, 2, 3].map((c) => 1000 * c + 20000 * r + 7)));
+  assert.equal(await page.locator("#lab-error").isHidden(), true);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+// ------------------------------------------------------------------ the values of each family, worked out here
+
+/** The photo's grey values as a function g(c, r), the edge replicated (the lab's default border). */
+async function greyOf(page) {
+  const info = await page.$eval("#lab-info", (e) => e.textContent);
+  const [, w, h] = info.match(/(\d+) × (\d+) pixels/).map(Number);
+  const grey = await page.evaluate(async ([w, h]) => (await import("./lab/lab.js")).greyForTests([0, 0, w, h]), [w, h]);
+  const g = (c, r) => grey[Math.min(h - 1, Math.max(0, r)) * w + Math.min(w - 1, Math.max(0, c))];
+  return { g, w, h };
+}
+
+/** Σ k[j][i] · g(c + i − a, r + j − a) / d: a kernel applied as written (no flip), centred. */
+function correlate(g, k, d, c, r) {
+  const a = (k.length - 1) / 2;
+  let s = 0;
+  for (let j = 0; j < k.length; j++) for (let i = 0; i < k.length; i++) s += k[j][i] * g(c + i - a, r + j - a);
+  return s / d;
+}
+
+const KERNELS = {
+  mean: [[[1, 1, 1], [1, 1, 1], [1, 1, 1]], 9],
+  "gaussian-5": [[[1, 4, 6, 4, 1], [4, 16, 24, 16, 4], [6, 24, 36, 24, 6], [4, 16, 24, 16, 4], [1, 4, 6, 4, 1]], 256],
+  "laplacian-8": [[[1, 1, 1], [1, -8, 1], [1, 1, 1]], 1],
+  sharpen: [[[1, -8, 1], [-8, 37, -8], [1, -8, 1]], 9],
+};
+// the course's edge kernels (seed 000): gx = top row minus bottom row, gy = right column minus left
+const EDGE = {
+  sobel: { gx: [[1, 2, 1], [0, 0, 0], [-1, -2, -1]], gy: [[-1, 0, 1], [-2, 0, 2], [-1, 0, 1]] },
+  prewitt: { gx: [[1, 1, 1], [0, 0, 0], [-1, -1, -1]], gy: [[-1, 0, 1], [-1, 0, 1], [-1, 0, 1]] },
+};
+
+function median3(g, c, r) {
+  const v = [];
+  for (let j = -1; j <= 1; j++) for (let i = -1; i <= 1; i++) v.push(g(c + i, r + j));
+  return v.sort((a, b) => a - b)[4];
+}
+
+/** Förstner's w and q of the size×size window centred on (c, r): central differences over its interior (Example 13). */
+function forstner(g, c, r, size) {
+  const a = (size - 1) / 2;
+  let [xx, xy, yy] = [0, 0, 0];
+  for (let y = r - a + 1; y <= r + a - 1; y++) {
+    for (let x = c - a + 1; x <= c + a - 1; x++) {
+      const gx = (g(x + 1, y) - g(x - 1, y)) / 2;
+      const gy = (g(x, y + 1) - g(x, y - 1)) / 2;
+      xx += gx * gx;
+      xy += gx * gy;
+      yy += gy * gy;
+    }
+  }
+  const det = xx * yy - xy * xy;
+  const tr = xx + yy;
+  return { w: det / tr, q: (4 * det) / (tr * tr) };
+}
+
+/** Moravec's mean of the four squared directional differences over the interior of the size×size window anchored at (c, r) (Example 14). */
+function moravec(g, c, r, size) {
+  const a = Math.floor((size - 1) / 2);
+  let s = 0;
+  let n = 0;
+  for (let y = r - a + 1; y <= r - a + size - 2; y++) {
+    for (let x = c - a + 1; x <= c - a + size - 2; x++) {
+      s += (g(x + 1, y) - g(x - 1, y)) ** 2 + (g(x, y + 1) - g(x, y - 1)) ** 2 + (g(x + 1, y + 1) - g(x - 1, y - 1)) ** 2 + (g(x - 1, y + 1) - g(x + 1, y - 1)) ** 2;
+      n++;
+    }
+  }
+  return s / n;
+}
+
+/** The colour the lab's legend promises for v: grey from black (min) to white (max); signed: blue (−m) – white (0) – red (+m), m = max |v|. */
+function colourOf(v, { signed, min, max }) {
+  if (!signed) {
+    const g = Math.round(((v - min) / (max > min ? max - min : 1)) * 255);
+    return [g, g, g];
+  }
+  const t = v / (Math.max(Math.abs(min), Math.abs(max)) || 1);
+  const end = t < 0 ? [33, 102, 172] : [178, 24, 43];
+  const u = Math.min(1, Math.abs(t));
+  return end.map((e) => Math.round(255 - u * (255 - e)));
+}
+
+/** The main canvas's RGB at the centre of image pixel (c, r). */
+async function canvasAt(page, c, r) {
+  return page.evaluate(async ([c, r]) => {
+    const g = (await import("./lab/lab.js")).viewForTests();
+    const cv = document.querySelector("#lab-stage .lab-canvas");
+    const x = Math.floor((c + 0.5) * g.zoom + g.ox);
+    const y = Math.floor((r + 0.5) * g.zoom + g.oy);
+    return Array.from(cv.getContext("2d").getImageData(x, y, 1, 1).data.slice(0, 3));
+  }, [c, r]);
+}
+
+const layerAt = (page, name, pixels) => page.evaluate(async ([n, p]) => (await import("./lab/lab.js")).layerForTests(n, p), [name, pixels]);
+
+const close = (a, b, tol = 1e-4) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(b));
+
+test("each operator family: the layer's values at chosen pixels equal the course's formulas worked out here, drawn in the legend's colours", { timeout: TEST_TIMEOUT * 4 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "camera.png");
+  const { g } = await greyOf(page);
+  // corners and edges (the replicated border) and the inside
+  const pixels = [[0, 0], [511, 511], [0, 300], [511, 7], [200, 300], [250, 150], [300, 300], [100, 420], [37, 481], [401, 66]];
+  const inner = pixels.filter(([c, r]) => c >= 8 && r >= 8 && c < 504 && r < 504);
+  const g3 = (k) => (c, r) => correlate(g, ...KERNELS[k], c, r);
+  const runs = [
+    ["filters", { "#lab-kernel": "mean" }, { mean: g3("mean") }, pixels],
+    ["filters", { "#lab-kernel": "gaussian-5" }, { "gaussian-5": g3("gaussian-5") }, pixels],
+    ["filters", { "#lab-kernel": "laplacian-8" }, { "laplacian-8": g3("laplacian-8") }, pixels],
+    ["filters", { "#lab-kernel": "sharpen" }, { sharpen: g3("sharpen") }, pixels],
+    ["filters", { "#lab-kernel": "median" }, { median: (c, r) => median3(g, c, r) }, pixels],
+    ...["sobel", "prewitt"].map((op) => ["edges", { "#lab-operator": op }, {
+      gx: (c, r) => correlate(g, EDGE[op].gx, 1, c, r),
+      gy: (c, r) => correlate(g, EDGE[op].gy, 1, c, r),
+      magnitude: (c, r) => Math.hypot(correlate(g, EDGE[op].gx, 1, c, r), correlate(g, EDGE[op].gy, 1, c, r)),
+      direction: (c, r) => (Math.atan2(correlate(g, EDGE[op].gy, 1, c, r), correlate(g, EDGE[op].gx, 1, c, r)) * 180) / Math.PI,
+    }, pixels]),
+    ["interest", { "#lab-interest": "forstner" }, { w: (c, r) => forstner(g, c, r, 5).w, q: (c, r) => forstner(g, c, r, 5).q }, inner],
+    ["interest", { "#lab-interest": "moravec" }, { moravec: (c, r) => moravec(g, c, r, 4) }, inner],
+  ];
+  for (const [family, setup, want, at] of runs) {
+    await page.selectOption("#lab-family", family);
+    for (const [sel, v] of Object.entries(setup)) await page.selectOption(sel, v);
+    await page.click("#lab-run");
+    await idle(page);
+    if (family === "interest") await page.waitForFunction(() => document.body.dataset.forstnerLive !== "busy");
+    const what = `${family} ${Object.values(setup).join(" ")}`;
+    for (const [name, f] of Object.entries(want)) {
+      const got = await layerAt(page, name, at);
+      assert.ok(got, `${what}: no layer ${name}`);
+      at.forEach(([c, r], i) => {
+        const v = got.values[i];
+        assert.ok(v !== null && close(v, f(c, r)), `${what} ${name} at (${c}, ${r}): the lab ${v}, worked out here ${f(c, r)}`);
+      });
+    }
+    // the shown layer's pixels are drawn in the legend's colours (opacity 1: the layer alone; the
+    // interest families' points are drawn on top, so their colours are not read)
+    if (family === "interest") continue;
+    await page.$eval("#lab-opacity", (i) => {
+      i.value = "1";
+      i.dispatchEvent(new Event("input", { bubbles: true }));
+    });
+    for (const name of family === "edges" ? ["gx", "magnitude"] : Object.keys(want)) {
+      await page.selectOption("#lab-layer", { label: name });
+      const got = await layerAt(page, name, pixels);
+      const legend = await page.textContent("#lab-legend");
+      if (got.signed) {
+        const m = Math.max(Math.abs(got.min), Math.abs(got.max));
+        assert.ok(legend.includes(`−${Number(m.toPrecision(5))}`) && legend.includes("blue negative, red positive"), `${name}: ${legend}`);
+      }
+      for (const [i, [c, r]] of pixels.entries()) {
+        const rgb = await canvasAt(page, c, r);
+        const exp = colourOf(got.values[i], got);
+        assert.ok(rgb.every((x, k) => Math.abs(x - exp[k]) <= 2), `${what} ${name} ${got.values[i]} at (${c}, ${r}) drawn ${rgb}, the legend says ${exp}`);
+      }
+    }
+    await page.$eval("#lab-opacity", (i) => {
+      i.value = "0.7";
+      i.dispatchEvent(new Event("input", { bubbles: true }));
+    });
+  }
+  // the signed layers were signed, the others not
+  assert.equal((await layerAt(page, "moravec", [])).signed, false);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("a clicked pixel of each family opens its worked example with the same number (Prewitt's gx and gy too)", { timeout: TEST_TIMEOUT * 5 }, async () => {
   const { page, log, context } = await openLab();
   const checks = [
-    // family, set-up, expected layer, pixel
+    // family, set-up, layer to show, pixel
     ["filters", async () => page.selectOption("#lab-kernel", "gaussian-5"), "gaussian-5", [200, 300]],
-    ["filters", async () => page.selectOption("#lab-kernel", "laplacian-8"), "laplacian-8", [250, 150]],
+    ["filters", async () => page.selectOption("#lab-kernel", "median"), "median", [250, 150]],
     ["edges", async () => page.selectOption("#lab-operator", "sobel"), "magnitude", [300, 300]],
+    ["edges", async () => page.selectOption("#lab-operator", "prewitt"), "gx", [300, 300]],
+    ["edges", async () => page.selectOption("#lab-operator", "prewitt"), "gy", [120, 222]],
     ["interest", async () => page.selectOption("#lab-interest", "forstner"), "w", [260, 120]],
     ["interest", async () => page.selectOption("#lab-interest", "moravec"), "moravec", [100, 420]],
   ];
@@ -168,19 +389,20 @@ test("each operator family draws its layer, and a clicked pixel opens its exampl
     await page.goto(`${env.url}index.html#/lab`);
     await page.waitForSelector("#lab-sample");
     await sample(page, "camera.png");
-    const before = await canvasStats(page);
     await page.selectOption("#lab-family", family);
     await setup();
     await page.click("#lab-run");
     await idle(page);
+    if (family === "interest") await page.waitForFunction(() => document.body.dataset.forstnerLive !== "busy");
+    await page.selectOption("#lab-layer", { label: layer });
     assert.equal(await page.evaluate(() => document.body.dataset.layer), layer);
-    const after = await canvasStats(page);
-    assert.notEqual(after.sum, before.sum, `${family}/${layer}: the layer changed no pixel`);
-    if (layer === "laplacian-8") assert.ok(after.coloured > 1000, "a signed layer is drawn in the diverging colours");
+    const inLab = (await layerAt(page, layer, [[c, r]])).values[0];
     await clickPixel(page, c, r);
     await page.waitForSelector("#lab-explain-link");
     const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+    assert.equal(shown, inLab, `${family}/${layer}: the explained value is the layer's at (${c}, ${r})`);
     const { v, href } = await followExplain(page);
+    if (family === "edges") assert.match(href, new RegExp(`#/edge-window.*operator=${layer === "magnitude" ? "sobel" : "prewitt"}`), href);
     assert.equal(v, shown, `${href}: the example gives ${v}, the lab showed ${shown}`);
   }
   assert.deepEqual(log.pageErrors, []);

@@ -53,6 +53,32 @@ export function stateForTests(c = 0, r = 0) {
   return { sent: { ...lab.client.sent }, layer: layer?.name ?? null, value };
 }
 
+/**
+ * Test hook: the result layer `name` (null: the shown one) at the pixels
+ * `[[c, r], …]` (null outside it or where not finite), with its smallest
+ * and largest finite value and whether it is signed.
+ */
+export function layerForTests(name = null, pixels = []) {
+  const lab = current;
+  if (!lab) return null;
+  const layer = name === null ? lab.layers[Number(lab.layerSelect.value)] : lab.layers.find((l) => l.name === name);
+  if (!layer) return null;
+  let min = Infinity;
+  let max = -Infinity;
+  for (const v of layer.data) {
+    if (Number.isFinite(v)) {
+      if (v < min) min = v;
+      if (v > max) max = v;
+    }
+  }
+  const values = pixels.map(([c, r]) => {
+    if (c < layer.c0 || r < layer.r0 || c >= layer.c0 + layer.width || r >= layer.r0 + layer.height) return null;
+    const v = layer.data[(r - layer.r0) * layer.width + (c - layer.c0)];
+    return Number.isFinite(v) ? v : null;
+  });
+  return { name: layer.name, signed: Boolean(layer.signed), min, max, values, names: lab.layers.map((l) => l.name) };
+}
+
 /** Test hook: the open photo's grey values in the box [c, r, w, h], row-major. */
 export function greyForTests([c, r, w, h]) {
   const img = current?.image;
@@ -98,6 +124,7 @@ class Lab {
     this.points = [];
     this.client = new LabClient({ onRestart: (why) => this.restart(why) });
     this.build();
+    this.showEngine();
     this.onPaste = (ev) => {
       const file = [...(ev.clipboardData?.files ?? [])][0];
       if (file) {
@@ -131,6 +158,7 @@ class Lab {
       file.value = "";
     });
     this.info = el("p", { class: "lab-info", id: "lab-info" }, "No image open yet.");
+    this.engine = el("p", { class: "lab-engine muted", id: "lab-engine" }, "Engine: starting…");
     this.error = el("div", { class: "error-box lab-error", role: "alert", id: "lab-error", hidden: true });
     this.notice = el("p", { class: "notice lab-notice", id: "lab-notice", hidden: true });
     this.progress = el("div", { class: "lab-progress", id: "lab-progress", hidden: true, role: "status" });
@@ -161,6 +189,7 @@ class Lab {
         "Open a photo, run an operator of the course over the whole image, and click any result pixel to open the worked example that computes that very number. ",
         "Colour photos become grey by the ITU-R BT.601 weights, grey = 0.299·R + 0.587·G + 0.114·B, without rounding; 16-bit images keep their 0…65535 values. ",
         "Your photo never leaves this browser."),
+      this.engine,
       el("div", { class: "lab-open" },
         el("label", {}, "Sample ", sampleSelect), " ", openSample, " ",
         el("label", { class: "lab-file" }, "Your own PNG, JPEG or TIFF ", file),
@@ -199,6 +228,27 @@ class Lab {
     this.familyBox.replaceChildren();
     this.extra.replaceChildren();
     this.family = def.create(this, this.familyBox);
+  }
+
+  /** The status line: which wasm build runs and on how many threads (workers). */
+  async showEngine() {
+    let e;
+    try {
+      e = await this.client.call("engine");
+    } catch (err) {
+      if (!err.cancelled) this.engine.textContent = `Engine: not available (${err.message}).`;
+      return;
+    }
+    const build = e.build === "simd128" ? "WebAssembly SIMD128" : "WebAssembly (scalar, no SIMD)";
+    const n = this.client.threads;
+    const threads = n > 1
+      ? `filters and edges on ${n} threads (one worker each; the page is cross-origin isolated), the other operators on 1`
+      : globalThis.crossOriginIsolated
+        ? "1 thread (cross-origin isolated, but this device reports one core)"
+        : "1 thread (this page is not cross-origin isolated; serve it with npm start -- --isolate for up to 4)";
+    this.engine.textContent = `Engine: ${build} · ${threads}.`;
+    this.engine.dataset.build = e.build;
+    this.engine.dataset.threads = String(n);
   }
 
   hover(p) {
@@ -350,7 +400,12 @@ class Lab {
     this.viewer.setImage(img);
     this.inspector.textContent = "Point at the image: column c, row r and grey value appear here.";
     const what = `${img.name}: ${img.width} × ${img.height} pixels, ${img.format}, ${img.colour === "colour" ? "colour (shown as grey)" : "grey"}, ${img.bits}-bit`;
-    this.info.replaceChildren(what, sample ? el("span", { class: "muted" }, ` — ${sample.source}, licence ${sample.licence}`) : "");
+    const here = (f) => new URL(`./samples/${f}`, import.meta.url).href;
+    this.info.replaceChildren(what, sample
+      ? el("span", { class: "muted" }, ` — ${sample.source}`,
+        ", licence ",
+        sample.licence === "Apache-2.0" ? el("a", { href: here("LICENSE-Apache-2.0.txt"), id: "lab-sample-licence", title: "The Apache License 2.0, full text" }, sample.licence) : sample.licence)
+      : "");
     document.body.dataset.image = img.name;
     this.family?.imageChanged?.();
   }

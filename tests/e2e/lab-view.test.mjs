@@ -1,0 +1,290 @@
+// The lab's view in Chromium: zoomed in far enough, the grey values are
+// written into the pixels (the drawn text read back and checked against
+// the photo); the keyboard pans and fits; the inspector gives c, r, the
+// grey value and, on the generated scanned frame, x and y in mm; the
+// opacity slider blends the result over the photo; a signed layer (Sobel
+// gx) gets the diverging legend with its range; and the engine line says
+// which build runs on how many threads, on a plain and on a cross-origin
+// isolated server.
+
+import { test, before, after } from "node:test";
+import assert from "node:assert/strict";
+import { chromium } from "playwright-core";
+import { startServer } from "../../scripts/serve.mjs";
+import { start, open, DIST, CHROMIUM, CHROMIUM_ARGS, TEST_TIMEOUT } from "./harness.mjs";
+
+let env;
+before(async () => {
+  env = await start();
+});
+after(async () => {
+  await env?.close();
+});
+
+async function openLab(options, url = env.url, browser = env.browser) {
+  const o = await open(browser, options);
+  // every text written on the main view's canvas: [text, x, y] in the canvas's current transform
+  await o.context.addInitScript(() => {
+    const fill = CanvasRenderingContext2D.prototype.fillText;
+    window.labTexts = [];
+    CanvasRenderingContext2D.prototype.fillText = function (text, x, y, ...rest) {
+      if (this.canvas.closest?.("#lab-stage")) window.labTexts.push([String(text), x, y]);
+      return fill.call(this, text, x, y, ...rest);
+    };
+  });
+  await o.page.goto(`${url}index.html#/lab`);
+  await o.page.waitForSelector("#lab-sample");
+  return o;
+}
+
+async function idle(page) {
+  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 30_000 });
+}
+
+async function sample(page, id) {
+  await page.selectOption("#lab-sample", id);
+  await page.click("#lab-open-sample");
+  await idle(page);
+  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
+}
+
+const view = (page) => page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+const greyBox = (page, box) => page.evaluate(async (b) => (await import("./lab/lab.js")).greyForTests(b), box);
+
+/** Moves the mouse over image pixel (c, r) of the main view. */
+async function hoverPixel(page, c, r) {
+  await page.locator("#lab-stage .lab-canvas").scrollIntoViewIfNeeded();
+  const g = await view(page);
+  await page.mouse.move(g.left + ((c + 0.5) * g.zoom + g.ox) * (g.w / g.cw), g.top + ((r + 0.5) * g.zoom + g.oy) * (g.h / g.ch));
+}
+
+/** The main canvas's RGB at the centre of image pixel (c, r). */
+async function canvasAt(page, c, r) {
+  return page.evaluate(async ([c, r]) => {
+    const g = (await import("./lab/lab.js")).viewForTests();
+    const cv = document.querySelector("#lab-stage .lab-canvas");
+    return Array.from(cv.getContext("2d").getImageData(Math.floor((c + 0.5) * g.zoom + g.ox), Math.floor((r + 0.5) * g.zoom + g.oy), 1, 1).data.slice(0, 3));
+  }, [c, r]);
+}
+
+/** The image pixel under the canvas's centre. */
+function centrePixel(g) {
+  return [Math.floor((g.cw / 2 - g.ox) / g.zoom), Math.floor((g.ch / 2 - g.oy) / g.zoom)];
+}
+
+/** A number as the lab writes it for people: up to 5 significant digits. */
+const fmt = (v) => (Number.isInteger(v) ? String(v) : String(Number(v.toPrecision(5))));
+
+/** The texts written since the last call, as a map "c,r" → text (pixel labels sit at pixel centres c + 0.5, r + 0.5). */
+async function textsDrawn(page) {
+  const t = await page.evaluate(() => window.labTexts.splice(0));
+  const out = new Map();
+  for (const [text, x, y] of t) out.set(`${x - 0.5},${y - 0.5}`, text);
+  return out;
+}
+
+test("zoomed in, the grey values are written in the pixels; the keyboard pans and fits", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "camera.png");
+  const fit = await view(page);
+  await textsDrawn(page);
+  await page.focus("#lab-stage .lab-canvas");
+  // one press at the fitted zoom: no values written yet
+  await page.keyboard.press("+");
+  assert.ok((await view(page)).zoom < 28);
+  assert.equal((await textsDrawn(page)).size, 0, "values written at a small zoom");
+  // zoom in until one image pixel is at least 28 canvas pixels
+  let presses = 1;
+  while ((await view(page)).zoom < 28) {
+    await page.keyboard.press("+");
+    presses++;
+    assert.ok(presses < 40, "the zoom does not grow");
+  }
+  let g = await view(page);
+  assert.ok(Math.abs(g.zoom - fit.zoom * 1.25 ** presses) < 1e-6 * g.zoom, `${g.zoom} after ${presses} presses from ${fit.zoom}`);
+  await textsDrawn(page);
+  await page.keyboard.press("ArrowRight");
+  const after = await view(page);
+  // → moves the view 40 canvas pixels (the image goes left), nothing else changes
+  assert.equal(after.ox, g.ox - 40);
+  assert.equal(after.oy, g.oy);
+  assert.equal(after.zoom, g.zoom);
+  g = after;
+  const texts = await textsDrawn(page);
+  // every visible pixel carries its grey value, and only those
+  const [c0, r0] = [Math.floor(-g.ox / g.zoom), Math.floor(-g.oy / g.zoom)];
+  const [c1, r1] = [Math.floor((g.cw - g.ox) / g.zoom), Math.floor((g.ch - g.oy) / g.zoom)];
+  const grey = await greyBox(page, [c0, r0, c1 - c0 + 1, r1 - r0 + 1]);
+  let written = 0;
+  for (let r = r0; r <= r1; r++) {
+    for (let c = c0; c <= c1; c++) {
+      const want = String(grey[(r - r0) * (c1 - c0 + 1) + (c - c0)]);
+      assert.equal(texts.get(`${c},${r}`), want, `pixel (${c}, ${r})`);
+      written++;
+    }
+  }
+  assert.ok(written >= 12, `${written} pixels in view`);
+  assert.ok(texts.size <= written + 2 * (r1 - r0 + c1 - c0 + 4), `${texts.size} texts for ${written} pixels in view`);
+  // ↓ pans down, ← and ↑ back again, 0 fits the whole photo
+  const [cc, cr] = centrePixel(g);
+  await page.keyboard.press("ArrowDown");
+  assert.equal((await view(page)).oy, g.oy - 40);
+  await page.keyboard.press("ArrowDown");
+  await page.keyboard.press("ArrowDown");
+  const down = centrePixel(await view(page));
+  assert.deepEqual(down, [cc, Math.floor((g.ch / 2 - g.oy + 120) / g.zoom)]);
+  assert.ok(down[1] > cr);
+  await page.keyboard.press("ArrowLeft");
+  await page.keyboard.press("ArrowUp");
+  const moved = await view(page);
+  assert.deepEqual([moved.ox, moved.oy], [g.ox + 40, g.oy - 80]);
+  await page.keyboard.press("0");
+  const back = await view(page);
+  assert.deepEqual([back.zoom, back.ox, back.oy], [fit.zoom, fit.ox, fit.oy]);
+  // the inspector follows the mouse: c, r and the grey value
+  for (const [c, r] of [[0, 0], [511, 511], [123, 456]]) {
+    await hoverPixel(page, c, r);
+    const [v] = await greyBox(page, [c, r, 1, 1]);
+    assert.equal(await page.textContent("#lab-inspector"), `c ${c}, r ${r} · grey ${v}`);
+  }
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("the inspector on the scanned frame: c, r, grey and x, y in mm; at a fiducial, its calibrated position", { timeout: TEST_TIMEOUT }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "frame");
+  const truth = await page.evaluate(async () => (await import("./lab/lab.js")).truthForTests());
+  // lab/src/sample.rs scans the frame at 0.25 mm a pixel, 1000 × 1000 pixels, x right and y up from the centre
+  assert.equal(truth.pixel_mm, 0.25);
+  assert.match(await page.textContent("#lab-info"), /1000 × 1000 pixels/);
+  const m = 499.5;
+  for (const [c, r] of [[0, 0], [999, 0], [500, 500], [731, 212]]) {
+    await hoverPixel(page, c, r);
+    const [v] = await greyBox(page, [c, r, 1, 1]);
+    assert.equal(await page.textContent("#lab-inspector"),
+      `c ${c}, r ${r} · grey ${fmt(v)} · x ${fmt((c - m) * 0.25)} mm, y ${fmt((m - r) * 0.25)} mm (nominal)`);
+  }
+  // at fiducial 1 and 3 (Example 4: x = −113.002, y = 0.008; x = 0.008, y = 112.998 mm), the nominal
+  // scale reads the calibrated position to within the frame's distortion (< 0.5 mm there)
+  for (const [k, x, y] of [[0, -113.002, 0.008], [2, 0.008, 112.998]]) {
+    const [c, r] = [Math.round(truth.marks[2 * k]), Math.round(truth.marks[2 * k + 1])];
+    await hoverPixel(page, c, r);
+    const text = await page.textContent("#lab-inspector");
+    const [, xs, ys] = text.match(/x (-?[\d.]+) mm, y (-?[\d.]+) mm/);
+    assert.ok(Math.abs(Number(xs) - x) < 0.5 && Math.abs(Number(ys) - y) < 0.5, `fiducial ${k + 1}: ${text}`);
+    // the mark is a bright disc on the dark frame
+    assert.ok(Number(text.match(/grey ([\d.]+)/)[1]) > 150, text);
+  }
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("the opacity slider blends the result over the photo; Sobel gx gets the diverging legend with its range", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "camera.png");
+  const grey = await greyBox(page, [0, 0, 512, 512]);
+  const g = (c, r) => grey[Math.min(511, Math.max(0, r)) * 512 + Math.min(511, Math.max(0, c))];
+  // Sobel gx (top row minus bottom row), replicated edge, worked out here over the whole photo
+  const gx = (c, r) => g(c - 1, r - 1) + 2 * g(c, r - 1) + g(c + 1, r - 1) - g(c - 1, r + 1) - 2 * g(c, r + 1) - g(c + 1, r + 1);
+  let [lo, hi] = [Infinity, -Infinity];
+  for (let r = 0; r < 512; r++) {
+    for (let c = 0; c < 512; c++) {
+      lo = Math.min(lo, gx(c, r));
+      hi = Math.max(hi, gx(c, r));
+    }
+  }
+  await page.selectOption("#lab-family", "edges");
+  await page.selectOption("#lab-operator", "sobel");
+  await page.click("#lab-run");
+  await idle(page);
+  await page.selectOption("#lab-layer", { label: "gx" });
+  const mabs = Math.max(-lo, hi);
+  assert.ok(lo < 0 && hi > 0, `gx from ${lo} to ${hi}`);
+  assert.equal(await page.textContent("#lab-legend"),
+    `gx: −${fmt(mabs)}0+${fmt(mabs)} (values from ${fmt(lo)} to ${fmt(hi)}; blue negative, red positive)`);
+  assert.equal(await page.locator("#lab-legend .lab-legend-bar.diverging").count(), 1);
+  // the magnitude is not signed: a grey legend from its smallest to its largest value
+  await page.selectOption("#lab-layer", { label: "magnitude" });
+  assert.match(await page.textContent("#lab-legend"), /^magnitude: 0[\d.]+ \(values from 0 to [\d.]+\)$/);
+  assert.equal(await page.locator("#lab-legend .lab-legend-bar.grey").count(), 1);
+  await page.selectOption("#lab-layer", { label: "gx" });
+
+  // the photo as drawn (its grey range stretched to 0…255) and gx's diverging colour
+  let [glo, ghi] = [Infinity, -Infinity];
+  for (const v of grey) [glo, ghi] = [Math.min(glo, v), Math.max(ghi, v)];
+  const base = (c, r) => Math.round(((g(c, r) - glo) / (ghi - glo)) * 255);
+  const colour = (v) => {
+    const t = v / mabs;
+    const end = t < 0 ? [33, 102, 172] : [178, 24, 43];
+    return end.map((e) => Math.round(255 - Math.abs(t) * (255 - e)));
+  };
+  const setOpacity = (v) => page.$eval("#lab-opacity", (i, v) => {
+    i.value = String(v);
+    i.dispatchEvent(new Event("input", { bubbles: true }));
+  }, v);
+  // pixels where gx is strongly negative, strongly positive and about 0
+  const picks = [];
+  for (let r = 1; r < 511 && picks.length < 3; r += 7) {
+    for (let c = 1; c < 511; c += 5) {
+      const v = gx(c, r);
+      if ((picks.length === 0 && v < -0.5 * mabs) || (picks.length === 1 && v > 0.5 * mabs) || (picks.length === 2 && Math.abs(v) < 0.05 * mabs && g(c, r) < 120)) {
+        picks.push([c, r]);
+        break;
+      }
+    }
+  }
+  assert.equal(picks.length, 3, `pixels found: ${JSON.stringify(picks)}`);
+  for (const opacity of [0, 0.3, 1]) {
+    await setOpacity(opacity);
+    for (const [c, r] of picks) {
+      const b = base(c, r);
+      const want = colour(gx(c, r)).map((l) => opacity * l + (1 - opacity) * b);
+      const got = await canvasAt(page, c, r);
+      assert.ok(got.every((x, k) => Math.abs(x - want[k]) <= 2), `opacity ${opacity} at (${c}, ${r}), gx ${gx(c, r)}: drawn ${got}, expected ${want.map(Math.round)}`);
+    }
+  }
+  // the inspector gives the layer's value too
+  await hoverPixel(page, ...picks[0]);
+  assert.match(await page.textContent("#lab-inspector"), new RegExp(` · gx ${gx(...picks[0])}$`.replace("-", "\\-")));
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("the engine line: the SIMD128 build on one thread, or on several when the page is cross-origin isolated", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await page.waitForFunction(() => !/starting/.test(document.getElementById("lab-engine").textContent));
+  assert.equal(await page.evaluate(() => globalThis.crossOriginIsolated), false);
+  assert.equal(await page.textContent("#lab-engine"),
+    "Engine: WebAssembly SIMD128 · 1 thread (this page is not cross-origin isolated; serve it with npm start -- --isolate for up to 4).");
+  // the line is the worker's own answer
+  const engine = await page.evaluate(async () => {
+    const { LabClient } = await import("./lab/client.js");
+    const c = new LabClient({ onRestart: async () => {} });
+    const e = await c.call("engine");
+    c.close();
+    return e;
+  });
+  assert.deepEqual(engine, { build: "simd128", simd: true });
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+
+  const isolated = await startServer({ dir: DIST, port: 0, isolate: true });
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  try {
+    const o = await openLab({}, isolated.url, browser);
+    await o.page.waitForFunction(() => !/starting/.test(document.getElementById("lab-engine").textContent));
+    assert.equal(await o.page.evaluate(() => globalThis.crossOriginIsolated), true);
+    const cores = await o.page.evaluate(() => navigator.hardwareConcurrency);
+    const n = Math.min(4, cores);
+    assert.equal(await o.page.textContent("#lab-engine"), n > 1
+      ? `Engine: WebAssembly SIMD128 · filters and edges on ${n} threads (one worker each; the page is cross-origin isolated), the other operators on 1.`
+      : "Engine: WebAssembly SIMD128 · 1 thread (cross-origin isolated, but this device reports one core).");
+    assert.equal(await o.page.getAttribute("#lab-engine", "data-threads"), String(n));
+    assert.deepEqual(o.log.pageErrors, []);
+    await o.context.close();
+  } finally {
+    await browser.close().catch(() => {});
+    await isolated.close();
+  }
+});
