@@ -2,9 +2,9 @@
 // filters family (checked at its field, explained by filter-window with the
 // same number), the template box dragged by mouse and touch and moved by
 // the keyboard, the student's own fiducial measurements from clicks to
-// residuals, and the live sliders on a 2048² image (the newest value wins,
-// a running computation is cancelled, the Förstner threshold re-uses the
-// kept map).
+// residuals, the live sliders on a 2048² image (the newest value wins,
+// whatever the machine's speed; the Förstner threshold re-uses the kept
+// map), and Cancel during a long run (the photo and settings kept).
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";

@@ -52,23 +52,11 @@ async function canvasStats(page, selector = ".lab-canvas") {
   });
 }
 
-/** Clicks the main canvas at image pixel (c, r) of the image in view (fitted). */
-async function clickPixel(page, c, r, selector = ".lab-canvas") {
-  const pos = await page.$eval(selector, (cv, [c, r]) => {
-    const b = cv.getBoundingClientRect();
-    return { w: b.width, h: b.height, cw: cv.width, ch: cv.height };
-  }, [c, r]);
-  const img = await page.evaluate(() => document.body.dataset.image);
-  assert.ok(img);
-  // ask the viewer through the canvas: zoom/offset are not public, so click by the image's fitted geometry
-  const info = await page.$eval("#lab-info", (e) => e.textContent);
-  const [, w, h] = info.match(/(\d+) × (\d+) pixels/).map(Number);
-  const zoom = Math.min(pos.cw / w, pos.ch / h);
-  const ox = (pos.cw - w * zoom) / 2;
-  const oy = (pos.ch - h * zoom) / 2;
-  const x = ((c + 0.5) * zoom + ox) * (pos.w / pos.cw);
-  const y = ((r + 0.5) * zoom + oy) * (pos.h / pos.ch);
-  await page.click(selector, { position: { x, y } });
+/** Clicks image pixel (c, r) of the main view (page coordinates from the view's own geometry). */
+async function clickPixel(page, c, r) {
+  await page.locator("#lab-stage .lab-canvas").scrollIntoViewIfNeeded();
+  const g = await page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+  await page.mouse.click(g.left + ((c + 0.5) * g.zoom + g.ox) * (g.w / g.cw), g.top + ((r + 0.5) * g.zoom + g.oy) * (g.h / g.ch));
 }
 
 /** Moves the mouse over image pixel (c, r) of the main view. */
@@ -399,6 +387,7 @@ test("a clicked pixel of each family opens its worked example with the same numb
     const inLab = (await layerAt(page, layer, [[c, r]])).values[0];
     await clickPixel(page, c, r);
     await page.waitForSelector("#lab-explain-link");
+    assert.match(await page.textContent("#lab-explain"), new RegExp(`at column ${c}, row ${r}:`));
     const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
     assert.equal(shown, inLab, `${family}/${layer}: the explained value is the layer's at (${c}, ${r})`);
     const { v, href } = await followExplain(page);

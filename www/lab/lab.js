@@ -289,6 +289,9 @@ class Lab {
     this.clearError();
     const t0 = performance.now();
     let timer = null;
+    // progress is the elapsed time, not a fraction: each request is one
+    // wasm call, which cannot report from inside without cutting every
+    // operator into bands
     const showProgress = () => {
       const s = ((performance.now() - t0) / 1000).toFixed(1);
       const cancel = el("button", { type: "button", id: "lab-cancel" }, "Cancel");
