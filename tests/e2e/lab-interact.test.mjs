@@ -322,7 +322,7 @@ test("live sliders on a 2048² image: the newest filter size wins (the running o
   // for once; each run is either stopped by the next value or drawn; what is drawn only ever
   // grows (no older result after a newer one); the result layer never leaves the screen;
   // and the last one drawn is the slider's final value.
-  const sent0 = (await labState(page)).sent.filter;
+  const filterSent0 = (await labState(page)).sent.filter;
   const cancels0 = Number(await page.evaluate(() => document.body.dataset.filterCancels ?? 0));
   await page.evaluate(() => {
     window.labShown = [];
@@ -339,7 +339,7 @@ test("live sliders on a 2048² image: the newest filter size wins (the running o
   const shown = await page.evaluate(() => window.labShown);
   const sizes = shown.map((t) => Number(t.match(/^mean (\d+)×/)[1]));
   assert.ok(sizes.every((k, i) => i === 0 || k > sizes[i - 1]) && sizes.at(-1) === 13, `drawn in this order: ${shown}`);
-  assert.equal((await labState(page)).sent.filter - sent0, 4, "each slider value asked for once");
+  assert.equal((await labState(page)).sent.filter - filterSent0, 4, "each slider value asked for once");
   const cancels = Number(await page.evaluate(() => document.body.dataset.filterCancels ?? 0)) - cancels0;
   assert.equal(cancels + shown.length, 4, `${cancels} runs stopped, ${shown.length} drawn`);
   if (cancels > 0) assert.match(await page.textContent("#lab-notice"), /stopped for the newer setting/);

@@ -295,7 +295,11 @@ class Lab {
     const showProgress = () => {
       const s = ((performance.now() - t0) / 1000).toFixed(1);
       const cancel = el("button", { type: "button", id: "lab-cancel" }, "Cancel");
-      cancel.addEventListener("click", () => this.client.cancel());
+      cancel.addEventListener("click", () => {
+        // the student's own Cancel is always said (a live slider's own cancels are quiet)
+        this.cancelledByUser = true;
+        this.client.cancel();
+      });
       this.progress.replaceChildren(el("span", { class: "lab-spinner", "aria-hidden": "true" }), `${label}… ${s} s `, cancel);
       this.progress.hidden = false;
       timer = setTimeout(showProgress, 250);
@@ -310,7 +314,7 @@ class Lab {
       return result;
     } catch (e) {
       if (e.cancelled) {
-        if (!quietCancel) this.say("Cancelled. The photo and the settings are kept.");
+        if (!quietCancel || this.cancelledByUser) this.say("Cancelled. The photo and the settings are kept.");
       }
       else if (!e.trapped) this.showError(e.message);
       return null;
@@ -319,6 +323,7 @@ class Lab {
       if (this.client.restarting) await this.client.restarting;
       this.active--;
       if (this.active === 0) {
+        this.cancelledByUser = false;
         this.progress.hidden = true;
         this.progress.replaceChildren();
         document.body.dataset.lab = "idle";
