@@ -97,7 +97,7 @@ export function meanKernel(k) {
 
 const filters = {
   id: "filters",
-  title: "Filters (smoothing, Laplacian, sharpening, median, custom)",
+  title: "Filters (smoothing, sharpening, median)",
   create(lab, box) {
     const kernels = [...KERNELS, ["mean-k", "k×k mean (size slider, live)"], ["custom", "Custom kernel (type it)"]];
     const [kernel, kernelLabel] = select("lab-kernel", "Kernel", kernels, "mean");
