@@ -449,14 +449,15 @@ class Lab {
       this.legend.hidden = true;
       return;
     }
-    const bar = el("span", { class: `lab-legend-bar ${scale.signed ? "diverging" : "grey"}`, "aria-hidden": "true" });
-    const ends = scale.signed
-      ? [`−${fmt(scale.hi)}`, "0", `+${fmt(scale.hi)}`]
-      : [fmt(scale.lo), fmt(scale.hi)];
+    const bar = (kind) => el("span", { class: `lab-legend-bar ${kind}`, "aria-hidden": "true" });
+    const end = (t) => el("span", { class: "lab-legend-end" }, t);
+    // signed: −m, blue to white, 0, white to red, +m (0 in the middle, where white is)
+    const scaleParts = scale.signed
+      ? [end(`−${fmt(scale.hi)}`), bar("negative"), end("0"), bar("positive"), end(`+${fmt(scale.hi)}`)]
+      : [end(fmt(scale.lo)), bar("grey"), end(fmt(scale.hi))];
     this.legend.append(
       el("span", { class: "lab-legend-name" }, `${layer.name}: `),
-      el("span", { class: "lab-legend-end" }, ends[0]), bar,
-      ...ends.slice(1).map((t) => el("span", { class: "lab-legend-end" }, t)),
+      ...scaleParts,
       el("span", { class: "muted" }, ` (values from ${fmt(scale.min)} to ${fmt(scale.max)}${scale.signed ? "; blue negative, red positive" : ""})`),
     );
     this.legend.hidden = false;

@@ -116,6 +116,7 @@ export class Viewer {
     const [lo, hi] = rangeOf(img.grey);
     // the full range of the sample depth, stretched when the image uses little of it
     const top = hi > lo ? hi : lo + 1;
+    this.baseRange = [lo, top];
     for (let i = 0; i < img.grey.length; i++) {
       const g = Math.round(((img.grey[i] - lo) / (top - lo)) * 255);
       rgba[i * 4] = rgba[i * 4 + 1] = rgba[i * 4 + 2] = g;
@@ -364,23 +365,30 @@ export class Viewer {
     const r0 = Math.max(0, Math.floor(-this.oy / this.zoom));
     const c1 = Math.min(img.width - 1, Math.ceil((w - this.ox) / this.zoom));
     const r1 = Math.min(img.height - 1, Math.ceil((this.canvas.height - this.oy) / this.zoom));
-    ctx.font = `${0.28}px sans-serif`;
+    ctx.font = `${0.3}px sans-serif`;
     ctx.textAlign = "center";
     ctx.textBaseline = "middle";
     const l = this.layer;
+    const [lo, top] = this.baseRange;
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
-        let v = img.grey[r * img.width + c];
-        if (layerOnly && l) {
-          const inside = c >= l.c0 && r >= l.r0 && c < l.c0 + l.width && r < l.r0 + l.height;
-          v = inside ? l.data[(r - l.r0) * l.width + (c - l.c0)] : NaN;
-        }
+        const grey = img.grey[r * img.width + c];
+        const inside = l && c >= l.c0 && r >= l.r0 && c < l.c0 + l.width && r < l.r0 + l.height;
+        const lv = inside ? l.data[(r - l.r0) * l.width + (c - l.c0)] : NaN;
+        const v = layerOnly ? lv : grey;
         if (!Number.isFinite(v)) continue;
+        // the colour the pixel is drawn in: the photo's grey, the layer's colour over it
+        const g = ((grey - lo) / (top - lo)) * 255;
+        let rgb = layerOnly ? [0, 0, 0] : [g, g, g];
+        if (Number.isFinite(lv) && this.layerCanvas) {
+          const s = this.scale;
+          const lc = s.signed ? diverging(lv / s.hi) : Array(3).fill(((lv - s.lo) / (s.hi - s.lo)) * 255);
+          const a = layerOnly ? 1 : this.opacity;
+          rgb = rgb.map((x, k) => a * lc[k] + (1 - a) * x);
+        }
+        // dark text on light pixels, light on dark ones
+        ctx.fillStyle = 0.299 * rgb[0] + 0.587 * rgb[1] + 0.114 * rgb[2] > 140 ? "#000" : "#fff";
         const text = Number.isInteger(v) ? String(v) : v.toFixed(Math.abs(v) < 10 ? 2 : 1);
-        ctx.lineWidth = 0.06;
-        ctx.strokeStyle = "#000";
-        ctx.fillStyle = "#fff";
-        ctx.strokeText(text, c + 0.5, r + 0.5, 0.95);
         ctx.fillText(text, c + 0.5, r + 0.5, 0.95);
       }
     }
