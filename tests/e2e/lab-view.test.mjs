@@ -23,12 +23,12 @@ after(async () => {
 
 async function openLab(options, url = env.url, browser = env.browser) {
   const o = await open(browser, options);
-  // every text written on the main view's canvas: [text, x, y] in the canvas's current transform
+  // every text written on the main view's canvas: [text, x, y, colour] (x, y in the canvas's current transform)
   await o.context.addInitScript(() => {
     const fill = CanvasRenderingContext2D.prototype.fillText;
     window.labTexts = [];
     CanvasRenderingContext2D.prototype.fillText = function (text, x, y, ...rest) {
-      if (this.canvas.closest?.("#lab-stage")) window.labTexts.push([String(text), x, y]);
+      if (this.canvas.closest?.("#lab-stage")) window.labTexts.push([String(text), x, y, this.fillStyle]);
       return fill.call(this, text, x, y, ...rest);
     };
   });
@@ -75,11 +75,14 @@ function centrePixel(g) {
 /** A number as the lab writes it for people: up to 5 significant digits. */
 const fmt = (v) => (Number.isInteger(v) ? String(v) : String(Number(v.toPrecision(5))));
 
-/** The texts written since the last call, as a map "c,r" → text (pixel labels sit at pixel centres c + 0.5, r + 0.5). */
-async function textsDrawn(page) {
+/** The texts written since the last call, as a map "c,r" → text (pixel labels sit at pixel centres c + 0.5, r + 0.5); `colours` the same for their colours. */
+async function textsDrawn(page, colours = null) {
   const t = await page.evaluate(() => window.labTexts.splice(0));
   const out = new Map();
-  for (const [text, x, y] of t) out.set(`${x - 0.5},${y - 0.5}`, text);
+  for (const [text, x, y, colour] of t) {
+    out.set(`${x - 0.5},${y - 0.5}`, text);
+    colours?.set(`${x - 0.5},${y - 0.5}`, colour);
+  }
   return out;
 }
 
@@ -110,16 +113,22 @@ test("zoomed in, the grey values are written in the pixels; the keyboard pans an
   assert.equal(after.oy, g.oy);
   assert.equal(after.zoom, g.zoom);
   g = after;
-  const texts = await textsDrawn(page);
-  // every visible pixel carries its grey value, and only those
+  const colours = new Map();
+  const texts = await textsDrawn(page, colours);
+  // every visible pixel carries its grey value (black on light grey, white on dark), and only those
   const [c0, r0] = [Math.floor(-g.ox / g.zoom), Math.floor(-g.oy / g.zoom)];
   const [c1, r1] = [Math.floor((g.cw - g.ox) / g.zoom), Math.floor((g.ch - g.oy) / g.zoom)];
   const grey = await greyBox(page, [c0, r0, c1 - c0 + 1, r1 - r0 + 1]);
+  // the photo is drawn with its grey range stretched to 0…255
+  const all = await greyBox(page, [0, 0, 512, 512]);
+  const [glo, ghi] = [Math.min(...all), Math.max(...all)];
   let written = 0;
   for (let r = r0; r <= r1; r++) {
     for (let c = c0; c <= c1; c++) {
       const want = String(grey[(r - r0) * (c1 - c0 + 1) + (c - c0)]);
       assert.equal(texts.get(`${c},${r}`), want, `pixel (${c}, ${r})`);
+      const drawn = ((Number(want) - glo) / (ghi - glo)) * 255;
+      assert.equal(colours.get(`${c},${r}`), drawn > 140 ? "#000000" : "#ffffff", `pixel (${c}, ${r}), grey ${want} drawn as ${drawn}`);
       written++;
     }
   }
