@@ -444,6 +444,10 @@ test("resampling side by side, boundaries with chain code, and the fiducial work
   assert.equal(views, 3);
   const [n, b] = [await canvasStats(page, "#lab-methods figure:nth-child(1) canvas"), await canvasStats(page, "#lab-methods figure:nth-child(2) canvas")];
   assert.notEqual(n.sum, b.sum, "nearest and bilinear look different on the zoomed crop");
+  // the same crop in the three: each view has the output's centre pixel at its own centre
+  const centres = await page.$$eval("#lab-methods canvas", (cs) => cs.map((c) => c.labViewer.toImage(c.width / 2, c.height / 2).map((v) => Math.round(v * 100) / 100)));
+  // brick.png is 512 × 512, and so is the output: its centre pixel is (256, 256)
+  for (const xy of centres) assert.deepEqual(xy, [256, 256], `view centres ${JSON.stringify(centres)}`);
   // explain a bilinear pixel
   const bilinear = page.locator("#lab-methods figure:nth-child(2) canvas");
   const box = await bilinear.boundingBox();

@@ -88,6 +88,8 @@ export class Viewer {
     this.canvas.tabIndex = 0;
     this.canvas.setAttribute("role", "img");
     this.canvas.setAttribute("aria-label", opts.label);
+    // the view behind a canvas (the tests read its geometry)
+    this.canvas.labViewer = this;
     host.append(this.canvas);
     this.image = null;
     this.base = null;
@@ -165,12 +167,20 @@ export class Viewer {
     const aspect = img ? (img.height / (img.width * (this.mode === "beside" && this.layer ? 2 : 1))) : 0.75;
     const h = Math.round(Math.min(Math.max(220, w * aspect), window.innerHeight * 0.7));
     const dpr = window.devicePixelRatio || 1;
+    const [oldW, oldH] = [this.canvas.width, this.canvas.height];
     this.canvas.style.height = `${h}px`;
     this.canvas.width = Math.round(w * dpr);
     this.canvas.height = Math.round(h * dpr);
     this.dpr = dpr;
-    if (!this.fitted) this.fit();
-    else this.draw();
+    // the whole image stays fitted until the student zooms or pans; after
+    // that (or a zoomTo) the image point at the view's centre stays there
+    if (!this.fitted || this.atFit) this.fit();
+    else {
+      const panels = this.mode === "beside" && this.layer ? 2 : 1;
+      this.ox += (this.canvas.width - oldW) / panels / 2;
+      this.oy += (this.canvas.height - oldH) / 2;
+      this.draw();
+    }
   }
 
   /** The whole image in view. */
@@ -185,6 +195,7 @@ export class Viewer {
     this.ox = (w - this.image.width * this.zoom) / 2;
     this.oy = (this.canvas.height - this.image.height * this.zoom) / 2;
     this.fitted = true;
+    this.atFit = true;
     this.draw();
   }
 
@@ -203,6 +214,15 @@ export class Viewer {
     this.ox = px - (px - this.ox) * k;
     this.oy = py - (py - this.oy) * k;
     this.zoom = z;
+    this.atFit = false;
+    this.draw();
+  }
+
+  /** Moves the image by (dx, dy) canvas pixels. */
+  pan(dx, dy) {
+    this.ox += dx;
+    this.oy += dy;
+    this.atFit = false;
     this.draw();
   }
 
@@ -211,6 +231,7 @@ export class Viewer {
     this.zoom = z;
     this.ox = this.canvas.width / 2 - (c + 0.5) * z;
     this.oy = this.canvas.height / 2 - (r + 0.5) * z;
+    this.atFit = false;
     this.draw();
   }
 
@@ -263,9 +284,7 @@ export class Viewer {
         return;
       }
       moved += Math.abs(p[0] - last[0]) + Math.abs(p[1] - last[1]);
-      this.ox += p[0] - last[0];
-      this.oy += p[1] - last[1];
-      this.draw();
+      this.pan(p[0] - last[0], p[1] - last[1]);
     });
     const up = (ev) => {
       const p = pointers.get(ev.pointerId);
@@ -301,10 +320,10 @@ export class Viewer {
         "=": () => this.zoomAt(1.25, ...mid),
         "-": () => this.zoomAt(0.8, ...mid),
         0: () => this.fit(),
-        ArrowLeft: () => { this.ox += step; this.draw(); },
-        ArrowRight: () => { this.ox -= step; this.draw(); },
-        ArrowUp: () => { this.oy += step; this.draw(); },
-        ArrowDown: () => { this.oy -= step; this.draw(); },
+        ArrowLeft: () => this.pan(step, 0),
+        ArrowRight: () => this.pan(-step, 0),
+        ArrowUp: () => this.pan(0, step),
+        ArrowDown: () => this.pan(0, -step),
       };
       const k = keys[ev.key];
       if (k) {
