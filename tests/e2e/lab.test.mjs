@@ -9,6 +9,7 @@ import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
+import zlib from "node:zlib";
 import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
 
 const CORPUS = path.resolve("lab/tests/corpus");
@@ -36,6 +37,43 @@ async function sample(page, id) {
   await page.click("#lab-open-sample");
   await idle(page);
   await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
+}
+
+/** An 8-bit grey, non-interlaced PNG decoded by hand (chunks, zlib, the five row filters). */
+function decodeGreyPng(buf) {
+  let at = 8;
+  let width = 0;
+  let height = 0;
+  const idat = [];
+  while (at < buf.length) {
+    const len = buf.readUInt32BE(at);
+    const type = buf.toString("latin1", at + 4, at + 8);
+    const body = buf.subarray(at + 8, at + 8 + len);
+    if (type === "IHDR") {
+      [width, height] = [body.readUInt32BE(0), body.readUInt32BE(4)];
+      assert.deepEqual([body[8], body[9], body[12]], [8, 0, 0], "an 8-bit grey, non-interlaced PNG");
+    }
+    if (type === "IDAT") idat.push(body);
+    at += 12 + len;
+  }
+  const raw = zlib.inflateSync(Buffer.concat(idat));
+  const pixels = new Uint8Array(width * height);
+  for (let r = 0; r < height; r++) {
+    const f = raw[r * (width + 1)];
+    for (let c = 0; c < width; c++) {
+      const x = raw[r * (width + 1) + 1 + c];
+      const a = c > 0 ? pixels[r * width + c - 1] : 0;
+      const b = r > 0 ? pixels[(r - 1) * width + c] : 0;
+      const cc = c > 0 && r > 0 ? pixels[(r - 1) * width + c - 1] : 0;
+      const paeth = () => {
+        const p = a + b - cc;
+        const [pa, pb, pc] = [Math.abs(p - a), Math.abs(p - b), Math.abs(p - cc)];
+        return pa <= pb && pa <= pc ? a : pb <= pc ? b : cc;
+      };
+      pixels[r * width + c] = (x + [0, a, b, (a + b) >> 1, f === 4 ? paeth() : 0][f]) & 255;
+    }
+  }
+  return { width, height, pixels };
 }
 
 /** Mean |difference| of the main canvas's pixels between two grabs, and colour. */
@@ -91,8 +129,24 @@ test("the lab loads its own module only when it opens, and every sample opens", 
     await sample(page, id);
     const info = await page.textContent("#lab-info");
     if (w) assert.match(info, new RegExp(`${w} × ${h} pixels`), info);
-    const s = await canvasStats(page);
-    assert.ok(s.sum > 0, `${id}: nothing drawn`);
+    // the photo is drawn: at a few pixels the canvas shows the decoded grey, stretched from its range to 0…255
+    const { g, w: iw, h: ih } = await greyOf(page);
+    let [glo, ghi] = [Infinity, -Infinity];
+    for (let r = 0; r < ih; r++) for (let c = 0; c < iw; c++) [glo, ghi] = [Math.min(glo, g(c, r)), Math.max(ghi, g(c, r))];
+    // (a view smaller than the photo samples one of the pixels about (c, r))
+    const { zoom } = await page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+    const near = zoom >= 1 ? [[0, 0]] : [-1, 0, 1].flatMap((dr) => [-1, 0, 1].map((dc) => [dc, dr]));
+    for (const [c, r] of [[0, 0], [iw - 1, ih - 1], [iw >> 1, ih >> 2], [iw >> 2, (3 * ih) >> 2]]) {
+      const wants = near.map(([dc, dr]) => Math.round(((g(c + dc, r + dr) - glo) / (ghi - glo)) * 255));
+      const rgb = await canvasAt(page, c, r);
+      assert.ok(rgb[0] === rgb[1] && rgb[1] === rgb[2] && wants.some((want) => Math.abs(rgb[0] - want) <= 1), `${id} at (${c}, ${r}), zoom ${zoom}: drawn ${rgb}, grey stretched ${wants}`);
+    }
+    // the PNG samples: the lab's grey values are the file's own, decoded here by zlib
+    if (id.endsWith(".png")) {
+      const png = decodeGreyPng(fs.readFileSync(path.resolve("www/lab/samples", id)));
+      assert.deepEqual([png.width, png.height], [iw, ih]);
+      for (let r = 0; r < ih; r += 7) for (let c = 0; c < iw; c += 3) assert.equal(g(c, r), png.pixels[r * iw + c], `${id} (${c}, ${r})`);
+    }
     // OpenCV's photos link their licence's full text (kept beside them)
     const licence = page.locator("#lab-sample-licence");
     if (/^(aero|left)/.test(id)) {
