@@ -399,7 +399,10 @@ test("Cancel during a long run on a 2048² image: the photo and the settings are
   await page.fill("#lab-divisor", "");
   await page.click("#lab-run");
   await page.waitForSelector("#lab-progress:not([hidden]) #lab-cancel", { timeout: 60_000 });
-  assert.match(await page.textContent("#lab-progress"), /Filtering \(custom\)… \d+\.\d s/);
+  // the rows done so far (the worker runs it by bands of 256 rows, 8 here)
+  await page.waitForFunction(() => /rows/.test(document.getElementById("lab-progress").textContent), null, { timeout: 60_000 });
+  const [, rows, pct] = (await page.textContent("#lab-progress")).match(/^Filtering \(custom\)… rows (\d+) of 2048 \((\d+) %\), \d+\.\d s Cancel$/);
+  assert.ok(Number(rows) % 256 === 0 && Number(rows) >= 256 && Number(rows) <= 2048 && Number(pct) === Math.round((100 * rows) / 2048), `${rows} rows, ${pct} %`);
   await page.click("#lab-cancel");
   await idle(page);
   assert.equal(await page.textContent("#lab-notice"), "Cancelled. The photo and the settings are kept.");

@@ -30,9 +30,13 @@ export class LabClient {
     };
   }
 
-  answer({ id, ok, result, error, trapped }) {
+  answer({ id, ok, result, error, trapped, progress, rows, of }) {
     const p = this.pending.get(id);
     if (!p) return;
+    if (ok === undefined && progress !== undefined) {
+      p.onProgress?.({ progress, rows, of });
+      return;
+    }
     this.pending.delete(id);
     if (ok) {
       p.resolve(result);
@@ -44,8 +48,12 @@ export class LabClient {
     if (trapped) this.replace(`the lab's engine crashed (${error})`);
   }
 
-  /** Sends a request; resolves with its result, rejects with an Error naming the field. */
-  call(type, args = {}, transfer = []) {
+  /**
+   * Sends a request; resolves with its result, rejects with an Error naming
+   * the field. `onProgress({ progress, rows, of })`: the rows done so far,
+   * where the worker can say (filters and edges on an 8-bit image).
+   */
+  call(type, args = {}, transfer = [], onProgress = null) {
     if (this.tiles?.handles(type, args)) {
       this.tiling = (this.tiling || 0) + 1;
       return this.tiles.run(this, type, args).finally(() => this.tiling--);
@@ -54,8 +62,8 @@ export class LabClient {
     // requests sent, by type (the live slider's tests count them)
     this.sent[type] = (this.sent[type] ?? 0) + 1;
     return new Promise((resolve, reject) => {
-      this.pending.set(id, { resolve, reject, type });
-      this.worker.postMessage({ id, type, ...args }, transfer);
+      this.pending.set(id, { resolve, reject, type, onProgress });
+      this.worker.postMessage({ id, type, ...args, ...(onProgress ? { progress: true } : {}) }, transfer);
     });
   }
 

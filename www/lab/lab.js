@@ -289,18 +289,20 @@ class Lab {
     this.clearError();
     const t0 = performance.now();
     let timer = null;
-    // progress is the elapsed time, not a fraction: each request is one
-    // wasm call, which cannot report from inside without cutting every
-    // operator into bands
+    // progress: the elapsed time, and the rows done where the worker can
+    // say (filters and edges run by bands of rows); the others are one wasm
+    // call, which cannot report from inside
+    let done = null;
     const showProgress = () => {
       const s = ((performance.now() - t0) / 1000).toFixed(1);
+      const rows = done ? ` rows ${done.rows} of ${done.of} (${Math.round(done.progress * 100)} %),` : "";
       const cancel = el("button", { type: "button", id: "lab-cancel" }, "Cancel");
       cancel.addEventListener("click", () => {
         // the student's own Cancel is always said (a live slider's own cancels are quiet)
         this.cancelledByUser = true;
         this.client.cancel();
       });
-      this.progress.replaceChildren(el("span", { class: "lab-spinner", "aria-hidden": "true" }), `${label}… ${s} s `, cancel);
+      this.progress.replaceChildren(el("span", { class: "lab-spinner", "aria-hidden": "true" }), `${label}…${rows} ${s} s `, cancel);
       this.progress.hidden = false;
       timer = setTimeout(showProgress, 250);
     };
@@ -310,7 +312,9 @@ class Lab {
     this.active = (this.active ?? 0) + 1;
     document.body.dataset.lab = "busy";
     try {
-      const result = await this.client.call(type, args, transfer);
+      const result = await this.client.call(type, args, transfer, (p) => {
+        done = p;
+      });
       return result;
     } catch (e) {
       if (e.cancelled) {

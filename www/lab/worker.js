@@ -3,6 +3,8 @@
 // big arrays are transferred (not copied) to the page.
 //   request  { id, type, ...args }
 //   answer   { id, ok: true, result } | { id, ok: false, error, trapped }
+//   (filters and edges asked with `progress: true` also send
+//   { id, progress, rows, of } while they run)
 // A wasm trap (WebAssembly.RuntimeError) is reported as `trapped`: the page
 // then drops this worker and starts a fresh one.
 
@@ -59,6 +61,66 @@ function put(slot, img) {
   if (slot === "a") dropForstner();
 }
 
+// Progress of the row-wise operators (filters, edges): when the page asks
+// for it (`progress: true`), an 8-bit image is run in bands of rows, each
+// with HALO rows of real neighbours above and below (the border policy acts
+// only at the image's own edges), a { id, progress, rows, of } message after
+// each band, and the rows each band owns put together: the numbers of one
+// call over the whole image (tests/e2e/lab.test.mjs compares them at every
+// pixel). Other images, and small ones, run in one call.
+
+/** Rows of real neighbours above and below a band: enough for the largest kernel (15×15). */
+const HALO = 7;
+/** Rows a band has at least. */
+const BAND_ROWS = 256;
+
+/** The image's values as bytes when it is 8-bit (cached on it), else null. */
+function bytesOf(img) {
+  if (img.u8 === undefined) {
+    const g = img.grey();
+    img.u8 = g.every((v) => Number.isInteger(v) && v >= 0 && v <= 255) ? Uint8Array.from(g) : null;
+  }
+  return img.u8;
+}
+
+/** `run(image)` (→ layers) over `img`, by bands with progress messages when asked and possible. */
+function banded(id, progress, img, run) {
+  const [width, height] = [img.width(), img.height()];
+  const n = Math.min(16, Math.floor(height / BAND_ROWS));
+  const bytes = progress && n >= 2 ? bytesOf(img) : null;
+  if (!bytes) return run(img);
+  const parts = [];
+  for (let k = 0; k < n; k++) {
+    const [start, end] = [Math.floor((k * height) / n), Math.floor(((k + 1) * height) / n)];
+    const [r0, r1] = [Math.max(0, start - HALO), Math.min(height, end + HALO)];
+    const band = lab.image_from_u8(width, r1 - r0, bytes.subarray(r0 * width, r1 * width));
+    try {
+      parts.push({ start, end, r0, layers: run(band) });
+    } finally {
+      band.free();
+    }
+    self.postMessage({ id, progress: (k + 1) / n, rows: end, of: height });
+  }
+  // the rows each band owns, as the whole image's layers
+  return parts[0].layers.map((first, li) => {
+    const rows = [];
+    let top = null;
+    for (const p of parts) {
+      const l = p.layers[li];
+      for (let j = 0; j < l.height; j++) {
+        const row = p.r0 + l.r0 + j;
+        if (row < p.start || row >= p.end) continue;
+        top ??= row;
+        rows.push(l.data.subarray(j * l.width, (j + 1) * l.width));
+      }
+    }
+    const data = new Float64Array(rows.length * first.width);
+    rows.forEach((r, j) => data.set(r, j * first.width));
+    // a reference-path layer is signed when any of its values is negative: in any band
+    return { ...first, r0: top ?? 0, height: rows.length, signed: parts.some((p) => p.layers[li].signed), data };
+  });
+}
+
 /** Förstner's map of image "a", kept so that a new threshold re-uses it. */
 let forstnerKept = null;
 /** How many Förstner maps this worker has computed (the page's tests read it). */
@@ -89,8 +151,9 @@ const handlers = {
   window({ slot = "a", c, r, w, h }) {
     return need(slot).window(c, r, w, h);
   },
-  filter({ kernel, border, custom, divisor }, transfer) {
-    return { layers: layersOut(lab.run_filter(need("a"), kernel, border, custom, divisor), transfer) };
+  filter({ kernel, border, custom, divisor, progress }, transfer, id) {
+    const layers = banded(id, progress, need("a"), (img) => lab.run_filter(img, kernel, border, custom, divisor));
+    return { layers: layersOut(layers, transfer) };
   },
   checkKernel({ custom, divisor }) {
     return lab.check_custom_kernel(custom, divisor);
@@ -109,8 +172,8 @@ const handlers = {
     const points = forstnerKept.points(sigmaN, thresholdPx, qMin);
     return { points, thresholdPx, size: forstnerKept.size(), mapRuns: forstnerMapRuns, pointsMs: performance.now() - t0 };
   },
-  edges({ operator, border }, transfer) {
-    return { layers: layersOut(lab.run_edges(need("a"), operator, border), transfer) };
+  edges({ operator, border, progress }, transfer, id) {
+    return { layers: layersOut(banded(id, progress, need("a"), (img) => lab.run_edges(img, operator, border)), transfer) };
   },
   forstner({ size, sigmaN, thresholdPx, qMin }, transfer) {
     const r = lab.run_forstner(need("a"), size, sigmaN, thresholdPx, qMin);
@@ -169,7 +232,7 @@ self.onmessage = async (ev) => {
     if (!handler) throw new Error(`unknown request "${type}"`);
     const transfer = [];
     const t0 = performance.now();
-    const result = handler(args, transfer);
+    const result = handler(args, transfer, id);
     // ms: the time inside the worker (for npm run bench -- --lab)
     self.postMessage({ id, ok: true, result, ms: performance.now() - t0 }, transfer);
   } catch (e) {
