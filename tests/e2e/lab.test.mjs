@@ -1,9 +1,12 @@
 // The image lab (#/lab) in Chromium: its module loads only when it opens,
-// every sample and every file format opens, each operator family draws its
-// layer, a bad file is refused with its name and reason while the lab keeps
-// working, a trapped worker is replaced with the image kept, an output
-// pixel opens its worked example with the same number, and the fiducial
-// workflow runs from the marks to the residuals.
+// every sample opens and is drawn as its decoded grey, every file format
+// opens (picked, dropped or pasted; 16-bit values kept), each operator
+// family's layer equals the course's formulas worked out here at chosen
+// pixels and is drawn in its legend's colours, a bad file is refused with
+// its name and reason while the lab keeps working, banded runs (progress)
+// equal one call, a trapped worker is replaced with the image kept, an
+// output pixel opens its worked example with the same number, and the
+// fiducial workflow runs from the marks to the residuals.
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
