@@ -203,7 +203,11 @@ test("files of each format open; a bad file says its name and why, and the lab k
   for (const [file, says] of [["truncated.png", "PNG"], ["bad_crc.png", "damaged"], ["zero_width.png", "PNG"], ["huge_header.png", "too large"],
     ["bomb.png", "megapixels"], ["missing_tag.tif", "TIFF"], ["text.png", "not a PNG, JPEG or TIFF"], ["empty.png", "empty"], ["truncated.jpg", "cut short"]]) {
     await page.setInputFiles("#lab-file", path.join(CORPUS, file));
-    await page.waitForFunction(() => !document.getElementById("lab-error").hidden);
+    // wait for this file's message: the previous file's is still on screen until the worker answers
+    await page.waitForFunction((f) => {
+      const e = document.getElementById("lab-error");
+      return !e.hidden && e.textContent.startsWith(`${f}: `);
+    }, file);
     const msg = await page.textContent("#lab-error");
     assert.ok(msg.startsWith(`${file}: `) && msg.includes(says), msg);
     // still the last good image
