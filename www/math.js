@@ -19,12 +19,15 @@
 // plain-text form (plainTex) stays.
 
 // KaTeX is off the critical path (issue 19): the first numbers do not wait for
-// it. A formula asked for before KaTeX has arrived is drawn at once as plain
-// text (plainTex: the numbers readable, the room taken) and marked
-// .formula-pending; the first such formula starts loading KaTeX (script and
-// stylesheet), and when both are in every pending formula is typeset in place
-// and fitted. <html data-math> says where that is: "loading", "ready" or
-// "failed" (then the plain text stays).
+// it, nor share the network with it. A formula asked for before KaTeX has
+// arrived is drawn at once as plain text (plainTex: the numbers readable, the
+// room taken) and marked .formula-pending; the first such formula schedules
+// KaTeX's load (script and stylesheet) for after the frame that paints those
+// numbers (scheduleMath: no request starts before the page's first-solution
+// mark), and when both are in every pending formula is typeset in place and
+// fitted. <html data-math> says where that is: "loading" (from the
+// scheduling on), "ready" or "failed" (then the plain text stays). whenMath()
+// starts the load at once.
 //
 // The minified UMD build (76 KB gzipped) rather than katex.mjs (146 KB
 // gzipped, not minified): loaded by a script element, it sets window.katex.
@@ -76,6 +79,25 @@ function startMath() {
     })
     .then(typesetPending);
   return loading;
+}
+
+/** After the next frame (the plain-text numbers painted), a hidden tab's timer failing that. */
+const MATH_FALLBACK_MS = 250;
+let scheduled = false;
+
+/**
+ * Starts loading KaTeX once the frame that paints the first formulas is
+ * done: never inside the task that renders the first solution, so KaTeX's
+ * bytes are not on its critical path. A tab without frames (hidden) starts
+ * it by a timer instead. Idempotent, like startMath.
+ */
+function scheduleMath() {
+  if (scheduled || katex || loadError || loading || typeof document === "undefined") return;
+  scheduled = true;
+  document.documentElement.dataset.math = "loading"; // on its way (tests wait for "ready")
+  const go = () => void startMath();
+  requestAnimationFrame(() => setTimeout(go, 0));
+  setTimeout(go, MATH_FALLBACK_MS);
 }
 
 /**
@@ -566,7 +588,7 @@ export function renderFormula(tex, className = "formula") {
     text.textContent = plainTex(tex);
     el.append(text);
     pending.add(el);
-    startMath();
+    scheduleMath();
     return el;
   }
   // KaTeX could not be loaded: the plain text stays (readable numbers, not LaTeX source)
