@@ -425,7 +425,9 @@ const rows = examples.map(({ id, topic }) => {
   };
 });
 
-const head = ["example", "crit KB gz", "total KB gz", "sent KB", "nav ms med (min–max)", "× floor", "throttled ms", "redraw med/worst ms", "input"];
+// the throttled column says which examples it ran: by default the heaviest critical path of each topic ("–": not run)
+const throttledHead = { topics: "throttled ms (heaviest of its topic)", all: "throttled ms (every example)", none: "throttled ms (not run)" }[throttledSet] ?? "throttled ms";
+const head = ["example", "crit KB gz", "total KB gz", "sent KB", "nav ms med (min–max)", "× floor", throttledHead, "redraw med/worst ms", "input"];
 const lines = rows.map((r) => [
   r.id,
   KB(r.critical_gz),
@@ -433,7 +435,7 @@ const lines = rows.map((r) => [
   `${KB(r.critical_sent)}/${KB(r.total_sent)}`,
   `${MS(r.nav_ms.median)} (${MS(r.nav_ms.min)}–${MS(r.nav_ms.max)})`,
   r.ratio.toFixed(2),
-  r.throttled_ms ? MS(r.throttled_ms.median) : "",
+  r.throttled_ms ? MS(r.throttled_ms.median) : "–",
   r.redraw_ms ? `${r.redraw_ms.median.toFixed(1)}/${r.redraw_ms.max.toFixed(1)}` : r.redraw_note ? "n/a" : "",
   r.redraw_field ? `${r.redraw_field} ${r.redraw_values.join("↔")}${r.redraw_note ? ` (${r.redraw_note})` : ""}` : r.redraw_note,
 ]);

@@ -3,7 +3,7 @@
 #   dist/index.html, embed.html, *.js, style.css   (from www/)
 #   dist/pkg/<module>.js + <module>_bg.wasm        (wasm-bindgen --target web; web/*)
 #   dist/pkg/photogrammetry_playground.js, examples.js  (the JS API entries, hand-written in www/api/)
-#   dist/catalog.json                              (the catalog, from the Rust entries)
+#   dist/catalog.json                              (the catalog, from the Rust entries, natively)
 #   dist/vendor/katex/                             (KaTeX from its npm package)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,7 +30,11 @@ for name in $modules; do echo "$name"; done | xargs -P 2 -I{} \
 # The image lab's own module (lab/), loaded only when #/lab opens.
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir dist/lab/pkg \
   target/wasm32-unknown-unknown/release/photogrammetry_lab.wasm
-# The catalog as data, from the Rust entries (pkg/all.js's catalog()), with each entry's module.
+# The catalog as data, written natively from the Rust entries (examples/catalog_json.rs, serde_json;
+# a host build of the core, the one `cargo test` makes), then checked entry by entry against the
+# wasm's own catalog() (pkg/all.js) and the modules built (scripts/catalog-json.mjs).
+echo "build: cargo run --example catalog_json (catalog.json)"
+cargo run --quiet --example catalog_json -- dist/catalog.json
 node scripts/catalog-json.mjs dist
 # ... and its SIMD128 build (profile `fast`, the target dir `npm run bench -- ops`
 # also uses), which the lab's worker loads where the browser has SIMD.

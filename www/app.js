@@ -553,7 +553,8 @@ async function main() {
       showMessage("Something went wrong", `The example could not be shown: ${messageOf(e)}`);
     });
   window.addEventListener("hashchange", () => go({ focus: true }));
-  go();
+  // the offline copy's service worker: after the first view (not on its critical path)
+  go().then(() => import("./sw-register.js"));
 }
 
 main();

@@ -1,6 +1,9 @@
 // One wasm module per topic (web/<module>/), loaded on demand:
-// - catalog.json is the Rust catalog (pkg/all.js's catalog()), and each
-//   topic module's own catalog() agrees with its entries there;
+// - catalog.json, written natively by the build (examples/catalog_json.rs:
+//   examples::catalog() through serde_json), is the catalog the wasm modules
+//   report through serde-wasm-bindgen: pkg/all.js's catalog() and, entry by
+//   entry, every topic module's own catalog() (two serialisers, two builds of
+//   the same Rust entries: not the file compared with its own generator);
 // - every example solves from a cold load of its own address, with the
 //   numbers of the Rust solver, having fetched only its own module before
 //   the first solution (the other topics follow when the page is idle);
@@ -50,7 +53,7 @@ after(async () => {
 });
 
 describe("the catalog as data", () => {
-  test("catalog.json is the Rust catalog, every entry with its module (its fields come with the module)", () => {
+  test("catalog.json (native serde_json) is the wasm's catalog(), every entry with its module (its fields come with the module)", () => {
     assert.deepEqual(CATALOG, all.catalog().map(({ inputs: _, ...entry }) => entry));
     assert.equal(CATALOG.length, 26);
     for (const e of CATALOG) {

@@ -6,7 +6,7 @@ import crypto from "node:crypto";
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
-import { contentHash, fontFaces, hashAssets, jsRefs } from "../../scripts/assets.mjs";
+import { contentHash, fontFaces, hashAssets, jsRefs, minifyAll, minifyCss } from "../../scripts/assets.mjs";
 import { plainTex } from "../../www/math.js";
 
 const made = [];
@@ -132,6 +132,34 @@ describe("assets.mjs: finding references", () => {
     const files = new Set(["x.woff2"]);
     assert.equal(fontFaces("a.css", "@font-face{font-display:block;src:url(x.woff2)}", files), "@font-face{font-display:swap;src:url(x.woff2)}");
     assert.equal(fontFaces("a.css", "@font-face{src:url(x.woff2)}", files), "@font-face{font-display:swap;src:url(x.woff2)}");
+  });
+});
+
+describe("step 0: minified JS and CSS", () => {
+  it("CSS loses comments and idle white space; strings, url() and descendant spaces stay", () => {
+    const css = `/* note */\n.a > .b ,\n.c :is(.d) {\n  content: "▸ ; , x" ;\n  background: url( "x y.png" ) ;\n  margin: 0 auto;\n}\n@media (min-width: 600px) { .e { color: red; } }\n`;
+    assert.equal(minifyCss(css), `.a>.b,.c :is(.d){content:"▸ ; , x";background:url( "x y.png" );margin:0 auto}@media (min-width:600px){.e{color:red}}`);
+  });
+  it("a module keeps its exports and imports, a classic script its globals; vendor/ and sw.js are left alone", async () => {
+    const source = {
+      "m.js": `import { helper } from "./h.js";\nconst longLocalName = helper(2);\nexport function twice(value) { return longLocalName * value; }\n`,
+      "classic.js": `var pageGlobal = 1;\nfunction setup(argument) { return argument + pageGlobal; }\n`,
+      "vendor/v.js": "var  keep = 1 ;  // as shipped\n",
+      "sw.js": "// PRECACHE-MARKER\nself.x = 1;\n",
+      "s.css": ".a { color: red; }\n",
+    };
+    const dir = site(source);
+    const [n, before, after] = await minifyAll(dir);
+    assert.equal(n, 3);
+    assert.ok(after < before, `${after} < ${before}`);
+    const m = read(dir, "m.js");
+    assert.match(m, /import\{helper as \w+\}from"\.\/h\.js"/);
+    assert.match(m, /export\{\w+ as twice\}|export function twice/);
+    assert.doesNotMatch(m, /longLocalName/);
+    assert.match(read(dir, "classic.js"), /var pageGlobal=1;function setup\(/);
+    assert.equal(read(dir, "vendor/v.js"), source["vendor/v.js"]);
+    assert.equal(read(dir, "sw.js"), source["sw.js"]);
+    assert.equal(read(dir, "s.css"), ".a{color:red}\n");
   });
 });
 

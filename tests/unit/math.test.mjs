@@ -2,7 +2,7 @@
 // string work; the page lays the pieces out and fits them to the width.
 import { describe, it } from "node:test";
 import assert from "node:assert/strict";
-import { findGrid, gridBlocks, splitFormula, splitTerms } from "../../www/math.js";
+import { findGrid, gridBlocks, splitFormula, splitTerms } from "../../www/math-typeset.js"; // loaded with KaTeX (www/math.js)
 
 describe("splitFormula: groups and relation chains", () => {
   it("the left-hand side stays with the first relation; the result is a piece of its own", () => {

@@ -1,0 +1,557 @@
+// The KaTeX side of math.js (issue 19): typesetting a formula in its pieces
+// and terms, and fitting it to its width after layout. Loaded with KaTeX
+// (math.js startMath: script, stylesheet and this module in parallel), after
+// the first numbers are on screen; until then math.js draws formulas as plain
+// text. The page uses math.js (renderFormula, fitFormulas, keepFitted); the
+// unit tests (tests/unit/math.test.mjs) read the splitting rules here.
+
+import { renderFormula } from "./math.js";
+
+const KATEX_OPTIONS = Object.freeze({
+  displayMode: false, // terms are inline boxes; \displaystyle keeps display-size fractions
+  throwOnError: true,
+  trust: false, // no \href, \url, \includegraphics, \htmlClass...
+  strict: "ignore",
+  maxSize: 20,
+  maxExpand: 1000,
+  output: "htmlAndMathml", // MathML for screen readers
+});
+
+// ---------------------------------------------------------------------------
+// Scanning LaTeX at the top level
+
+/** Spacing commands after which a formula may wrap ("x = 1,\quad y = 2"). */
+const BREAK_COMMANDS = ["qquad", "quad"];
+/** Relations before which a chain may wrap ("GSD = p·m = 356 mm = 35.6 cm"). */
+const RELATION_COMMANDS = ["approx"];
+/** Environments whose rows and columns the fitting may rearrange. */
+const GRID_ENVS = ["bmatrix", "pmatrix", "vmatrix", "Bmatrix", "matrix", "array"];
+
+/**
+ * Walks `tex` and calls `visit(i, token, depth)` for every top-level token:
+ * depth counts braces, \left…\right and \begin…\end; `paren` counts ( ) and
+ * [ ] (plain delimiters) separately so sums inside parentheses stay whole.
+ * Returns false when the braces do not balance.
+ */
+function scan(tex, visit) {
+  let depth = 0;
+  let paren = 0;
+  let i = 0;
+  while (i < tex.length) {
+    const ch = tex[i];
+    if (ch === "\\") {
+      const m = /^\\([A-Za-z]+|.)/.exec(tex.slice(i));
+      const name = m ? m[1] : "";
+      const length = 1 + Math.max(name.length, 1);
+      if (name === "left" || name === "begin") {
+        if (depth === 0) visit(i, { cmd: name, length }, depth, paren);
+        depth += 1;
+      } else if (name === "right" || name === "end") {
+        depth -= 1;
+      } else if (depth === 0) {
+        visit(i, { cmd: name, length }, depth, paren);
+      }
+      i += length;
+      continue;
+    }
+    if (ch === "{") depth += 1;
+    else if (ch === "}") depth -= 1;
+    else if (depth === 0) {
+      if (ch === "(" || ch === "[") paren += 1;
+      else if (ch === ")" || ch === "]") paren = Math.max(0, paren - 1);
+      visit(i, { ch }, depth, paren);
+    }
+    i += 1;
+  }
+  return depth === 0;
+}
+
+/**
+ * Splits a formula where it may wrap, at the top level only:
+ *   - into groups at "\quad"/"\qquad", and at ",\ " between equations
+ *     (outside parentheses and brackets);
+ *   - each group into pieces before its second, third… "=" or "\approx",
+ *     the relation starting the next piece ("a = b = c" -> "a = b", "= c").
+ * Returns [[tex]] when there is no such place.
+ * @param {string} tex
+ * @returns {string[][]}
+ */
+export function splitFormula(tex) {
+  const groups = [];
+  let pieces = [];
+  let start = 0;
+  const cut = (end) => {
+    const piece = tex.slice(start, end).trim();
+    if (piece) pieces.push(piece);
+  };
+  const endGroup = () => {
+    if (pieces.length) groups.push(pieces);
+    pieces = [];
+  };
+  const balanced = scan(tex, (i, t, depth, paren) => {
+    if (t.cmd && BREAK_COMMANDS.includes(t.cmd)) {
+      cut(i);
+      endGroup();
+      start = i + t.length;
+    } else if (t.cmd && RELATION_COMMANDS.includes(t.cmd)) {
+      cut(i);
+      start = i;
+    } else if (t.ch === "=") {
+      cut(i);
+      start = i;
+    } else if (t.ch === "," && paren === 0 && /^,\\ /.test(tex.slice(i, i + 3))) {
+      // "a_1 = …,\ a_2 = …": the comma ends one equation
+      cut(i + 1);
+      endGroup();
+      start = i + 3;
+    }
+  });
+  cut(tex.length);
+  endGroup();
+  if (!balanced || groups.length === 0) return [[tex]];
+  // the left-hand side stays with the first relation: "GSD = a × b", "= 356 mm", …
+  return groups.map((g) => (g.length > 1 && !/^(=|\\approx)/.test(g[0]) ? [`${g[0]} ${g[1]}`, ...g.slice(2)] : g));
+}
+
+/** Tokens after which a + or − is a sign, not an operation. */
+const SIGN_CONTEXT = /(^|[=<>(,[&+\-]|\\cdot|\\times|\\approx|\\quad|\\;|\\ |\\left.?)\s*$/;
+
+/**
+ * Splits a piece into terms that may flow onto several lines: before each
+ * top-level binary + or − (outside parentheses), and after each list
+ * separator (\; anywhere at the top level, ",\ " inside brackets, where it
+ * separates the items of a list). A piece that is exactly a `gathered` block
+ * gives one line per row. Returns { lines: [[term…]…] } where every line
+ * starts on a line of its own.
+ * @param {string} piece
+ */
+export function splitTerms(piece) {
+  const gathered = /^\\begin\{gathered\}([\s\S]*)\\end\{gathered\}(\s*[,.;]?)$/.exec(piece.trim());
+  if (gathered && splitTop(gathered[1], "\\\\").length > 1) {
+    const rows = splitTop(gathered[1], "\\\\").map((r) => r.trim()).filter(Boolean);
+    if (gathered[2].trim()) rows[rows.length - 1] += gathered[2].trim();
+    return { lines: rows.map((row) => termsOf(row)) };
+  }
+  return { lines: [termsOf(piece)] };
+}
+
+function termsOf(piece) {
+  const terms = [];
+  let seenRelation = false;
+  let start = 0;
+  const cut = (end) => {
+    const t = piece.slice(start, end).trim();
+    if (t) terms.push(t);
+  };
+  const balanced = scan(piece, (i, t, depth, paren) => {
+    if ((t.ch === "+" || t.ch === "-") && paren === 0) {
+      if (!SIGN_CONTEXT.test(piece.slice(0, i))) {
+        cut(i);
+        start = i;
+      }
+    } else if ((t.ch === "=" || (t.cmd && RELATION_COMMANDS.includes(t.cmd))) && paren === 0) {
+      // a second relation inside a row of a block ("σa = 0.00996 √… = 1.9 × 10⁻⁶"); the
+      // left-hand side stays with the first one, as in splitFormula
+      if (seenRelation && i > start) {
+        cut(i);
+        start = i;
+      }
+      seenRelation = true;
+    } else if (t.cmd === "," && paren === 0 && i > start && /^\\,\s*\\(sqrt|frac|tfrac|dfrac|left|bigl|Bigl)/.test(piece.slice(i))) {
+      // factors set apart by a thin space ("√a\,√b"): a place to break (not "6\,367", a digit group)
+      cut(i);
+      start = i + t.length;
+    } else if ((t.cmd === "times" || t.cmd === "cdot") && paren === 0 && i > start) {
+      // a long product: "= 0.9996 × 6 367 449.1 × 0.0254…" may break before each ×
+      cut(i);
+      start = i;
+    } else if (t.cmd === ";" && paren === 0) {
+      cut(i);
+      start = i + t.length;
+      seenRelation = false;
+    } else if (t.ch === "," && /^,\\ /.test(piece.slice(i, i + 3)) && (paren === 0 || (paren === 1 && bracketOpen(piece.slice(0, i))))) {
+      // ",\ " between the items of a list, or between equations in a row
+      cut(i + 1);
+      start = i + 3;
+      seenRelation = false;
+    }
+  });
+  cut(piece.length);
+  if (!balanced || terms.length === 0) return [piece];
+  return terms;
+}
+
+/** Whether the innermost open plain delimiter before the end of `s` is "[". */
+function bracketOpen(s) {
+  const stack = [];
+  scan(s, (i, t) => {
+    if (t.ch === "(" || t.ch === "[") stack.push(t.ch);
+    else if (t.ch === ")" || t.ch === "]") stack.pop();
+  });
+  return stack[stack.length - 1] === "[";
+}
+
+/** Splits at a top-level separator ("\\\\" for rows, "&" for cells). */
+function splitTop(tex, sep) {
+  const parts = [];
+  let start = 0;
+  scan(tex, (i, t) => {
+    if (sep === "\\\\" && t.cmd === "\\") {
+      parts.push(tex.slice(start, i));
+      start = i + 2;
+    } else if (sep === "&" && t.ch === "&") {
+      parts.push(tex.slice(start, i));
+      start = i + 1;
+    }
+  });
+  parts.push(tex.slice(start));
+  return parts;
+}
+
+/**
+ * The first top-level grid environment of a term: { before, env, spec, body,
+ * after } or null. `before` keeps any "N = " or size command ahead of it.
+ */
+export function findGrid(term) {
+  const m = /\\begin\{([A-Za-z]+)\}/.exec(term);
+  if (!m || !GRID_ENVS.includes(m[1])) return null;
+  const env = m[1];
+  let i = m.index + m[0].length;
+  let spec = "";
+  if (env === "array") {
+    const s = /^\s*\{([^{}]*)\}/.exec(term.slice(i));
+    if (!s) return null;
+    spec = s[1];
+    i += s[0].length;
+  }
+  // the matching \end{env}
+  const re = /\\(begin|end)\{([A-Za-z]+)\}/g;
+  re.lastIndex = i;
+  let level = 1;
+  let r;
+  while ((r = re.exec(term))) {
+    if (r[2] !== env) continue;
+    level += r[1] === "begin" ? 1 : -1;
+    if (level === 0) {
+      return { before: term.slice(0, m.index), env, spec, body: term.slice(i, r.index), after: term.slice(r.index + r[0].length) };
+    }
+  }
+  return null;
+}
+
+/** The rows of a grid body as cells; a leading \hline is kept apart. */
+function gridRows(body) {
+  return splitTop(body, "\\\\")
+    .map((row) => {
+      const h = /^\s*((?:\\hline\s*)*)([\s\S]*)$/.exec(row);
+      return { hline: h[1].trim(), cells: splitTop(h[2], "&").map((c) => c.trim()) };
+    })
+    .filter((row) => row.cells.some((c) => c.length) || row.hline);
+}
+
+/** Column letters of an array spec ("c|rr|rr" -> ["c","r","r","r","r"]). */
+function specColumns(spec) {
+  return [...spec.replace(/[^lcr]/g, "")];
+}
+
+/**
+ * A grid environment as blocks of at most `per` columns each (a table keeps
+ * its first column in every block). Returns [{ tex, from, to, of }].
+ */
+export function gridBlocks(grid, per) {
+  const rows = gridRows(grid.body);
+  const ncols = Math.max(...rows.map((r) => r.cells.length));
+  const isTable = grid.env === "array";
+  const first = isTable ? 1 : 0;
+  const letters = isTable ? specColumns(grid.spec) : [];
+  const blocks = [];
+  for (let from = first; from < ncols; from += per) {
+    const to = Math.min(ncols, from + per);
+    const cols = isTable ? [0, ...range(from, to)] : range(from, to);
+    const body = rows
+      .map((r) => `${r.hline ? `${r.hline} ` : ""}${cols.map((c) => r.cells[c] ?? "").join(" & ")}`)
+      .join(" \\\\ ");
+    let tex;
+    if (isTable) {
+      const spec = `${letters[0] ?? "l"}|${cols.slice(1).map((c) => letters[c] ?? "r").join("")}`;
+      tex = `\\begin{array}{${spec}} ${body} \\end{array}`;
+    } else {
+      tex = `\\begin{${grid.env}} ${body} \\end{${grid.env}}`;
+    }
+    blocks.push({ tex, from: from + 1, to, of: ncols });
+  }
+  return blocks;
+}
+
+function range(a, b) {
+  return Array.from({ length: b - a }, (_, k) => a + k);
+}
+
+// ---------------------------------------------------------------------------
+// Rendering
+
+/** Between boxes: a place to wrap that takes no room (KaTeX spaces the operators itself). */
+const BREAK = "\u200b";
+
+function katexInto(node, tex) {
+  globalThis.katex.render(`\\displaystyle ${tex}`, node, KATEX_OPTIONS);
+}
+
+/** One term as an inline box; `lead` gives a leading + or − its binary spacing. */
+function termNode(tex, first = false) {
+  const node = document.createElement("span");
+  node.className = "formula-term";
+  node.dataset.tex = tex;
+  // a continuation's + or − is an operation (a line's first − is a sign); a relation always is one
+  const lead = (!first && /^[+\-]/.test(tex)) || /^=|^\\(approx|cdot|times)/.test(tex) ? "{}" : "";
+  katexInto(node, lead + tex);
+  return node;
+}
+
+/** Rows of a matrix or table shown before "Show all n rows". */
+const ROWS_SHOWN = 8;
+const ROWS_MAX = 12;
+
+/**
+ * A term holding a grid of more than ROWS_MAX rows: its first rows, a row of
+ * dots and a button that shows the rest. Returns null for smaller terms.
+ */
+function longGridNode(tex) {
+  const grid = findGrid(tex);
+  if (!grid) return null;
+  const rows = gridRows(grid.body);
+  const header = grid.env === "array" ? 1 : 0;
+  if (rows.length - header <= ROWS_MAX) return null;
+  const ncols = Math.max(...rows.map((r) => r.cells.length));
+  const dots = Array.from({ length: ncols }, () => "\\vdots").join(" & ");
+  const kept = rows.slice(0, header + ROWS_SHOWN).map((r) => `${r.hline ? `${r.hline} ` : ""}${r.cells.join(" & ")}`);
+  const spec = grid.env === "array" ? `{${grid.spec}}` : "";
+  const short = `${grid.before}\\begin{${grid.env}}${spec} ${[...kept, dots].join(" \\\\ ")} \\end{${grid.env}}${grid.after}`;
+  const wrap = document.createElement("span");
+  wrap.className = "formula-long";
+  const term = termNode(short);
+  const more = document.createElement("button");
+  more.type = "button";
+  more.className = "button formula-more";
+  more.textContent = `Show all ${rows.length - header} rows`;
+  more.addEventListener("click", () => {
+    const full = termNode(tex);
+    wrap.replaceWith(full);
+    const formula = full.closest(".formula");
+    if (formula) fitOne(formula);
+  });
+  wrap.append(term, more);
+  return wrap;
+}
+
+function lineNode(terms) {
+  const line = document.createElement("span");
+  line.className = "formula-line";
+  terms.forEach((t, k) => {
+    const node = longGridNode(t) ?? termNode(t, k === 0);
+    line.append(...(k ? [BREAK, node] : [node]));
+  });
+  return line;
+}
+
+function pieceNode(piece, k) {
+  const node = document.createElement("span");
+  node.className = k === 0 ? "formula-piece" : "formula-piece formula-cont";
+  const { lines } = splitTerms(piece);
+  if (lines.length > 1) node.classList.add("formula-rows");
+  lines.forEach((l, k) => node.append(...(k ? [" ", lineNode(l)] : [lineNode(l)])));
+  return node;
+}
+
+/** One group: its pieces, or the whole group when a piece cannot stand alone. */
+function groupNode(pieces) {
+  const group = document.createElement("div");
+  group.className = "formula-group";
+  try {
+    pieces.forEach((p, k) => group.append(...(k ? [BREAK, pieceNode(p, k)] : [pieceNode(p, k)])));
+  } catch {
+    group.replaceChildren(pieceNodeWhole(pieces.join(" ")));
+  }
+  return group;
+}
+
+function pieceNodeWhole(tex) {
+  const node = document.createElement("span");
+  node.className = "formula-piece";
+  const line = document.createElement("span");
+  line.className = "formula-line";
+  line.append(termNode(tex));
+  node.append(line);
+  return node;
+}
+
+
+/** The formula `tex` typeset into `el` (renderFormula once KaTeX is in). */
+export function typesetInto(el, tex) {
+  try {
+    try {
+      splitFormula(tex).forEach((g, k) => el.append(...(k ? [" ", groupNode(g)] : [groupNode(g)])));
+    } catch {
+      // the pieces do not stand alone: the whole formula, unsplit
+      el.replaceChildren(groupNodeWhole(tex));
+    }
+    el.setAttribute("data-tex", tex);
+    return el;
+  } catch (e) {
+    el.replaceChildren();
+    el.classList.add("formula-error");
+    const code = document.createElement("code");
+    code.textContent = tex;
+    const why = document.createElement("span");
+    why.className = "formula-error-why";
+    why.textContent = `(formula could not be rendered: ${e && e.message ? e.message : e})`;
+    el.append(code, why);
+    return el;
+  }
+}
+
+function groupNodeWhole(tex) {
+  const group = document.createElement("div");
+  group.className = "formula-group";
+  group.append(pieceNodeWhole(tex));
+  return group;
+}
+
+// ---------------------------------------------------------------------------
+// Fitting after layout
+
+/** Whether a term is wider than the line it sits on. */
+function tooWide(term) {
+  return term.clientWidth > 0 && term.scrollWidth > term.clientWidth + 1;
+}
+
+/** The alternatives of a wide term: aligned rows, or blocks of columns. */
+function refit(term) {
+  const tex = term.dataset.tex;
+  const aligned = /^(\\(?:small|footnotesize|scriptsize)\s*)?\\begin\{aligned\}([\s\S]*)\\end\{aligned\}(\s*[,.;]?)$/.exec(tex.trim());
+  if (aligned) {
+    const size = aligned[1] ? `${aligned[1].trim()} ` : "";
+    const rows = splitTop(aligned[2], "\\\\").map((r) => r.replace(/&/g, "").trim()).filter(Boolean).map((r) => size + r);
+    const rowsNode = document.createElement("span");
+    rowsNode.className = "formula-piece formula-rows formula-refit";
+    rows.forEach((row, k) => rowsNode.append(...(k ? [" ", lineNode(termsOf(row))] : [lineNode(termsOf(row))])));
+    term.replaceWith(rowsNode);
+    return rowsNode;
+  }
+  const grid = findGrid(tex);
+  if (grid) {
+    const rows = gridRows(grid.body);
+    const ncols = Math.max(...rows.map((r) => r.cells.length));
+    const first = grid.env === "array" ? 1 : 0;
+    const n = ncols - first;
+    // a first guess from the widths, then fewer columns a block until every block fits
+    const room = term.clientWidth;
+    let per = Math.max(1, Math.min(n - 1, Math.floor((n * room) / term.scrollWidth)));
+    for (;;) {
+      const node = blocksNode(grid, per);
+      term.replaceWith(node);
+      if (![...node.querySelectorAll(".formula-term")].some(tooWide)) return node;
+      if (per === 1) {
+        if (grid.env !== "array") return node;
+        // a table too wide even one column at a time: one line per row, "key: header = cell"
+        const lines = rowLinesNode(grid);
+        node.replaceWith(lines);
+        return lines;
+      }
+      node.replaceWith(term);
+      per = Math.max(1, Math.min(per - 1, Math.floor(per * 0.8)));
+    }
+  }
+  // a long left-hand side and its first relation: they may part
+  const at = firstRelation(tex);
+  if (at > 0) {
+    const line = lineNode([tex.slice(0, at).trim(), ...termsOf(tex.slice(at).trim())]);
+    line.classList.add("formula-refit");
+    term.replaceWith(line);
+    return line;
+  }
+  return null;
+}
+
+/** Where the first top-level relation ("=", \approx) of a term stands, or -1. */
+function firstRelation(tex) {
+  let at = -1;
+  scan(tex, (i, t, depth, paren) => {
+    if (at < 0 && paren === 0 && (t.ch === "=" || (t.cmd && RELATION_COMMANDS.includes(t.cmd)))) at = i;
+  });
+  return at;
+}
+
+/** A table as one line per data row: its first cell, then "header = cell" for the others. */
+function rowLinesNode(grid) {
+  const rows = gridRows(grid.body);
+  const [head, ...data] = rows;
+  const node = document.createElement("span");
+  node.className = "formula-piece formula-rows formula-refit";
+  data.forEach((row, k) => {
+    const terms = [`${row.cells[0]}{:}`];
+    row.cells.slice(1).forEach((cell, j) => terms.push(`${head.cells[j + 1] ?? ""} = ${cell}${j < row.cells.length - 2 ? "," : ""}`));
+    node.append(...(k ? [" ", lineNode(terms)] : [lineNode(terms)]));
+  });
+  return node;
+}
+
+function blocksNode(grid, per) {
+  const node = document.createElement("span");
+  node.className = "formula-piece formula-rows formula-refit formula-blocks";
+  const blocks = gridBlocks(grid, per);
+  blocks.forEach((b, k) => {
+    const block = document.createElement("span");
+    block.className = "formula-block";
+    const caption = document.createElement("span");
+    caption.className = "formula-block-caption";
+    caption.textContent = b.from === b.to ? `column ${b.from} of ${b.of}` : `columns ${b.from}–${b.to} of ${b.of}`;
+    const before = k === 0 ? grid.before : "";
+    const after = k === blocks.length - 1 ? grid.after : "";
+    block.append(caption, termNode(`${before}${b.tex}${after}`));
+    node.append(block);
+  });
+  return node;
+}
+
+/** The last resort for an atom that cannot be broken: a labelled scroll region. */
+function scrollable(term) {
+  term.classList.add("formula-scroll");
+  term.setAttribute("tabindex", "0");
+  term.setAttribute("role", "region");
+  term.setAttribute("aria-label", "Wide formula: scroll sideways to see all of it");
+}
+
+/**
+ * Lays the formulas below `root` out again for the width they have now:
+ * every refitted term starts from its original rendering, so a wider screen
+ * gets whole matrices back.
+ * @param {Element} root
+ */
+export function fitFormulas(root) {
+  for (const formula of root.querySelectorAll(".formula[data-tex]")) {
+    if (formula.querySelector(".formula-refit, .formula-scroll")) {
+      const fresh = renderFormula(formula.dataset.tex, formula.className);
+      formula.replaceWith(fresh);
+      fitOne(fresh);
+    } else {
+      fitOne(formula);
+    }
+  }
+}
+
+export function fitOne(formula) {
+  if (formula.clientWidth === 0) return; // not laid out (hidden)
+  for (const term of [...formula.querySelectorAll(".formula-term")]) {
+    if (!tooWide(term)) continue;
+    let node = null;
+    try {
+      node = refit(term);
+    } catch (e) {
+      // a rearrangement KaTeX cannot read: the term stays whole, scrolling
+      console.warn("formula could not be rearranged", e);
+    }
+    const still = node ? [...node.querySelectorAll(".formula-term")].filter(tooWide) : [term];
+    still.forEach(scrollable);
+  }
+}
