@@ -90,10 +90,17 @@ pub fn decode(name: &str, bytes: &[u8]) -> Result<Decoded> {
         .with_guessed_format()
         .map_err(|e| Error::input(name, format!("cannot be read: {e}")))?;
     let Some(format) = guessed.format().and_then(format_name) else {
-        return Err(Error::input(
-            name,
-            "is not a PNG, JPEG or TIFF image (its first bytes are not the signature of any of them)",
-        ));
+        let why = match guessed.format() {
+            // an image, but of a format the lab has no decoder for
+            Some(f) => format!(
+                "is a {} image, a format the lab does not read: it opens PNG, JPEG and TIFF",
+                f.extensions_str()
+                    .first()
+                    .map_or_else(|| format!("{f:?}"), |e| e.to_uppercase())
+            ),
+            None => "is not a PNG, JPEG or TIFF image (its first bytes are not the signature of any of them)".to_string(),
+        };
+        return Err(Error::input(name, why));
     };
     // The header first: its size is checked before any pixel is decoded.
     let mut reader = guessed;

@@ -8,6 +8,7 @@ use photogrammetry_playground::interest;
 use photogrammetry_playground::matching::{Model, Status};
 use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::resample::{self, Method};
+use photogrammetry_playground::transform::{self, PointPair};
 
 /// A small random image (SplitMix64, grey values 0 … 255).
 fn random(w: usize, h: usize, seed: u64) -> Grid {
@@ -80,7 +81,7 @@ fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
 }
 
 #[test]
-fn edges_equal_the_kernel_sums_and_the_magnitude() {
+fn edges_equal_the_kernel_sums_the_magnitude_and_the_direction() {
     let img = random(10, 8, 2);
     for b in BORDERS {
         let border = ops::border(b).unwrap();
@@ -97,6 +98,13 @@ fn edges_equal_the_kernel_sums_and_the_magnitude() {
                     assert_eq!(ls[1].at(c, r), gy);
                     let m = gx.zip(gy).map(|(x, y)| x.hypot(y));
                     assert_eq!(ls[2].at(c, r), m, "{op} {b} ({c}, {r})");
+                    // direction: atan2(gy, gx) in degrees, −180° … 180°
+                    let d = gx.zip(gy).map(|(x, y)| y.atan2(x).to_degrees());
+                    assert_eq!(ls[3].name, "direction");
+                    assert_eq!(ls[3].at(c, r), d, "{op} {b} direction ({c}, {r})");
+                    if let Some(d) = ls[3].at(c, r) {
+                        assert!((-180.0..=180.0).contains(&d));
+                    }
                 }
             }
         }
@@ -303,6 +311,92 @@ fn the_fiducial_fit_on_the_generated_frame_recovers_the_known_affine() {
         rms(&sim),
         rms(&aff)
     );
+}
+
+/// The projective map through four point pairs, solved here on its own:
+/// x·(h7·u + h8·v + 1) = h1·u + h2·v + h3, y·(…) = h4·u + h5·v + h6, eight
+/// equations in eight unknowns by Gaussian elimination with pivoting.
+fn homography(pairs: &[((f64, f64), (f64, f64))]) -> [f64; 8] {
+    let mut m = Vec::new();
+    for &((u, v), (x, y)) in pairs {
+        m.push(vec![u, v, 1.0, 0.0, 0.0, 0.0, -x * u, -x * v, x]);
+        m.push(vec![0.0, 0.0, 0.0, u, v, 1.0, -y * u, -y * v, y]);
+    }
+    for k in 0..8 {
+        let p = (k..8)
+            .max_by(|&a, &b| m[a][k].abs().total_cmp(&m[b][k].abs()))
+            .unwrap();
+        m.swap(k, p);
+        for i in 0..8 {
+            if i != k {
+                let f = m[i][k] / m[k][k];
+                for j in k..9 {
+                    m[i][j] -= f * m[k][j];
+                }
+            }
+        }
+    }
+    std::array::from_fn(|k| m[k][8] / m[k][k])
+}
+
+#[test]
+fn projective_rectification_equals_fit_and_the_point_functions() {
+    let img = random(40, 30, 9);
+    let (w, h) = (16, 12);
+    // a quadrilateral clicked clockwise from the top left (fractional, as
+    // clicks are)
+    let clicked = [(5.3, 4.1), (33.7, 6.4), (30.2, 25.6), (7.9, 22.2)];
+    let t = ops::projective(&clicked, w, h).unwrap();
+    // the 004 table's projective model through transform::fit, output
+    // corners to the clicked points
+    let corners = [(0.0, 0.0), (15.0, 0.0), (15.0, 11.0), (0.0, 11.0)];
+    let pairs: Vec<PointPair> = corners
+        .iter()
+        .zip(&clicked)
+        .map(|(&(u, v), &(x, y))| PointPair { u, v, x, y })
+        .collect();
+    let fit = transform::fit(transform::Model::Projective, &pairs).unwrap();
+    assert_eq!(t.params, fit.transform.params);
+    // the corners land on the clicks, and every output pixel where the
+    // independent solution puts it
+    let hm = homography(&corners.iter().copied().zip(clicked).collect::<Vec<_>>());
+    for (&(u, v), &(x, y)) in corners.iter().zip(&clicked) {
+        let (px, py) = t.apply(u, v).unwrap();
+        assert!((px - x).abs() < 1e-9 && (py - y).abs() < 1e-9, "({u}, {v})");
+    }
+    let methods = [Method::Nearest, Method::Bilinear, Method::Bicubic];
+    let map = |x: f64, y: f64| t.apply(x, y).unwrap_or((f64::NAN, f64::NAN));
+    let grids = ops::warp(&img, w, h, &map, &methods);
+    let mut inside = [0; 3];
+    for r in 0..h {
+        for c in 0..w {
+            let (u, v) = (c as f64, r as f64);
+            let den = hm[6] * u + hm[7] * v + 1.0;
+            let x = (hm[0] * u + hm[1] * v + hm[2]) / den;
+            let y = (hm[3] * u + hm[4] * v + hm[5]) / den;
+            let (px, py) = t.apply(u, v).unwrap();
+            assert!((px - x).abs() < 1e-9 && (py - y).abs() < 1e-9, "({c}, {r})");
+            for (k, m) in methods.iter().enumerate() {
+                let want = match m {
+                    Method::Nearest => resample::nearest(&img, px, py).map(|n| n.value),
+                    Method::Bilinear => resample::bilinear(&img, px, py).map(|n| n.value),
+                    Method::Bicubic => {
+                        resample::bicubic(&img, px, py, resample::SEED_A).map(|n| n.value)
+                    }
+                };
+                if want.is_some() {
+                    inside[k] += 1;
+                }
+                assert_eq!(grids[k].get(c, r), Some(want.unwrap_or(0.0)), "{m:?} ({c}, {r})");
+            }
+        }
+    }
+    // the quadrilateral lies inside the image: every output pixel has a value
+    assert_eq!(inside, [w * h; 3]);
+    // three points on a line have no projective map
+    let flat = [(1.0, 1.0), (5.0, 5.0), (9.0, 9.0), (13.0, 13.0)];
+    let e = ops::projective(&flat, w, h).unwrap_err().to_string();
+    assert!(e.starts_with("points"), "{e}");
 }
 
 #[test]
