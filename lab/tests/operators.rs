@@ -387,7 +387,11 @@ fn projective_rectification_equals_fit_and_the_point_functions() {
                 if want.is_some() {
                     inside[k] += 1;
                 }
-                assert_eq!(grids[k].get(c, r), Some(want.unwrap_or(0.0)), "{m:?} ({c}, {r})");
+                assert_eq!(
+                    grids[k].get(c, r),
+                    Some(want.unwrap_or(0.0)),
+                    "{m:?} ({c}, {r})"
+                );
             }
         }
     }
