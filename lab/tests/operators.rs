@@ -3,11 +3,14 @@
 
 use photogrammetry_lab::ops::{self, Rect};
 use photogrammetry_lab::sample;
+use photogrammetry_playground::examples::solve;
 use photogrammetry_playground::filter::{self, neighbourhood};
 use photogrammetry_playground::interest;
 use photogrammetry_playground::matching::{Model, Status};
 use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::resample::{self, Method};
+use photogrammetry_playground::solution::Solution;
+use photogrammetry_playground::solution::{Record, Value};
 use photogrammetry_playground::transform::{self, PointPair};
 
 /// A small random image (SplitMix64, grey values 0 … 255).
@@ -272,6 +275,142 @@ fn lsm_recovers_a_known_affine_of_a_photo() {
         (c - (cx + dx)).abs() < 0.05 && (r - (cy + dy)).abs() < 0.05,
         "{c}, {r}"
     );
+}
+
+/// A key of a worked example's result as a number or a list of numbers.
+fn result_numbers(sol: &Solution, key: &str) -> Vec<f64> {
+    match sol.result.get(key) {
+        Some(Value::List(xs)) => xs.iter().map(|x| x.as_f64().unwrap()).collect(),
+        Some(v) => vec![v.as_f64().unwrap()],
+        None => panic!("{key}: missing"),
+    }
+}
+
+#[test]
+fn every_lab_match_is_its_worked_example() {
+    // the warped photo of the test above; each LSM model of the lab, its
+    // window handed to the example the lab links (the link's inputs):
+    // shift and shift + radiometric to lsm-2d, affine to lsm-affine with
+    // the given patches; the 3×3 ρ round the best to subpixel-2d
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../www/lab/samples/camera.png"
+    ))
+    .unwrap();
+    let a = photogrammetry_lab::decode::decode("camera.png", &bytes)
+        .unwrap()
+        .grid;
+    let (th, sc) = (4f64.to_radians(), 1.05);
+    let b = resample::warp(
+        &a,
+        512,
+        512,
+        |x, y| {
+            let (u, v) = (x - 252.4, y - 131.7);
+            let (sn, cs) = th.sin_cos();
+            (
+                (cs * u + sn * v) / sc + 250.0,
+                (-sn * u + cs * v) / sc + 130.0,
+            )
+        },
+        Method::Bicubic,
+        0.0,
+    );
+    let t = Rect {
+        c0: 240,
+        r0: 120,
+        width: 21,
+        height: 21,
+    };
+    let sr = Rect {
+        c0: 225,
+        r0: 105,
+        width: 51,
+        height: 51,
+    };
+    for (model, id, radiometric) in [
+        (Model::Shift, "lsm-2d", false),
+        (Model::ShiftRadiometric, "lsm-2d", true),
+        (Model::AffineRadiometric, "lsm-affine", true),
+    ] {
+        let m = ops::correlate(&a, t, &b, sr, model).unwrap();
+        let l = m.lsm.as_ref().unwrap();
+        assert_eq!(l.status, Status::Converged, "{model:?}");
+        let w = m.lsm_window;
+        let window = b.window(w.c0, w.r0, w.width, w.height).unwrap();
+        let mut inputs = Record::new()
+            .with("template", Value::matrix(&m.template.rows()))
+            .with("search", Value::matrix(&window.rows()))
+            .with("c0", l.start.a[2] + 1.0)
+            .with("r0", l.start.a[5] + 1.0);
+        if id == "lsm-2d" {
+            inputs = inputs
+                .with("radiometric", radiometric)
+                .with("a0", 1.0)
+                .with("b0", 0.0);
+        } else {
+            inputs = inputs.with("pair", "patches");
+        }
+        let sol = solve(id, &inputs).unwrap();
+        let p = l.params.a;
+        // the example counts from 1 in the window, the lab from 0 in the image
+        let (c, r) = (p[2] + w.c0 as f64, p[5] + w.r0 as f64);
+        let close = |x: f64, y: f64| (x - y).abs() < 1e-9;
+        if id == "lsm-2d" {
+            let ec = result_numbers(&sol, "c")[0] - 1.0 + w.c0 as f64;
+            let er = result_numbers(&sol, "r")[0] - 1.0 + w.r0 as f64;
+            assert!(
+                close(ec, c) && close(er, r),
+                "{model:?}: {ec}, {er} vs {c}, {r}"
+            );
+            assert!(close(result_numbers(&sol, "a")[0], p[6]), "{model:?}");
+            assert!(close(result_numbers(&sol, "b")[0], p[7]), "{model:?}");
+            if !radiometric {
+                assert_eq!((p[6], p[7]), (1.0, 0.0));
+            }
+        } else {
+            let e = result_numbers(&sol, "parameters");
+            for k in [0, 1, 3, 4, 6, 7] {
+                assert!(close(e[k], p[k]), "a{}: {} vs {}", k + 1, e[k], p[k]);
+            }
+            assert!(close(e[2] - 1.0 + w.c0 as f64, c) && close(e[5] - 1.0 + w.r0 as f64, r));
+            // and the truth is found: 4°, 1.05 about the template centre;
+            // the position within 0.1 px (the bicubic copy and LSM's
+            // bilinear resampling each err by a few hundredths on a photo)
+            assert!(
+                (e[0] - sc * th.cos()).abs() < 0.01 && (e[3] - sc * th.sin()).abs() < 0.01,
+                "{e:?}"
+            );
+            assert!(
+                (c - 252.4).abs() < 0.1 && (r - 131.7).abs() < 0.1,
+                "{c}, {r}"
+            );
+        }
+        assert_eq!(
+            result_numbers(&sol, "iterations")[0],
+            l.iterations.len() as f64,
+            "{model:?}"
+        );
+        // subpixel-2d with the 3×3 ρ round the best (0-based image positions)
+        let (bc, br) = m.best.unwrap();
+        let rho = m.around.unwrap();
+        let cols = [bc as f64 - 1.0, bc as f64, bc as f64 + 1.0];
+        let rows = [br as f64 - 1.0, br as f64, br as f64 + 1.0];
+        let sol = solve(
+            "subpixel-2d",
+            &Record::new()
+                .with("c", Value::numbers(&cols))
+                .with("r", Value::numbers(&rows))
+                .with(
+                    "rho",
+                    Value::matrix(&rho.iter().map(|r| r.to_vec()).collect::<Vec<_>>()),
+                ),
+        )
+        .unwrap();
+        let (qc, qr) = m.subpixel.unwrap();
+        assert_eq!(result_numbers(&sol, "c_max")[0], qc);
+        assert_eq!(result_numbers(&sol, "r_max")[0], qr);
+    }
 }
 
 #[test]
