@@ -60,6 +60,14 @@ fn bt601_luma_weights() {
     assert!((luma(100.0, 0.0, 0.0) - 29.9).abs() < 1e-12);
     assert!((luma(0.0, 100.0, 0.0) - 58.7).abs() < 1e-12);
     assert!((luma(0.0, 0.0, 100.0) - 11.4).abs() < 1e-12);
+    // the f64 nearest the exact luma: at most three decimals when printed
+    for (r, g, b) in [(187, 190, 180), (1, 2, 3), (255, 0, 17), (65535, 1, 40000)] {
+        let v = luma(f64::from(r), f64::from(g), f64::from(b));
+        let thousandths = 299 * r + 587 * g + 114 * b;
+        assert_eq!((v * 1000.0).round(), f64::from(thousandths));
+        let text = v.to_string();
+        assert!(text.split('.').nth(1).map_or(0, str::len) <= 3, "{text}");
+    }
 }
 
 #[test]

@@ -187,6 +187,7 @@ const correlation = {
           const start = [lsm.start[2], lsm.start[5]];
           const l = sw && (model.value === "affine" ? X.lsmAffineLink(template, n, sw, lsm.window[2], start) : X.lsmLink(template, n, sw, lsm.window[2], start, model.value));
           if (l) links.push(link(l, model.value === "affine" ? "the matching: lsm-affine" : "the matching: lsm-2d"));
+          else if (sw) links.push(el("span", { class: "muted" }, `(the ${lsm.window[2]}×${lsm.window[3]} LSM window is too long for a link: a smaller template gives one)`));
           document.body.dataset.lsm = [...p, lsm.window[0], lsm.window[1]].join(",");
         }
         lab.explain.replaceChildren(

@@ -23,7 +23,13 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
         truth,
         noise,
     } = pair;
-    let m = matching::match_2d(&template, &search, start, set).map_err(|e| said_of(e, "c0"))?;
+    let m = matching::match_2d(&template, &search, start, set).map_err(|e| {
+        if given {
+            said_of(e, "c0")
+        } else {
+            e
+        }
+    })?;
     let syms = symbols(&m.estimated, false);
     s.step(
         Step::new(
