@@ -64,8 +64,10 @@ async function results(context, base, href, keys) {
     assert.equal(await settled(p), "ok", `${href} did not solve`);
     const out = {};
     for (const k of keys) {
-      const raw = await p.locator(`.result-table tr[data-key="${k}"] td.exact`).getAttribute("data-value");
-      out[k] = JSON.parse(raw);
+      const cell = p.locator(`.result-table tr[data-key="${k}"] td.exact`);
+      const raw = await cell.getAttribute("data-value");
+      // numbers carry their full precision in data-value; a word is its text
+      out[k] = raw === null ? (await cell.innerText()).trim() : JSON.parse(raw);
     }
     return out;
   } finally {
