@@ -455,7 +455,9 @@ fn the_fiducial_fit_on_the_generated_frame_recovers_the_known_affine() {
 /// The projective map through four point pairs, solved here on its own:
 /// x·(h7·u + h8·v + 1) = h1·u + h2·v + h3, y·(…) = h4·u + h5·v + h6, eight
 /// equations in eight unknowns by Gaussian elimination with pivoting.
-fn homography(pairs: &[((f64, f64), (f64, f64))]) -> [f64; 8] {
+type XY = (f64, f64);
+
+fn homography(pairs: &[(XY, XY)]) -> [f64; 8] {
     let mut m = Vec::new();
     for &((u, v), (x, y)) in pairs {
         m.push(vec![u, v, 1.0, 0.0, 0.0, 0.0, -x * u, -x * v, x]);
@@ -466,11 +468,12 @@ fn homography(pairs: &[((f64, f64), (f64, f64))]) -> [f64; 8] {
             .max_by(|&a, &b| m[a][k].abs().total_cmp(&m[b][k].abs()))
             .unwrap();
         m.swap(k, p);
-        for i in 0..8 {
+        let pivot = m[k].clone();
+        for (i, row) in m.iter_mut().enumerate() {
             if i != k {
-                let f = m[i][k] / m[k][k];
-                for j in k..9 {
-                    m[i][j] -= f * m[k][j];
+                let f = row[k] / pivot[k];
+                for (x, p) in row.iter_mut().zip(&pivot).skip(k) {
+                    *x -= f * p;
                 }
             }
         }

@@ -211,14 +211,8 @@ fn lsm_2d_fields() -> Vec<Field> {
 /// The two kinds of pair `lsm-affine` matches: one generated with a known
 /// change, or two patches given as grey values (e.g. from the image lab).
 const PAIR_OPTIONS: &[(&str, &str)] = &[
-    (
-        "generated",
-        "Generated: a texture seen through a known affine and radiometric change",
-    ),
-    (
-        "patches",
-        "Given: a template and a search window as grey values, and a start position",
-    ),
+    ("generated", "Generated, with a known change"),
+    ("patches", "Given patches (as from the lab)"),
 ];
 const GENERATED: &[&str] = &["generated"];
 const PATCHES: &[&str] = &["patches"];
@@ -273,7 +267,7 @@ fn lsm_affine_fields() -> Vec<Field> {
     };
     vec![
         Field::choice("pair", "Patch pair", PAIR_OPTIONS, "generated")
-            .help("Generated: the truth is known and shown beside the estimates. Given: any template and search window (the image lab links its matches here)."),
+            .help("Generated: a texture seen through a known affine and radiometric change; the truth is shown beside the estimates. Given: any template and search window as grey values, and a start position (the image lab links its affine matches here)."),
         matrix("template", "Template T", &affine_template_default())
             .help("The template's grey values, rows top to bottom (at most 64 × 64).")
             .when("pair", PATCHES),
