@@ -3,7 +3,7 @@
 //!
 //! Colour goes to grey by the ITU-R BT.601 luma weights,
 //! `g = 0.299·R + 0.587·G + 0.114·B`, computed in `f64` on the stored
-//! samples (no rounding): an 8-bit image gives grey values 0 … 255, a 16-bit
+//! samples (no rounding to whole grey values; see [`luma`]): an 8-bit image gives grey values 0 … 255, a 16-bit
 //! one 0 … 65535 (its precision kept). An alpha channel is ignored.
 //!
 //! Limits (a 2-core laptop with a browser tab survives them): at most
@@ -90,10 +90,17 @@ pub fn decode(name: &str, bytes: &[u8]) -> Result<Decoded> {
         .with_guessed_format()
         .map_err(|e| Error::input(name, format!("cannot be read: {e}")))?;
     let Some(format) = guessed.format().and_then(format_name) else {
-        return Err(Error::input(
-            name,
-            "is not a PNG, JPEG or TIFF image (its first bytes are not the signature of any of them)",
-        ));
+        let why = match guessed.format() {
+            // an image, but of a format the lab has no decoder for
+            Some(f) => format!(
+                "is a {} image, a format the lab does not read: it opens PNG, JPEG and TIFF",
+                f.extensions_str()
+                    .first()
+                    .map_or_else(|| format!("{f:?}"), |e| e.to_uppercase())
+            ),
+            None => "is not a PNG, JPEG or TIFF image (its first bytes are not the signature of any of them)".to_string(),
+        };
+        return Err(Error::input(name, why));
     };
     // The header first: its size is checked before any pixel is decoded.
     let mut reader = guessed;
@@ -143,9 +150,14 @@ fn jpeg_complete(bytes: &[u8]) -> bool {
     }
 }
 
-/// BT.601 luma of one pixel's samples.
+/// BT.601 luma of one pixel's samples, as the whole-number sum
+/// `299·R + 587·G + 114·B` (exact in `f64` for 8- and 16-bit samples)
+/// divided by 1000 in one rounding: the grey value is the `f64` nearest the
+/// exact luma, and it prints as at most three decimals (179.951, not
+/// 179.95099999999996), so a window of a colour photo fits in an example's
+/// URL ("explain this pixel").
 pub fn luma(r: f64, g: f64, b: f64) -> f64 {
-    0.299 * r + 0.587 * g + 0.114 * b
+    (299.0 * r + 587.0 * g + 114.0 * b) / 1000.0
 }
 
 fn to_grey(name: &str, format: &'static str, img: DynamicImage) -> Result<Decoded> {

@@ -60,6 +60,14 @@ fn bt601_luma_weights() {
     assert!((luma(100.0, 0.0, 0.0) - 29.9).abs() < 1e-12);
     assert!((luma(0.0, 100.0, 0.0) - 58.7).abs() < 1e-12);
     assert!((luma(0.0, 0.0, 100.0) - 11.4).abs() < 1e-12);
+    // the f64 nearest the exact luma: at most three decimals when printed
+    for (r, g, b) in [(187, 190, 180), (1, 2, 3), (255, 0, 17), (65535, 1, 40000)] {
+        let v = luma(f64::from(r), f64::from(g), f64::from(b));
+        let thousandths = 299 * r + 587 * g + 114 * b;
+        assert_eq!((v * 1000.0).round(), f64::from(thousandths));
+        let text = v.to_string();
+        assert!(text.split('.').nth(1).map_or(0, str::len) <= 3, "{text}");
+    }
 }
 
 #[test]
@@ -96,6 +104,40 @@ fn tiff_8_and_16_bit_grey_and_rgb_strips_and_tiles() {
     check(&d, rgb16);
 }
 
+// The 40 × 24 TIFFs of several tiles and with Deflate (make_corpus.py).
+fn tile8(c: usize, r: usize) -> f64 {
+    ((7 * c + 11 * r) % 256) as f64
+}
+fn tile16(c: usize, r: usize) -> f64 {
+    (1000 * c + 1000 * r + 7) as f64
+}
+
+fn check_40x24(d: &Decoded, f: fn(usize, usize) -> f64) {
+    assert_eq!((d.grid.width(), d.grid.height()), (40, 24));
+    for r in 0..24 {
+        for c in 0..40 {
+            assert_eq!(d.grid.get(c, r), Some(f(c, r)), "({c}, {r})");
+        }
+    }
+}
+
+#[test]
+fn tiff_in_several_tiles_8_and_16_bit_and_deflate_compressed() {
+    // 3 × 2 tiles of 16 × 16, the right column and bottom row padded:
+    // every pixel from the right tile, none from the padding
+    let d = open("grey8_tiles.tif");
+    assert_eq!((d.format, d.colour, d.bits), ("TIFF", "grey", 8));
+    check_40x24(&d, tile8);
+    let d = open("grey16_tiles.tif");
+    assert_eq!((d.format, d.bits, d.max_value), ("TIFF", 16, 65535.0));
+    // 16-bit precision kept: 62007 = (39 + 23)·1000 + 7 at the last pixel
+    assert_eq!(d.grid.get(39, 23), Some(62007.0));
+    check_40x24(&d, tile16);
+    let d = open("grey8_deflate.tif");
+    assert_eq!((d.format, d.bits), ("TIFF", 8));
+    check_40x24(&d, tile8);
+}
+
 #[test]
 fn jpeg_flat_blocks_decode_exactly() {
     // 16×8: a left block of 50 and a right block of 200 (flat 8×8 blocks
@@ -130,6 +172,10 @@ fn bad_files_name_the_file_and_the_reason() {
         ("bomb.png", "at most 16 megapixels"),
         ("missing_tag.tif", "TIFF"),
         ("truncated.jpg", "JPEG"),
+        (
+            "unsupported.gif",
+            "is a GIF image, a format the lab does not read: it opens PNG, JPEG and TIFF",
+        ),
     ];
     for (name, says) in cases {
         let m = err(name);

@@ -3,11 +3,15 @@
 
 use photogrammetry_lab::ops::{self, Rect};
 use photogrammetry_lab::sample;
+use photogrammetry_playground::examples::solve;
 use photogrammetry_playground::filter::{self, neighbourhood};
 use photogrammetry_playground::interest;
 use photogrammetry_playground::matching::{Model, Status};
 use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::resample::{self, Method};
+use photogrammetry_playground::solution::Solution;
+use photogrammetry_playground::solution::{Record, Value};
+use photogrammetry_playground::transform::{self, PointPair};
 
 /// A small random image (SplitMix64, grey values 0 … 255).
 fn random(w: usize, h: usize, seed: u64) -> Grid {
@@ -80,7 +84,7 @@ fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
 }
 
 #[test]
-fn edges_equal_the_kernel_sums_and_the_magnitude() {
+fn edges_equal_the_kernel_sums_the_magnitude_and_the_direction() {
     let img = random(10, 8, 2);
     for b in BORDERS {
         let border = ops::border(b).unwrap();
@@ -97,6 +101,13 @@ fn edges_equal_the_kernel_sums_and_the_magnitude() {
                     assert_eq!(ls[1].at(c, r), gy);
                     let m = gx.zip(gy).map(|(x, y)| x.hypot(y));
                     assert_eq!(ls[2].at(c, r), m, "{op} {b} ({c}, {r})");
+                    // direction: atan2(gy, gx) in degrees, −180° … 180°
+                    let d = gx.zip(gy).map(|(x, y)| y.atan2(x).to_degrees());
+                    assert_eq!(ls[3].name, "direction");
+                    assert_eq!(ls[3].at(c, r), d, "{op} {b} direction ({c}, {r})");
+                    if let Some(d) = ls[3].at(c, r) {
+                        assert!((-180.0..=180.0).contains(&d));
+                    }
                 }
             }
         }
@@ -266,6 +277,142 @@ fn lsm_recovers_a_known_affine_of_a_photo() {
     );
 }
 
+/// A key of a worked example's result as a number or a list of numbers.
+fn result_numbers(sol: &Solution, key: &str) -> Vec<f64> {
+    match sol.result.get(key) {
+        Some(Value::List(xs)) => xs.iter().map(|x| x.as_f64().unwrap()).collect(),
+        Some(v) => vec![v.as_f64().unwrap()],
+        None => panic!("{key}: missing"),
+    }
+}
+
+#[test]
+fn every_lab_match_is_its_worked_example() {
+    // the warped photo of the test above; each LSM model of the lab, its
+    // window handed to the example the lab links (the link's inputs):
+    // shift and shift + radiometric to lsm-2d, affine to lsm-affine with
+    // the given patches; the 3×3 ρ round the best to subpixel-2d
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../www/lab/samples/camera.png"
+    ))
+    .unwrap();
+    let a = photogrammetry_lab::decode::decode("camera.png", &bytes)
+        .unwrap()
+        .grid;
+    let (th, sc) = (4f64.to_radians(), 1.05);
+    let b = resample::warp(
+        &a,
+        512,
+        512,
+        |x, y| {
+            let (u, v) = (x - 252.4, y - 131.7);
+            let (sn, cs) = th.sin_cos();
+            (
+                (cs * u + sn * v) / sc + 250.0,
+                (-sn * u + cs * v) / sc + 130.0,
+            )
+        },
+        Method::Bicubic,
+        0.0,
+    );
+    let t = Rect {
+        c0: 240,
+        r0: 120,
+        width: 21,
+        height: 21,
+    };
+    let sr = Rect {
+        c0: 225,
+        r0: 105,
+        width: 51,
+        height: 51,
+    };
+    for (model, id, radiometric) in [
+        (Model::Shift, "lsm-2d", false),
+        (Model::ShiftRadiometric, "lsm-2d", true),
+        (Model::AffineRadiometric, "lsm-affine", true),
+    ] {
+        let m = ops::correlate(&a, t, &b, sr, model).unwrap();
+        let l = m.lsm.as_ref().unwrap();
+        assert_eq!(l.status, Status::Converged, "{model:?}");
+        let w = m.lsm_window;
+        let window = b.window(w.c0, w.r0, w.width, w.height).unwrap();
+        let mut inputs = Record::new()
+            .with("template", Value::matrix(&m.template.rows()))
+            .with("search", Value::matrix(&window.rows()))
+            .with("c0", l.start.a[2] + 1.0)
+            .with("r0", l.start.a[5] + 1.0);
+        if id == "lsm-2d" {
+            inputs = inputs
+                .with("radiometric", radiometric)
+                .with("a0", 1.0)
+                .with("b0", 0.0);
+        } else {
+            inputs = inputs.with("pair", "patches");
+        }
+        let sol = solve(id, &inputs).unwrap();
+        let p = l.params.a;
+        // the example counts from 1 in the window, the lab from 0 in the image
+        let (c, r) = (p[2] + w.c0 as f64, p[5] + w.r0 as f64);
+        let close = |x: f64, y: f64| (x - y).abs() < 1e-9;
+        if id == "lsm-2d" {
+            let ec = result_numbers(&sol, "c")[0] - 1.0 + w.c0 as f64;
+            let er = result_numbers(&sol, "r")[0] - 1.0 + w.r0 as f64;
+            assert!(
+                close(ec, c) && close(er, r),
+                "{model:?}: {ec}, {er} vs {c}, {r}"
+            );
+            assert!(close(result_numbers(&sol, "a")[0], p[6]), "{model:?}");
+            assert!(close(result_numbers(&sol, "b")[0], p[7]), "{model:?}");
+            if !radiometric {
+                assert_eq!((p[6], p[7]), (1.0, 0.0));
+            }
+        } else {
+            let e = result_numbers(&sol, "parameters");
+            for k in [0, 1, 3, 4, 6, 7] {
+                assert!(close(e[k], p[k]), "a{}: {} vs {}", k + 1, e[k], p[k]);
+            }
+            assert!(close(e[2] - 1.0 + w.c0 as f64, c) && close(e[5] - 1.0 + w.r0 as f64, r));
+            // and the truth is found: 4°, 1.05 about the template centre;
+            // the position within 0.1 px (the bicubic copy and LSM's
+            // bilinear resampling each err by a few hundredths on a photo)
+            assert!(
+                (e[0] - sc * th.cos()).abs() < 0.01 && (e[3] - sc * th.sin()).abs() < 0.01,
+                "{e:?}"
+            );
+            assert!(
+                (c - 252.4).abs() < 0.1 && (r - 131.7).abs() < 0.1,
+                "{c}, {r}"
+            );
+        }
+        assert_eq!(
+            result_numbers(&sol, "iterations")[0],
+            l.iterations.len() as f64,
+            "{model:?}"
+        );
+        // subpixel-2d with the 3×3 ρ round the best (0-based image positions)
+        let (bc, br) = m.best.unwrap();
+        let rho = m.around.unwrap();
+        let cols = [bc as f64 - 1.0, bc as f64, bc as f64 + 1.0];
+        let rows = [br as f64 - 1.0, br as f64, br as f64 + 1.0];
+        let sol = solve(
+            "subpixel-2d",
+            &Record::new()
+                .with("c", Value::numbers(&cols))
+                .with("r", Value::numbers(&rows))
+                .with(
+                    "rho",
+                    Value::matrix(&rho.iter().map(|r| r.to_vec()).collect::<Vec<_>>()),
+                ),
+        )
+        .unwrap();
+        let (qc, qr) = m.subpixel.unwrap();
+        assert_eq!(result_numbers(&sol, "c_max")[0], qc);
+        assert_eq!(result_numbers(&sol, "r_max")[0], qr);
+    }
+}
+
 #[test]
 fn the_fiducial_fit_on_the_generated_frame_recovers_the_known_affine() {
     let img = sample::scanned_frame();
@@ -303,6 +450,99 @@ fn the_fiducial_fit_on_the_generated_frame_recovers_the_known_affine() {
         rms(&sim),
         rms(&aff)
     );
+}
+
+/// The projective map through four point pairs, solved here on its own:
+/// x·(h7·u + h8·v + 1) = h1·u + h2·v + h3, y·(…) = h4·u + h5·v + h6, eight
+/// equations in eight unknowns by Gaussian elimination with pivoting.
+type XY = (f64, f64);
+
+fn homography(pairs: &[(XY, XY)]) -> [f64; 8] {
+    let mut m = Vec::new();
+    for &((u, v), (x, y)) in pairs {
+        m.push(vec![u, v, 1.0, 0.0, 0.0, 0.0, -x * u, -x * v, x]);
+        m.push(vec![0.0, 0.0, 0.0, u, v, 1.0, -y * u, -y * v, y]);
+    }
+    for k in 0..8 {
+        let p = (k..8)
+            .max_by(|&a, &b| m[a][k].abs().total_cmp(&m[b][k].abs()))
+            .unwrap();
+        m.swap(k, p);
+        let pivot = m[k].clone();
+        for (i, row) in m.iter_mut().enumerate() {
+            if i != k {
+                let f = row[k] / pivot[k];
+                for (x, p) in row.iter_mut().zip(&pivot).skip(k) {
+                    *x -= f * p;
+                }
+            }
+        }
+    }
+    std::array::from_fn(|k| m[k][8] / m[k][k])
+}
+
+#[test]
+fn projective_rectification_equals_fit_and_the_point_functions() {
+    let img = random(40, 30, 9);
+    let (w, h) = (16, 12);
+    // a quadrilateral clicked clockwise from the top left (fractional, as
+    // clicks are)
+    let clicked = [(5.3, 4.1), (33.7, 6.4), (30.2, 25.6), (7.9, 22.2)];
+    let t = ops::projective(&clicked, w, h).unwrap();
+    // the 004 table's projective model through transform::fit, output
+    // corners to the clicked points
+    let corners = [(0.0, 0.0), (15.0, 0.0), (15.0, 11.0), (0.0, 11.0)];
+    let pairs: Vec<PointPair> = corners
+        .iter()
+        .zip(&clicked)
+        .map(|(&(u, v), &(x, y))| PointPair { u, v, x, y })
+        .collect();
+    let fit = transform::fit(transform::Model::Projective, &pairs).unwrap();
+    assert_eq!(t.params, fit.transform.params);
+    // the corners land on the clicks, and every output pixel where the
+    // independent solution puts it
+    let hm = homography(&corners.iter().copied().zip(clicked).collect::<Vec<_>>());
+    for (&(u, v), &(x, y)) in corners.iter().zip(&clicked) {
+        let (px, py) = t.apply(u, v).unwrap();
+        assert!((px - x).abs() < 1e-9 && (py - y).abs() < 1e-9, "({u}, {v})");
+    }
+    let methods = [Method::Nearest, Method::Bilinear, Method::Bicubic];
+    let map = |x: f64, y: f64| t.apply(x, y).unwrap_or((f64::NAN, f64::NAN));
+    let grids = ops::warp(&img, w, h, &map, &methods);
+    let mut inside = [0; 3];
+    for r in 0..h {
+        for c in 0..w {
+            let (u, v) = (c as f64, r as f64);
+            let den = hm[6] * u + hm[7] * v + 1.0;
+            let x = (hm[0] * u + hm[1] * v + hm[2]) / den;
+            let y = (hm[3] * u + hm[4] * v + hm[5]) / den;
+            let (px, py) = t.apply(u, v).unwrap();
+            assert!((px - x).abs() < 1e-9 && (py - y).abs() < 1e-9, "({c}, {r})");
+            for (k, m) in methods.iter().enumerate() {
+                let want = match m {
+                    Method::Nearest => resample::nearest(&img, px, py).map(|n| n.value),
+                    Method::Bilinear => resample::bilinear(&img, px, py).map(|n| n.value),
+                    Method::Bicubic => {
+                        resample::bicubic(&img, px, py, resample::SEED_A).map(|n| n.value)
+                    }
+                };
+                if want.is_some() {
+                    inside[k] += 1;
+                }
+                assert_eq!(
+                    grids[k].get(c, r),
+                    Some(want.unwrap_or(0.0)),
+                    "{m:?} ({c}, {r})"
+                );
+            }
+        }
+    }
+    // the quadrilateral lies inside the image: every output pixel has a value
+    assert_eq!(inside, [w * h; 3]);
+    // three points on a line have no projective map
+    let flat = [(1.0, 1.0), (5.0, 5.0), (9.0, 9.0), (13.0, 13.0)];
+    let e = ops::projective(&flat, w, h).unwrap_err().to_string();
+    assert!(e.starts_with("points"), "{e}");
 }
 
 #[test]

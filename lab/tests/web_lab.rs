@@ -4,6 +4,9 @@
 
 use js_sys::{Array, Float64Array, Reflect};
 use photogrammetry_lab::wasm::*;
+use photogrammetry_playground::interest;
+use photogrammetry_playground::raster::Grid;
+use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
@@ -94,6 +97,21 @@ fn bad_files_throw_errors_naming_the_file() {
             &include_bytes!("corpus/missing_tag.tif")[..],
             "TIFF",
         ),
+        (
+            "truncated.png",
+            &include_bytes!("corpus/truncated.png")[..],
+            "PNG",
+        ),
+        (
+            "zero_width.png",
+            &include_bytes!("corpus/zero_width.png")[..],
+            "PNG",
+        ),
+        (
+            "unsupported.gif",
+            &include_bytes!("corpus/unsupported.gif")[..],
+            "is a GIF image, a format the lab does not read",
+        ),
     ] {
         let m = message(decode_image(name, bytes).err().expect(name));
         assert!(
@@ -118,10 +136,9 @@ fn one_operator_of_each_family_across_the_boundary() {
     let out = run_edges(&img, "sobel", "crop").unwrap();
     assert!((data(&layer(&out, 0))[0] + 320.0).abs() < 1e-12);
     assert!((data(&layer(&out, 1))[0] - 80.0).abs() < 1e-12);
-    // interest: the frame sample's maps exist where a 5×5 window fits
+    // interest: Moravec on a textured checkerboard (below)
+    moravec_points_are_the_window_means_kept_by_the_rule();
     let frame = scanned_frame();
-    let out = run_moravec(&frame, 4, 1e9).unwrap();
-    assert_eq!(Float64Array::from(get(&out, "points")).length(), 0);
     // correlation: a template found in its own image with ρ = 1
     let t = [40.0, 490.0, 21.0, 21.0];
     let s = [30.0, 480.0, 41.0, 41.0];
@@ -154,6 +171,94 @@ fn one_operator_of_each_family_across_the_boundary() {
             .unwrap(),
     );
     assert!(m.starts_with("template: "), "{m}");
+}
+
+/// A 64 × 48 checkerboard of 8-pixel squares with a texture.
+fn checkerboard() -> Vec<u8> {
+    (0..64 * 48)
+        .map(|i| {
+            let (c, r) = (i % 64, i / 64);
+            (if ((c / 8) + (r / 8)) % 2 == 1 {
+                200
+            } else {
+                50
+            } + (c * 7 + r * 13) % 17) as u8
+        })
+        .collect()
+}
+
+/// Moravec across the boundary: every point's value is the core's
+/// `moravec` mean of its 4 × 4 window (moravec-window's `mean`), above the
+/// threshold, and the points are exactly the cells above the threshold with
+/// no larger value within ±2 cells (ties: the first in row-major order),
+/// worked out here from the layer.
+fn moravec_points_are_the_window_means_kept_by_the_rule() {
+    let bytes = checkerboard();
+    let img = image_from_u8(64, 48, &bytes).unwrap();
+    let grid = Grid::new(
+        "image",
+        64,
+        48,
+        bytes.iter().map(|&b| f64::from(b)).collect(),
+    )
+    .unwrap();
+    let threshold = 2000.0;
+    let out = run_moravec(&img, 4, threshold).unwrap();
+    let l = layer(&get(&out, "layers"), 0);
+    let (w, h) = (
+        get(&l, "width").as_f64().unwrap() as usize,
+        get(&l, "height").as_f64().unwrap() as usize,
+    );
+    let (c0, r0) = (
+        get(&l, "c0").as_f64().unwrap() as usize,
+        get(&l, "r0").as_f64().unwrap() as usize,
+    );
+    let map = data(&l);
+    let at = |c: usize, r: usize| -> Option<f64> {
+        (c >= c0 && r >= r0 && c < c0 + w && r < r0 + h)
+            .then(|| map[(r - r0) * w + c - c0])
+            .filter(|v| v.is_finite())
+    };
+    // the layer is the window means at every pixel that has a window
+    let mut cells = 0;
+    for r in 0..48 {
+        for c in 0..64 {
+            let want = interest::window_at(&grid, c, r, 4)
+                .map(|win| interest::moravec(&win).unwrap().mean);
+            assert_eq!(at(c, r), want, "({c}, {r})");
+            cells += usize::from(want.is_some());
+        }
+    }
+    assert!(cells > 40 * 60, "{cells}");
+    let pts = Float64Array::from(get(&out, "points")).to_vec();
+    let got: Vec<(usize, usize, f64)> = pts
+        .chunks(6)
+        .map(|p| (p[0] as usize, p[1] as usize, p[2]))
+        .collect();
+    let mut want = Vec::new();
+    for r in 0..48usize {
+        for c in 0..64usize {
+            let Some(v) = at(c, r).filter(|&v| v > threshold) else {
+                continue;
+            };
+            let beaten = (r.saturating_sub(2)..=(r + 2).min(47)).any(|rr| {
+                (c.saturating_sub(2)..=(c + 2).min(63)).any(|cc| {
+                    at(cc, rr)
+                        .filter(|&x| x > threshold)
+                        .is_some_and(|x| x > v || (x == v && (rr, cc) < (r, c)))
+                })
+            });
+            if !beaten {
+                want.push((c, r, v));
+            }
+        }
+    }
+    assert!(want.len() >= 10, "{} points", want.len());
+    assert_eq!(got, want);
+    for (c, r, v) in got {
+        let win = interest::window_at(&grid, c, r, 4).unwrap();
+        assert_eq!(interest::moravec(&win).unwrap().mean, v);
+    }
 }
 
 #[wasm_bindgen_test]
@@ -191,16 +296,7 @@ fn a_custom_kernel_and_a_kept_forstner_map_across_the_boundary() {
     assert!(m.starts_with("custom_kernel: is missing"), "{m}");
     // Förstner: the kept map's points for a threshold equal a full run's
     // (a 64 × 48 checkerboard of 8-pixel squares with a texture)
-    let bytes: Vec<u8> = (0..64 * 48)
-        .map(|i| {
-            let (c, r) = (i % 64, i / 64);
-            (if ((c / 8) + (r / 8)) % 2 == 1 {
-                200
-            } else {
-                50
-            } + (c * 7 + r * 13) % 17) as u8
-        })
-        .collect();
+    let bytes = checkerboard();
     let frame = image_from_u8(64, 48, &bytes).unwrap();
     let mut maps = forstner_maps(&frame, 5).unwrap();
     assert_eq!(maps.size(), 5);
@@ -243,4 +339,73 @@ fn the_students_fiducial_clicks_are_refined_and_fitted() {
     assert!(m.starts_with("mark: "), "{m}");
     let m = message(fit_fiducial_marks(&[1.0, 2.0]).err().unwrap());
     assert!(m.starts_with("marks: "), "{m}");
+}
+
+// ---------------------------------------------------------------- a trap
+
+// A trap (wasm `unreachable`) aborts the instance it happens in: its Rust
+// state (stack pointer, allocator, borrowed cells) may be left half-way, so
+// the lab never calls into a trapped instance again but starts a fresh
+// worker with a fresh instance. A trap inside this test's own instance would
+// end the test run itself, so the test loads the same module (the runner's
+// `wasm-bindgen-test.js` and its `.wasm`, served beside the page) as a
+// second and a third instance through a dynamic import with a distinct
+// query (a distinct module record, so a distinct instance), traps the
+// second and shows the third decoding and filtering with known values.
+#[wasm_bindgen(inline_js = r#"
+export async function trap_then_fresh(png) {
+  const glue = new URL("/wasm-bindgen-test.js", location.href).href;
+  const wasm = new URL("/wasm-bindgen-test_bg.wasm", location.href).href;
+  const instance = async (tag) => {
+    const m = await import(`${glue}?instance=${tag}`);
+    await m.default({ module_or_path: wasm });
+    return m;
+  };
+  const a = await instance("trapped");
+  let trapped = "";
+  try {
+    a.trap_for_tests();
+  } catch (e) {
+    trapped = `${e.constructor.name}: ${e.message}`;
+  }
+  const b = await instance("fresh");
+  const img = b.decode_image("grey8.png", png);
+  const out = b.run_filter(img, "mean", "crop", undefined, undefined);
+  const layer = out[0];
+  return { trapped, width: img.width(), height: img.height(), grey: Array.from(img.grey()), c0: layer.c0, mean: layer.data[0] };
+}
+"#)]
+extern "C" {
+    #[wasm_bindgen(catch)]
+    fn trap_then_fresh(png: &[u8]) -> Result<js_sys::Promise, JsValue>;
+}
+
+#[wasm_bindgen_test]
+async fn after_a_trap_a_fresh_instance_of_the_module_works() {
+    let promise = trap_then_fresh(GREY8).expect("the helper starts");
+    let out = wasm_bindgen_futures::JsFuture::from(promise)
+        .await
+        .expect("a fresh instance loads and runs");
+    let trapped = get(&out, "trapped").as_string().unwrap();
+    assert!(
+        trapped.starts_with("RuntimeError: unreachable"),
+        "{trapped}"
+    );
+    assert_eq!(get(&out, "width").as_f64(), Some(4.0));
+    assert_eq!(get(&out, "height").as_f64(), Some(3.0));
+    let grey: Vec<f64> = Array::from(&get(&out, "grey"))
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(
+        grey,
+        (0..12)
+            .map(|i| (10 * (i % 4) + 40 * (i / 4)) as f64)
+            .collect::<Vec<_>>()
+    );
+    // the 3×3 mean at (1, 1) of g = 10c + 40r is g(1, 1) = 50
+    assert_eq!(get(&out, "c0").as_f64(), Some(1.0));
+    assert!((get(&out, "mean").as_f64().unwrap() - 50.0).abs() < 1e-12);
+    // and this test's own instance is untouched
+    assert!(decode_image("grey8.png", GREY8).is_ok());
 }

@@ -186,6 +186,8 @@ fn lsm_2d_fields() -> Vec<Field> {
             .unit("px")
             .range(1.0, MAX_2D as f64)
             .help("Row of the template's centre in the search window."),
+        flag("radiometric", "Estimate gain a and offset b", true)
+            .help("Example 11 estimates the radiometric change G_t = a·G_s + b with the shift; off, a and b stay at their start values and only the shift is estimated."),
         Field::number("a0", "Start gain a⁰", 1.0)
             .range(-1000.0, 1000.0)
             .help("Start value of the gain a in G_t = a·G_s + b."),
@@ -206,18 +208,86 @@ fn lsm_2d_fields() -> Vec<Field> {
     ]
 }
 
+/// The two kinds of pair `lsm-affine` matches: one generated with a known
+/// change, or two patches given as grey values (e.g. from the image lab).
+const PAIR_OPTIONS: &[(&str, &str)] = &[
+    ("generated", "Generated, with a known change"),
+    ("patches", "Given patches (as from the lab)"),
+];
+const GENERATED: &[&str] = &["generated"];
+const PATCHES: &[&str] = &["patches"];
+
+/// The default given pair: an 11 × 11 texture and a 7 × 7 template made
+/// from it (rotated 4°, scaled 1.05, centred at column 6.3, row 5.8,
+/// gain 1.1, offset −5, rounded to whole grey values).
+fn affine_search_default() -> Vec<Vec<f64>> {
+    [
+        [150, 173, 180, 165, 133, 93, 63, 52, 65, 94, 127],
+        [153, 181, 190, 175, 143, 106, 80, 72, 83, 104, 124],
+        [142, 169, 177, 165, 140, 115, 101, 103, 116, 131, 137],
+        [129, 147, 149, 137, 120, 110, 113, 129, 150, 163, 159],
+        [127, 130, 118, 101, 89, 91, 110, 140, 170, 185, 179],
+        [140, 125, 100, 74, 61, 69, 97, 136, 170, 188, 182],
+        [162, 135, 98, 66, 50, 58, 87, 124, 155, 170, 164],
+        [178, 147, 109, 76, 61, 68, 91, 118, 137, 142, 132],
+        [177, 150, 119, 95, 87, 96, 113, 127, 130, 118, 99],
+        [155, 136, 117, 109, 115, 131, 146, 149, 136, 110, 79],
+        [121, 106, 100, 109, 131, 157, 175, 174, 152, 116, 79],
+    ]
+    .iter()
+    .map(|r| r.iter().map(|&x| f64::from(x)).collect())
+    .collect()
+}
+
+fn affine_template_default() -> Vec<Vec<f64>> {
+    [
+        [192, 169, 135, 108, 99, 110, 130],
+        [171, 151, 128, 117, 123, 144, 166],
+        [137, 117, 103, 106, 129, 163, 190],
+        [109, 84, 72, 84, 118, 160, 190],
+        [101, 68, 54, 68, 103, 142, 170],
+        [111, 75, 61, 73, 101, 130, 146],
+        [125, 96, 87, 100, 122, 137, 136],
+    ]
+    .iter()
+    .map(|r| r.iter().map(|&x| f64::from(x)).collect())
+    .collect()
+}
+
 fn lsm_affine_fields() -> Vec<Field> {
     let n = |key, label, default, lo, hi, unit: Option<&'static str>, help| {
-        let f = Field::number(key, label, default).range(lo, hi).help(help);
+        let f = Field::number(key, label, default)
+            .range(lo, hi)
+            .help(help)
+            .when("pair", GENERATED);
         match unit {
             Some(u) => f.unit(u),
             None => f,
         }
     };
     vec![
+        Field::choice("pair", "Patch pair", PAIR_OPTIONS, "generated")
+            .help("Generated: a texture seen through a known affine and radiometric change; the truth is shown beside the estimates. Given: any template and search window as grey values, and a start position (the image lab links its affine matches here)."),
+        matrix("template", "Template T", &affine_template_default())
+            .help("The template's grey values, rows top to bottom (at most 64 × 64).")
+            .when("pair", PATCHES),
+        matrix("search", "Search window S", &affine_search_default())
+            .help("The search window's grey values; columns c and rows r count from 1 (at most 64 × 64).")
+            .when("pair", PATCHES),
+        Field::number("c0", "Start column c⁰", 6.0)
+            .unit("px")
+            .range(1.0, MAX_2D as f64)
+            .help("Column of the template's centre in the search window to start from; the affine part starts as the identity, gain 1, offset 0.")
+            .when("pair", PATCHES),
+        Field::number("r0", "Start row r⁰", 6.0)
+            .unit("px")
+            .range(1.0, MAX_2D as f64)
+            .help("Row of the template's centre in the search window to start from.")
+            .when("pair", PATCHES),
         Field::integer("patch_size", "Template size", 21.0)
             .range(5.0, 41.0)
-            .help("Side of the square template in pixels (odd)."),
+            .help("Side of the square template in pixels (odd).")
+            .when("pair", GENERATED),
         n(
             "shift_c",
             "Shift in c (a3)",
@@ -292,7 +362,8 @@ fn lsm_affine_fields() -> Vec<Field> {
         ),
         Field::integer("seed", "Random seed", 1.0)
             .range(0.0, 1e9)
-            .help("Chooses the texture and the noise; the same seed gives the same pair."),
+            .help("Chooses the texture and the noise; the same seed gives the same pair.")
+            .when("pair", GENERATED),
         max_iterations(),
     ]
 }

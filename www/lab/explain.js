@@ -3,7 +3,7 @@
 // where in that example's result the same number is (`key`, `index`).
 // Pure functions: rows of numbers in, a hash out (through url.js).
 
-import { buildHash } from "../url.js";
+import { buildHash, MAX_URL_VALUE_LENGTH } from "../url.js";
 
 /** Rows of numbers as the matrix text the forms read ("1,2,3;4,5,6"). */
 export function matrixText(rows) {
@@ -53,14 +53,25 @@ export function customFilterLink(rows, divisor, window, w) {
   };
 }
 
-/** edge-window: the 5×5 neighbourhood; gx, gy, magnitude at the centre of the 3×3 interior. */
+/**
+ * edge-window: the 5×5 neighbourhood; gx, gy, magnitude at the centre of
+ * the 3×3 interior. edge-window has no direction result: a direction pixel
+ * links to the same window with `derive` saying how its value follows from
+ * the example's gx and gy there (`direction(gx, gy)`).
+ */
 export function edgeLink(operator, window, layerName) {
-  const key = layerName === "direction" ? "magnitude" : layerName;
+  const dir = layerName === "direction";
   return {
     hash: buildHash("edge-window", [["window", matrixText(toRows(window, 5))], ["operator", operator]]),
-    key,
+    key: dir ? "gx" : layerName,
     index: [1, 1],
+    ...(dir ? { derive: { keys: ["gx", "gy"], formula: "atan2(gy, gx) in degrees" } } : {}),
   };
+}
+
+/** The lab's edge direction from gx and gy: atan2(gy, gx) in degrees (as `ops::edges`). */
+export function direction(gx, gy) {
+  return (Math.atan2(gy, gx) * 180) / Math.PI;
 }
 
 /** forstner-window: the window whose anchor is the pixel. */
@@ -108,20 +119,44 @@ export function subpixelLink(best, around) {
   };
 }
 
-/** lsm-2d: the template, the LSM window and the start (1-based). */
-export function lsmLink(template, tw, search, sw, start) {
-  return {
-    hash: buildHash("lsm-2d", [
-      ["template", matrixText(toRows(template, tw))],
-      ["search", matrixText(toRows(search, sw))],
-      ["c0", String(start[0] + 1)],
-      ["r0", String(start[1] + 1)],
-      ["a0", "1"],
-      ["b0", "0"],
-    ]),
-    key: "c",
-    index: null,
-  };
+/** The longest value a link carries (url.js reads at most MAX_URL_VALUE_LENGTH characters of one). */
+function fits(entries) {
+  return entries.every(([, v]) => v.length <= MAX_URL_VALUE_LENGTH);
+}
+
+/**
+ * lsm-2d: the template, the LSM window and the start (0-based in the
+ * window; the example counts from 1), gain 1 and offset 0; `model` "shift"
+ * estimates the shift only (the example's `radiometric` off). Null when a
+ * window is too long for a URL.
+ */
+export function lsmLink(template, tw, search, sw, start, model = "shift-radiometric") {
+  const entries = [
+    ["template", matrixText(toRows(template, tw))],
+    ["search", matrixText(toRows(search, sw))],
+    ["c0", String(start[0] + 1)],
+    ["r0", String(start[1] + 1)],
+    ["radiometric", model === "shift" ? "false" : "true"],
+    ["a0", "1"],
+    ["b0", "0"],
+  ];
+  return fits(entries) ? { hash: buildHash("lsm-2d", entries), key: "c", index: null } : null;
+}
+
+/**
+ * lsm-affine with the given patches: the template, the LSM window and the
+ * start (0-based in the window; the example counts from 1), the affine part
+ * the identity, gain 1, offset 0. Null when a window is too long for a URL.
+ */
+export function lsmAffineLink(template, tw, search, sw, start) {
+  const entries = [
+    ["pair", "patches"],
+    ["template", matrixText(toRows(template, tw))],
+    ["search", matrixText(toRows(search, sw))],
+    ["c0", String(start[0] + 1)],
+    ["r0", String(start[1] + 1)],
+  ];
+  return fits(entries) ? { hash: buildHash("lsm-affine", entries), key: "parameters", index: null } : null;
 }
 
 /** resample: the 4×4 patch round (x, y), its first pixel, the position. */

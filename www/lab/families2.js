@@ -174,15 +174,21 @@ const correlation = {
         if (res.subpixel) {
           rows.push(["Subpixel peak (3×3 quadric)", `c ${fmt(res.subpixel[0], 7)}, r ${fmt(res.subpixel[1], 7)}`]);
           links.push(link(X.subpixelLink(res.best, res.around), "the subpixel peak: subpixel-2d"));
+          document.body.dataset.subpixel = res.subpixel.join(",");
         }
         if (lsm) {
           const p = lsm.params;
           rows.push([`LSM (${model.value}), ${lsm.iterations.length} iterations, ${lsm.status}`,
             `c ${fmt(p[2] + lsm.window[0], 7)}, r ${fmt(p[5] + lsm.window[1], 7)}; gain ${fmt(p[6])}, offset ${fmt(p[7])}${model.value === "affine" ? `; [a1 a2; a4 a5] = [${fmt(p[0])} ${fmt(p[1])}; ${fmt(p[3])} ${fmt(p[4])}]` : ""}`]);
-          if (model.value === "shift-radiometric" && lsm.window[2] <= 64 && lsm.window[3] <= 64) {
-            const sw = await lab.run("window", { slot: last.slot, c: lsm.window[0], r: lsm.window[1], w: lsm.window[2], h: lsm.window[3] });
-            if (sw) links.push(link(X.lsmLink(template, n, sw, lsm.window[2], [lsm.start[2], lsm.start[5]]), "the matching: lsm-2d"));
-          }
+          // every model has its example: the shift models lsm-2d (shift
+          // only: its radiometry off), affine + radiometric lsm-affine with
+          // the given patches; the same window, start and core matching
+          const sw = await lab.run("window", { slot: last.slot, c: lsm.window[0], r: lsm.window[1], w: lsm.window[2], h: lsm.window[3] });
+          const start = [lsm.start[2], lsm.start[5]];
+          const l = sw && (model.value === "affine" ? X.lsmAffineLink(template, n, sw, lsm.window[2], start) : X.lsmLink(template, n, sw, lsm.window[2], start, model.value));
+          if (l) links.push(link(l, model.value === "affine" ? "the matching: lsm-affine" : "the matching: lsm-2d"));
+          else if (sw) links.push(el("span", { class: "muted" }, `(the ${lsm.window[2]}×${lsm.window[3]} LSM window is too long for a link: a smaller template gives one)`));
+          document.body.dataset.lsm = [...p, lsm.window[0], lsm.window[1]].join(",");
         }
         lab.explain.replaceChildren(
           el("table", { class: "lab-table", id: "lab-match" }, rows.map(([k, v]) => el("tr", {}, el("th", {}, k), el("td", {}, v)))),
@@ -281,8 +287,10 @@ const resampling = {
       pick(c, r, pos) {
         if (kind.value !== "projective") return;
         clicks.push(pos);
-        lab.viewer.setShapes(clicks.map(([x, y]) => ({ kind: "dot", c: x - 0.5, r: y - 0.5, size: 4 })));
+        // pos has pixel centres at integers, as the dots' c, r
+        lab.viewer.setShapes(clicks.map(([x, y]) => ({ kind: "dot", c: x, r: y, size: 4 })));
         if (clicks.length === 4) {
+          document.body.dataset.warpPoints = clicks.flat().join(",");
           show({ kind: "projective", params: clicks.flat(), width: 256, height: 256 });
           clicks = [];
         }

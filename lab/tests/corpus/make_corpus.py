@@ -3,7 +3,9 @@
 
 Good files with known pixel values: grey 8-bit PNG, grey 16-bit PNG, RGB PNG,
 TIFF 8-bit grey (strips), TIFF 16-bit grey (strips), TIFF 8-bit RGB (tiles),
-TIFF 16-bit RGB (strips). The JPEGs are written by the lab's ignored test
+TIFF 16-bit RGB (strips), TIFF 8-bit and 16-bit grey in several tiles,
+TIFF 8-bit grey compressed with Deflate; and a GIF, a format the lab does
+not read. The JPEGs are written by the lab's ignored test
 `write_jpegs` (flat 8×8 blocks, which baseline JPEG stores exactly).
 Bad files: truncated PNG, PNG with a wrong CRC, zero-width PNG, a PNG header
 claiming 100000×100000, a decompression bomb (5000×5000 zeros in a few kB),
@@ -53,14 +55,26 @@ def rgb16(c, r):
 
 W, H = 4, 3
 
+# The multi-tile and compressed TIFFs: 40 × 24 pixels.
+TW, TH = 40, 24
+
+
+def tile8(c, r):
+    return (7 * c + 11 * r) % 256
+
+
+def tile16(c, r):
+    return 1000 * c + 1000 * r + 7  # up to 62007, not multiples of 257
+
 
 def write(name, data):
     with open(os.path.join(HERE, name), "wb") as f:
         f.write(data)
 
 
-def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None):
-    """Little-endian baseline TIFF, uncompressed; strips (one per row) or
+def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None, deflate=False):
+    """Little-endian baseline TIFF, uncompressed (or each strip or tile
+    zlib-compressed: `deflate`, compression 8); strips (one per row) or
     tiles (tile size `tiles`, padded)."""
     entries = []
 
@@ -84,6 +98,8 @@ def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None):
     else:
         for r in range(height):
             data_blobs.append(b"".join(pixel_bytes(c, r) for c in range(width)))
+    if deflate:
+        data_blobs = [zlib.compress(b, 9) for b in data_blobs]
     # layout: header(8) | blobs | bits-per-sample array | offsets | counts | IFD
     offset = 8
     offs = []
@@ -114,7 +130,7 @@ def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None):
         tag(258, 3, 1, bps)
     else:
         tag(258, 3, spp, bps_off)
-    tag(259, 3, 1, 1)  # no compression
+    tag(259, 3, 1, 8 if deflate else 1)  # Deflate or no compression
     tag(262, 3, 1, 1 if spp == 1 else 2)  # BlackIsZero / RGB
     if tiles:
         tag(322, 4, 1, tiles[0])
@@ -152,6 +168,15 @@ def main():
     write("grey16_strips.tif", tiff(W, H, 1, 16, lambda c, r: struct.pack("<H", grey16(c, r))))
     write("rgb8_tiles.tif", tiff(W, H, 3, 8, lambda c, r: bytes(rgb8(c, r)), tiles=(16, 16)))
     write("rgb16_strips.tif", tiff(W, H, 3, 16, lambda c, r: struct.pack("<HHH", *rgb16(c, r))))
+    # several tiles: 40 × 24 pixels in 16 × 16 tiles (3 × 2 tiles, the
+    # right and bottom ones padded); 8-bit and 16-bit grey
+    write("grey8_tiles.tif", tiff(TW, TH, 1, 8, lambda c, r: bytes([tile8(c, r)]), tiles=(16, 16)))
+    write("grey16_tiles.tif", tiff(TW, TH, 1, 16, lambda c, r: struct.pack("<H", tile16(c, r)), tiles=(16, 16)))
+    # compressed: Deflate (TIFF compression 8), one strip per row
+    write("grey8_deflate.tif", tiff(TW, TH, 1, 8, lambda c, r: bytes([tile8(c, r)]), deflate=True))
+    # a format the lab does not read: a 1 × 1 GIF
+    write("unsupported.gif", b"GIF89a" + struct.pack("<HHBBB", 1, 1, 0x80, 0, 0) + b"\x00\x00\x00\xff\xff\xff"
+          + b"\x2c" + struct.pack("<HHHHB", 0, 0, 1, 1, 0) + b"\x02\x02\x44\x01\x00" + b"\x3b")
     # bad files
     good = png(W, H, 8, 0, [bytes(grey8(c, r) for c in range(W)) for r in range(H)])
     write("truncated.png", good[: len(good) - 30])

@@ -26,7 +26,13 @@ pub(super) fn lsm_2d(inputs: &Record) -> Result<Solution> {
         "patch-edge" => Gradients::PatchEdge,
         _ => Gradients::SearchWindow,
     };
-    let set = settings(Model::ShiftRadiometric, gradients, inputs)?;
+    let radiometric = flag_value(inputs, "radiometric")?;
+    let model = if radiometric {
+        Model::ShiftRadiometric
+    } else {
+        Model::Shift
+    };
+    let set = settings(model, gradients, inputs)?;
     let start = Params::shift(c0 - 1.0, r0 - 1.0, a0, b0);
     let m = matching::match_2d(&t, &sw, start, set).map_err(|e| said_of(e, "c0"))?;
     let syms = symbols(&m.estimated, true);
@@ -84,11 +90,24 @@ pub(super) fn lsm_2d(inputs: &Record) -> Result<Solution> {
         NoteKind::Convention,
         "Columns c (to the right) and rows r (downward) count from 1 as in the course notes; (c, r) is the search-window position of the template's centre pixel.",
     ).about(&["c", "r"]);
-    if seed_inputs(
-        &lsm_2d_fields(),
-        inputs,
-        &["template", "search", "c0", "r0", "a0", "b0"],
-    ) {
+    if !radiometric {
+        s.note(
+            NoteKind::Convention,
+            format!(
+                "Shift only: the gain and offset are not estimated but kept at their start values a = {}, b = {}, so each equation has the two columns ∂G_s/∂c, ∂G_s/∂r.",
+                num(a0),
+                num(b0)
+            ),
+        )
+        .about(&["a", "b"]);
+    }
+    if radiometric
+        && seed_inputs(
+            &lsm_2d_fields(),
+            inputs,
+            &["template", "search", "c0", "r0", "a0", "b0"],
+        )
+    {
         ex11_notes(&mut s, &m, gradients, inputs)?;
     }
     label_results(&mut s);
@@ -103,6 +122,7 @@ pub(super) fn first_iteration_2d(
     syms: &[&str],
 ) {
     let (a0, b0) = (it.params.gain(), it.params.offset());
+    let radiometric = syms.contains(&"a");
     let modelled: Vec<f64> = it.patch.data().iter().map(|g| a0 * g + b0).collect();
     s.step(
         Step::new(
@@ -142,12 +162,15 @@ pub(super) fn first_iteration_2d(
         for i in 0..w as isize {
             let k = (j as usize) * w + i as usize;
             let arow = it.a.get(k);
-            rows.push(vec![
+            let mut row = vec![
                 format!(r"({} - {})/2", num(pick(i + 1, j)), tex(pick(i - 1, j))),
                 format!(r"({} - {})/2", num(pick(i, j + 1)), tex(pick(i, j - 1))),
-                num(arow.and_then(|r| r.get(2)).copied().unwrap_or(0.0)),
-                "1".to_string(),
-            ]);
+            ];
+            if radiometric {
+                row.push(num(arow.and_then(|r| r.get(2)).copied().unwrap_or(0.0)));
+                row.push("1".to_string());
+            }
+            rows.push(row);
         }
     }
     let how = match gradients {
@@ -155,11 +178,12 @@ pub(super) fn first_iteration_2d(
         Gradients::PatchEdge => "Central differences inside the patch only: an edge pixel stands in for its neighbour outside the patch (what the printed matrix does).",
     };
     let gain = if a0 == 1.0 { "" } else { r"a^0\," };
+    let tail = if radiometric { r",\ G_s(c,r),\ 1" } else { "" };
     s.step(
         Step::new("Design matrix A (iteration 1)", how)
             .formula(
                 &format!(
-                    r"A_i = [{gain}\tfrac{{G_s(c+1,r) - G_s(c-1,r)}}{{2}},\ {gain}\tfrac{{G_s(c,r+1) - G_s(c,r-1)}}{{2}},\ G_s(c,r),\ 1]"
+                    r"A_i = [{gain}\tfrac{{G_s(c+1,r) - G_s(c-1,r)}}{{2}},\ {gain}\tfrac{{G_s(c,r+1) - G_s(c,r-1)}}{{2}}{tail}]"
                 ),
                 format!(r"A = {} = {}", bmatrix(&rows), numeric(&it.a)),
             )
