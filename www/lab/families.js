@@ -220,7 +220,7 @@ const edges = {
         const v = layerValue(layer, c, r);
         if (!used || v === null) return;
         let link = null;
-        if (layer.name !== "direction") {
+        {
           const win = await lab.run("neighbourhood", { c, r, w: 5, h: 5, border: used.border }, "Reading the window");
           if (win) link = X.edgeLink(used.operator, win, layer.name);
         }

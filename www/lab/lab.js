@@ -475,6 +475,9 @@ class Lab {
       link
         ? el("p", {}, el("a", { href: `index.html${link.hash}`, id: "lab-explain-link", "data-key": link.key, "data-index": link.index ? link.index.join(",") : "" }, "Explain this pixel: open the worked example with this window →"))
         : "",
+      link && link.derive
+        ? el("p", { class: "lab-note" }, `The example gives ${link.derive.keys.join(" and ")}; this layer is ${link.derive.formula}.`)
+        : "",
     );
     this.explain.hidden = false;
   }
