@@ -433,6 +433,7 @@ test("a clicked pixel of each family opens its worked example with the same numb
     ["edges", async () => page.selectOption("#lab-operator", "sobel"), "magnitude", [300, 300]],
     ["edges", async () => page.selectOption("#lab-operator", "prewitt"), "gx", [300, 300]],
     ["edges", async () => page.selectOption("#lab-operator", "prewitt"), "gy", [120, 222]],
+    ["edges", async () => page.selectOption("#lab-operator", "sobel"), "direction", [310, 290]],
     ["interest", async () => page.selectOption("#lab-interest", "forstner"), "w", [260, 120]],
     ["interest", async () => page.selectOption("#lab-interest", "moravec"), "moravec", [100, 420]],
   ];
@@ -453,6 +454,16 @@ test("a clicked pixel of each family opens its worked example with the same numb
     assert.match(await page.textContent("#lab-explain"), new RegExp(`at column ${c}, row ${r}:`));
     const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
     assert.equal(shown, inLab, `${family}/${layer}: the explained value is the layer's at (${c}, ${r})`);
+    if (layer === "direction") {
+      // edge-window has no direction result: the link opens the same window, and the lab says how the layer follows
+      assert.match(await page.textContent("#lab-explain"), /atan2\(gy, gx\) in degrees/);
+      const { v: gx, href } = await followExplain(page);
+      assert.match(href, /#\/edge-window.*operator=sobel/, href);
+      const gy = JSON.parse(await page.locator('.result-table tr[data-key="gy"] td.exact').getAttribute("data-value"))[1][1];
+      const want = (Math.atan2(gy, gx) * 180) / Math.PI;
+      assert.ok(Math.abs(want - shown) < 1e-9, `${href}: atan2 of the example's gy ${gy}, gx ${gx} is ${want}; the lab showed ${shown}`);
+      continue;
+    }
     const { v, href } = await followExplain(page);
     if (family === "edges") assert.match(href, new RegExp(`#/edge-window.*operator=${layer === "magnitude" ? "sobel" : "prewitt"}`), href);
     assert.equal(v, shown, `${href}: the example gives ${v}, the lab showed ${shown}`);
