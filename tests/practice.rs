@@ -208,6 +208,108 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 fail("latitude too near the equator or the UTM limits")
             }
         }
+        "gsd" => {
+            // an aerial photo: scale 1:1 000 to 1:100 000, GSD 1 cm to 10 m
+            let (m, gsd) = (num(r, "scale_denominator"), num(r, "gsd_cm"));
+            if !((1_000.0..=100_000.0).contains(&m) && (1.0..=1000.0).contains(&gsd)) {
+                fail(&format!("scale 1:{m} or GSD {gsd} cm is not an aerial photo's"))
+            }
+        }
+        "fiducial-similarity" | "fiducial-affine" | "transform-fit" => {
+            // N well conditioned (columns scaled), far from the solver's
+            // warning at 10⁸, and σ₀ small beside the point spread
+            let cond = step_num(s, "condition");
+            if !(cond.is_finite() && cond < 1e3) {
+                fail(&format!("N's condition number {cond} is not below 1000"))
+            }
+            if !(num(r, "sigma0") > 0.0 && num(r, "sigma0") < 0.5) {
+                fail("σ₀ is zero (exact points) or the fit does not fit")
+            }
+        }
+        "lsm-1d" | "lsm-2d" | "lsm-affine" => {
+            if r.get("converged") != Some(&Value::Bool(true))
+                || r.get("status") != Some(&Value::Text("converged".into()))
+                || num(r, "iterations") > 30.0
+            {
+                fail("the least-squares matching does not converge")
+            }
+        }
+        "resample" => {
+            // strictly inside the 4×4 patch's middle cell: the bilinear
+            // cell and all 16 bicubic neighbours are in the patch
+            let (dc, dr) = (num(r, "dc"), num(r, "dr"));
+            let (c0, r0) = (num(&s.inputs, "first_c"), num(&s.inputs, "first_r"));
+            let (c, rr) = (num(&s.inputs, "c"), num(&s.inputs, "r"));
+            let inside = |x: f64, first: f64| x > first + 1.0 && x < first + 2.0;
+            if !(inside(c, c0) && inside(rr, r0) && dc > 0.0 && dc < 1.0 && dr > 0.0 && dr < 1.0) {
+                fail("the point is not strictly inside the patch's middle cell")
+            }
+        }
+        "filter-window" | "edge-window" | "moravec-window" => {
+            // texture: no output's 3×3 neighbourhood is flat
+            let w = matrix(&s.inputs, "window");
+            let (h, wd) = (w.len(), w[0].len());
+            for rr in 1..h - 1 {
+                for c in 1..wd - 1 {
+                    let n: Vec<f64> = (rr - 1..=rr + 1)
+                        .flat_map(|y| w[y][c - 1..=c + 1].to_vec())
+                        .collect();
+                    let spread = n.iter().copied().fold(f64::MIN, f64::max)
+                        - n.iter().copied().fold(f64::MAX, f64::min);
+                    if spread < 3.0 {
+                        fail(&format!("a flat 3×3 neighbourhood at row {rr}, column {c}"))
+                    }
+                }
+            }
+            if id == "edge-window" && step_num(s, "selected_magnitude") < 1.0 {
+                fail("no edge at the asked pixel")
+            }
+            if id == "moravec-window" && matrix(r, "sums").iter().flatten().any(|&x| x <= 0.0) {
+                fail("an interior sum is 0: a flat direction")
+            }
+        }
+        "chain-code" | "boundary-length" => {
+            // a simple 8-connected chain: no pixel twice, no two diagonal
+            // steps crossing in one 2×2 block
+            let p = matrix(&s.inputs, "pixels");
+            let steps: Vec<_> = p.windows(2).map(|w| (w[0].clone(), w[1].clone())).collect();
+            for (a, b) in &steps {
+                let (dc, dr) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+                if dc.max(dr) != 1.0 {
+                    fail("two pixels in a row are not 8-neighbours")
+                }
+            }
+            for (i, a) in p.iter().enumerate() {
+                if p[i + 1..].contains(a) {
+                    fail("the chain visits a pixel twice")
+                }
+            }
+            let block = |(a, b): &(Vec<f64>, Vec<f64>)| {
+                (a[0] != b[0] && a[1] != b[1]).then(|| (a[0].min(b[0]), a[1].min(b[1])))
+            };
+            let diagonals: Vec<_> = steps.iter().filter_map(block).collect();
+            for (i, d) in diagonals.iter().enumerate() {
+                if diagonals[i + 1..].contains(d) {
+                    fail("two diagonal steps cross")
+                }
+            }
+        }
+        "boundary-shape" => {
+            let (d, m) = (num(r, "diameter"), num(r, "minor_axis_length"));
+            if !(d >= 3.0 && m >= 2.0 && d >= m) {
+                fail("a sliver of a region (no width to measure)")
+            }
+        }
+        "utm-facts" => {
+            let lat = num(&s.inputs, "latitude").abs();
+            let x1 = num(r, "k1_distance_km");
+            if !((0.5 - 1e-9..=79.5 + 1e-9).contains(&lat)
+                && num(r, "edge_scale_factor") > 0.9996
+                && (170.0..190.0).contains(&x1))
+            {
+                fail(&format!("latitude {lat}° beyond the drawn range, k at the edge not above k₀, or k = 1 at {x1} km, not near 180 km"))
+            }
+        }
         "utm-inverse" => {
             let lat = num(r, "latitude");
             let south = s.inputs.get("hemisphere") == Some(&Value::Text("south".into()));
@@ -216,6 +318,27 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
             }
         }
         _ => {}
+    }
+}
+
+/// A number among the steps' values.
+fn step_num(s: &photogrammetry_playground::solution::Solution, key: &str) -> f64 {
+    s.steps
+        .iter()
+        .find_map(|st| st.values.number(key))
+        .unwrap_or(f64::NAN)
+}
+
+fn matrix(r: &Record, key: &str) -> Vec<Vec<f64>> {
+    match r.get(key) {
+        Some(Value::List(rows)) => rows
+            .iter()
+            .map(|row| match row {
+                Value::List(xs) => xs.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect(),
+                _ => vec![f64::NAN],
+            })
+            .collect(),
+        _ => vec![vec![f64::NAN]],
     }
 }
 

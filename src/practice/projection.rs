@@ -581,7 +581,7 @@ fn boxes_facts(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("edge_scale_factor", "Scale factor at the zone edge", None, EDGE_K)
             .nudge("k ≈ k₀·cosh(x/(k₀R)) with x half the map width and R = √(MN) the Gaussian radius at this latitude."),
         BoxDef::new("edge_distortion_ppm", "Distortion at the zone edge", Some("ppm"), PPM)
-            .nudge("(k − 1)·10⁶: millimetres per kilometre, positive where the map is too long."),
+            .nudge("(k − 1)·10⁶: millimetres per kilometre, positive where the map is too long, negative where it is too short (far north or south the edge is nearer than the line of k = 1)."),
         BoxDef::new("k1_distance_km", "Distance from the central meridian where k = 1", Some("km"), K1_KM)
             .nudge("Solve k₀·cosh(x/(k₀R)) = 1 for x."),
         BoxDef::new("k1_longitude_offset", "Longitude difference where k = 1", Some("°"), K1_DEG)
@@ -658,7 +658,7 @@ fn mistakes_facts(i: &Record) -> Result<Vec<Mistake>> {
     const GROUND: &str = "That is the width on the ground; on the map the zone is scaled by k₀ and stretched towards its edges (x(3°) on both sides).";
     const K0_: &str = "k₀ = 0.9996 scales the whole projection: k = k₀·cosh(x/(k₀R)), not cosh(x/R).";
     const PCT: &str = "ppm is parts per million, (k − 1)·10⁶; (k − 1)·100 is per cent.";
-    const SIGN: &str = "(k − 1)·10⁶ is positive where the map is longer than the ground, as at the zone's edge.";
+    const SIGN: &str = "(k − 1)·10⁶ is positive where the map is longer than the ground (k > 1), negative where it is shorter.";
     const LECTURE: &str = "The lecture's 90 km is wrong: k − k₀ grows with the square of x, so k reaches 1 only about 180 km from the central meridian.";
     const BOTH: &str = "That is the distance between the two lines of true scale; each is half of it from the central meridian.";
     let edge6 = krueger::forward(&ell, K0, lat, 6.0)?;
