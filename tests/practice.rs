@@ -1450,3 +1450,76 @@ fn carried_forward_chains() {
         );
     }
 }
+
+/// The mistake `name` of example `id` is named (the first mistake whose
+/// value the answer matches) in at least one of the first 20 variants where
+/// it changes the answer, and the value it gives is the engine's.
+fn named_somewhere(id: &str, name: &str) {
+    let spec = specs().into_iter().find(|s| s.id == id).unwrap();
+    for v in 0..20 {
+        let code = encode(v);
+        let p = variant(id, Some(&code), 0).unwrap();
+        let s = examples::solve(id, &p.inputs).unwrap();
+        for m in (spec.mistakes)(&p.inputs).unwrap() {
+            let b = p.boxes.iter().find(|b| b.key == m.key).unwrap();
+            if m.name != name || b.tolerance.accepts(value_in(&s, &m.key).unwrap(), m.value) {
+                continue;
+            }
+            let g = grade(id, &code, &answers(&[(&m.key, &format!("{}", m.value))])).unwrap();
+            if g.get(&m.key).unwrap().mistake == Some(name) {
+                return;
+            }
+        }
+    }
+    panic!("{id}: \"{name}\" is never named in the first 20 variants");
+}
+
+#[test]
+fn more_mistakes_are_named() {
+    for (id, name) in [
+        ("subpixel-1d", "½ forgotten in a₂"),
+        ("subpixel-1d", "the offset, not the position"),
+        ("subpixel-1d", "offset the wrong way"),
+        ("transform-fit", "divided by the observations, not the redundancy"),
+        ("transform-fit", "square root forgotten"),
+        ("boundary-shape", "city-block distance"),
+        ("boundary-shape", "square root forgotten"),
+        ("lsm-2d", "shift subtracted"),
+        ("lsm-2d", "stopped after one iteration"),
+        ("utm-facts", "a instead of N"),
+        ("utm-facts", "the ground width, not the map's"),
+        ("utm-facts", "both lines' separation"),
+    ] {
+        named_somewhere(id, name);
+    }
+}
+
+/// The values behind some of those mistakes, checked by hand on a fixed
+/// variant: the subpixel offset from the three ρ, σ₀ from VᵀV.
+#[test]
+fn new_mistake_values_follow_from_the_givens() {
+    let i = variant("subpixel-1d", Some(P2P), 0).unwrap().inputs;
+    let (c, rho) = (list(&i, "positions"), list(&i, "rho"));
+    let second = rho[0] - 2.0 * rho[1] + rho[2];
+    let offset = (rho[0] - rho[2]) / (2.0 * second);
+    let c_max = exact("subpixel-1d", P2P, "c_max");
+    assert!((c_max - (c[1] + offset)).abs() < 1e-9, "{c_max} vs {}", c[1] + offset);
+    let g = grade(
+        "subpixel-1d",
+        P2P,
+        &answers(&[
+            ("coefficients[3]", &format!("{second}")),
+            ("c_max", &format!("{:.4}", offset)),
+        ]),
+    )
+    .unwrap();
+    assert_eq!(g.get("coefficients[3]").unwrap().mistake, Some("½ forgotten in a₂"));
+    if (offset - c_max).abs() > 0.005 {
+        assert_eq!(g.get("c_max").unwrap().mistake, Some("the offset, not the position"));
+    }
+    let s = examples::solve("transform-fit", &variant("transform-fit", Some(P2P), 0).unwrap().inputs).unwrap();
+    let vtv = s.steps.iter().find_map(|st| st.values.number("vtv")).unwrap();
+    let r = s.result.number("redundancy").unwrap();
+    let g = grade("transform-fit", P2P, &answers(&[("sigma0", &format!("{}", vtv / r))])).unwrap();
+    assert_eq!(g.get("sigma0").unwrap().mistake, Some("square root forgotten"), "{:?}", g.get("sigma0"));
+}
