@@ -212,7 +212,9 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
             // an aerial photo: scale 1:1 000 to 1:100 000, GSD 1 cm to 10 m
             let (m, gsd) = (num(r, "scale_denominator"), num(r, "gsd_cm"));
             if !((1_000.0..=100_000.0).contains(&m) && (1.0..=1000.0).contains(&gsd)) {
-                fail(&format!("scale 1:{m} or GSD {gsd} cm is not an aerial photo's"))
+                fail(&format!(
+                    "scale 1:{m} or GSD {gsd} cm is not an aerial photo's"
+                ))
             }
         }
         "fiducial-similarity" | "fiducial-affine" | "transform-fit" => {
@@ -1252,7 +1254,10 @@ fn utm_facts_tolerances_cover_the_calculator_formulas() {
                 x(k)
             );
         }
-        assert!(t_ok(nu * c * 6f64.to_radians() / 1000.0, x("zone_width_ground_km")));
+        assert!(t_ok(
+            nu * c * 6f64.to_radians() / 1000.0,
+            x("zone_width_ground_km")
+        ));
     }
     println!("worst deviation / tolerance: {worst:?}");
 }
@@ -1309,7 +1314,10 @@ fn utm_facts_mistakes_are_named() {
             named("zone_width_ground_km", ground / 6f64.to_radians() * 6.0),
             "degrees vs radians"
         );
-        assert_eq!(named("zone_width_ground_km", ground / 2.0), "half-zone: 3° for 6°");
+        assert_eq!(
+            named("zone_width_ground_km", ground / 2.0),
+            "half-zone: 3° for 6°"
+        );
         if phi.cos() < 0.999 {
             assert_eq!(
                 named("zone_width_ground_km", ground / phi.cos()),
@@ -1321,7 +1329,10 @@ fn utm_facts_mistakes_are_named() {
             "k₀ = 0.9996 forgotten"
         );
         assert_eq!(
-            named("edge_distortion_ppm", (x("edge_scale_factor") - 1.0) * 100.0),
+            named(
+                "edge_distortion_ppm",
+                (x("edge_scale_factor") - 1.0) * 100.0
+            ),
             "per cent, not ppm"
         );
         assert_eq!(named("k1_distance_km", 90.0), "the lecture's 90 km");
@@ -1404,8 +1415,18 @@ fn carried_forward_subpixel_1d_and_resample() {
 #[test]
 fn carried_forward_windows() {
     for code in [P2P, "1ZZZZ", "10000"] {
-        carries_forward("edge-window", code, &[("gx[2,2]", 5.0)], &["magnitude[2,2]"]);
-        carries_forward("edge-window", code, &[("gy[2,2]", -5.0)], &["magnitude[2,2]"]);
+        carries_forward(
+            "edge-window",
+            code,
+            &[("gx[2,2]", 5.0)],
+            &["magnitude[2,2]"],
+        );
+        carries_forward(
+            "edge-window",
+            code,
+            &[("gy[2,2]", -5.0)],
+            &["magnitude[2,2]"],
+        );
         let d = scaled("forstner-window", code, "n[1,1]", 0.3);
         // (a larger N₁₁ moves det N and tr N together: q may hardly move)
         carries_forward(
@@ -1441,7 +1462,12 @@ fn carried_forward_chains() {
         );
         carries_forward("boundary-length", code, &[("diagonal", 1.0)], &["length"]);
         carries_forward("boundary-length", code, &[("horizontal", 2.0)], &["length"]);
-        carries_forward("boundary-shape", code, &[("diameter", 1.0)], &["eccentricity"]);
+        carries_forward(
+            "boundary-shape",
+            code,
+            &[("diameter", 1.0)],
+            &["eccentricity"],
+        );
         carries_forward(
             "boundary-shape",
             code,
@@ -1480,7 +1506,10 @@ fn more_mistakes_are_named() {
         ("subpixel-1d", "½ forgotten in a₂"),
         ("subpixel-1d", "the offset, not the position"),
         ("subpixel-1d", "offset the wrong way"),
-        ("transform-fit", "divided by the observations, not the redundancy"),
+        (
+            "transform-fit",
+            "divided by the observations, not the redundancy",
+        ),
         ("transform-fit", "square root forgotten"),
         ("boundary-shape", "city-block distance"),
         ("boundary-shape", "square root forgotten"),
@@ -1503,7 +1532,11 @@ fn new_mistake_values_follow_from_the_givens() {
     let second = rho[0] - 2.0 * rho[1] + rho[2];
     let offset = (rho[0] - rho[2]) / (2.0 * second);
     let c_max = exact("subpixel-1d", P2P, "c_max");
-    assert!((c_max - (c[1] + offset)).abs() < 1e-9, "{c_max} vs {}", c[1] + offset);
+    assert!(
+        (c_max - (c[1] + offset)).abs() < 1e-9,
+        "{c_max} vs {}",
+        c[1] + offset
+    );
     let g = grade(
         "subpixel-1d",
         P2P,
@@ -1513,13 +1546,37 @@ fn new_mistake_values_follow_from_the_givens() {
         ]),
     )
     .unwrap();
-    assert_eq!(g.get("coefficients[3]").unwrap().mistake, Some("½ forgotten in a₂"));
+    assert_eq!(
+        g.get("coefficients[3]").unwrap().mistake,
+        Some("½ forgotten in a₂")
+    );
     if (offset - c_max).abs() > 0.005 {
-        assert_eq!(g.get("c_max").unwrap().mistake, Some("the offset, not the position"));
+        assert_eq!(
+            g.get("c_max").unwrap().mistake,
+            Some("the offset, not the position")
+        );
     }
-    let s = examples::solve("transform-fit", &variant("transform-fit", Some(P2P), 0).unwrap().inputs).unwrap();
-    let vtv = s.steps.iter().find_map(|st| st.values.number("vtv")).unwrap();
+    let s = examples::solve(
+        "transform-fit",
+        &variant("transform-fit", Some(P2P), 0).unwrap().inputs,
+    )
+    .unwrap();
+    let vtv = s
+        .steps
+        .iter()
+        .find_map(|st| st.values.number("vtv"))
+        .unwrap();
     let r = s.result.number("redundancy").unwrap();
-    let g = grade("transform-fit", P2P, &answers(&[("sigma0", &format!("{}", vtv / r))])).unwrap();
-    assert_eq!(g.get("sigma0").unwrap().mistake, Some("square root forgotten"), "{:?}", g.get("sigma0"));
+    let g = grade(
+        "transform-fit",
+        P2P,
+        &answers(&[("sigma0", &format!("{}", vtv / r))]),
+    )
+    .unwrap();
+    assert_eq!(
+        g.get("sigma0").unwrap().mistake,
+        Some("square root forgotten"),
+        "{:?}",
+        g.get("sigma0")
+    );
 }

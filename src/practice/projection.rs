@@ -625,13 +625,19 @@ fn chain_facts(i: &Record, g: &Record) -> Result<Record> {
     // k at the edge from the student's map width, on the Gaussian sphere
     // (tied to the exact k at the exact width).
     let k_sphere = |w_km: f64| K0 * (w_km * 500.0 / (K0 * r)).cosh();
-    let k_edge = or_given(g, "edge_scale_factor", edge.k * k_sphere(map_given) / k_sphere(map));
+    let k_edge = or_given(
+        g,
+        "edge_scale_factor",
+        edge.k * k_sphere(map_given) / k_sphere(map),
+    );
     // where k = 1 (as the solver finds it) and the Δλ of the student's x
     let d1 = along_parallel(1.0, |d| Ok(krueger::forward(&ell, K0, lat, d)?.k))?;
     let x1 = krueger::forward(&ell, K0, lat, d1)?.x / 1000.0;
     let x1_given = or_given(g, "k1_distance_km", x1);
     let d1 = if g.number("k1_distance_km").is_some() {
-        along_parallel(x1_given * 1000.0, |d| Ok(krueger::forward(&ell, K0, lat, d)?.x))?
+        along_parallel(x1_given * 1000.0, |d| {
+            Ok(krueger::forward(&ell, K0, lat, d)?.x)
+        })?
     } else {
         d1
     };
@@ -639,9 +645,15 @@ fn chain_facts(i: &Record, g: &Record) -> Result<Record> {
         .with("zone_width_ground_km", ground_given)
         .with("zone_width_km", map_given)
         .with("edge_scale_factor", k_edge)
-        .with("edge_distortion_ppm", or_given(g, "edge_distortion_ppm", (k_edge - 1.0) * 1e6))
+        .with(
+            "edge_distortion_ppm",
+            or_given(g, "edge_distortion_ppm", (k_edge - 1.0) * 1e6),
+        )
         .with("k1_distance_km", x1_given)
-        .with("k1_longitude_offset", or_given(g, "k1_longitude_offset", d1)))
+        .with(
+            "k1_longitude_offset",
+            or_given(g, "k1_longitude_offset", d1),
+        ))
 }
 
 fn mistakes_facts(i: &Record) -> Result<Vec<Mistake>> {
@@ -651,12 +663,14 @@ fn mistakes_facts(i: &Record) -> Result<Vec<Mistake>> {
     let v = |k: &str| exact.number(k).unwrap_or(f64::NAN);
     let (parallel, _) = radii(&ell, lat);
     let nu = parallel / lat.to_radians().cos();
-    const COS: &str = "Along a parallel the radius is N·cos φ: the meridians close in towards the pole.";
+    const COS: &str =
+        "Along a parallel the radius is N·cos φ: the meridians close in towards the pole.";
     const RAD: &str = "Degrees and radians mixed: an arc is radius × angle in radians.";
     const HALF: &str = "A zone is 6° wide, 3° either side of its central meridian: the edge is 3° from it, the width 6°.";
     const A_N: &str = "The parallel's radius is N·cos φ with N = a/√(1 − e² sin² φ), the prime-vertical radius, not the equatorial radius a.";
     const GROUND: &str = "That is the width on the ground; on the map the zone is scaled by k₀ and stretched towards its edges (x(3°) on both sides).";
-    const K0_: &str = "k₀ = 0.9996 scales the whole projection: k = k₀·cosh(x/(k₀R)), not cosh(x/R).";
+    const K0_: &str =
+        "k₀ = 0.9996 scales the whole projection: k = k₀·cosh(x/(k₀R)), not cosh(x/R).";
     const PCT: &str = "ppm is parts per million, (k − 1)·10⁶; (k − 1)·100 is per cent.";
     const SIGN: &str = "(k − 1)·10⁶ is positive where the map is longer than the ground (k > 1), negative where it is shorter.";
     const LECTURE: &str = "The lecture's 90 km is wrong: k − k₀ grows with the square of x, so k reaches 1 only about 180 km from the central meridian.";
@@ -664,21 +678,76 @@ fn mistakes_facts(i: &Record) -> Result<Vec<Mistake>> {
     let edge6 = krueger::forward(&ell, K0, lat, 6.0)?;
     let (k, x1) = (v("edge_scale_factor"), v("k1_distance_km"));
     Ok(vec![
-        Mistake::new("zone_width_ground_km", "cos φ forgotten", COS, nu * 6f64.to_radians() / 1000.0),
-        Mistake::new("zone_width_ground_km", "degrees vs radians", RAD, parallel * 6.0 / 1000.0),
-        Mistake::new("zone_width_ground_km", "half-zone: 3° for 6°", HALF, v("zone_width_ground_km") / 2.0),
-        Mistake::new("zone_width_ground_km", "a instead of N", A_N, ell.a * lat.to_radians().cos() * 6f64.to_radians() / 1000.0),
-        Mistake::new("zone_width_km", "the ground width, not the map's", GROUND, v("zone_width_ground_km")),
-        Mistake::new("zone_width_km", "half-zone: 3° for 6°", HALF, v("zone_width_km") / 2.0),
-        Mistake::new("zone_width_km", "k₀ = 0.9996 forgotten", K0_, v("zone_width_km") / K0),
+        Mistake::new(
+            "zone_width_ground_km",
+            "cos φ forgotten",
+            COS,
+            nu * 6f64.to_radians() / 1000.0,
+        ),
+        Mistake::new(
+            "zone_width_ground_km",
+            "degrees vs radians",
+            RAD,
+            parallel * 6.0 / 1000.0,
+        ),
+        Mistake::new(
+            "zone_width_ground_km",
+            "half-zone: 3° for 6°",
+            HALF,
+            v("zone_width_ground_km") / 2.0,
+        ),
+        Mistake::new(
+            "zone_width_ground_km",
+            "a instead of N",
+            A_N,
+            ell.a * lat.to_radians().cos() * 6f64.to_radians() / 1000.0,
+        ),
+        Mistake::new(
+            "zone_width_km",
+            "the ground width, not the map's",
+            GROUND,
+            v("zone_width_ground_km"),
+        ),
+        Mistake::new(
+            "zone_width_km",
+            "half-zone: 3° for 6°",
+            HALF,
+            v("zone_width_km") / 2.0,
+        ),
+        Mistake::new(
+            "zone_width_km",
+            "k₀ = 0.9996 forgotten",
+            K0_,
+            v("zone_width_km") / K0,
+        ),
         Mistake::new("edge_scale_factor", "k₀ = 0.9996 forgotten", K0_, k / K0),
         Mistake::new("edge_scale_factor", "half-zone: 3° for 6°", HALF, edge6.k),
-        Mistake::new("edge_distortion_ppm", "k₀ = 0.9996 forgotten", K0_, (k / K0 - 1.0) * 1e6),
-        Mistake::new("edge_distortion_ppm", "per cent, not ppm", PCT, (k - 1.0) * 100.0),
+        Mistake::new(
+            "edge_distortion_ppm",
+            "k₀ = 0.9996 forgotten",
+            K0_,
+            (k / K0 - 1.0) * 1e6,
+        ),
+        Mistake::new(
+            "edge_distortion_ppm",
+            "per cent, not ppm",
+            PCT,
+            (k - 1.0) * 100.0,
+        ),
         Mistake::new("edge_distortion_ppm", "sign flipped", SIGN, (1.0 - k) * 1e6),
         Mistake::new("k1_distance_km", "the lecture's 90 km", LECTURE, 90.0),
         Mistake::new("k1_distance_km", "both lines' separation", BOTH, 2.0 * x1),
-        Mistake::new("k1_longitude_offset", "degrees vs radians", "That is Δλ in radians; the box asks for degrees (× 180/π).", v("k1_longitude_offset").to_radians()),
-        Mistake::new("k1_longitude_offset", "cos φ forgotten", COS, (x1 * 1000.0 / (K0 * nu)).to_degrees()),
+        Mistake::new(
+            "k1_longitude_offset",
+            "degrees vs radians",
+            "That is Δλ in radians; the box asks for degrees (× 180/π).",
+            v("k1_longitude_offset").to_radians(),
+        ),
+        Mistake::new(
+            "k1_longitude_offset",
+            "cos φ forgotten",
+            COS,
+            (x1 * 1000.0 / (K0 * nu)).to_degrees(),
+        ),
     ])
 }
