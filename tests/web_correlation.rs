@@ -246,9 +246,6 @@ fn a_64_by_64_search_array_solves_in_the_browser() {
         let row: Array = rho.get(r as u32).dyn_into().expect("a row");
         assert_eq!(row.length(), 62);
         let got = row.get(c as u32).as_f64().expect("a number");
-        assert!(
-            (got - want).abs() < 1e-12,
-            "rho at ({r}, {c}): {got} vs {want}"
-        );
+        assert!((got - want).abs() < 1e-12, "rho at ({r}, {c}): {got} vs {want}");
     }
 }
