@@ -598,7 +598,8 @@ fn radii(ell: &Ellipsoid, lat: f64) -> (f64, f64) {
     (nu * c, (rho * nu).sqrt())
 }
 
-/// Bisection on `0..30°` for the Δλ where `f(Δλ)` (growing with Δλ) reaches `target`.
+/// Bisection on `0..30°` for the Δλ where `f(Δλ)` (growing with Δλ)
+/// reaches `target` (as the solver finds where k = 1).
 fn along_parallel(target: f64, f: impl Fn(f64) -> Result<f64>) -> Result<f64> {
     let (mut lo, mut hi) = (0.0, 30.0);
     for _ in 0..100 {
@@ -612,13 +613,14 @@ fn along_parallel(target: f64, f: impl Fn(f64) -> Result<f64>) -> Result<f64> {
     Ok(0.5 * (lo + hi))
 }
 
+/// The solver's values, and the later boxes from the student's earlier ones.
 fn chain_facts(i: &Record, g: &Record) -> Result<Record> {
+    let s = crate::examples::solve("utm-facts", i)?;
+    let v = |k: &str| super::value_in(&s, k);
     let ell = ellipsoid(i)?;
     let lat = n(i, "latitude");
-    let (parallel, r) = radii(&ell, lat);
-    let ground = parallel * 6f64.to_radians() / 1000.0;
-    let edge = krueger::forward(&ell, K0, lat, 3.0)?;
-    let map = 2.0 * edge.x / 1000.0;
+    let (_, r) = radii(&ell, lat);
+    let (ground, map) = (v("zone_width_ground_km")?, v("zone_width_km")?);
     // The map width from the student's ground width: the same stretch.
     let ground_given = or_given(g, "zone_width_ground_km", ground);
     let map_given = or_given(g, "zone_width_km", map * ground_given / ground);
@@ -628,18 +630,14 @@ fn chain_facts(i: &Record, g: &Record) -> Result<Record> {
     let k_edge = or_given(
         g,
         "edge_scale_factor",
-        edge.k * k_sphere(map_given) / k_sphere(map),
+        v("edge_scale_factor")? * k_sphere(map_given) / k_sphere(map),
     );
-    // where k = 1 (as the solver finds it) and the Δλ of the student's x
-    let d1 = along_parallel(1.0, |d| Ok(krueger::forward(&ell, K0, lat, d)?.k))?;
-    let x1 = krueger::forward(&ell, K0, lat, d1)?.x / 1000.0;
-    let x1_given = or_given(g, "k1_distance_km", x1);
+    // where k = 1, and the Δλ at the student's distance along the parallel
+    let x1 = or_given(g, "k1_distance_km", v("k1_distance_km")?);
     let d1 = if g.number("k1_distance_km").is_some() {
-        along_parallel(x1_given * 1000.0, |d| {
-            Ok(krueger::forward(&ell, K0, lat, d)?.x)
-        })?
+        along_parallel(x1 * 1000.0, |d| Ok(krueger::forward(&ell, K0, lat, d)?.x))?
     } else {
-        d1
+        v("k1_longitude_offset")?
     };
     Ok(Record::new()
         .with("zone_width_ground_km", ground_given)
@@ -649,7 +647,7 @@ fn chain_facts(i: &Record, g: &Record) -> Result<Record> {
             "edge_distortion_ppm",
             or_given(g, "edge_distortion_ppm", (k_edge - 1.0) * 1e6),
         )
-        .with("k1_distance_km", x1_given)
+        .with("k1_distance_km", x1)
         .with(
             "k1_longitude_offset",
             or_given(g, "k1_longitude_offset", d1),
