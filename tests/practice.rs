@@ -228,13 +228,12 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 fail("σ₀ is zero (exact points) or the fit does not fit")
             }
         }
-        "lsm-1d" | "lsm-2d" | "lsm-affine" => {
+        "lsm-1d" | "lsm-2d" | "lsm-affine"
             if r.get("converged") != Some(&Value::Bool(true))
                 || r.get("status") != Some(&Value::Text("converged".into()))
-                || num(r, "iterations") > 30.0
-            {
-                fail("the least-squares matching does not converge")
-            }
+                || num(r, "iterations") > 30.0 =>
+        {
+            fail("the least-squares matching does not converge")
         }
         "resample" => {
             // strictly inside the 4×4 patch's middle cell: the bilinear
