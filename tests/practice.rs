@@ -233,7 +233,11 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 || r.get("status") != Some(&Value::Text("converged".into()))
                 || num(r, "iterations") > 30.0 =>
         {
-            fail("the least-squares matching does not converge")
+            fail(&format!(
+                "the least-squares matching does not converge ({:?} after {} iterations)",
+                r.get("status"),
+                num(r, "iterations")
+            ))
         }
         "resample" => {
             // strictly inside the 4×4 patch's middle cell: the bilinear
