@@ -208,6 +208,113 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
                 fail("latitude too near the equator or the UTM limits")
             }
         }
+        "gsd" => {
+            // an aerial photo: scale 1:1 000 to 1:100 000, GSD 1 cm to 10 m
+            let (m, gsd) = (num(r, "scale_denominator"), num(r, "gsd_cm"));
+            if !((1_000.0..=100_000.0).contains(&m) && (1.0..=1000.0).contains(&gsd)) {
+                fail(&format!(
+                    "scale 1:{m} or GSD {gsd} cm is not an aerial photo's"
+                ))
+            }
+        }
+        "fiducial-similarity" | "fiducial-affine" | "transform-fit" => {
+            // N well conditioned (columns scaled), far from the solver's
+            // warning at 10⁸, and σ₀ small beside the point spread
+            let cond = step_num(s, "condition");
+            if !(cond.is_finite() && cond < 1e3) {
+                fail(&format!("N's condition number {cond} is not below 1000"))
+            }
+            if !(num(r, "sigma0") > 0.0 && num(r, "sigma0") < 0.5) {
+                fail("σ₀ is zero (exact points) or the fit does not fit")
+            }
+        }
+        "lsm-1d" | "lsm-2d" | "lsm-affine"
+            if r.get("converged") != Some(&Value::Bool(true))
+                || r.get("status") != Some(&Value::Text("converged".into()))
+                || num(r, "iterations") > 30.0 =>
+        {
+            fail(&format!(
+                "the least-squares matching does not converge ({:?} after {} iterations)",
+                r.get("status"),
+                num(r, "iterations")
+            ))
+        }
+        "resample" => {
+            // strictly inside the 4×4 patch's middle cell: the bilinear
+            // cell and all 16 bicubic neighbours are in the patch
+            let (dc, dr) = (num(r, "dc"), num(r, "dr"));
+            let (c0, r0) = (num(&s.inputs, "first_c"), num(&s.inputs, "first_r"));
+            let (c, rr) = (num(&s.inputs, "c"), num(&s.inputs, "r"));
+            let inside = |x: f64, first: f64| x > first + 1.0 && x < first + 2.0;
+            if !(inside(c, c0) && inside(rr, r0) && dc > 0.0 && dc < 1.0 && dr > 0.0 && dr < 1.0) {
+                fail("the point is not strictly inside the patch's middle cell")
+            }
+        }
+        "filter-window" | "edge-window" | "moravec-window" => {
+            // texture: no output's 3×3 neighbourhood is flat
+            let w = matrix(&s.inputs, "window");
+            let (h, wd) = (w.len(), w[0].len());
+            for rr in 1..h - 1 {
+                for c in 1..wd - 1 {
+                    let n: Vec<f64> = (rr - 1..=rr + 1)
+                        .flat_map(|y| w[y][c - 1..=c + 1].to_vec())
+                        .collect();
+                    let spread = n.iter().copied().fold(f64::MIN, f64::max)
+                        - n.iter().copied().fold(f64::MAX, f64::min);
+                    if spread < 3.0 {
+                        fail(&format!("a flat 3×3 neighbourhood at row {rr}, column {c}"))
+                    }
+                }
+            }
+            if id == "edge-window" && step_num(s, "selected_magnitude") < 1.0 {
+                fail("no edge at the asked pixel")
+            }
+            if id == "moravec-window" && matrix(r, "sums").iter().flatten().any(|&x| x <= 0.0) {
+                fail("an interior sum is 0: a flat direction")
+            }
+        }
+        "chain-code" | "boundary-length" => {
+            // a simple 8-connected chain: no pixel twice, no two diagonal
+            // steps crossing in one 2×2 block
+            let p = matrix(&s.inputs, "pixels");
+            let steps: Vec<_> = p.windows(2).map(|w| (w[0].clone(), w[1].clone())).collect();
+            for (a, b) in &steps {
+                let (dc, dr) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+                if dc.max(dr) != 1.0 {
+                    fail("two pixels in a row are not 8-neighbours")
+                }
+            }
+            for (i, a) in p.iter().enumerate() {
+                if p[i + 1..].contains(a) {
+                    fail("the chain visits a pixel twice")
+                }
+            }
+            let block = |(a, b): &(Vec<f64>, Vec<f64>)| {
+                (a[0] != b[0] && a[1] != b[1]).then(|| (a[0].min(b[0]), a[1].min(b[1])))
+            };
+            let diagonals: Vec<_> = steps.iter().filter_map(block).collect();
+            for (i, d) in diagonals.iter().enumerate() {
+                if diagonals[i + 1..].contains(d) {
+                    fail("two diagonal steps cross")
+                }
+            }
+        }
+        "boundary-shape" => {
+            let (d, m) = (num(r, "diameter"), num(r, "minor_axis_length"));
+            if !(d >= 3.0 && m >= 2.0 && d >= m) {
+                fail("a sliver of a region (no width to measure)")
+            }
+        }
+        "utm-facts" => {
+            let lat = num(&s.inputs, "latitude").abs();
+            let x1 = num(r, "k1_distance_km");
+            if !((0.5 - 1e-9..=79.5 + 1e-9).contains(&lat)
+                && num(r, "edge_scale_factor") > 0.9996
+                && (170.0..190.0).contains(&x1))
+            {
+                fail(&format!("latitude {lat}° beyond the drawn range, k at the edge not above k₀, or k = 1 at {x1} km, not near 180 km"))
+            }
+        }
         "utm-inverse" => {
             let lat = num(r, "latitude");
             let south = s.inputs.get("hemisphere") == Some(&Value::Text("south".into()));
@@ -216,6 +323,27 @@ fn well_posed(id: &str, code: &str, s: &photogrammetry_playground::solution::Sol
             }
         }
         _ => {}
+    }
+}
+
+/// A number among the steps' values.
+fn step_num(s: &photogrammetry_playground::solution::Solution, key: &str) -> f64 {
+    s.steps
+        .iter()
+        .find_map(|st| st.values.number(key))
+        .unwrap_or(f64::NAN)
+}
+
+fn matrix(r: &Record, key: &str) -> Vec<Vec<f64>> {
+    match r.get(key) {
+        Some(Value::List(rows)) => rows
+            .iter()
+            .map(|row| match row {
+                Value::List(xs) => xs.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect(),
+                _ => vec![f64::NAN],
+            })
+            .collect(),
+        _ => vec![vec![f64::NAN]],
     }
 }
 
@@ -255,7 +383,9 @@ fn strides(id: &str) -> (u32, u32) {
     match id {
         "lsm-affine" => (500, 100),
         "lsm-2d" | "forstner-image" | "transform-fit" => (200, 40),
-        "fiducial-similarity" | "fiducial-affine" | "lsm-1d" => (100, 20),
+        "fiducial-similarity" | "fiducial-affine" | "lsm-1d" | "utm-facts" => (100, 20),
+        // a few arithmetic operations a solve: every seed solved
+        "gsd" | "pixel-to-photo" | "photo-to-pixel" => (10, 1),
         _ => (50, 10),
     }
 }
@@ -298,31 +428,28 @@ audit_tests! {
     audit_boundary_shape => "boundary-shape",
     audit_utm => "utm",
     audit_utm_inverse => "utm-inverse",
+    audit_utm_facts => "utm-facts",
 }
 
 #[test]
-fn every_ready_example_but_utm_facts_has_practice() {
+fn every_ready_example_has_practice() {
     let have: Vec<_> = specs().iter().map(|s| s.id).collect();
     let missing: Vec<_> = examples::catalog()
         .into_iter()
-        // utm-facts has no variants: its one input is a parallel, and most
-        // of its answers (k₀, the false easting, the latitude limits, the
-        // zones of Thailand) are the same for every parallel.
-        .filter(|e| e.status == "ready" && e.id != "utm-facts" && !have.contains(&e.id))
+        .filter(|e| e.status == "ready" && !have.contains(&e.id))
         .map(|e| e.id)
         .collect();
     assert_eq!(missing, Vec::<&str>::new());
-    assert!(have.contains(&"utm") && have.contains(&"utm-inverse"));
+    assert!(["utm", "utm-inverse", "utm-facts"]
+        .iter()
+        .all(|id| have.contains(id)));
     // the catalog says which examples have practice, so the page links only to those
     for e in examples::catalog() {
         assert_eq!(e.practice, Some(have.contains(&e.id)), "{}", e.id);
     }
-    assert!(
-        examples::catalog()
-            .iter()
-            .any(|e| e.id == "utm-facts" && e.practice == Some(false)),
-        "utm-facts has none"
-    );
+    assert!(examples::catalog()
+        .iter()
+        .any(|e| e.id == "utm-facts" && e.practice == Some(true)));
 }
 
 /// Answers from `(key, text)` pairs.
@@ -556,6 +683,7 @@ mistake_tests! {
     mistakes_boundary_shape => "boundary-shape",
     mistakes_utm => "utm",
     mistakes_utm_inverse => "utm-inverse",
+    mistakes_utm_facts => "utm-facts",
 }
 
 #[test]
@@ -1075,5 +1203,385 @@ fn utm_variants_cover_both_hemispheres_and_the_exceptions() {
     assert!(
         norway > 20 && svalbard > 20,
         "{norway} Norway, {svalbard} Svalbard"
+    );
+}
+
+/// utm-facts' tolerances cover the formulas a student uses with a
+/// calculator (the transverse Mercator series' first terms, the Gaussian
+/// sphere R = √(MN)) on every variant, and its boxes are the solver's.
+#[test]
+fn utm_facts_tolerances_cover_the_calculator_formulas() {
+    use photogrammetry_playground::projection::Ellipsoid;
+    let spec = specs().into_iter().find(|s| s.id == "utm-facts").unwrap();
+    let mut worst = [0f64; 5];
+    for v in (0..SEEDS).step_by(10) {
+        let i = inputs_of(&spec, v);
+        let boxes = (spec.boxes)(&i);
+        let tol = |k: &str| boxes.iter().find(|b| b.key == k).unwrap().tolerance;
+        let exact = (spec.chain.unwrap())(&i, &Record::new()).unwrap();
+        let x = |k: &str| exact.number(k).unwrap();
+        let ell = Ellipsoid::by_id(&match i.get("ellipsoid") {
+            Some(Value::Text(t)) => t.clone(),
+            _ => unreachable!(),
+        })
+        .unwrap();
+        let (k0, e2) = (0.9996, ell.e2());
+        let phi = i.number("latitude").unwrap().to_radians();
+        let (s, c) = phi.sin_cos();
+        let w2 = 1.0 - e2 * s * s;
+        let nu = ell.a / w2.sqrt();
+        let rho = ell.a * (1.0 - e2) / w2.powf(1.5);
+        let r = (rho * nu).sqrt();
+        let (t2, eta2) = ((s / c).powi(2), e2 / (1.0 - e2) * c * c);
+        // x from the series' first two terms
+        let x_of = |dl: f64| {
+            let l = dl.to_radians() * c;
+            k0 * nu * (l + l.powi(3) / 6.0 * (1.0 - t2 + eta2))
+        };
+        let map = 2.0 * x_of(3.0) / 1000.0;
+        let k_edge = k0 * (map * 500.0 / (k0 * r)).cosh();
+        let x1 = k0 * r * (1.0 / k0).acosh();
+        let d1 = (x1 / (k0 * nu * c)).to_degrees();
+        let student = [
+            ("zone_width_km", map),
+            ("edge_scale_factor", k_edge),
+            ("edge_distortion_ppm", (k_edge - 1.0) * 1e6),
+            ("k1_distance_km", x1 / 1000.0),
+            ("k1_longitude_offset", d1),
+        ];
+        for (j, (k, y)) in student.iter().enumerate() {
+            let t = tol(k);
+            worst[j] = worst[j].max((y - x(k)).abs() / t.allowed(x(k)));
+            assert!(
+                t.accepts(x(k), *y),
+                "{} {k}: the calculator's {y} is not within {t:?} of {}",
+                encode(v),
+                x(k)
+            );
+        }
+        assert!(t_ok(
+            nu * c * 6f64.to_radians() / 1000.0,
+            x("zone_width_ground_km")
+        ));
+    }
+    println!("worst deviation / tolerance: {worst:?}");
+}
+
+fn t_ok(a: f64, b: f64) -> bool {
+    (a - b).abs() < 1e-9 * b
+}
+
+#[test]
+fn carried_forward_utm_facts() {
+    for code in [P2P, "1ZZZZ"] {
+        // a ground width 5 km off: the map width, the edge's k and its
+        // distortion follow from it
+        carries_forward(
+            "utm-facts",
+            code,
+            &[("zone_width_ground_km", 5.0)],
+            &["zone_width_km", "edge_scale_factor", "edge_distortion_ppm"],
+        );
+        // a wrong k at the edge carries into the distortion only
+        carries_forward(
+            "utm-facts",
+            code,
+            &[("edge_scale_factor", 1e-4)],
+            &["edge_distortion_ppm"],
+        );
+        // the distance of true scale 20 km off: its longitude difference
+        carries_forward(
+            "utm-facts",
+            code,
+            &[("k1_distance_km", 20.0)],
+            &["k1_longitude_offset"],
+        );
+    }
+}
+
+/// The mistakes the brief asks for, named on utm-facts: degrees vs
+/// radians, k₀ forgotten, half a zone for a whole one.
+#[test]
+fn utm_facts_mistakes_are_named() {
+    for code in [P2P, "1ZZZZ", "10000"] {
+        let x = |k: &str| exact("utm-facts", code, k);
+        let named = |key: &str, value: f64| {
+            let g = grade("utm-facts", code, &answers(&[(key, &format!("{value}"))])).unwrap();
+            let b = g.get(key).unwrap().clone();
+            assert_eq!(verdict(&g, key), "wrong", "{code} {key} {value}: {b:?}");
+            b.mistake.unwrap_or("none")
+        };
+        let i = variant("utm-facts", Some(code), 0).unwrap().inputs;
+        let phi = i.number("latitude").unwrap().to_radians();
+        let ground = x("zone_width_ground_km");
+        // the angle 6 taken as radians
+        assert_eq!(
+            named("zone_width_ground_km", ground / 6f64.to_radians() * 6.0),
+            "degrees vs radians"
+        );
+        assert_eq!(
+            named("zone_width_ground_km", ground / 2.0),
+            "half-zone: 3° for 6°"
+        );
+        if phi.cos() < 0.999 {
+            assert_eq!(
+                named("zone_width_ground_km", ground / phi.cos()),
+                "cos φ forgotten"
+            );
+        }
+        assert_eq!(
+            named("edge_scale_factor", x("edge_scale_factor") / 0.9996),
+            "k₀ = 0.9996 forgotten"
+        );
+        assert_eq!(
+            named(
+                "edge_distortion_ppm",
+                (x("edge_scale_factor") - 1.0) * 100.0
+            ),
+            "per cent, not ppm"
+        );
+        assert_eq!(named("k1_distance_km", 90.0), "the lecture's 90 km");
+        assert_eq!(
+            named("k1_longitude_offset", x("k1_longitude_offset").to_radians()),
+            "degrees vs radians"
+        );
+    }
+}
+
+/// `f` times the exact value of box `key` (a delta that scales with the box).
+fn scaled(id: &str, code: &str, key: &str, f: f64) -> f64 {
+    f * exact(id, code, key).abs().max(1.0)
+}
+
+#[test]
+fn carried_forward_pixel_and_photo_coordinates() {
+    for code in [P2P, "1ZZZZ"] {
+        // a wrong centre moves the pixel offset and the millimetres
+        carries_forward("pixel-to-photo", code, &[("c0", 10.0)], &["x_px", "x_mm"]);
+        carries_forward("pixel-to-photo", code, &[("r0", -7.0)], &["y_px", "y_mm"]);
+        // the seed's rounded pixel size (or any wrong one) carries into both
+        carries_forward(
+            "pixel-to-photo",
+            code,
+            &[("pixel_size_mm", 0.002)],
+            &["x_mm", "y_mm"],
+        );
+        carries_forward(
+            "photo-to-pixel",
+            code,
+            &[("pixel_size_mm", 0.002)],
+            &["dc_px", "dr_px", "c", "r"],
+        );
+        carries_forward("photo-to-pixel", code, &[("c0", 10.0)], &["c"]);
+        carries_forward("photo-to-pixel", code, &[("dr_px", 5.0)], &["r"]);
+    }
+}
+
+#[test]
+fn carried_forward_ncc() {
+    for code in [P2P, "1ZZZZ"] {
+        let p = variant("ncc-1d", Some(code), 0).unwrap();
+        let rhos: Vec<&str> = p
+            .boxes
+            .iter()
+            .map(|b| b.key.as_str())
+            .filter(|k| k.starts_with("rho["))
+            .collect();
+        assert!(rhos.len() >= 2);
+        carries_forward("ncc-1d", code, &[("mean_template", 3.0)], &rhos);
+        // ΣΔA·ΔB does not depend on Ā (ΣΔB = 0): a wrong Ā moves ΣΔA² and ρ
+        carries_forward("ncc-2d", code, &[("mean_a", 3.0)], &["sum_da2", "rho"]);
+        carries_forward("ncc-2d", code, &[("mean_b", -3.0)], &["sum_db2", "rho"]);
+        let s = scaled("ncc-2d", code, "sum_dadb", 0.2);
+        carries_forward("ncc-2d", code, &[("sum_dadb", s)], &["rho"]);
+    }
+}
+
+#[test]
+fn carried_forward_subpixel_1d_and_resample() {
+    for code in [P2P, "1ZZZZ", "10000"] {
+        carries_forward(
+            "subpixel-1d",
+            code,
+            &[("coefficients[2]", 0.05)],
+            &["c_max"],
+        );
+        carries_forward(
+            "subpixel-1d",
+            code,
+            &[("coefficients[3]", -0.05)],
+            &["c_max"],
+        );
+        carries_forward("resample", code, &[("i1", 3.0)], &["bilinear"]);
+        carries_forward("resample", code, &[("i2", -3.0)], &["bilinear"]);
+    }
+}
+
+#[test]
+fn carried_forward_windows() {
+    for code in [P2P, "1ZZZZ", "10000"] {
+        carries_forward(
+            "edge-window",
+            code,
+            &[("gx[2,2]", 5.0)],
+            &["magnitude[2,2]"],
+        );
+        carries_forward(
+            "edge-window",
+            code,
+            &[("gy[2,2]", -5.0)],
+            &["magnitude[2,2]"],
+        );
+        let d = scaled("forstner-window", code, "n[1,1]", 0.3);
+        // (a larger N₁₁ moves det N and tr N together: q may hardly move)
+        carries_forward(
+            "forstner-window",
+            code,
+            &[("n[1,1]", d)],
+            &["det_n", "w", "weak_angle_deg"],
+        );
+        let d = scaled("forstner-window", code, "n[1,2]", 0.3);
+        carries_forward(
+            "forstner-window",
+            code,
+            &[("n[1,2]", d)],
+            &["det_n", "w", "q", "weak_angle_deg"],
+        );
+        let d = scaled("forstner-window", code, "det_n", 0.2);
+        carries_forward("forstner-window", code, &[("det_n", d)], &["w", "q"]);
+        carries_forward("moravec-window", code, &[("sums[1,1]", 40.0)], &["mean"]);
+    }
+}
+
+#[test]
+fn carried_forward_chains() {
+    for code in [P2P, "1ZZZZ", "10000"] {
+        // a wrong first digit: the first differential follows from it
+        let d = exact("chain-code", code, "code[1]");
+        let wrong = if d == 8.0 { -1.0 } else { 1.0 };
+        carries_forward(
+            "chain-code",
+            code,
+            &[("code[1]", wrong)],
+            &["differential[1]"],
+        );
+        carries_forward("boundary-length", code, &[("diagonal", 1.0)], &["length"]);
+        carries_forward("boundary-length", code, &[("horizontal", 2.0)], &["length"]);
+        carries_forward(
+            "boundary-shape",
+            code,
+            &[("diameter", 1.0)],
+            &["eccentricity"],
+        );
+        carries_forward(
+            "boundary-shape",
+            code,
+            &[("minor_axis_length", -0.5)],
+            &["eccentricity"],
+        );
+    }
+}
+
+/// The mistake `name` of example `id` is named (the first mistake whose
+/// value the answer matches) in at least one of the first 20 variants where
+/// it changes the answer, and the value it gives is the engine's.
+fn named_somewhere(id: &str, name: &str) {
+    let spec = specs().into_iter().find(|s| s.id == id).unwrap();
+    for v in 0..20 {
+        let code = encode(v);
+        let p = variant(id, Some(&code), 0).unwrap();
+        let s = examples::solve(id, &p.inputs).unwrap();
+        for m in (spec.mistakes)(&p.inputs).unwrap() {
+            let b = p.boxes.iter().find(|b| b.key == m.key).unwrap();
+            if m.name != name || b.tolerance.accepts(value_in(&s, &m.key).unwrap(), m.value) {
+                continue;
+            }
+            let g = grade(id, &code, &answers(&[(&m.key, &format!("{}", m.value))])).unwrap();
+            if g.get(&m.key).unwrap().mistake == Some(name) {
+                return;
+            }
+        }
+    }
+    panic!("{id}: \"{name}\" is never named in the first 20 variants");
+}
+
+#[test]
+fn more_mistakes_are_named() {
+    for (id, name) in [
+        ("subpixel-1d", "½ forgotten in a₂"),
+        ("subpixel-1d", "the offset, not the position"),
+        ("subpixel-1d", "offset the wrong way"),
+        (
+            "transform-fit",
+            "divided by the observations, not the redundancy",
+        ),
+        ("transform-fit", "square root forgotten"),
+        ("boundary-shape", "city-block distance"),
+        ("boundary-shape", "square root forgotten"),
+        ("lsm-2d", "shift subtracted"),
+        ("lsm-2d", "stopped after one iteration"),
+        ("utm-facts", "a instead of N"),
+        ("utm-facts", "the ground width, not the map's"),
+        ("utm-facts", "both lines' separation"),
+    ] {
+        named_somewhere(id, name);
+    }
+}
+
+/// The values behind some of those mistakes, checked by hand on a fixed
+/// variant: the subpixel offset from the three ρ, σ₀ from VᵀV.
+#[test]
+fn new_mistake_values_follow_from_the_givens() {
+    let i = variant("subpixel-1d", Some(P2P), 0).unwrap().inputs;
+    let (c, rho) = (list(&i, "positions"), list(&i, "rho"));
+    let second = rho[0] - 2.0 * rho[1] + rho[2];
+    let offset = (rho[0] - rho[2]) / (2.0 * second);
+    let c_max = exact("subpixel-1d", P2P, "c_max");
+    assert!(
+        (c_max - (c[1] + offset)).abs() < 1e-9,
+        "{c_max} vs {}",
+        c[1] + offset
+    );
+    let g = grade(
+        "subpixel-1d",
+        P2P,
+        &answers(&[
+            ("coefficients[3]", &format!("{second}")),
+            ("c_max", &format!("{:.4}", offset)),
+        ]),
+    )
+    .unwrap();
+    assert_eq!(
+        g.get("coefficients[3]").unwrap().mistake,
+        Some("½ forgotten in a₂")
+    );
+    if (offset - c_max).abs() > 0.005 {
+        assert_eq!(
+            g.get("c_max").unwrap().mistake,
+            Some("the offset, not the position")
+        );
+    }
+    let s = examples::solve(
+        "transform-fit",
+        &variant("transform-fit", Some(P2P), 0).unwrap().inputs,
+    )
+    .unwrap();
+    let vtv = s
+        .steps
+        .iter()
+        .find_map(|st| st.values.number("vtv"))
+        .unwrap();
+    let r = s.result.number("redundancy").unwrap();
+    let g = grade(
+        "transform-fit",
+        P2P,
+        &answers(&[("sigma0", &format!("{}", vtv / r))]),
+    )
+    .unwrap();
+    assert_eq!(
+        g.get("sigma0").unwrap().mistake,
+        Some("square root forgotten"),
+        "{:?}",
+        g.get("sigma0")
     );
 }

@@ -148,3 +148,29 @@ fn utm_practice_carries_the_students_zone_forward() {
         "6·zone − 180 without the −3"
     );
 }
+
+#[wasm_bindgen_test]
+fn utm_facts_has_variants_and_separate_verdicts_cross_the_boundary() {
+    let p = practice("utm-facts", JsValue::from_str("1K7Q2")).unwrap();
+    let lat = at(&p, &["inputs", "latitude"]).as_f64().unwrap();
+    assert!((0.5..=79.5).contains(&lat.abs()), "{lat}");
+    assert!(at(&p, &["inputs", "ellipsoid"]).as_string().is_some());
+    let s = solve("utm-facts", at(&p, &["inputs"])).unwrap();
+    let x1 = at(&s, &["result", "k1_distance_km"]).as_f64().unwrap();
+    // the lecture's 90 km, named; the value off, the unit taken as the box's
+    let g = grade(
+        "utm-facts",
+        "1K7Q2",
+        obj(&format!(
+            r#"{{"k1_distance_km": "90", "zone_width_km": "{x1} ppm"}}"#
+        )),
+    )
+    .unwrap();
+    let b = ["boxes", "k1_distance_km"];
+    assert_eq!(text(&g, &[b[0], b[1], "verdict"]), "wrong");
+    assert_eq!(text(&g, &[b[0], b[1], "mistake"]), "the lecture's 90 km");
+    assert_eq!(text(&g, &[b[0], b[1], "value"]), "off");
+    assert_eq!(text(&g, &[b[0], b[1], "unit"]), "omitted");
+    // a unit that does not fit the box: unit "wrong"
+    assert_eq!(text(&g, &["boxes", "zone_width_km", "unit"]), "wrong");
+}

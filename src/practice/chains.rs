@@ -5,7 +5,7 @@ use super::grade::tol;
 use super::{mat, or_given, value_in, BoxDef, Mistake, Rng, Spec, Tolerance};
 use crate::error::Result;
 use crate::examples;
-use crate::solution::Record;
+use crate::solution::{Record, Value};
 
 pub fn specs() -> Vec<Spec> {
     vec![
@@ -253,10 +253,39 @@ fn mistakes_shape(i: &Record) -> Result<Vec<Mistake>> {
         value_in(&s, "diameter")?,
         value_in(&s, "minor_axis_length")?,
     );
-    Ok(vec![Mistake::new(
-        "eccentricity",
-        "minor over major",
-        "The seed's eccentricity is the major axis over the minor one (≥ 1).",
-        m / d,
-    )])
+    // the major axis' ends: Δc and Δr between them
+    let ends = match s.result.get("major_axis") {
+        Some(Value::List(ends)) => ends
+            .iter()
+            .map(|e| match e {
+                Value::List(xy) => xy.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect(),
+                _ => vec![f64::NAN, f64::NAN],
+            })
+            .collect::<Vec<Vec<f64>>>(),
+        _ => Vec::new(),
+    };
+    let (dc, dr) = match ends.as_slice() {
+        [a, b] if a.len() == 2 && b.len() == 2 => ((b[0] - a[0]).abs(), (b[1] - a[1]).abs()),
+        _ => (f64::NAN, f64::NAN),
+    };
+    Ok(vec![
+        Mistake::new(
+            "eccentricity",
+            "minor over major",
+            "The seed's eccentricity is the major axis over the minor one (≥ 1).",
+            m / d,
+        ),
+        Mistake::new(
+            "diameter",
+            "city-block distance",
+            "The diameter is the straight-line distance √(Δc² + Δr²), not the steps |Δc| + |Δr| along the grid.",
+            dc + dr,
+        ),
+        Mistake::new(
+            "diameter",
+            "square root forgotten",
+            "Δc² + Δr² is the squared distance; the diameter is its square root.",
+            dc * dc + dr * dr,
+        ),
+    ])
 }

@@ -484,12 +484,35 @@ fn mistakes_sub_1d(i: &Record) -> Result<Vec<Mistake>> {
         v.number("coefficients[2]").unwrap_or(f64::NAN),
         v.number("coefficients[3]").unwrap_or(f64::NAN),
     );
-    Ok(vec![Mistake::new(
-        "c_max",
-        "sign lost in −a₁/(2a₂)",
-        "Setting a₁ + 2a₂c = 0 gives c = −a₁ / (2a₂).",
-        a1 / (2.0 * a2),
-    )])
+    let c_max = -a1 / (2.0 * a2);
+    // the middle position: where the offset is measured from
+    let k = list(i, "positions").get(1).copied().unwrap_or(f64::NAN);
+    Ok(vec![
+        Mistake::new(
+            "c_max",
+            "sign lost in −a₁/(2a₂)",
+            "Setting a₁ + 2a₂c = 0 gives c = −a₁ / (2a₂).",
+            a1 / (2.0 * a2),
+        ),
+        Mistake::new(
+            "coefficients[3]",
+            "½ forgotten in a₂",
+            "The second difference ρ₋ − 2ρ₀ + ρ₊ is 2a₂ (with positions one pixel apart): halve it.",
+            2.0 * a2,
+        ),
+        Mistake::new(
+            "c_max",
+            "the offset, not the position",
+            "The parabola's peak is an offset from the middle position: add it to that position.",
+            c_max - k,
+        ),
+        Mistake::new(
+            "c_max",
+            "offset the wrong way",
+            "The peak lies on the side of the larger neighbour: c_max − c₀ has the sign of ρ₊ − ρ₋.",
+            2.0 * k - c_max,
+        ),
+    ])
 }
 
 fn gen_sub_2d(rng: &mut Rng) -> Record {

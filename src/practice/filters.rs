@@ -46,23 +46,49 @@ const CUSTOM: [[[f64; 3]; 3]; 4] = [
     [[1.0, 0.0, -1.0], [2.0, 0.0, -2.0], [1.0, 0.0, -1.0]],
 ];
 
-/// A 5×5 window of grey values 10–60 with an edge and some texture.
+/// A 5×5 window of grey values (about 10–60, 0–75 with a steep slope) with
+/// an edge and some texture: no 3×3 neighbourhood is flat.
 fn window(rng: &mut Rng) -> Vec<Vec<f64>> {
     let (gc, gr) = (rng.num(-6, 6), rng.num(-6, 6));
     let (gc, gr) = (
         if gc == 0.0 { 4.0 } else { gc },
         if gr == 0.0 { -3.0 } else { gr },
     );
-    (0..5)
-        .map(|r| {
-            (0..5)
-                .map(|c| {
-                    (35.0 + gc * (c as f64 - 2.0) + gr * (r as f64 - 2.0) + rng.num(-4, 4))
-                        .clamp(0.0, 99.0)
-                })
-                .collect()
+    let noise: Vec<Vec<f64>> = (0..5)
+        .map(|_| (0..5).map(|_| rng.num(-4, 4)).collect())
+        .collect();
+    let ramp = |gc: f64| -> Vec<Vec<f64>> {
+        (0..5)
+            .map(|r| {
+                (0..5)
+                    .map(|c| {
+                        (35.0 + gc * (c as f64 - 2.0) + gr * (r as f64 - 2.0) + noise[r][c])
+                            .clamp(0.0, 99.0)
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let w = ramp(gc);
+    // Now and then the noise cancels a gentle slope and leaves a 3×3
+    // neighbourhood flat (about one window in 10 000). Such a window gets a
+    // steeper slope: |gc| ≥ 6 spans 12 grey levels over three columns, which
+    // noise of ± 4 cannot bring below 4.
+    if flat_neighbourhood(&w) {
+        ramp(gc + 5.0 * gc.signum())
+    } else {
+        w
+    }
+}
+
+/// Whether some interior pixel's 3×3 neighbourhood spans less than 3 grey levels.
+fn flat_neighbourhood(w: &[Vec<f64>]) -> bool {
+    (1..w.len().saturating_sub(1)).any(|r| {
+        (1..w[r].len().saturating_sub(1)).any(|c| {
+            let n = || (r - 1..=r + 1).flat_map(|y| w[y][c - 1..=c + 1].iter().copied());
+            n().fold(f64::MIN, f64::max) - n().fold(f64::MAX, f64::min) < 3.0
         })
-        .collect()
+    })
 }
 
 fn gen_filter(rng: &mut Rng) -> Record {

@@ -355,12 +355,19 @@ fn from_own_rounding(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option
 }
 
 /// An answer that follows from an earlier value rounded as shown (to 3, 4
-/// or 5 significant digits) is accepted.
+/// or 5 significant digits) is accepted, unless that rounding is far
+/// coarser than the earlier box itself asks for (more than ten times its
+/// tolerance): k = 1.000128 is never shown as 1.00, and (k − 1)·10⁶ from
+/// it would be 0 ppm.
 fn rounded_as_shown(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option<String> {
     let b = &ctx.boxes[k];
     for j in 0..k {
+        let (e, t) = (ctx.exact[j], ctx.boxes[j].tolerance);
         for sig in 3..=5 {
-            let r = round_sig(ctx.exact[j], sig);
+            let r = round_sig(e, sig);
+            if (r - e).abs() > 10.0 * t.allowed(e) {
+                continue;
+            }
             let given = Record::new().with(&ctx.boxes[j].key, r);
             let Some(value) = chain(ctx.inputs, &given)
                 .ok()

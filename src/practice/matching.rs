@@ -259,9 +259,19 @@ fn mistakes_2d(i: &Record) -> Result<Vec<Mistake>> {
     let s = examples::solve("lsm-2d", i)?;
     let (dc, dr) = (value_in(&s, "first_dc")?, value_in(&s, "first_dr")?);
     const SWAP: &str = "Δc moves along the columns (right), Δr along the rows (down).";
+    const SUB: &str = "The new position is the old one plus the increment.";
+    const ONCE: &str = "One iteration is only the first step: resample the search window at the new position and solve again until the increments are negligible.";
+    let (c0, r0) = (
+        i.number("c0").unwrap_or(f64::NAN),
+        i.number("r0").unwrap_or(f64::NAN),
+    );
     Ok(vec![
         Mistake::new("first_dc", "rows and columns swapped", SWAP, dr),
         Mistake::new("first_dr", "rows and columns swapped", SWAP, dc),
+        Mistake::new("c_after_first", "shift subtracted", SUB, c0 - dc),
+        Mistake::new("r_after_first", "shift subtracted", SUB, r0 - dr),
+        Mistake::new("c", "stopped after one iteration", ONCE, c0 + dc),
+        Mistake::new("r", "stopped after one iteration", ONCE, r0 + dr),
     ])
 }
 

@@ -1,5 +1,6 @@
 //! Practice for Lecture 7's UTM: latitude and longitude to UTM (through the
-//! Krüger series, as the example's steps show it) and back.
+//! Krüger series, as the example's steps show it) and back, and the facts
+//! (a zone's width, its edge's distortion, where k = 1) on a drawn parallel.
 //!
 //! Points are drawn inside their zone (0.1° to 2.9° from the central
 //! meridian, so near but never on a border), in both hemispheres, and now
@@ -36,6 +37,13 @@ pub fn specs() -> Vec<Spec> {
             boxes: boxes_inverse,
             chain: Some(chain_inverse),
             mistakes: mistakes_inverse,
+        },
+        Spec {
+            id: "utm-facts",
+            generate: gen_facts,
+            boxes: boxes_facts,
+            chain: Some(chain_facts),
+            mistakes: mistakes_facts,
         },
     ]
 }
@@ -517,4 +525,227 @@ fn mistakes_inverse(i: &Record) -> Result<Vec<Mistake>> {
         )
     });
     Ok(out)
+}
+
+// ---------------------------------------------------------------------------
+// utm-facts: the zone's width, the distortion at its edge and the lines of
+// true scale, on a drawn parallel and ellipsoid.
+//
+// What a student computes with a calculator: the ground width N cos φ · 6°
+// (N the prime-vertical radius), the map width 2x at Δλ = 3° (x from the
+// transverse Mercator series, or k₀·R·atanh(cos φ sin 3°) on the Gaussian
+// sphere R = √(MN)), the edge's k ≈ k₀ cosh(x/(k₀R)), its distortion
+// (k − 1)·10⁶, where k = 1 (x = k₀R·acosh(1/k₀)) and the longitude
+// difference there (x/(k₀N cos φ), the series' first term). The tolerances
+// cover those formulas (a test checks them on a thousand variants): ± 0.01 km
+// on the widths (10 m), ± 10⁻⁶ on k and ± 1 ppm, ± 0.05 km on the distance
+// of true scale, ± (0.0005° + 0.5 %) on its longitude difference (the first
+// term alone is 0.4 % short near 80° latitude).
+
+const WIDTH: Tolerance = Tolerance::abs(0.01);
+const EDGE_K: Tolerance = Tolerance::abs(1e-6);
+const PPM: Tolerance = Tolerance::abs(1.0);
+const K1_KM: Tolerance = Tolerance::abs(0.05);
+const K1_DEG: Tolerance = Tolerance {
+    atol: 0.0005,
+    rtol: 0.005,
+};
+
+/// The ellipsoids a facts variant is drawn on (WGS 84 most often).
+const FACTS_ELLIPSOIDS: &[&str] = &[
+    "wgs84",
+    "wgs84",
+    "wgs84",
+    "grs80",
+    "international-1924",
+    "bessel-1841",
+    "clarke-1866",
+    "everest-1830",
+];
+
+fn gen_facts(rng: &mut Rng) -> Record {
+    // a parallel with two decimals, 0.5° to 79.5° from the equator either way
+    // (the poles' zones are slivers: N cos φ small)
+    let lat = decimals(rng, 0.5, 79.5, 2) * if rng.coin() { 1.0 } else { -1.0 };
+    Record::new()
+        .with("latitude", lat)
+        .with("ellipsoid", rng.pick(FACTS_ELLIPSOIDS))
+}
+
+fn boxes_facts(_: &Record) -> Vec<BoxDef> {
+    vec![
+        BoxDef::new("zone_width_ground_km", "Zone width on the ground (along the parallel)", Some("km"), WIDTH)
+            .nudge("6° of longitude along the parallel: an arc of radius N·cos φ, with N = a/√(1 − e² sin² φ) and the angle in radians."),
+        BoxDef::new("zone_width_km", "Zone width on the map", Some("km"), WIDTH)
+            .nudge("Twice the easting offset x of the zone's edge (Δλ = 3°): a little more than k₀ times the ground width, because the map stretches away from the central meridian."),
+        BoxDef::new("edge_scale_factor", "Scale factor at the zone edge", None, EDGE_K)
+            .nudge("k ≈ k₀·cosh(x/(k₀R)) with x half the map width and R = √(MN) the Gaussian radius at this latitude."),
+        BoxDef::new("edge_distortion_ppm", "Distortion at the zone edge", Some("ppm"), PPM)
+            .nudge("(k − 1)·10⁶: millimetres per kilometre, positive where the map is too long, negative where it is too short (far north or south the edge is nearer than the line of k = 1)."),
+        BoxDef::new("k1_distance_km", "Distance from the central meridian where k = 1", Some("km"), K1_KM)
+            .nudge("Solve k₀·cosh(x/(k₀R)) = 1 for x."),
+        BoxDef::new("k1_longitude_offset", "Longitude difference where k = 1", Some("°"), K1_DEG)
+            .nudge("Along the parallel x ≈ k₀·N cos φ·Δλ (Δλ in radians): solve for Δλ, then convert to degrees."),
+    ]
+}
+
+/// N cos φ, the radius of the parallel, and R = √(MN), the Gaussian radius.
+fn radii(ell: &Ellipsoid, lat: f64) -> (f64, f64) {
+    let (s, c) = lat.to_radians().sin_cos();
+    let w2 = 1.0 - ell.e2() * s * s;
+    let nu = ell.a / w2.sqrt();
+    let rho = ell.a * (1.0 - ell.e2()) / w2.powf(1.5);
+    (nu * c, (rho * nu).sqrt())
+}
+
+/// Bisection on `0..30°` for the Δλ where `f(Δλ)` (growing with Δλ)
+/// reaches `target` (as the solver finds where k = 1).
+fn along_parallel(target: f64, f: impl Fn(f64) -> Result<f64>) -> Result<f64> {
+    let (mut lo, mut hi) = (0.0, 30.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid)? < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(0.5 * (lo + hi))
+}
+
+/// The solver's values, and the later boxes from the student's earlier ones.
+fn chain_facts(i: &Record, g: &Record) -> Result<Record> {
+    let s = crate::examples::solve("utm-facts", i)?;
+    let v = |k: &str| super::value_in(&s, k);
+    let ell = ellipsoid(i)?;
+    let lat = n(i, "latitude");
+    let (_, r) = radii(&ell, lat);
+    let (ground, map) = (v("zone_width_ground_km")?, v("zone_width_km")?);
+    // The map width from the student's ground width: the same stretch.
+    let ground_given = or_given(g, "zone_width_ground_km", ground);
+    let map_given = or_given(g, "zone_width_km", map * ground_given / ground);
+    // k at the edge from the student's map width, on the Gaussian sphere
+    // (tied to the exact k at the exact width).
+    let k_sphere = |w_km: f64| K0 * (w_km * 500.0 / (K0 * r)).cosh();
+    let k_edge = or_given(
+        g,
+        "edge_scale_factor",
+        v("edge_scale_factor")? * k_sphere(map_given) / k_sphere(map),
+    );
+    // where k = 1, and the Δλ at the student's distance along the parallel
+    let x1 = or_given(g, "k1_distance_km", v("k1_distance_km")?);
+    let d1 = if g.number("k1_distance_km").is_some() {
+        along_parallel(x1 * 1000.0, |d| Ok(krueger::forward(&ell, K0, lat, d)?.x))?
+    } else {
+        v("k1_longitude_offset")?
+    };
+    Ok(Record::new()
+        .with("zone_width_ground_km", ground_given)
+        .with("zone_width_km", map_given)
+        .with("edge_scale_factor", k_edge)
+        .with(
+            "edge_distortion_ppm",
+            or_given(g, "edge_distortion_ppm", (k_edge - 1.0) * 1e6),
+        )
+        .with("k1_distance_km", x1)
+        .with(
+            "k1_longitude_offset",
+            or_given(g, "k1_longitude_offset", d1),
+        ))
+}
+
+fn mistakes_facts(i: &Record) -> Result<Vec<Mistake>> {
+    let ell = ellipsoid(i)?;
+    let lat = n(i, "latitude");
+    let exact = chain_facts(i, &Record::new())?;
+    let v = |k: &str| exact.number(k).unwrap_or(f64::NAN);
+    let (parallel, _) = radii(&ell, lat);
+    let nu = parallel / lat.to_radians().cos();
+    const COS: &str =
+        "Along a parallel the radius is N·cos φ: the meridians close in towards the pole.";
+    const RAD: &str = "Degrees and radians mixed: an arc is radius × angle in radians.";
+    const HALF: &str = "A zone is 6° wide, 3° either side of its central meridian: the edge is 3° from it, the width 6°.";
+    const A_N: &str = "The parallel's radius is N·cos φ with N = a/√(1 − e² sin² φ), the prime-vertical radius, not the equatorial radius a.";
+    const GROUND: &str = "That is the width on the ground; on the map the zone is scaled by k₀ and stretched towards its edges (x(3°) on both sides).";
+    const K0_: &str =
+        "k₀ = 0.9996 scales the whole projection: k = k₀·cosh(x/(k₀R)), not cosh(x/R).";
+    const PCT: &str = "ppm is parts per million, (k − 1)·10⁶; (k − 1)·100 is per cent.";
+    const SIGN: &str = "(k − 1)·10⁶ is positive where the map is longer than the ground (k > 1), negative where it is shorter.";
+    const LECTURE: &str = "The lecture's 90 km is wrong: k − k₀ grows with the square of x, so k reaches 1 only about 180 km from the central meridian.";
+    const BOTH: &str = "That is the distance between the two lines of true scale; each is half of it from the central meridian.";
+    let edge6 = krueger::forward(&ell, K0, lat, 6.0)?;
+    let (k, x1) = (v("edge_scale_factor"), v("k1_distance_km"));
+    Ok(vec![
+        Mistake::new(
+            "zone_width_ground_km",
+            "cos φ forgotten",
+            COS,
+            nu * 6f64.to_radians() / 1000.0,
+        ),
+        Mistake::new(
+            "zone_width_ground_km",
+            "degrees vs radians",
+            RAD,
+            parallel * 6.0 / 1000.0,
+        ),
+        Mistake::new(
+            "zone_width_ground_km",
+            "half-zone: 3° for 6°",
+            HALF,
+            v("zone_width_ground_km") / 2.0,
+        ),
+        Mistake::new(
+            "zone_width_ground_km",
+            "a instead of N",
+            A_N,
+            ell.a * lat.to_radians().cos() * 6f64.to_radians() / 1000.0,
+        ),
+        Mistake::new(
+            "zone_width_km",
+            "the ground width, not the map's",
+            GROUND,
+            v("zone_width_ground_km"),
+        ),
+        Mistake::new(
+            "zone_width_km",
+            "half-zone: 3° for 6°",
+            HALF,
+            v("zone_width_km") / 2.0,
+        ),
+        Mistake::new(
+            "zone_width_km",
+            "k₀ = 0.9996 forgotten",
+            K0_,
+            v("zone_width_km") / K0,
+        ),
+        Mistake::new("edge_scale_factor", "k₀ = 0.9996 forgotten", K0_, k / K0),
+        Mistake::new("edge_scale_factor", "half-zone: 3° for 6°", HALF, edge6.k),
+        Mistake::new(
+            "edge_distortion_ppm",
+            "k₀ = 0.9996 forgotten",
+            K0_,
+            (k / K0 - 1.0) * 1e6,
+        ),
+        Mistake::new(
+            "edge_distortion_ppm",
+            "per cent, not ppm",
+            PCT,
+            (k - 1.0) * 100.0,
+        ),
+        Mistake::new("edge_distortion_ppm", "sign flipped", SIGN, (1.0 - k) * 1e6),
+        Mistake::new("k1_distance_km", "the lecture's 90 km", LECTURE, 90.0),
+        Mistake::new("k1_distance_km", "both lines' separation", BOTH, 2.0 * x1),
+        Mistake::new(
+            "k1_longitude_offset",
+            "degrees vs radians",
+            "That is Δλ in radians; the box asks for degrees (× 180/π).",
+            v("k1_longitude_offset").to_radians(),
+        ),
+        Mistake::new(
+            "k1_longitude_offset",
+            "cos φ forgotten",
+            COS,
+            (x1 * 1000.0 / (K0 * nu)).to_degrees(),
+        ),
+    ])
 }

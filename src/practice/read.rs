@@ -55,6 +55,12 @@ const UNITS: &[UnitDef] = &[
         scale: 1000.0,
     },
     UnitDef {
+        names: &["km", "kilometre", "kilometres", "kilometer", "kilometers"],
+        canonical: "km",
+        dimension: "length",
+        scale: 1.0e6,
+    },
+    UnitDef {
         names: &["µm", "μm", "um", "micron", "microns"],
         canonical: "µm",
         dimension: "length",
@@ -77,6 +83,12 @@ const UNITS: &[UnitDef] = &[
         canonical: "rad",
         dimension: "angle",
         scale: 180.0 / std::f64::consts::PI,
+    },
+    UnitDef {
+        names: &["ppm", "mm/km"],
+        canonical: "ppm",
+        dimension: "ratio",
+        scale: 1.0,
     },
     UnitDef {
         names: &[
@@ -160,8 +172,8 @@ pub fn read(text: &str) -> Result<Option<Reading>, String> {
             Some(u) => Some(u.canonical),
             None => {
                 return Err(format!(
-                    "\"{unit_text}\" is not a unit this box knows (try mm, cm, m, px, °, rad)"
-                ))
+                "\"{unit_text}\" is not a unit this box knows (try mm, cm, m, km, px, °, rad, ppm)"
+            ))
             }
         }
     };
@@ -301,6 +313,18 @@ mod tests {
             UnitCheck::Fits { factor: 0.1 }
         );
         assert_eq!(check_unit(Some("px"), Some("mm")), UnitCheck::Wrong);
+        assert_eq!(
+            check_unit(Some("m"), Some("km")),
+            UnitCheck::Fits { factor: 0.001 }
+        );
+        assert_eq!(
+            check_unit(Some("mm/km"), Some("ppm")),
+            UnitCheck::Fits { factor: 1.0 }
+        );
+        assert_eq!(check_unit(Some("ppm"), Some("km")), UnitCheck::Wrong);
+        let r = read("180,6 km").unwrap().unwrap();
+        assert_eq!((r.number, r.unit), (180.6, Some("km")));
+        assert_eq!(read("128 ppm").unwrap().unwrap().unit, Some("ppm"));
         assert_eq!(check_unit(None, Some("mm")), UnitCheck::Omitted);
         assert_eq!(check_unit(Some("mm"), None), UnitCheck::Wrong);
     }

@@ -255,7 +255,7 @@ fn mistakes_fit(i: &Record) -> Result<Vec<Mistake>> {
     let swapped: Vec<Vec<f64>> = p.iter().map(|q| vec![q[1], q[0], q[2], q[3]]).collect();
     let s = examples::solve("transform-fit", &i.clone().with("points", mat(&swapped)))?;
     let n = if is_affine(i) { 6 } else { 4 };
-    (1..=n)
+    let mut out = (1..=n)
         .map(|k| {
             let key = format!("parameters[{k}]");
             Ok(Mistake::new(
@@ -265,5 +265,25 @@ fn mistakes_fit(i: &Record) -> Result<Vec<Mistake>> {
                 value_in(&s, &key)?,
             ))
         })
-        .collect()
+        .collect::<Result<Vec<_>>>()?;
+    // σ₀ from VᵀV over the wrong count, or without the root
+    let exact = examples::solve("transform-fit", i)?;
+    let (sigma0, redundancy) = (value_in(&exact, "sigma0")?, value_in(&exact, "redundancy")?);
+    let vtv = sigma0 * sigma0 * redundancy;
+    let observations = 2.0 * p.len() as f64;
+    out.extend([
+        Mistake::new(
+            "sigma0",
+            "divided by the observations, not the redundancy",
+            "σ₀² = VᵀV / r with r = observations − unknowns: the fitted parameters use up some of the observations.",
+            (vtv / observations).sqrt(),
+        ),
+        Mistake::new(
+            "sigma0",
+            "square root forgotten",
+            "VᵀV / r is σ₀²; σ₀ is its square root.",
+            vtv / redundancy,
+        ),
+    ]);
+    Ok(out)
 }

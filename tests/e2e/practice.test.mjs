@@ -142,6 +142,101 @@ describe("a practice variant", () => {
     }
   });
 
+  test("separate verdicts for the value, the precision and the unit", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      const v = await variantOf(page, "gsd", CODE);
+      const parts = (key) => box(page, key).locator(".verdict-part").evaluateAll((xs) => xs.map((x) => [x.dataset.part, x.dataset.kind, x.textContent.replace(/^\S+\s/, "")]));
+      // the right number in the wrong unit: value right, unit wrong
+      await answer(page, "gsd_mm", `${v.result.gsd_mm.toFixed(3)} px`);
+      assert.equal(await box(page, "gsd_mm").getAttribute("data-verdict"), "wrong");
+      assert.deepEqual(await parts("gsd_mm"), [
+        ["value", "ok", "Value: right"],
+        ["unit", "bad", "Unit: wrong, this box is in mm"],
+      ]);
+      // the right number to too few digits (± 0.2 %): value right, precision coarse
+      const x = v.result.gsd_cm;
+      const allowed = 0.002 * x;
+      const coarse = [1, 2, 3]
+        .map((d) => x.toPrecision(d))
+        .filter((t) => !t.includes("e"))
+        .find((t) => {
+          const halfUlp = 0.5 * 10 ** (Math.floor(Math.log10(Math.abs(Number(t)))) - (t.replace(/[^0-9]/g, "").replace(/^0+/, "").length - 1));
+          return Math.abs(Number(t) - x) > allowed && halfUlp > allowed && halfUlp <= Math.max(10 * allowed, 0.005 * x);
+        });
+      assert.ok(coarse, `no coarse rounding of ${x}`);
+      await answer(page, "gsd_cm", `${coarse} cm`);
+      assert.equal(await box(page, "gsd_cm").getAttribute("data-verdict"), "correct");
+      assert.deepEqual(await parts("gsd_cm"), [
+        ["value", "ok", "Value: right"],
+        ["precision", "bad", "Precision: too few digits"],
+        ["unit", "ok", "Unit: cm"],
+      ]);
+      // a bare right number: all three fine, the unit taken as the box's
+      await answer(page, "pixel_size_mm", String(v.result.pixel_size_mm));
+      assert.deepEqual(await parts("pixel_size_mm"), [
+        ["value", "ok", "Value: right"],
+        ["precision", "ok", "Precision: enough digits"],
+        ["unit", "info", "Unit: none typed, taken as mm"],
+      ]);
+      // a box without a unit has no unit line
+      await answer(page, "scale_denominator", "1");
+      assert.deepEqual(await parts("scale_denominator"), [["value", "bad", "Value: off"]]);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("a box shows how it was read before it is graded", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      const b = box(page, "gsd_mm");
+      await b.locator("input").fill("1,25e2 mm");
+      assert.equal(await b.locator(".answer-read").innerText(), "read as 125 mm");
+      // not graded yet: no verdict, no feedback, no verdict lines
+      assert.equal(await b.getAttribute("data-verdict"), "");
+      assert.equal((await b.locator(".answer-feedback").innerText()).trim(), "");
+      assert.equal(await b.locator(".verdict-part").count(), 0);
+      await b.locator("input").fill("3/4");
+      assert.equal(await b.locator(".answer-read").innerText(), "read as 0.75");
+      await b.locator("input").press("Tab");
+      assert.equal(await b.getAttribute("data-verdict"), "wrong");
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("New variant: a new code in the link, empty boxes, the old variant's answers kept out", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", LINK);
+      const v = await variantOf(page, "gsd", CODE);
+      await answer(page, "scale_denominator", v.result.scale_denominator.toFixed(2));
+      assert.equal(await box(page, "scale_denominator").getAttribute("data-verdict"), "correct");
+      await page.getByRole("button", { name: "New variant" }).click();
+      await page.waitForFunction((c) => document.querySelector("article.practice")?.dataset.code !== c, CODE, { timeout: WAIT });
+      await page.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: WAIT });
+      const code = await page.locator("article.practice").getAttribute("data-code");
+      assert.match(code, /^1[0-9A-Z]{4}$/);
+      assert.notEqual(code, CODE);
+      assert.match(page.url(), new RegExp(`#/gsd\\?practice=${code}$`));
+      assert.match(await page.locator(".example-meta").innerText(), new RegExp(`Variant ${code}`));
+      assert.deepEqual(await page.locator(".answer input").evaluateAll((xs) => xs.map((x) => x.value)), ["", "", "", ""]);
+      assert.equal(await page.locator(".answer[data-verdict=correct]").count(), 0);
+      assert.equal((await page.locator(".practice-score").innerText()).trim(), "Score: 0 of 4");
+      // its givens are the new variant's
+      const w = await variantOf(page, "gsd", code);
+      assert.ok((await page.locator(".givens").innerText()).includes(`${w.inputs.flying_height_m} m`));
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("UTM: the zone and easting graded, the forgotten false easting named, the meridian carried from the student's zone", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {

@@ -29,6 +29,24 @@ const VERDICT_WORDS = {
   empty: "",
 };
 
+/**
+ * The separate verdicts on a box's value, precision and unit (grade()'s
+ * `value`, `precision`, `unit`), as short labelled lines: [class, text].
+ */
+export function verdictParts(r, unit) {
+  const parts = [];
+  if (r.value === "ok") parts.push(["value", "ok", "Value: right"]);
+  if (r.value === "off") parts.push(["value", "bad", "Value: off"]);
+  if (r.precision === "ok") parts.push(["precision", "ok", "Precision: enough digits"]);
+  if (r.precision === "coarse") parts.push(["precision", "bad", "Precision: too few digits"]);
+  if (unit && r.unit === "ok") parts.push(["unit", "ok", `Unit: ${unit}`]);
+  if (unit && r.unit === "omitted") parts.push(["unit", "info", `Unit: none typed, taken as ${unit}`]);
+  if (unit && r.unit === "wrong") parts.push(["unit", "bad", `Unit: wrong, this box is in ${unit}`]);
+  return parts;
+}
+
+const PART_MARK = { ok: "✓", bad: "✗", info: "·" };
+
 /** Adds the practice stylesheet once. */
 function ensureStyles() {
   if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
@@ -161,6 +179,7 @@ function buildVariant(ctx, entry, variant, answers) {
     input.value = answers[b.key] ?? "";
     const readAs = el("span", { class: "answer-read" });
     const feedback = el("p", { class: "answer-feedback", id: `${inputId}-fb`, "aria-live": "polite" });
+    const parts = el("ul", { class: "verdict-parts", "aria-label": "Value, precision and unit" });
     const hintButton = el("button", { type: "button", class: "button hint-button" }, "Hint");
     const hintBody = el("div", { class: "hint-body" });
     const item = el(
@@ -170,6 +189,7 @@ function buildVariant(ctx, entry, variant, answers) {
       el("div", { class: "answer-row" }, input, b.unit ? el("span", { class: "answer-unit" }, b.unit) : null, readAs),
       el("p", { class: "answer-tolerance muted", id: `${inputId}-tol` }, `Tolerance ${b.tolerance_text}`),
       feedback,
+      parts,
       el("div", { class: "hints" }, hintButton, hintBody),
     );
     input.addEventListener("input", () => regrade(null));
@@ -191,7 +211,7 @@ function buildVariant(ctx, entry, variant, answers) {
       hintButton.disabled = n >= RUNGS.length;
       showRevealed();
     });
-    return { b, input, readAs, feedback, item };
+    return { b, input, readAs, feedback, parts, item };
   }
 
   function showHint(b, n, body) {
@@ -251,7 +271,11 @@ function buildVariant(ctx, entry, variant, answers) {
       const show = checked.has(b.b.key) && r.verdict !== "empty";
       b.item.dataset.verdict = show ? r.verdict : "";
       b.feedback.replaceChildren();
+      b.parts.replaceChildren();
       if (show) {
+        for (const [part, kind, text] of verdictParts(r, b.b.unit)) {
+          b.parts.append(el("li", { class: `verdict-part part-${kind}`, "data-part": part, "data-kind": kind }, el("span", { class: "part-mark", "aria-hidden": "true" }, PART_MARK[kind]), " ", text));
+        }
         const parts = [el("span", { class: `verdict verdict-${r.verdict}` }, VERDICT_WORDS[r.verdict] ?? r.verdict), " ", r.message];
         if (r.mistake) b.item.dataset.mistake = r.mistake;
         else delete b.item.dataset.mistake;
