@@ -1585,3 +1585,26 @@ fn new_mistake_values_follow_from_the_givens() {
         g.get("sigma0")
     );
 }
+
+#[test]
+fn lsm_affine_variants_that_left_the_window_now_converge() {
+    // The full audit (release, every seed) found these seven variants leaving
+    // the 11×11 window after 2–3 iterations: shifts of 1.0–1.5 px along both
+    // axes at once. The generator now keeps the shift within 1.5 px.
+    for code in [
+        "100FV", "101GZ", "102F4", "102KE", "104CZ", "105FZ", "106ZZ",
+    ] {
+        let p = photogrammetry_playground::practice::practice("lsm-affine", Some(code), 0).unwrap();
+        let (c, r) = (
+            p.inputs.number("shift_c").unwrap(),
+            p.inputs.number("shift_r").unwrap(),
+        );
+        assert!(c.hypot(r) <= 1.5 + 1e-12, "{code}: shift ({c}, {r})");
+        let s = examples::solve("lsm-affine", &p.inputs).unwrap();
+        assert_eq!(
+            s.result.get("converged"),
+            Some(&Value::Bool(true)),
+            "{code} does not converge"
+        );
+    }
+}
