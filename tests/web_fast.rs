@@ -483,10 +483,12 @@ fn contours_are_every_border_exactly() {
 /// The warps where the cubic weights cancel hardest: 0/255 checkerboards
 /// and stripes (neighbours of opposite sign weights at full contrast),
 /// fractions next to 0, ½ and 1 and exactly on pixel centres, values near
-/// zero (the tolerance is absolute there). The interior runs compute
-/// positions along the row ([`fast::warp_affine`]'s `along`) and sum in
-/// `f64`, so the only loss is the `f32` store: 1e-6 relative holds with a
-/// wide margin below the 1e-4 rule.
+/// zero (the tolerance is absolute there). Bicubic sums in `f64` from
+/// fixed-point fractions within 2⁻³² px, so the only loss is the `f32`
+/// store: 1e-6 relative holds with a wide margin below the 1e-4 rule.
+/// Bilinear runs in `f32` in the SIMD build: its error bound, 6.8·10⁻⁵
+/// (absolute below 1, relative above; `resample::fast`'s `bilinear_run`),
+/// is what is asserted, below the rule's 1e-4.
 #[test]
 fn warps_hold_the_tolerance_where_weights_cancel() {
     use photogrammetry_playground::resample::{self, fast as rfast, Method};
@@ -556,8 +558,8 @@ fn warps_hold_the_tolerance_where_weights_cancel() {
                                     .unwrap_or(-1.0);
                                 let err = (f64::from(lin[r * w + c]) - want).abs();
                                 assert!(
-                                    err <= 1e-6 * want.abs().max(1.0),
-                                    "bilinear map {m:?} at ({c}, {r})"
+                                    err <= 6.8e-5 * want.abs().max(1.0),
+                                    "bilinear map {m:?} at ({c}, {r}): error {err:e}"
                                 );
                             }
                         }
