@@ -281,7 +281,10 @@ fn affine_warps_equal_resample_warp() {
 #[test]
 fn zncc_equals_correlate_2d() {
     use photogrammetry_playground::correlation::{self, fast as cfast};
-    let cases = [
+    // fixed cases, then every shared size as the search image with a
+    // template of about a third of it (odd and even, 1×1 up) and one of
+    // up to 21×21 (the reference's product budget caps the template)
+    let mut cases = vec![
         (1, 1, 1, 1),
         (7, 5, 3, 3),
         (40, 31, 21, 21),
@@ -289,6 +292,14 @@ fn zncc_equals_correlate_2d() {
         (64, 9, 17, 3),
         (25, 25, 25, 25),
     ];
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        cases.push((w, h, (w / 3).clamp(1, 15) + k % 2, (h / 3).clamp(1, 11)));
+        cases.push((w, h, w.min(21), h.min(21)));
+    }
+    let cases: Vec<_> = cases
+        .into_iter()
+        .map(|(sw, sh, tw, th)| (sw, sh, tw.min(sw), th.min(sh)))
+        .collect();
     for (k, &(sw, sh, tw, th)) in cases.iter().enumerate() {
         let s = random_image(sw, sh, 500 + k as u64);
         // the template cut from the search image (peak ρ = 1) and a random one
