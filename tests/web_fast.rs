@@ -206,6 +206,37 @@ fn forstner_wq_equals_the_window_operator() {
 }
 
 #[test]
+fn moravec_equals_moravec_map_exactly() {
+    use photogrammetry_playground::interest::{self, fast as ifast};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 700 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        for size in [3, 4, 5, 8] {
+            let mut out = vec![0.0f64; w * h];
+            let fast = ifast::moravec(img, size, &mut out);
+            let Ok(map) = interest::moravec_map(&grid, size) else {
+                assert!(
+                    fast.is_err(),
+                    "{w}×{h} size {size}: the reference refuses it"
+                );
+                continue;
+            };
+            fast.unwrap();
+            for r in 0..h {
+                for c in 0..w {
+                    let got = out[r * w + c];
+                    match map.get(c, r) {
+                        Some(want) => assert_eq!(got, want, "{w}×{h} size {size} at ({c}, {r})"),
+                        None => assert!(got.is_nan(), "{w}×{h} size {size} at ({c}, {r}): {got}"),
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
 fn affine_warps_equal_resample_warp() {
     use photogrammetry_playground::resample::{self, fast as rfast, Method};
     for (k, &(w, h)) in SIZES.iter().enumerate() {
