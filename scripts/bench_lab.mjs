@@ -74,7 +74,9 @@ const OPS = [
 const ASSETS = fs.existsSync("dist/assets.json") ? JSON.parse(fs.readFileSync("dist/assets.json", "utf8")) : {};
 const built = (f) => ASSETS[f] ?? f;
 // the build the worker loads where there is SIMD (pkg-simd), else the scalar one
-const pkg = fs.existsSync(new URL("../dist/lab/pkg-simd/photogrammetry_lab.js", import.meta.url)) && process.env.BENCH_LAB_SCALAR !== "1" ? "pkg-simd" : "pkg";
+// (looked up through assets.json: the built file names carry content hashes)
+const hasSimd = fs.existsSync(new URL(`../dist/${built("lab/pkg-simd/photogrammetry_lab.js")}`, import.meta.url));
+const pkg = hasSimd && process.env.BENCH_LAB_SCALAR !== "1" ? "pkg-simd" : "pkg";
 const lab = await import(new URL(`../dist/${built(`lab/${pkg}/photogrammetry_lab.js`)}`, import.meta.url));
 lab.initSync({ module: fs.readFileSync(new URL(`../dist/${built(`lab/${pkg}/photogrammetry_lab_bg.wasm`)}`, import.meta.url)) });
 const frame = lab.scanned_frame();
