@@ -1,16 +1,26 @@
 // npm run bench -- ops: T1–T7 of ../shared/bench/TASKS.md through the lab's
 // wasm exports (FastImage) and OpenCV.js (@techstark/opencv-js) in this same
 // Node process, on the same bytes; optionally native OpenCV (one thread,
-// opencv-python-headless in .venv-bench) in a child process on the same files.
+// opencv-python-headless in .venv-bench) in a child process on the same files,
+// asked for each task right after Node timed it (interleaved, so the three
+// columns of a row see the same machine load).
 //   node scripts/bench-ops/bench.mjs [--json FILE] [--no-native]
 // Timing rules of TASKS.md: BENCH_WARMUP (2) untimed calls, then
 // n = clamp(floor(BENCH_BUDGET_S (1.5) / t_last_warmup), BENCH_MIN_REPS (5),
-// BENCH_MAX_REPS (25)) timed calls; median, min, max.
+// BENCH_MAX_REPS (25)) timed calls; median, min, max of the wall-clock
+// times. The CPU time of the same calls (process.cpuUsage, Python's
+// process_time) is kept too: on a shared, loaded machine it is the figure
+// least disturbed by other processes (see docs/BENCH-OPS.md).
+// --json FILE: one object per task and size with the issue's keys
+// {task, size, ours_ms, opencvjs_ms, agree} and these extra keys:
+// native_ms (native OpenCV wall-clock median, null without it), and
+// ours_cpu_ms, opencvjs_cpu_ms, native_cpu_ms (CPU-time medians).
 import fs from "node:fs";
 import path from "node:path";
 import crypto from "node:crypto";
 import { createRequire } from "node:module";
-import { spawnSync } from "node:child_process";
+import { spawn } from "node:child_process";
+import { createInterface } from "node:readline";
 import { fileURLToPath, pathToFileURL } from "node:url";
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -41,10 +51,17 @@ function time(fn) {
   let last = 0;
   for (let i = 0; i < WARM; i++) { const t0 = performance.now(); fn(); last = performance.now() - t0; }
   const n = Math.min(MAXR, Math.max(MINR, Math.floor((BUDGET * 1000) / Math.max(last, 1e-3))));
-  const ts = [];
-  for (let i = 0; i < n; i++) { const t0 = performance.now(); fn(); ts.push(performance.now() - t0); }
+  const ts = [], cs = [];
+  for (let i = 0; i < n; i++) {
+    const c0 = process.cpuUsage(), t0 = performance.now();
+    fn();
+    ts.push(performance.now() - t0);
+    const d = process.cpuUsage(c0);
+    cs.push((d.user + d.system) / 1000);
+  }
   ts.sort((a, b) => a - b);
-  return { median: ts[Math.floor(n / 2)], min: ts[0], max: ts[n - 1], n };
+  cs.sort((a, b) => a - b);
+  return { median: ts[Math.floor(n / 2)], min: ts[0], max: ts[n - 1], n, cpu: cs[Math.floor(n / 2)] };
 }
 
 // ---- our wasm (the lab's exports)
@@ -231,21 +248,24 @@ if (lab.FastImage.prototype.contours) {
   });
 }
 
-// ---- native OpenCV (optional): one child process over the same files
-let native = {};
+// ---- native OpenCV (optional): one child process serving one task at a time
+let askNative = async () => undefined;
 const py = path.join(root, ".venv-bench/bin/python");
 if (!args.includes("--no-native") && fs.existsSync(py)) {
-  const r = spawnSync(py, [path.join(here, "native.py"), dataDir, SIZES.join(","), tasks.map((t) => t.name).join(",")],
-    { encoding: "utf8", env: { ...process.env }, maxBuffer: 1 << 24 });
-  if (r.status === 0) native = JSON.parse(r.stdout);
-  else console.error(`native OpenCV column skipped: ${(r.stderr || "").trim().split("\n").pop()}`);
+  const child = spawn(py, [path.join(here, "native.py"), dataDir, "--serve"], { stdio: ["pipe", "pipe", "inherit"] });
+  const lines = createInterface({ input: child.stdout });
+  const pending = [];
+  lines.on("line", (l) => pending.shift()?.(JSON.parse(l)));
+  child.on("exit", () => { for (const r of pending.splice(0)) r(undefined); askNative = async () => undefined; });
+  askNative = (t, n) => new Promise((resolve) => { pending.push((v) => resolve(v ?? undefined)); child.stdin.write(`${t} ${n}\n`); });
+  process.on("exit", () => child.kill());
 }
 
 const rows = [];
 const fmt = (t) => (t === undefined ? "-" : t.median.toFixed(t.median < 10 ? 2 : 1));
 console.log(`\nT1–T7 (../shared/bench/TASKS.md), ms per call: median [min–max] of n timed calls after ${WARM} warm-ups`);
 console.log(`ours = lab wasm (${path.relative(root, pkg)}) in Node ${process.version}; OpenCV.js ${require("@techstark/opencv-js/package.json").version}; native = opencv-python one thread`);
-const head = ["task", "size", "ours ms", "OpenCV.js ms", "ours/cv.js", "native ms", "ours/native", "agree"];
+const head = ["task", "size", "ours ms", "OpenCV.js ms", "ours/cv.js", "native ms", "ours/native", "CPU ms ours / cv.js / native", "agree"];
 console.log(head.join(" | "));
 for (const n of SIZES) {
   const p = manifest.sizes[String(n)];
@@ -256,17 +276,21 @@ for (const n of SIZES) {
     const cvt = time(job.cv);
     const [agree, note] = job.agree();
     job.free();
-    const nat = native[`${t.name}@${n}`];
+    const nat = await askNative(t.name, n);
     const ratio = ours.median / cvt.median;
     const row = { task: t.name, size: n, ours_ms: +ours.median.toFixed(3), opencvjs_ms: +cvt.median.toFixed(3), agree,
       ours_min: +ours.min.toFixed(3), ours_max: +ours.max.toFixed(3), opencvjs_min: +cvt.min.toFixed(3), opencvjs_max: +cvt.max.toFixed(3),
-      native_ms: nat ? +nat.median.toFixed(3) : null, note };
+      native_ms: nat ? +nat.median.toFixed(3) : null, ours_cpu_ms: +ours.cpu.toFixed(3), opencvjs_cpu_ms: +cvt.cpu.toFixed(3),
+      native_cpu_ms: nat ? +nat.cpu_median.toFixed(3) : null, note };
     rows.push(row);
     console.log([t.name, n, `${fmt(ours)} [${ours.min.toFixed(1)}–${ours.max.toFixed(1)}]`, `${fmt(cvt)} [${cvt.min.toFixed(1)}–${cvt.max.toFixed(1)}]`,
-      ratio.toFixed(2), nat ? fmt(nat) : "-", nat ? (ours.median / nat.median).toFixed(2) : "-", `${agree ? "yes" : "NO"} (${note})`].join(" | "));
+      ratio.toFixed(2), nat ? fmt(nat) : "-", nat ? (ours.median / nat.median).toFixed(2) : "-",
+      `${ours.cpu.toFixed(1)} / ${cvt.cpu.toFixed(1)} / ${nat ? nat.cpu_median.toFixed(1) : "-"}`, `${agree ? "yes" : "NO"} (${note})`].join(" | "));
   }
 }
 if (jsonOut) {
-  fs.writeFileSync(jsonOut, JSON.stringify(rows.map(({ task, size, ours_ms, opencvjs_ms, agree, native_ms }) => ({ task, size, ours_ms, opencvjs_ms, agree, native_ms })), null, 1));
+  fs.writeFileSync(jsonOut, JSON.stringify(rows.map(({ task, size, ours_ms, opencvjs_ms, agree, native_ms, ours_cpu_ms, opencvjs_cpu_ms, native_cpu_ms }) =>
+    ({ task, size, ours_ms, opencvjs_ms, agree, native_ms, ours_cpu_ms, opencvjs_cpu_ms, native_cpu_ms })), null, 1));
   console.log(`wrote ${jsonOut}`);
 }
+process.exit(0);

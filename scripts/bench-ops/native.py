@@ -1,7 +1,13 @@
 """Native OpenCV (opencv-python-headless, one thread) on the same files and
-with the same timing rules as bench.mjs; prints {"task@size": {median, min,
-max, n}} as JSON. Benchmark only (runs from .venv-bench).
-    python native.py DATA_DIR SIZES TASKS
+with the same timing rules as bench.mjs. Benchmark only (runs from
+.venv-bench).
+    python native.py DATA_DIR SIZES TASKS   all at once: prints
+        {"task@size": {median, min, max, n, cpu_median}} as JSON
+    python native.py DATA_DIR --serve       one request per stdin line,
+        "TASK SIZE", one JSON line back: bench.mjs asks right after timing
+        the same task in Node, so that all three columns see the same load
+Wall-clock ms (time.perf_counter) as TASKS.md says, and the process's CPU
+ms of the same calls (time.process_time) for loaded machines.
 """
 import json
 import math
@@ -13,7 +19,8 @@ import cv2
 import numpy as np
 
 cv2.setNumThreads(1)
-data, sizes, tasks = sys.argv[1], [int(s) for s in sys.argv[2].split(",")], sys.argv[3].split(",")
+data = sys.argv[1]
+serve = sys.argv[2] == "--serve"
 env = lambda k, d: float(os.environ.get(k, d))
 BUDGET, MINR, MAXR, WARM = env("BENCH_BUDGET_S", 1.5), int(env("BENCH_MIN_REPS", 5)), int(env("BENCH_MAX_REPS", 25)), int(env("BENCH_WARMUP", 2))
 manifest = json.load(open(os.path.join(data, "manifest.json")))
@@ -24,15 +31,15 @@ def timed(fn):
     for _ in range(WARM):
         t0 = time.perf_counter(); fn(); last = time.perf_counter() - t0
     n = min(MAXR, max(MINR, math.floor(BUDGET / max(last, 1e-6))))
-    ts = []
+    ts, cs = [], []
     for _ in range(n):
-        t0 = time.perf_counter(); fn(); ts.append((time.perf_counter() - t0) * 1000)
-    ts.sort()
-    return {"median": ts[n // 2], "min": ts[0], "max": ts[-1], "n": n}
+        c0 = time.process_time(); t0 = time.perf_counter(); fn()
+        ts.append((time.perf_counter() - t0) * 1000); cs.append((time.process_time() - c0) * 1000)
+    ts.sort(); cs.sort()
+    return {"median": ts[n // 2], "min": ts[0], "max": ts[-1], "n": n, "cpu_median": cs[n // 2]}
 
 
-out = {}
-for n in sizes:
+def jobs_for(n):
     p = manifest["sizes"][str(n)]
     g = np.fromfile(os.path.join(data, p["gray"]), np.uint8).reshape(n, n)
     b = np.fromfile(os.path.join(data, p["binary"]), np.uint8).reshape(n, n)
@@ -71,7 +78,24 @@ for n in sizes:
         "T6_median3": lambda: cv2.medianBlur(g, 3),
         "T7_contours": lambda: cv2.findContours(b, cv2.RETR_LIST, cv2.CHAIN_APPROX_NONE),
     }
-    for t in tasks:
-        if t in jobs:
-            out[f"{t}@{n}"] = timed(jobs[t])
-print(json.dumps(out))
+    return jobs
+
+
+if serve:
+    cache = {}
+    for line in sys.stdin:
+        t, n = line.split()
+        n = int(n)
+        if n not in cache:
+            cache.clear(); cache[n] = jobs_for(n)
+        job = cache[n].get(t)
+        print(json.dumps(timed(job) if job else None), flush=True)
+else:
+    sizes, tasks = [int(s) for s in sys.argv[2].split(",")], sys.argv[3].split(",")
+    out = {}
+    for n in sizes:
+        jobs = jobs_for(n)
+        for t in tasks:
+            if t in jobs:
+                out[f"{t}@{n}"] = timed(jobs[t])
+    print(json.dumps(out))

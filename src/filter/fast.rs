@@ -4,7 +4,7 @@
 //! nine values per pixel). Output `f32` (filters) or `u8` (median).
 //!
 //! Each function gives the output of its reference in [`super`] at every
-//! pixel (`tests/fast_filters.rs` ties them): [`separable`] is
+//! pixel (`tests/web_fast.rs` ties them): [`separable`] is
 //! [`super::correlate`] with the outer-product kernel, [`sobel`] is
 //! [`super::gradient`] with [`super::sobel_y`] (`gx`) and the negated
 //! [`super::sobel_x`] (`gy`), [`median3`] is [`super::median`] 3×3.

@@ -14,6 +14,10 @@
 //! interior), up to its `det ≤ 10⁻¹²·trace²` rule that sets a near-zero
 //! `det` to 0; on the border it is [`super::Measures::from_sums`] of the
 //! replicated sums (`tests/web_fast.rs`).
+//!
+//! [`moravec`]: the Moravec mean of every window, from a sum table of the
+//! per-pixel sums of four squared differences, equal to
+//! [`super::moravec_map`] exactly.
 
 use crate::error::{Error, Result};
 use crate::raster::{check_len, fold, Border, Gray};
@@ -170,4 +174,71 @@ fn measures(sxx: &[i32], syy: &[i32], sxy: &[i32], wo: &mut [f32], qo: &mut [f32
             *qv = 0.0;
         }
     }
+}
+
+/// The Moravec mean of every pixel's `size × size` window, with a sum table
+/// instead of one window per pixel: [`super::moravec_map`] at every pixel
+/// (`NaN` where it has no value: the window does not fit), exactly — the
+/// per-pixel sums of the four squared differences
+/// `(I(c+1, r) − I(c−1, r))² + (I(c, r+1) − I(c, r−1))² + …` are integers,
+/// each window adds the `(size − 2)²` of its interior as an exact integer
+/// (the reference adds the same integers in `f64`, exactly below 2⁵³) and
+/// divides by their count as the reference does (`tests/web_fast.rs`).
+pub fn moravec(img: Gray, size: usize, out: &mut [f64]) -> Result<()> {
+    let (w, h) = (img.width(), img.height());
+    if !(super::MIN_WINDOW..=super::MAX_WINDOW).contains(&size) {
+        return Err(Error::input(
+            "window_size",
+            format!(
+                "must be between {} and {} (got {size})",
+                super::MIN_WINDOW,
+                super::MAX_WINDOW
+            ),
+        ));
+    }
+    if w < size || h < size {
+        return Err(Error::input(
+            "image",
+            format!("is {h}×{w}, smaller than the {size}×{size} window"),
+        ));
+    }
+    check_len("output", out, w * h)?;
+    let data = img.data();
+    let px = |c: usize, r: usize| i64::from(data.get(r * w + c).copied().unwrap_or(0));
+    // sum table of the per-pixel sums (0 on the image's outer ring, which
+    // no window interior reaches), zero first row and column
+    let stride = w + 1;
+    let mut st = vec![0i64; stride * (h + 1)];
+    for r in 0..h {
+        let mut run = 0i64;
+        for c in 0..w {
+            if c >= 1 && c + 1 < w && r >= 1 && r + 1 < h {
+                let d = |a: i64, b: i64| (a - b) * (a - b);
+                run += d(px(c + 1, r), px(c - 1, r))
+                    + d(px(c, r + 1), px(c, r - 1))
+                    + d(px(c + 1, r + 1), px(c - 1, r - 1))
+                    + d(px(c - 1, r + 1), px(c + 1, r - 1));
+            }
+            let i = (r + 1) * stride + c + 1;
+            st[i] = st[i - stride] + run;
+        }
+    }
+    let (a, k) = (super::anchor(size), size - 2);
+    let count = (k * k) as f64;
+    for (r, row) in out.chunks_exact_mut(w).enumerate() {
+        for (c, o) in row.iter_mut().enumerate() {
+            // the window's top-left (c − a, r − a) and its interior from +1
+            *o = if c >= a && r >= a && c - a + size <= w && r - a + size <= h {
+                let (x0, y0) = (c - a + 1, r - a + 1);
+                let sum = st[(y0 + k) * stride + x0 + k]
+                    - st[y0 * stride + x0 + k]
+                    - st[(y0 + k) * stride + x0]
+                    + st[y0 * stride + x0];
+                sum as f64 / count
+            } else {
+                f64::NAN
+            };
+        }
+    }
+    Ok(())
 }
