@@ -11,6 +11,7 @@
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
+import { idle, sample, openLab as openLabIn } from "./lab-harness.mjs";
 
 let env;
 before(async () => {
@@ -19,24 +20,6 @@ before(async () => {
 after(async () => {
   await env?.close();
 });
-
-async function openLab() {
-  const o = await open(env.browser);
-  await o.page.goto(`${env.url}index.html#/lab`);
-  await o.page.waitForSelector("#lab-sample");
-  return o;
-}
-
-async function idle(page) {
-  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 30_000 });
-}
-
-async function sample(page, id) {
-  await page.selectOption("#lab-sample", id);
-  await page.click("#lab-open-sample");
-  await idle(page);
-  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id);
-}
 
 /** Clicks the main canvas at image pixel (c, r) of the fitted image. */
 async function clickPixel(page, c, r) {
@@ -290,3 +273,8 @@ test("after a trap the fresh worker's numbers are still its examples' numbers", 
   }
   await context.close();
 });
+
+/** A fresh page on the lab. */
+function openLab(options) {
+  return openLabIn(env, options);
+}

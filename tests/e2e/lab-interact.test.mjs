@@ -9,6 +9,7 @@
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
+import { idle, sample, openLab as openLabIn } from "./lab-harness.mjs";
 
 let env;
 before(async () => {
@@ -17,26 +18,6 @@ before(async () => {
 after(async () => {
   await env?.close();
 });
-
-async function openLab(options) {
-  const o = await open(env.browser, options);
-  await o.page.goto(`${env.url}index.html#/lab`);
-  await o.page.waitForSelector("#lab-sample");
-  return o;
-}
-
-async function idle(page) {
-  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 60_000 });
-}
-
-async function sample(page, id) {
-  await page.selectOption("#lab-sample", id);
-  // the body's marks outlive a lab left for an example and opened again: wait for this photo's own
-  await page.evaluate(() => delete document.body.dataset.image);
-  await page.click("#lab-open-sample");
-  await idle(page);
-  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
-}
 
 /** The page position of image position (x, y) in the main view (pixel centres at integers): relative to the canvas (x, y) and to the page. */
 async function pagePos(page, x, y) {
@@ -432,3 +413,8 @@ test("Cancel during a long run on a 2048² image: the photo and the settings are
   assert.deepEqual(log.pageErrors, []);
   await context.close();
 });
+
+/** A fresh page on the lab. */
+function openLab(options) {
+  return openLabIn(env, options);
+}

@@ -12,6 +12,7 @@ import assert from "node:assert/strict";
 import { chromium } from "playwright-core";
 import { startServer } from "../../scripts/serve.mjs";
 import { start, open, DIST, CHROMIUM, CHROMIUM_ARGS, TEST_TIMEOUT } from "./harness.mjs";
+import { idle, sample } from "./lab-harness.mjs";
 
 let env;
 before(async () => {
@@ -35,19 +36,6 @@ async function openLab(options, url = env.url, browser = env.browser) {
   await o.page.goto(`${url}index.html#/lab`);
   await o.page.waitForSelector("#lab-sample");
   return o;
-}
-
-async function idle(page) {
-  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 30_000 });
-}
-
-async function sample(page, id) {
-  await page.selectOption("#lab-sample", id);
-  // the body's marks outlive a lab left for an example and opened again: wait for this photo's own
-  await page.evaluate(() => delete document.body.dataset.image);
-  await page.click("#lab-open-sample");
-  await idle(page);
-  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
 }
 
 const view = (page) => page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());

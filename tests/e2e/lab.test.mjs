@@ -14,6 +14,7 @@ import fs from "node:fs";
 import path from "node:path";
 import zlib from "node:zlib";
 import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
+import { idle, sample, openLab as openLabIn } from "./lab-harness.mjs";
 
 const CORPUS = path.resolve("lab/tests/corpus");
 let env;
@@ -23,26 +24,6 @@ before(async () => {
 after(async () => {
   await env?.close();
 });
-
-async function openLab(options) {
-  const o = await open(env.browser, options);
-  await o.page.goto(`${env.url}index.html#/lab`);
-  await o.page.waitForSelector("#lab-sample");
-  return o;
-}
-
-async function idle(page) {
-  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 30_000 });
-}
-
-async function sample(page, id) {
-  await page.selectOption("#lab-sample", id);
-  // the body's marks outlive a lab left for an example and opened again: wait for this photo's own
-  await page.evaluate(() => delete document.body.dataset.image);
-  await page.click("#lab-open-sample");
-  await idle(page);
-  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
-}
 
 /** An 8-bit grey, non-interlaced PNG decoded by hand (chunks, zlib, the five row filters). */
 function decodeGreyPng(buf) {
@@ -636,3 +617,8 @@ test("a trap in the worker is recovered: a fresh worker, the image and settings 
   assert.equal(await page.evaluate(() => document.body.dataset.image), "camera.png");
   await context.close();
 });
+
+/** A fresh page on the lab. */
+function openLab(options) {
+  return openLabIn(env, options);
+}

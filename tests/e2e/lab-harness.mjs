@@ -1,0 +1,27 @@
+// Shared steps of the image lab's end-to-end tests (lab*.test.mjs).
+// Not a test file itself (node --test runs only *.test.mjs here).
+
+import { open } from "./harness.mjs";
+
+/** A fresh page on the lab (`#/lab`), its sample menu ready. */
+export async function openLab(env, options) {
+  const o = await open(env.browser, options);
+  await o.page.goto(`${env.url}index.html#/lab`);
+  await o.page.waitForSelector("#lab-sample");
+  return o;
+}
+
+/** Waits until the lab has no request running. */
+export async function idle(page) {
+  await page.waitForFunction(() => document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+}
+
+/** Opens bundled sample `id` (a file name, or "frame") and waits for that photo. */
+export async function sample(page, id) {
+  await page.selectOption("#lab-sample", id);
+  // the body's marks outlive a lab left for an example and opened again: wait for this photo's own
+  await page.evaluate(() => delete document.body.dataset.image);
+  await page.click("#lab-open-sample");
+  await idle(page);
+  await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
+}
