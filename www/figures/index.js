@@ -127,7 +127,9 @@ export function hasFigure(id) {
 
 function paint(panel, solution, shared = { selected: null }) {
   const { spec, canvas, figure } = panel;
-  const width = Math.floor(figure.clientWidth);
+  // the width the resize observer last saw (read while the layout was clean); reading
+  // clientWidth here, after the steps were rewritten, would lay the whole page out again
+  const width = panel.width ?? Math.floor(figure.clientWidth);
   if (!solution || width <= 0) return;
   const dpr = window.devicePixelRatio || 1;
   let height;
@@ -399,6 +401,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     const dpr = window.devicePixelRatio || 1;
     for (const p of panels) {
       const w = Math.floor(p.figure.clientWidth);
+      p.width = w;
       if (!p.drawn || p.drawn.width !== w || p.drawn.dpr !== dpr) paint(p, solution, shared);
     }
   };
