@@ -386,6 +386,34 @@ fn numbers(inputs: &Record, key: &str) -> Result<Vec<f64>> {
     }
 }
 
+/// The `template` and `search` patches of the 2-D matching examples, as rows
+/// and as grids, each at most `MAX_2D` a side.
+struct Patches {
+    tr: Vec<Vec<f64>>,
+    sr: Vec<Vec<f64>>,
+    template: Grid,
+    search: Grid,
+}
+
+fn patches(inputs: &Record) -> Result<Patches> {
+    let tr = rows(inputs, "template")?;
+    let sr = rows(inputs, "search")?;
+    for (key, m) in [("template", &tr), ("search", &sr)] {
+        if m.len() > MAX_2D || m.first().map_or(0, Vec::len) > MAX_2D {
+            return Err(Error::input(
+                key,
+                format!("is larger than {MAX_2D}×{MAX_2D}, the largest window this example takes"),
+            ));
+        }
+    }
+    Ok(Patches {
+        template: Grid::from_rows("template", &tr)?,
+        search: Grid::from_rows("search", &sr)?,
+        tr,
+        sr,
+    })
+}
+
 fn rows(inputs: &Record, key: &str) -> Result<Vec<Vec<f64>>> {
     match inputs.get(key) {
         Some(Value::List(rs)) => rs

@@ -3,18 +3,12 @@
 use super::*;
 
 pub(super) fn lsm_2d(inputs: &Record) -> Result<Solution> {
-    let tr = rows(inputs, "template")?;
-    let sr = rows(inputs, "search")?;
-    for (key, m) in [("template", &tr), ("search", &sr)] {
-        if m.len() > MAX_2D || m.first().map_or(0, Vec::len) > MAX_2D {
-            return Err(Error::input(
-                key,
-                format!("is larger than {MAX_2D}×{MAX_2D}, the largest window this example takes"),
-            ));
-        }
-    }
-    let t = Grid::from_rows("template", &tr)?;
-    let sw = Grid::from_rows("search", &sr)?;
+    let Patches {
+        tr,
+        sr,
+        template: t,
+        search: sw,
+    } = patches(inputs)?;
     let i = Inputs(inputs);
     let (c0, r0, a0, b0) = (
         i.number("c0")?,

@@ -286,18 +286,12 @@ fn generated_pair(s: &mut Solution, inputs: &Record) -> Result<Pair> {
 /// photo), started at (c⁰, r⁰) with the identity, gain 1 and offset 0;
 /// positions count from 1.
 fn given_pair(s: &mut Solution, inputs: &Record) -> Result<Pair> {
-    let tr = rows(inputs, "template")?;
-    let sr = rows(inputs, "search")?;
-    for (key, m) in [("template", &tr), ("search", &sr)] {
-        if m.len() > MAX_2D || m.first().map_or(0, Vec::len) > MAX_2D {
-            return Err(Error::input(
-                key,
-                format!("is larger than {MAX_2D}×{MAX_2D}, the largest window this example takes"),
-            ));
-        }
-    }
-    let template = Grid::from_rows("template", &tr)?;
-    let search = Grid::from_rows("search", &sr)?;
+    let Patches {
+        tr,
+        sr,
+        template,
+        search,
+    } = patches(inputs)?;
     let i = Inputs(inputs);
     let (c0, r0) = (i.number("c0")?, i.number("r0")?);
     s.step(
