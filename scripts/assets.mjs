@@ -16,10 +16,12 @@
 //     HTML maps each logical URL to its hashed one (dynamic import() with a
 //     computed specifier included). Files are hashed leaves first; a cycle of
 //     literal references fails the build.
-//  3. The HTML: import map (its sha256 added to the CSP's script-src), small
+//  3. The HTML: import map (its sha256 added to the CSP's script-src; a module
+//     scripts/bundle.mjs put into the page's bundle maps to the bundle), small
 //     classic scripts inlined (same), `<!-- modulepreload -->` replaced by
 //     modulepreload links for the static import graph of the page's module
-//     scripts, every src/href rewritten.
+//     scripts, `<!-- catalog-data -->` by the catalog and each topic's files
+//     (read by core.js and preload-route.js), every src/href rewritten.
 //  0. Minified JS (terser: compress + mangle, one file at a time, no bundling),
 //     every .js/.mjs but vendor/ (minified by its authors) and sw.js (whose
 //     precache list sw-manifest.mjs writes at a marker comment). It buys about
@@ -236,6 +238,13 @@ function includePartials(dist) {
 }
 
 export function hashAssets(dist) {
+  // scripts/bundle.mjs: a bundle stands for the modules it re-exports (one instance on the page)
+  const bundleFile = path.join(dist, ".bundle.json");
+  const aliases = new Map();
+  if (fs.existsSync(bundleFile)) {
+    for (const [entry, names] of Object.entries(JSON.parse(fs.readFileSync(bundleFile, "utf8")))) for (const n of names) aliases.set(n, entry);
+    fs.rmSync(bundleFile);
+  }
   includePartials(dist);
   const all = walk(dist).filter((f) => !/\.(gz|br)$/.test(f));
   const files = new Set(all);
@@ -326,7 +335,7 @@ export function hashAssets(dist) {
   }
 
   const now = new Set(walk(dist));
-  for (const [f, source] of htmlSources) fs.writeFileSync(path.join(dist, f), buildHtml(dist, f, source, map, now));
+  for (const [f, source] of htmlSources) fs.writeFileSync(path.join(dist, f), buildHtml(dist, f, source, map, now, aliases));
   return { map, stable: [...stable], keptNames };
 }
 
@@ -346,7 +355,7 @@ function staticImports(dist, entry, map) {
     if (!fs.existsSync(path.join(dist, onDisk))) continue;
     const source = fs.readFileSync(path.join(dist, onDisk), "utf8");
     // static imports only: `import … from "x"`, `import "x"`, `export … from "x"` (not import())
-    for (const m of source.matchAll(/(?:^|[;\n])\s*(?:import|export)\s*(?:[\w*{}\s,$]+?\s*from\s*)?(["'])([^"']+)\1/g)) {
+    for (const m of source.matchAll(/(?:^|[;\n}])\s*(?:import|export)\s*(?:[\w*{}\s,$]+?\s*from\s*)?(["'])([^"']+)\1/g)) {
       const t = resolveRef(f, m[2], files);
       if (t && !seen.has(t) && t !== entry) {
         seen.add(t);
@@ -357,7 +366,33 @@ function staticImports(dist, entry, map) {
   return [...seen];
 }
 
-function buildHtml(dist, f, source, map, files) {
+/**
+ * The page's data block (`<script type="application/json" id="catalog-data">`,
+ * not executed: no CSP hash): `entries`, catalog.json itself (core.js reads it
+ * here instead of fetching it: one request fewer before the first solution),
+ * and `files`, each topic module's files under their hashed names — its
+ * wasm-bindgen JS, its wasm and its figures (figures/<module>.js, when there
+ * is one, and the modules it imports that are not in the page's bundle) —
+ * which www/preload-route.js preloads for the example in the address.
+ */
+function catalogData(dist, map, rel, aliases) {
+  const text = fs.readFileSync(path.join(dist, map.get("catalog.json") ?? "catalog.json"), "utf8");
+  const entries = JSON.parse(text);
+  const files = {};
+  for (const e of entries) {
+    if (!e.module || files[e.module]) continue;
+    const wanted = [`pkg/${e.module}.js`, `pkg/${e.module}_bg.wasm`, `figures/${e.module}.js`];
+    for (const w of wanted.slice(0, 2)) if (!map.has(w)) throw new Error(`assets: catalog-data: ${w} (module of ${e.id}) was not built`);
+    // and what the figures import that the page's bundle is not (figures/resampling.js: figures/filters.js)
+    if (map.has(wanted[2])) wanted.push(...staticImports(dist, wanted[2], map).filter((m) => !aliases.has(m) && m !== wanted[2]));
+    files[e.module] = [...new Set(wanted)].filter((w) => map.has(w)).map(rel);
+  }
+  const json = JSON.stringify({ entries, files });
+  if (/<\/script|<!--/i.test(json)) throw new Error("assets: catalog-data: the catalog would end its script element");
+  return `<script type="application/json" id="catalog-data">${json}</script>`;
+}
+
+function buildHtml(dist, f, source, map, files, aliases = new Map()) {
   const rel = (logical) => {
     const hashed = map.get(logical) ?? logical;
     const from = path.posix.dirname(f);
@@ -373,6 +408,7 @@ function buildHtml(dist, f, source, map, files) {
     const graph = [...new Set(entries.flatMap((e) => staticImports(dist, e, map)))].filter((m) => !listed.has(m) && !entries.includes(m));
     return graph.map((m) => `${indent}<link rel="modulepreload" href="./${m}">\n`).join("");
   });
+  out = out.replace(/^([ \t]*)<!--\s*catalog-data\s*-->[ \t]*\n/m, (all, indent) => `${indent}${catalogData(dist, map, rel, aliases)}\n`);
   // src/href → hashed names
   out = rewrite(out, htmlRefs(out), (r) => {
     const t = resolve(r.ref);
@@ -394,6 +430,8 @@ function buildHtml(dist, f, source, map, files) {
   // the import map, before any module script or modulepreload
   const imports = {};
   for (const [logical, hashed] of [...map].sort()) if (isModule(dist, hashed) || logical.endsWith(".json")) imports[`./${logical}`] = rel(hashed);
+  // a module bundled into the page's entry (scripts/bundle.mjs) is the bundle on the page
+  for (const [logical, entry] of aliases) imports[`./${logical}`] = rel(map.get(entry) ?? entry);
   const json = JSON.stringify({ imports });
   hashes.push(sha256(json));
   const first = /<(?:script|link)\b[^>]*(?:type=["']module["']|rel=["']modulepreload["'])/.exec(out);

@@ -51,5 +51,6 @@ cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
 sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "dist/pkg/${name}_bg.wasm" | wc -c)"; done)
 lab="lab $(gzip -9c dist/lab/pkg/photogrammetry_lab_bg.wasm | wc -c), lab SIMD $(gzip -9c dist/lab/pkg-simd/photogrammetry_lab_bg.wasm | wc -c)"
 # hashed names, import map, .gz/.br, _headers, then the service worker's list (sw-manifest.mjs)
+node scripts/bundle.mjs dist
 node scripts/assets.mjs dist
 echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes; $lab)"

@@ -1,8 +1,9 @@
 // The Rust core, compiled to WebAssembly (docs/API.md is the contract).
 //
 // One small wasm module per topic (dist/pkg/<module>.js, built from web/<module>/):
-// the page loads the catalog (catalog.json, written by the build from the
-// Rust entries) and then only the module of the example on screen; the others
+// the page has the catalog (catalog.json, written by the build from the Rust
+// entries, and copied into the HTML by the build) and loads only the module of
+// the example on screen (preload-route.js starts its requests from the HTML); the others
 // are loaded when the browser is idle after the first solution. Practice mode
 // loads pkg/all.js (every example and the practice generators) when it opens.
 //
@@ -30,8 +31,18 @@ const MODULES = Object.freeze({
   all: () => import("./pkg/all.js"),
 });
 
-/** The catalog's entries (fetched once per page). */
+/**
+ * The catalog's entries: from the page's own data block when it has one (the
+ * build writes catalog.json into index.html and embed.html: no request), else
+ * fetched (a course author's page importing pkg/examples.js).
+ */
 export async function loadCatalog() {
+  const block = typeof document === "undefined" ? null : document.getElementById("catalog-data");
+  if (block) {
+    const entries = JSON.parse(block.textContent).entries;
+    if (!Array.isArray(entries)) throw new Error("catalog-data: not a list of examples");
+    return entries;
+  }
   const response = await fetch(CATALOG_URL);
   if (!response.ok) throw new Error(`catalog.json: ${response.status} ${response.statusText}`);
   const entries = await response.json();

@@ -228,21 +228,32 @@ export function fitFormulas(root) {
  * turned, a window resized, the print layout). Returns a stop function.
  */
 export function keepFitted(root) {
-  let width = root.clientWidth;
+  // the width the observer reports (its first report is the starting width): reading
+  // root.clientWidth here, while the view is being built, would lay the page out once more
+  let width = null;
   let frame = 0;
-  const observer = new ResizeObserver(() => {
-    if (root.clientWidth === width) return;
-    width = root.clientWidth;
+  const observer = new ResizeObserver((entries) => {
+    const now = entries[entries.length - 1].contentRect.width;
+    const first = width === null;
+    if (now === width) return;
+    width = now;
+    if (first) return;
     cancelAnimationFrame(frame);
     frame = requestAnimationFrame(() => fitFormulas(root));
   });
   observer.observe(root);
-  const again = () => fitFormulas(root);
+  let stopped = false;
+  const again = () => {
+    if (!stopped) fitFormulas(root);
+  };
   window.addEventListener("beforeprint", again);
   // KaTeX's fonts arrive after the first layout and make every formula wider
   document.fonts?.addEventListener?.("loadingdone", again);
-  document.fonts?.ready?.then(again);
+  // after the first frame: reading document.fonts.ready recalculates the style of the
+  // whole page, which the view being built would pay for twice
+  requestAnimationFrame(() => setTimeout(() => document.fonts?.ready?.then(again), 0));
   return () => {
+    stopped = true;
     observer.disconnect();
     window.removeEventListener("beforeprint", again);
     document.fonts?.removeEventListener?.("loadingdone", again);

@@ -4,9 +4,12 @@
 //   report through serde-wasm-bindgen: pkg/all.js's catalog() and, entry by
 //   entry, every topic module's own catalog() (two serialisers, two builds of
 //   the same Rust entries: not the file compared with its own generator);
+// - index.html and embed.html carry catalog.json (the page fetches no
+//   catalog) and each topic's files under their built names;
 // - every example solves from a cold load of its own address, with the
 //   numbers of the Rust solver, having fetched only its own module before
-//   the first solution (the other topics follow when the page is idle);
+//   the first solution, once, started from the address by preload-route.js
+//   (the other topics follow when the page is idle);
 // - practice loads pkg/all.js only when it opens;
 // - the one-package API (pkg/photogrammetry_playground.js) and the lighter
 //   pkg/examples.js both solve an example of every topic in a blank page.
@@ -53,6 +56,21 @@ after(async () => {
 });
 
 describe("the catalog as data", () => {
+  test("index.html and embed.html carry catalog.json itself, and each topic's files under their built names", () => {
+    for (const page of ["index.html", "embed.html"]) {
+      const html = fs.readFileSync(path.join(DIST, page), "utf8");
+      const m = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/.exec(html);
+      assert.ok(m, `${page} has the catalog-data block`);
+      const data = JSON.parse(m[1]);
+      assert.deepEqual(data.entries, CATALOG, page);
+      assert.deepEqual(Object.keys(data.files).sort(), [...MODULES].sort(), page);
+      for (const name of MODULES) {
+        assert.deepEqual(data.files[name].slice(0, 3), [`pkg/${name}.js`, `pkg/${name}_bg.wasm`, `figures/${name}.js`].map((f) => `./${built(f)}`), `${page} ${name}`);
+        for (const f of data.files[name]) assert.ok(fs.existsSync(path.join(DIST, f)), `${page}: ${f} exists`);
+      }
+    }
+  });
+
   test("catalog.json (native serde_json) is the wasm's catalog(), every entry with its module (its fields come with the module)", () => {
     assert.deepEqual(CATALOG, all.catalog().map(({ inputs: _, ...entry }) => entry));
     assert.equal(CATALOG.length, 26);
@@ -101,7 +119,16 @@ describe("a cold load of each example", () => {
         });
         const wasm = before.filter((p) => p.includes("/pkg/")).map(logical);
         assert.deepEqual(wasm.sort(), [`/pkg/${entry.module}.js`, `/pkg/${entry.module}_bg.wasm`].sort(), `${entry.id}: ${wasm.join(" ")}`);
-        assert.ok(before.map(logical).includes("/catalog.json"));
+        // the page has the catalog in its HTML (no request); preload-route.js started the
+        // module's JS, wasm and figures from the address, each fetched once (the preloads are used)
+        assert.ok(!before.map(logical).includes("/catalog.json"), "catalog.json is not fetched by the page");
+        const figures = before.filter((p) => p.includes("/figures/")).map(logical);
+        assert.equal(figures[0], `/figures/${entry.module}.js`, `${entry.id}: ${figures.join(" ")}`);
+        const preloaded = (await page.evaluate(() => [...document.querySelectorAll('link[rel="modulepreload"], link[rel="preload"]')].map((l) => new URL(l.href).pathname))).map(logical);
+        for (const f of [`/pkg/${entry.module}.js`, `/pkg/${entry.module}_bg.wasm`, ...figures]) {
+          assert.ok(preloaded.includes(f), `${entry.id}: ${f} preloaded from the address`);
+          assert.equal(log.requests.filter((u) => logical(new URL(u).pathname) === f).length, 1, `${entry.id}: ${f} requested once`);
+        }
         assert.deepEqual(log.pageErrors, []);
         assert.deepEqual(log.consoleErrors, []);
       } finally {
@@ -125,6 +152,36 @@ describe("a cold load of each example", () => {
       const [[key, value]] = seedAnswers("utm").filter(([k]) => k === "easting");
       assert.ok(Math.abs((await exact(page, key)) - value) < 1e-6);
       assert.equal(log.requests.slice(count).filter((u) => u.includes("/pkg/")).length, 0);
+      assert.deepEqual(log.pageErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("the page's modules come in one file (scripts/bundle.mjs); what the lab, practice and the figures import of them is that file", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/gsd"), "ok");
+      const js = await page.evaluate(() => {
+        const mark = performance.getEntriesByName("first-solution")[0];
+        return performance
+          .getEntriesByType("resource")
+          .filter((r) => r.startTime < mark.startTime)
+          .map((r) => new URL(r.name).pathname)
+          .filter((p) => /\.js$/.test(p));
+      });
+      // app.js (with the modules it imports, in it), the topic's module and figures: nothing else before the solution
+      assert.deepEqual(js.map(logical).sort(), ["/app.js", "/figures/coordinates.js", "/pkg/coordinates.js"], js.join(" "));
+      // one module record: import() of any of them (the page's import map applies) gives the bundle's namespace
+      const same = await page.evaluate(async () => {
+        const app = await import("./app.js");
+        const names = ["./core.js", "./math.js", "./dom.js", "./embed-bridge.js", "./figures/draw.js", "./format.js"];
+        return Object.fromEntries(await Promise.all(names.map(async (m) => [m, (await import(m)) === app])));
+      });
+      for (const [m, yes] of Object.entries(same)) assert.ok(yes, `${m} is the bundle on the page`);
+      // KaTeX's typesetting (math-typeset.js imports math.js) works on the page's one math.js
+      await page.waitForFunction(() => document.documentElement.dataset.math === "ready", null, { timeout: 15_000 });
+      assert.ok((await page.locator(".steps-body .katex").count()) > 0, "formulas typeset");
       assert.deepEqual(log.pageErrors, []);
     } finally {
       await context.close();
