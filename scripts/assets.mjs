@@ -427,15 +427,16 @@ function buildHtml(dist, f, source, map, files, aliases = new Map()) {
     hashes.push(sha256(code));
     return `<script>${code}</script>`;
   });
-  // the import map, before any module script or modulepreload
+  // the import map, before any script: a module preloaded by preload-route.js must
+  // resolve its imports (../format.js, ./draw.js) through it, whenever its response arrives
   const imports = {};
   for (const [logical, hashed] of [...map].sort()) if (isModule(dist, hashed) || logical.endsWith(".json")) imports[`./${logical}`] = rel(hashed);
   // a module bundled into the page's entry (scripts/bundle.mjs) is the bundle on the page
   for (const [logical, entry] of aliases) imports[`./${logical}`] = rel(map.get(entry) ?? entry);
   const json = JSON.stringify({ imports });
   hashes.push(sha256(json));
-  const first = /<(?:script|link)\b[^>]*(?:type=["']module["']|rel=["']modulepreload["'])/.exec(out);
-  if (!first) throw new Error(`assets: ${f} has no module script`);
+  if (!/<script\b[^>]*type=["']module["']/.test(out)) throw new Error(`assets: ${f} has no module script`);
+  const first = /<script\b|<link\b[^>]*rel=["']modulepreload["']/.exec(out);
   const indent = /(?:^|\n)([ \t]*)$/.exec(out.slice(0, first.index));
   const tag = `<script type="importmap">${json}</script>`;
   out = out.slice(0, first.index) + (indent ? `${tag}\n${indent[1]}` : tag) + out.slice(first.index);

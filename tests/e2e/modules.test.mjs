@@ -62,6 +62,8 @@ describe("the catalog as data", () => {
       const m = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/.exec(html);
       assert.ok(m, `${page} has the catalog-data block`);
       const data = JSON.parse(m[1]);
+      // the import map precedes every script: the preloaded figures resolve ../format.js through it
+      assert.equal(html.indexOf("<script"), html.indexOf('<script type="importmap">'), `${page}: the import map is the first script`);
       assert.deepEqual(data.entries, CATALOG, page);
       assert.deepEqual(Object.keys(data.files).sort(), [...MODULES].sort(), page);
       for (const name of MODULES) {
