@@ -105,7 +105,8 @@ for (const entry of entries) {
   }
 
   const owner = new Map();
-  const lines = [`import "./${path.basename(entry)}";`];
+  const lines = [`export * from "./${path.basename(entry)}";`];
+  for (const n of await exportsOf(entry)) owner.set(n, entry);
   for (const f of [...shared].sort()) {
     const names = await exportsOf(f);
     for (const n of names) {
