@@ -63,13 +63,31 @@ function fillInputs(entries, mod) {
   for (const entry of entries) if (!entry.inputs && own.has(entry.id)) entry.inputs = own.get(entry.id);
 }
 
+/**
+ * Initialises a topic's package: with the wasm preload-route.js already
+ * fetched and compiled from the HTML when it is this module's, else by the
+ * package's own fetch (also when that early compile failed).
+ */
+async function initModule(name, mod) {
+  const early = globalThis.playgroundEarlyWasm;
+  if (early && early.module === name) {
+    globalThis.playgroundEarlyWasm = undefined;
+    const compiled = await early.compiled.catch(() => null);
+    if (compiled) {
+      await mod.default({ module_or_path: compiled });
+      return;
+    }
+  }
+  await mod.default();
+}
+
 function loadModule(name) {
   if (!pending.has(name)) {
     const importer = MODULES[name];
     if (!importer) return Promise.reject(new Error(`catalog.json names a module “${name}” this page does not know`));
     const p = importer()
       .then(async (mod) => {
-        await mod.default();
+        await initModule(name, mod);
         for (const entries of catalogs) fillInputs(entries, mod);
         ready.set(name, mod);
         return mod;

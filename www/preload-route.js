@@ -1,12 +1,13 @@
 // Runs while the page's <head> is parsed (a classic script, inlined by the
-// build): the example in the address starts loading its own topic's wasm, its
-// wasm-bindgen JS and its figures at once, in parallel with the page's modules,
-// instead of after them (issue 19: the chain catalog → module → wasm was the
-// first solution's critical path). The data block before it is written by the
+// build): the example in the address starts loading its own topic's wasm (and
+// compiling it), its wasm-bindgen JS and its figures at once, in parallel with
+// the page's modules, instead of after them (issue 19: the chain catalog →
+// module → wasm was the first solution's critical path). The data block before it is written by the
 // build (scripts/assets.mjs, from catalog.json and the hashed names):
 //   {"entries": [catalog.json], "files": {"coordinates": ["./pkg/coordinates.<hash>.js", …]}}
-// core.js and figures/index.js then import and fetch the same URLs, which the
-// browser serves from these preloads. Home, the lab and practice preload nothing.
+// core.js and figures/index.js then import the same URLs, which the browser
+// serves from these preloads, and core.js takes the compiled wasm from
+// window.playgroundEarlyWasm. Home, the lab and practice preload nothing.
 (function () {
   var data = document.getElementById("catalog-data");
   var m = /^#\/?([^?]*)(\?.*)?$/.exec(location.hash);
@@ -18,18 +19,24 @@
   } catch (e) {
     return; // the page reports a bad address itself
   }
+  var name;
   page.entries.forEach(function (e) {
-    if (e.id === id && e.status === "ready") files = page.files[e.module];
+    if (e.id === id && e.status === "ready") name = e.module;
   });
-  (files || []).forEach(function (href) {
-    var link = document.createElement("link");
+  files = name ? page.files[name] : [];
+  files.forEach(function (href) {
     if (/\.wasm$/.test(href)) {
-      link.rel = "preload";
-      link.as = "fetch";
-      link.crossOrigin = "anonymous"; // wasm-bindgen's fetch(): same-origin credentials, cors mode
-    } else {
-      link.rel = "modulepreload";
+      // fetched and compiled while the page's JS loads; core.js hands the compiled
+      // module to the topic's init (which would otherwise fetch it itself)
+      if (typeof WebAssembly === "object" && WebAssembly.compileStreaming) {
+        var compiled = WebAssembly.compileStreaming(fetch(href));
+        compiled["catch"](function () {}); // a failure: core.js lets init fetch it again
+        window.playgroundEarlyWasm = { module: name, compiled: compiled };
+      }
+      return;
     }
+    var link = document.createElement("link");
+    link.rel = "modulepreload";
     link.href = href;
     document.head.appendChild(link);
   });

@@ -127,10 +127,13 @@ describe("a cold load of each example", () => {
         const figures = before.filter((p) => p.includes("/figures/")).map(logical);
         assert.equal(figures[0], `/figures/${entry.module}.js`, `${entry.id}: ${figures.join(" ")}`);
         const preloaded = (await page.evaluate(() => [...document.querySelectorAll('link[rel="modulepreload"], link[rel="preload"]')].map((l) => new URL(l.href).pathname))).map(logical);
+        for (const f of [`/pkg/${entry.module}.js`, ...figures]) assert.ok(preloaded.includes(f), `${entry.id}: ${f} preloaded from the address`);
         for (const f of [`/pkg/${entry.module}.js`, `/pkg/${entry.module}_bg.wasm`, ...figures]) {
-          assert.ok(preloaded.includes(f), `${entry.id}: ${f} preloaded from the address`);
           assert.equal(log.requests.filter((u) => logical(new URL(u).pathname) === f).length, 1, `${entry.id}: ${f} requested once`);
         }
+        // the wasm (fetched and compiled by preload-route.js) was requested before the page's own JS
+        const order = before.map(logical);
+        assert.ok(order.indexOf(`/pkg/${entry.module}_bg.wasm`) < order.indexOf("/app.js"), `${entry.id}: ${order.join(" ")}`);
         assert.deepEqual(log.pageErrors, []);
         assert.deepEqual(log.consoleErrors, []);
       } finally {
