@@ -520,9 +520,14 @@ async function main() {
   setStatus("loading");
   root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
   // the example in the address starts loading its module as soon as the catalog names it
+  // (and its figures: both were preloaded from the HTML by preload-route.js)
   const early = loadCore().then((c) => {
     const { id, params } = parseHash(location.hash);
-    if (!params.some(([key]) => key === "practice")) c.load(id).catch(() => {}); // route() reports errors
+    if (!params.some(([key]) => key === "practice")) {
+      c.load(id).catch(() => {}); // route() reports errors
+      const topic = c.catalog().find((e) => e.id === id)?.topic;
+      if (topic) loadFigures(topic);
+    }
     return c;
   });
   const [coreResult] = await Promise.allSettled([early, loadMath()]);
