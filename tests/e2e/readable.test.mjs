@@ -102,8 +102,7 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
       await visit(page, env.url, "index.html", "#/fiducial-affine");
       await page.evaluate(() => document.fonts.ready);
       await page.waitForTimeout(50);
-      // (text content: a step off screen is not rendered, content-visibility: auto, so it has no innerText)
-      const captions = await page.locator(".formula-block-caption").allTextContents();
+      const captions = await page.locator(".formula-block-caption").allInnerTexts();
       assert.ok(captions.some((c) => /columns 1–\d of 6/.test(c)), `A (8×6) in blocks of columns: ${captions.join(" / ")}`);
     } finally {
       await context.close();
