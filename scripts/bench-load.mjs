@@ -260,7 +260,10 @@ async function redrawTimes(id, count) {
         const beforeSettled = settles.length;
         input.value = text;
         input.dispatchEvent(new Event("input", { bubbles: true }));
-        for (let i = 0; i < 100 && (measures.length === before || settles.length === beforeSettled); i++) await frame();
+        // (a page without the settled measure: given up a few frames after it stopped "updating")
+        let after = 0;
+        const waiting = () => measures.length === before || (settles.length === beforeSettled && (document.body.dataset.status === "updating" || after++ < 3));
+        for (let i = 0; i < 100 && waiting(); i++) await frame();
         const m = measures[measures.length - 1];
         const s = settles.length > beforeSettled ? settles[settles.length - 1] : null;
         return measures.length > before
