@@ -13,7 +13,8 @@
 //  3. the same under a throttled phone profile (Chrome DevTools Protocol: CPU
 //     4× slower, 1.6 Mbit/s down, 750 kbit/s up, 150 ms latency);
 //  4. an input change → the figure redrawn (the page's `redraw` measure, see
-//     measureRedraw in www/app.js), median and worst of 15 changes;
+//     inputChanged in www/app.js), median and worst of 15 changes, and → the
+//     steps, result and notes updated too (its `settled` measure);
 //  5. the image lab's size, and that no example requested any of it.
 //
 // The measurement depends on no file name: it sees what the browser requests.
@@ -247,15 +248,27 @@ async function redrawTimes(id, count) {
     await page.evaluate(() => document.fonts.ready);
     return await page.evaluate(async (count) => {
       const measures = [];
-      new PerformanceObserver((list) => measures.push(...list.getEntriesByName("redraw"))).observe({ type: "measure" });
+      const settles = [];
+      new PerformanceObserver((list) => {
+        measures.push(...list.getEntriesByName("redraw"));
+        settles.push(...list.getEntriesByName("settled"));
+      }).observe({ type: "measure" });
       const frame = () => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      // one change: its "redraw" (the figure's frame) and "settled" (steps, result and notes too) measures
       const change = async (input, text) => {
         const before = measures.length;
+        const beforeSettled = settles.length;
         input.value = text;
         input.dispatchEvent(new Event("input", { bubbles: true }));
-        for (let i = 0; i < 100 && measures.length === before; i++) await frame();
+        // (a page without the settled measure: given up a few frames after it stopped "updating")
+        let after = 0;
+        const waiting = () => measures.length === before || (settles.length === beforeSettled && (document.body.dataset.status === "updating" || after++ < 3));
+        for (let i = 0; i < 100 && waiting(); i++) await frame();
         const m = measures[measures.length - 1];
-        return measures.length > before ? { ms: m.duration, js: m.detail?.js, frame: m.detail?.frame, ok: document.body.dataset.status === "ok" } : null;
+        const s = settles.length > beforeSettled ? settles[settles.length - 1] : null;
+        return measures.length > before
+          ? { ms: m.duration, js: m.detail?.js, frame: m.detail?.frame, settled: s?.duration ?? null, rest: s?.detail?.rest ?? null, restFrame: s?.detail?.restFrame ?? null, wall: s?.detail?.wall ?? null, ok: document.body.dataset.status === "ok" }
+          : null;
       };
       // the numeric inputs first (number, integer), then one number inside a vector, matrix or point list
       const rank = (w) => (w.classList.contains("field-number") || w.classList.contains("field-integer") ? 0 : 1);
@@ -403,6 +416,10 @@ const rows = examples.map(({ id, topic }) => {
   const nav = stats(r.nav);
   const th = r.throttled ? stats(r.throttled) : null;
   const rd = r.redraw?.times?.length ? { ...stats(r.redraw.times.map((t) => t.ms)), js: median(r.redraw.times.map((t) => t.js)), frame: median(r.redraw.times.map((t) => t.frame)) } : null;
+  const settledTimes = (r.redraw?.times ?? []).filter((t) => Number.isFinite(t.settled));
+  const st = settledTimes.length
+    ? { ...stats(settledTimes.map((t) => t.settled)), rest: median(settledTimes.map((t) => t.rest)), rest_frame: median(settledTimes.map((t) => t.restFrame)), wall: median(settledTimes.map((t) => t.wall)) }
+    : null;
   return {
     id,
     topic,
@@ -418,6 +435,7 @@ const rows = examples.map(({ id, topic }) => {
     ratio: nav.median / floor.median,
     throttled_ms: th,
     redraw_ms: rd,
+    settled_ms: st,
     redraw_field: r.redraw?.field ?? null,
     redraw_values: r.redraw?.values ?? null,
     redraw_note: r.redraw ? (r.redraw.reason ?? (r.redraw.figure ? "" : "no figure")) : "",
@@ -427,7 +445,7 @@ const rows = examples.map(({ id, topic }) => {
 
 // the throttled column says which examples it ran: by default the heaviest critical path of each topic ("–": not run)
 const throttledHead = { topics: "throttled ms (heaviest of its topic)", all: "throttled ms (every example)", none: "throttled ms (not run)" }[throttledSet] ?? "throttled ms";
-const head = ["example", "crit KB gz", "total KB gz", "sent KB", "nav ms med (min–max)", "× floor", throttledHead, "redraw med/worst ms", "input"];
+const head = ["example", "crit KB gz", "total KB gz", "sent KB", "nav ms med (min–max)", "× floor", throttledHead, "redraw med/worst ms", "settled med/worst ms", "input"];
 const lines = rows.map((r) => [
   r.id,
   KB(r.critical_gz),
@@ -437,6 +455,7 @@ const lines = rows.map((r) => [
   r.ratio.toFixed(2),
   r.throttled_ms ? MS(r.throttled_ms.median) : "–",
   r.redraw_ms ? `${r.redraw_ms.median.toFixed(1)}/${r.redraw_ms.max.toFixed(1)}` : r.redraw_note ? "n/a" : "",
+  r.settled_ms ? `${r.settled_ms.median.toFixed(1)}/${r.settled_ms.max.toFixed(1)}` : r.redraw_note ? "n/a" : "",
   r.redraw_field ? `${r.redraw_field} ${r.redraw_values.join("↔")}${r.redraw_note ? ` (${r.redraw_note})` : ""}` : r.redraw_note,
 ]);
 const widths = head.map((h, i) => Math.max(h.length, ...lines.map((l) => String(l[i]).length)));
@@ -453,6 +472,9 @@ const maxT = withT.length ? withT.reduce((b, r) => (r.throttled_ms.median > b.th
 const withR = rows.filter((r) => r.redraw_ms);
 const maxR = withR.length ? withR.reduce((b, r) => (r.redraw_ms.median > b.redraw_ms.median ? r : b)) : null;
 const worstR = withR.length ? withR.reduce((b, r) => (r.redraw_ms.max > b.redraw_ms.max ? r : b)) : null;
+const withS = rows.filter((r) => r.settled_ms);
+const maxS = withS.length ? withS.reduce((b, r) => (r.settled_ms.median > b.settled_ms.median ? r : b)) : null;
+const worstS = withS.length ? withS.reduce((b, r) => (r.settled_ms.max > b.settled_ms.max ? r : b)) : null;
 const verdict = (ok) => (ok ? "meets the aim" : "OVER the aim");
 const notOk = rows.filter((r) => r.status !== "ok").map((r) => `${r.id} (${r.status})`);
 const summary = [
@@ -461,6 +483,9 @@ const summary = [
   `largest ratio to floor: ${maxRatio.id} ${maxRatio.ratio.toFixed(2)}× (${MS(maxRatio.nav_ms.median)} ms) vs aim ${AIM_RATIO}× — ${verdict(maxRatio.ratio <= AIM_RATIO)}`,
   maxT ? `slowest throttled (${throttledSet === "topics" ? "the heaviest example of each topic" : "every example"}, ${throttledRuns} loads each): ${maxT.id} ${MS(maxT.throttled_ms.median)} ms vs aim ${AIM_THROTTLED_MS} ms — ${verdict(maxT.throttled_ms.median <= AIM_THROTTLED_MS)}` : "throttled: not run",
   maxR ? `slowest redraw (median): ${maxR.id} ${maxR.redraw_ms.median.toFixed(1)} ms (JS ${maxR.redraw_ms.js.toFixed(1)} + frame ${maxR.redraw_ms.frame.toFixed(1)}); worst single: ${worstR.id} ${worstR.redraw_ms.max.toFixed(1)} ms; aim ${AIM_REDRAW_MS} ms — ${withR.filter((r) => r.redraw_ms.median > AIM_REDRAW_MS).length} example(s) over it by median, ${withR.filter((r) => r.redraw_ms.max > AIM_REDRAW_MS).length} by worst` : "redraw: not run",
+  maxS
+    ? `slowest settled (median; the steps, result and notes updated too): ${maxS.id} ${maxS.settled_ms.median.toFixed(1)} ms (redraw ${maxS.redraw_ms.median.toFixed(1)} + rest ${maxS.settled_ms.rest.toFixed(1)} + its frame ${maxS.settled_ms.rest_frame.toFixed(1)}; input to settled, the waits for frames included: ${maxS.settled_ms.wall.toFixed(1)}); worst single: ${worstS.id} ${worstS.settled_ms.max.toFixed(1)} ms`
+    : "settled: not run",
   lab ? `image lab: module ${KB(lab.module_gz)} KB gz (${lab.files} files, raw ${KB(lab.module_raw)} KB), sample photos ${KB(lab.photos_raw)} KB (${lab.photos} files, not compressible); lab files requested by an example: ${lab.requested_by.length ? `YES — ${lab.requested_by.join(", ")}` : "none (off every example's critical path)"}` : "image lab: dist/lab/ not found",
   notOk.length ? `NOT SOLVED on the first load: ${notOk.join(", ")}` : `every example reached status "ok"`,
   `untimed requests (not in resource timing): ${rows.flatMap((r) => r.files.filter((f) => f.untimed).map((f) => `${r.id}:${f.path}`)).join(", ") || "none"}; files not in dist/: ${[...new Set(rows.flatMap((r) => r.files.filter((f) => !f.inDist).map((f) => f.path)))].join(", ") || "none"}`,

@@ -173,11 +173,7 @@ function buildView(entry) {
   const errorBox = el("div", { class: "error-box", role: "alert", hidden: true });
   const staleBanner = el("p", { class: "stale-banner", role: "status", hidden: true });
 
-  v.form = buildForm(entry, () => {
-    const start = performance.now();
-    recompute();
-    measureRedraw(start);
-  });
+  v.form = buildForm(entry, () => inputChanged());
   const copyStatus = el("span", { class: "copy-status", role: "status" });
   const resetButton = el("button", { type: "button", class: "button" }, "Reset to the worked example’s values");
   resetButton.addEventListener("click", () => {
@@ -227,7 +223,7 @@ function buildView(entry) {
     const onInputs = (texts) => {
       if (view !== v) return;
       v.form.set(texts);
-      recompute();
+      inputChanged();
     };
     v.figure = mountFigures(figureHost, id, { onInputs });
   }
@@ -295,14 +291,29 @@ function plain(value) {
   return value;
 }
 
-function renderSolution(solution) {
-  const { stepsList, resultBody, notesBody, answerLine } = view.parts;
+/**
+ * The part of an input change a student sees move at once: the answer line
+ * and the figure (they are drawn in the same frame as the change).
+ */
+function renderQuick(solution) {
+  const { answerLine } = view.parts;
   answerLine.replaceChildren(...renderAnswer(solution));
   answerLine.hidden = !answerLine.childElementCount;
+  answerLine.classList.remove("stale");
+  if (view.figure) view.figure.update(solution);
+}
+
+/** The steps, result and notes: after the figure on an input change, at once otherwise. */
+function renderRest(solution) {
+  const { stepsList, resultBody, notesBody } = view.parts;
   updateSteps(stepsList, solution); // in place: only the formulas that changed are rendered and fitted again
   resultBody.replaceChildren(...renderResult(solution));
   notesBody.replaceChildren(...renderNotes(solution));
-  if (view.figure) view.figure.update(solution);
+}
+
+function renderSolution(solution) {
+  renderQuick(solution);
+  renderRest(solution);
   // for `npm run bench`: navigation to the first solution on screen
   if (!performance.getEntriesByName("first-solution").length) {
     performance.mark("first-solution");
@@ -311,24 +322,105 @@ function renderSolution(solution) {
 }
 
 /**
- * For `npm run bench`: the "redraw" measure of an input change — the work of
- * parsing, solving, rendering and drawing the figure (synchronous, from
- * `start` until it returned) plus the next frame's rendering (style, layout,
- * paint: from the animation frame's start until a task queued in it runs).
- * The wait for the frame itself is left out. detail: { js, frame } in ms.
+ * An input change's deferred part: { view, solution } whose answer line and
+ * figure are on screen while its steps, result and notes are not yet (they
+ * are marked busy). One at most: a newer change replaces it.
  */
-function measureRedraw(start) {
-  const js = performance.now() - start;
+let pendingRest = null;
+
+/** The panels that wait for a pending rest (steps, result, notes). */
+function restPanels() {
+  const { stepsList, resultBody, notesBody } = view.parts;
+  return [stepsList, resultBody, notesBody].map((n) => n.parentElement);
+}
+
+function markUpdating(on) {
+  for (const panel of restPanels()) {
+    panel.classList.toggle("updating", on);
+    if (on) panel.setAttribute("aria-busy", "true");
+    else panel.removeAttribute("aria-busy");
+  }
+}
+
+/**
+ * Renders the pending steps, result and notes (if any, and still of this
+ * view); the solution is then the last good one and the status "ok" (left to
+ * the caller with `quiet`: an input that cannot be solved follows).
+ * Returns whether there was one.
+ */
+function finishRest({ quiet = false } = {}) {
+  const job = pendingRest;
+  pendingRest = null;
+  if (!job || job.view !== view) return false;
+  try {
+    renderRest(job.solution);
+  } catch (e) {
+    console.error(e);
+    markUpdating(false);
+    showGeneralError(`The page could not show this solution: ${messageOf(e)}`);
+    if (!quiet) setStatus("error");
+    return true;
+  }
+  markUpdating(false);
+  view.lastGood = job.solution;
+  clearStale();
+  if (!quiet) setStatus("ok");
+  return true;
+}
+
+/** Runs `fn(frameStart)` in a task queued by the next animation frame (after it has been rendered). */
+function afterFrame(fn) {
   requestAnimationFrame(() => {
     const frameStart = performance.now();
     const channel = new MessageChannel();
     channel.port1.onmessage = () => {
-      const frame = performance.now() - frameStart;
-      performance.clearMeasures("redraw"); // only the latest is kept
-      performance.measure("redraw", { start, duration: js + frame, detail: { js, frame } });
       channel.port1.close();
+      fn(frameStart);
     };
     channel.port2.postMessage(null);
+  });
+}
+
+/** The latest input change (its times, for the measures). */
+let latestChange = null;
+
+/**
+ * An input typed or dragged (the form, an interactive figure): solves and
+ * draws the answer line and the figure now; the steps, result and notes
+ * follow once that frame is rendered, unless a newer change came meanwhile
+ * (its own frame brings them then: fast typing or a drag does no wasted work).
+ *
+ * For `npm run bench`, two measures (only the latest of each is kept):
+ *  - "redraw": the synchronous work of the change (parse, solve, answer line,
+ *    figure) plus the next frame's rendering (from the animation frame's start
+ *    until a task queued in it runs); the wait for the frame is left out.
+ *    detail: { js, frame } in ms.
+ *  - "settled": that, plus the deferred steps, result and notes and the
+ *    rendering of their frame, the waits for frames left out likewise.
+ *    detail: { js, frame, rest, restFrame, wall } (wall: input to settled
+ *    with the waits). An invalid or unsolvable input has nothing deferred:
+ *    its rest is 0.
+ */
+function inputChanged() {
+  const start = performance.now();
+  const change = { start };
+  latestChange = change;
+  recompute({ defer: true });
+  const js = performance.now() - start;
+  afterFrame((frameStart) => {
+    const frame = performance.now() - frameStart;
+    performance.clearMeasures("redraw");
+    performance.measure("redraw", { start, duration: js + frame, detail: { js, frame } });
+    if (latestChange !== change) return; // a newer change's frame finishes it
+    const restStart = performance.now();
+    finishRest();
+    const rest = performance.now() - restStart;
+    afterFrame((restFrameStart) => {
+      if (latestChange !== change) return;
+      const restFrame = performance.now() - restFrameStart;
+      performance.clearMeasures("settled");
+      performance.measure("settled", { start, duration: js + frame + rest + restFrame, detail: { js, frame, rest, restFrame, wall: performance.now() - start } });
+    });
   });
 }
 
@@ -338,8 +430,14 @@ function writeUrl() {
   if (view.openLink) view.openLink.setAttribute("href", `index.html${hash}`);
 }
 
-/** Reads the form, parses, solves, renders; the URL follows. */
-function recompute() {
+/**
+ * Reads the form, parses, solves, renders; the URL follows. With `defer`
+ * (an input change) a solution's steps, result and notes wait for
+ * finishRest (the status says "updating" meanwhile); an input that cannot be
+ * solved first shows the pending solution whole, so what the stale banner
+ * calls "the last valid inputs" is what the steps show.
+ */
+function recompute({ defer = false } = {}) {
   if (!view) return;
   const id = view.id;
   const texts = view.form.texts();
@@ -348,6 +446,7 @@ function recompute() {
   try {
     parsed = plain(core.parseInputs(id, texts));
   } catch (e) {
+    finishRest({ quiet: true });
     view.form.showErrors({});
     showGeneralError(messageOf(e));
     markStale("The inputs could not be read.");
@@ -355,6 +454,7 @@ function recompute() {
     return;
   }
   const errors = parsed?.errors ?? {};
+  if (Object.keys(errors).length) finishRest({ quiet: true });
   const rest = view.form.showErrors(errors);
   if (Object.keys(errors).length) {
     const others = Object.entries(rest);
@@ -369,6 +469,7 @@ function recompute() {
   try {
     solution = plain(core.solve(id, parsed.inputs ?? {}));
   } catch (e) {
+    finishRest({ quiet: true });
     const message = messageOf(e);
     // "c: 560 is outside the patch …": the field it names is marked too
     const named = /^([A-Za-z0-9_]+): /.exec(message);
@@ -379,6 +480,24 @@ function recompute() {
     return;
   }
   clearGeneralError();
+  if (defer && view.lastGood) {
+    // the figure in this frame; the steps, result and notes after it (finishRest)
+    try {
+      renderQuick(solution);
+    } catch (e) {
+      console.error(e);
+      finishRest({ quiet: true });
+      showGeneralError(`The page could not show this solution: ${messageOf(e)}`);
+      setStatus("error");
+      return;
+    }
+    if (!pendingRest) markUpdating(true);
+    pendingRest = { view, solution };
+    setStatus("updating");
+    return;
+  }
+  pendingRest = null;
+  markUpdating(false);
   try {
     renderSolution(solution);
   } catch (e) {

@@ -425,8 +425,15 @@ function tooWide(term) {
   return term.clientWidth > 0 && term.scrollWidth > term.clientWidth + 1;
 }
 
-/** The alternatives of a wide term: aligned rows, or blocks of columns. */
-function refit(term) {
+/**
+ * The first rearrangement of a wide term (a write, no layout read): aligned
+ * rows; a long left-hand side parted from its first relation; for a grid,
+ * blocks of columns, a first guess from the widths read before (`room`,
+ * `wide`): returns { node, grid, per } for a grid (fitAll tries fewer
+ * columns while a block is still too wide), { node } otherwise, or null when
+ * nothing can be rearranged.
+ */
+function refit(term, room, wide) {
   const tex = term.dataset.tex;
   const aligned = /^(\\(?:small|footnotesize|scriptsize)\s*)?\\begin\{aligned\}([\s\S]*)\\end\{aligned\}(\s*[,.;]?)$/.exec(tex.trim());
   if (aligned) {
@@ -436,7 +443,7 @@ function refit(term) {
     rowsNode.className = "formula-piece formula-rows formula-refit";
     rows.forEach((row, k) => rowsNode.append(...(k ? [" ", lineNode(termsOf(row))] : [lineNode(termsOf(row))])));
     term.replaceWith(rowsNode);
-    return rowsNode;
+    return { node: rowsNode };
   }
   const grid = findGrid(tex);
   if (grid) {
@@ -445,22 +452,10 @@ function refit(term) {
     const first = grid.env === "array" ? 1 : 0;
     const n = ncols - first;
     // a first guess from the widths, then fewer columns a block until every block fits
-    const room = term.clientWidth;
-    let per = Math.max(1, Math.min(n - 1, Math.floor((n * room) / term.scrollWidth)));
-    for (;;) {
-      const node = blocksNode(grid, per);
-      term.replaceWith(node);
-      if (![...node.querySelectorAll(".formula-term")].some(tooWide)) return node;
-      if (per === 1) {
-        if (grid.env !== "array") return node;
-        // a table too wide even one column at a time: one line per row, "key: header = cell"
-        const lines = rowLinesNode(grid);
-        node.replaceWith(lines);
-        return lines;
-      }
-      node.replaceWith(term);
-      per = Math.max(1, Math.min(per - 1, Math.floor(per * 0.8)));
-    }
+    const per = Math.max(1, Math.min(n - 1, Math.floor((n * room) / wide)));
+    const node = blocksNode(grid, per);
+    term.replaceWith(node);
+    return { node, grid, per };
   }
   // a long left-hand side and its first relation: they may part
   const at = firstRelation(tex);
@@ -468,7 +463,7 @@ function refit(term) {
     const line = lineNode([tex.slice(0, at).trim(), ...termsOf(tex.slice(at).trim())]);
     line.classList.add("formula-refit");
     term.replaceWith(line);
-    return line;
+    return { node: line };
   }
   return null;
 }
@@ -529,29 +524,85 @@ function scrollable(term) {
  * @param {Element} root
  */
 export function fitFormulas(root) {
-  for (const formula of root.querySelectorAll(".formula[data-tex]")) {
-    if (formula.querySelector(".formula-refit, .formula-scroll")) {
-      const fresh = renderFormula(formula.dataset.tex, formula.className);
-      formula.replaceWith(fresh);
-      fitOne(fresh);
-    } else {
-      fitOne(formula);
-    }
-  }
+  fitAll([...root.querySelectorAll(".formula[data-tex]")]);
 }
 
+/** Fits one formula's terms as they are now (no new start: a grid shown whole stays whole). */
 export function fitOne(formula) {
-  if (formula.clientWidth === 0) return; // not laid out (hidden)
-  for (const term of [...formula.querySelectorAll(".formula-term")]) {
-    if (!tooWide(term)) continue;
-    let node = null;
+  fitAll([formula], { reset: false });
+}
+
+/**
+ * Fits `formulas` (elements .formula[data-tex]) to their lines, reading the
+ * layout in as few passes as it can: all the writes of a pass, then all the
+ * reads, so the page is laid out once per pass (usually one, a second when a
+ * term was rearranged), not once per formula. A term wider than its line is
+ * rearranged (refit); a grid gets fewer columns a block while a block is
+ * still too wide; what still cannot fit scrolls (scrollable). With `reset`
+ * a formula rearranged before starts again from its rendering.
+ * @param {Element[]} formulas
+ * @param {{ reset?: boolean }} [options]
+ */
+export function fitAll(formulas, { reset = true } = {}) {
+  // writes: a formula rearranged before starts again from its rendering
+  const list = formulas.map((formula) => {
+    if (!reset || !formula.querySelector(".formula-refit, .formula-scroll")) return formula;
+    const fresh = renderFormula(formula.dataset.tex, formula.className);
+    formula.replaceWith(fresh);
+    return fresh;
+  });
+  // reads (one layout): the terms wider than their line, with their widths
+  const wide = [];
+  for (const formula of list) {
+    if (formula.clientWidth === 0) continue; // not laid out (hidden)
+    for (const term of formula.querySelectorAll(".formula-term")) {
+      if (tooWide(term)) wide.push({ term, room: term.clientWidth, width: term.scrollWidth });
+    }
+  }
+  if (!wide.length) return;
+  // writes: the first rearrangement of each
+  let jobs = wide.map(({ term, room, width }) => {
     try {
-      node = refit(term);
+      return { term, ...(refit(term, room, width) ?? { node: null }) };
     } catch (e) {
       // a rearrangement KaTeX cannot read: the term stays whole, scrolling
       console.warn("formula could not be rearranged", e);
+      return { term, node: null };
     }
-    const still = node ? [...node.querySelectorAll(".formula-term")].filter(tooWide) : [term];
-    still.forEach(scrollable);
+  });
+  const stuck = [];
+  while (jobs.length) {
+    // reads: which new terms are still too wide
+    const next = [];
+    const still = jobs.map((job) => (job.node ? [...job.node.querySelectorAll(".formula-term")].filter(tooWide) : [job.term]));
+    // writes: a grid with blocks still too wide tries fewer columns; the rest is done
+    jobs.forEach((job, k) => {
+      if (!job.grid || !still[k].length) {
+        stuck.push(...still[k]);
+        return;
+      }
+      try {
+        if (job.per === 1) {
+          if (job.grid.env !== "array") {
+            stuck.push(...still[k]);
+            return;
+          }
+          // a table too wide even one column at a time: one line per row, "key: header = cell"
+          const lines = rowLinesNode(job.grid);
+          job.node.replaceWith(lines);
+          next.push({ term: job.term, node: lines });
+          return;
+        }
+        const per = Math.max(1, Math.min(job.per - 1, Math.floor(job.per * 0.8)));
+        const node = blocksNode(job.grid, per);
+        job.node.replaceWith(node);
+        next.push({ ...job, node, per });
+      } catch (e) {
+        console.warn("formula could not be rearranged", e);
+        stuck.push(...still[k]);
+      }
+    });
+    jobs = next;
   }
+  stuck.forEach(scrollable);
 }

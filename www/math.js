@@ -122,7 +122,7 @@ function typesetPending() {
     node.replaceChildren(...fresh.childNodes);
   }
   // fitted after every formula is in: one layout, not one per formula
-  for (const node of nodes) if (node.isConnected && katex) typeset.fitOne(node);
+  if (katex) typeset.fitAll(nodes.filter((node) => node.isConnected), { reset: false });
   document.documentElement.dataset.math = katex ? "ready" : "failed";
 }
 
@@ -221,6 +221,17 @@ export function renderFormula(tex, className = "formula") {
 export function fitFormulas(root) {
   if (!katex || !root) return;
   typeset.fitFormulas(root);
+}
+
+/**
+ * Fits the formulas `nodes` (rendered by renderFormula, in the page) to the
+ * width they have now, reading the layout once for all of them rather than
+ * once each (math-typeset.js fitAll). Nothing to do before KaTeX is in.
+ * @param {Element[]} nodes
+ */
+export function fitFormulaNodes(nodes) {
+  if (!katex || !nodes.length) return;
+  typeset.fitAll(nodes);
 }
 
 /**

@@ -7,7 +7,7 @@
 // are drawn as matrices.
 
 import { el } from "./dom.js";
-import { fitFormulas, renderFormula } from "./math.js";
+import { fitFormulaNodes, fitFormulas, renderFormula } from "./math.js";
 import { agreesWithPrinted, formatDecimals, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
 
 /** Note kinds with their own badge style; any other kind gets the neutral one. */
@@ -121,15 +121,8 @@ export function updateSteps(container, solution) {
   });
   for (const extra of items.slice(steps.length)) extra.remove();
   shownSteps.set(list, now);
-  rebuilt.forEach(fitFormulas);
-  // fitFormulas fits every formula below a root: the kept ones are fitted already
-  for (const item of new Set(fresh.map((f) => f.parentElement))) {
-    const kept = [...item.querySelectorAll(".formula[data-tex]")].filter((f) => !fresh.includes(f));
-    const tex = kept.map((f) => f.getAttribute("data-tex"));
-    kept.forEach((f) => f.removeAttribute("data-tex"));
-    fitFormulas(item);
-    kept.forEach((f, i) => f.setAttribute("data-tex", tex[i]));
-  }
+  // only the new formulas (the kept ones are fitted already), all with one layout
+  fitFormulaNodes([...rebuilt.flatMap((item) => [...item.querySelectorAll(".formula[data-tex]")]), ...fresh]);
 }
 
 /** The label of a key: { label, unit } from the solution, or the key itself. */

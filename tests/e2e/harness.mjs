@@ -74,8 +74,13 @@ export async function open(browser, options = {}) {
 
 /** Waits until the page has settled after a load or an edit. */
 export async function settled(page) {
-  // the status, and the formulas typeset once KaTeX has arrived (math.js: <html data-math>)
-  await page.waitForFunction((states) => states.includes(document.body.dataset.status) && document.documentElement.dataset.math !== "loading", SETTLED, { timeout: WAIT });
+  // the status (an input change says "updating" until its steps, result and notes are in: app.js
+  // inputChanged), no panel busy, and the formulas typeset once KaTeX has arrived (math.js: <html data-math>)
+  await page.waitForFunction(
+    (states) => states.includes(document.body.dataset.status) && !document.querySelector(".panel[aria-busy]") && document.documentElement.dataset.math !== "loading",
+    SETTLED,
+    { timeout: WAIT },
+  );
   return page.evaluate(() => document.body.dataset.status);
 }
 

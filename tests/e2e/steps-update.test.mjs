@@ -28,7 +28,11 @@ async function stepsHtml(page) {
  */
 async function changeOne(page) {
   return page.evaluate(async () => {
-    const settle = () => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+    // a frame, and then until the steps, result and notes are in (app.js inputChanged: "updating")
+    const settle = async () => {
+      do await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      while (document.body.dataset.status === "updating");
+    };
     const inputs = [...document.querySelectorAll(".input-form .field")]
       .filter((w) => !w.hidden && !w.classList.contains("field-choice") && !w.classList.contains("field-flag"))
       .map((w) => w.querySelector("input[type=text], textarea"))

@@ -118,17 +118,18 @@ function profileDescribe(solution, state) {
 
 // ---------------------------------------------------------------- 2-D grids
 
-function grey(v, lo, hi) {
+/** A grey level [r, g, b] for v between lo and hi. */
+function greyRgb(v, lo, hi) {
   const t = hi > lo ? (v - lo) / (hi - lo) : 0.5;
   const g = Math.round(30 + 200 * Math.min(1, Math.max(0, t)));
-  return `rgb(${g},${g},${g})`;
+  return [g, g, g];
 }
 
-function diverging(v, m) {
+/** Blue for negative, orange for positive, white at zero: [r, g, b] for v within ±m. */
+function divergingRgb(v, m) {
   const t = m > 0 ? Math.max(-1, Math.min(1, v / m)) : 0;
-  // blue for negative, orange for positive, white at zero
   const mix = (a, b) => Math.round(a + (b - a) * Math.abs(t));
-  return t < 0 ? `rgb(${mix(255, 29)},${mix(255, 95)},${mix(255, 191)})` : `rgb(${mix(255, 217)},${mix(255, 119)},${mix(255, 6)})`;
+  return t < 0 ? [mix(255, 29), mix(255, 95), mix(255, 191)] : [mix(255, 217), mix(255, 119), mix(255, 6)];
 }
 
 function gridLayout(w, rows, cols) {
@@ -146,15 +147,22 @@ function gridsData(solution, state) {
   return { template, patch, diff, k, n: iterations(solution) };
 }
 
+/** gridsHeight's count of note lines, by solution and width (the slider's repaints ask again). */
+const noteLines = new WeakMap();
+
 function gridsHeight(width, solution) {
   const { template } = gridsData(solution, null);
   const rows = template.length || 1;
   const cols = template[0]?.length || 1;
   const { gh } = gridLayout(width, rows, cols);
   // the notes' lines differ little between iterations: room for the longest
-  const n = Math.max(1, iterations(solution));
-  let lines = 0;
-  for (let k = 1; k <= n; k++) lines = Math.max(lines, gridNotes(width, gridsData(solution, { slider: k })).length);
+  const known = noteLines.get(solution);
+  let lines = known?.width === width ? known.lines : 0;
+  if (known?.width !== width) {
+    const n = Math.max(1, iterations(solution));
+    for (let k = 1; k <= n; k++) lines = Math.max(lines, gridNotes(width, gridsData(solution, { slider: k })).length);
+    noteLines.set(solution, { width, lines });
+  }
   return gh + GRID_TITLE + 36 + 16 * lines;
 }
 
@@ -174,16 +182,33 @@ function gridNotes(w, { template, diff }) {
   return [...wrapWords("dL = template − (a·Gₛ + b); grey scales stretched per grid", max, FONT_SIZE_SMALL), ...wrapWords(`dL: orange positive, blue negative, up to ±${f(dmax)}; rms ${f(rms)}`, max, FONT_SIZE_SMALL)];
 }
 
-function drawGrid(ctx, m, x, y, cell, color, digits) {
+/**
+ * A matrix as a grid of cells `cell` CSS px wide, coloured by `rgb(v)`: one
+ * image pixel a cell, drawn enlarged without smoothing (one drawImage, not a
+ * fillRect per cell); the numbers in the cells where they fit.
+ */
+function drawGrid(ctx, m, x, y, cell, rgb, digits) {
+  const rows = m.length;
+  const cols = Math.max(0, ...m.map((row) => row.length));
+  if (!rows || !cols) return;
+  const image = new ImageData(cols, rows);
   m.forEach((row, j) =>
     row.forEach((v, i) => {
-      ctx.fillStyle = color(v);
-      ctx.fillRect(x + i * cell, y + j * cell, cell, cell);
-      if (cell >= CELL_TEXT_MIN) {
-        text(ctx, formatNumber(v, digits), x + (i + 0.5) * cell, y + (j + 0.5) * cell, { size: FONT_SIZE_SMALL, align: "center", halo: true });
-      }
+      const [r, g, b] = rgb(v);
+      image.data.set([r, g, b, 255], 4 * (j * cols + i));
     }),
   );
+  const pixels = document.createElement("canvas");
+  pixels.width = cols;
+  pixels.height = rows;
+  pixels.getContext("2d").putImageData(image, 0, 0);
+  ctx.save();
+  ctx.imageSmoothingEnabled = false;
+  ctx.drawImage(pixels, x, y, cols * cell, rows * cell);
+  ctx.restore();
+  if (cell >= CELL_TEXT_MIN) {
+    m.forEach((row, j) => row.forEach((v, i) => text(ctx, formatNumber(v, digits), x + (i + 0.5) * cell, y + (j + 0.5) * cell, { size: FONT_SIZE_SMALL, align: "center", halo: true })));
+  }
   ctx.strokeStyle = COLORS.frameStroke;
   ctx.strokeRect(x + 0.5, y + 0.5, (m[0]?.length ?? 0) * cell - 1, m.length * cell - 1);
 }
@@ -206,9 +231,9 @@ function gridsDraw(ctx, w, h, solution, state) {
   text(ctx, `iteration ${k + 1} of ${n} — ${statusWords(solution)} after ${n}`, left, 12, { weight: "bold" });
   const titles = ["template", "resampled Gₛ", "difference dL"];
   const grids = [
-    [template, (v) => grey(v, tlo, thi), 4],
-    [patch, (v) => grey(v, plo, phi), 4],
-    [diff, (v) => diverging(v, dmax), 3],
+    [template, (v) => greyRgb(v, tlo, thi), 4],
+    [patch, (v) => greyRgb(v, plo, phi), 4],
+    [diff, (v) => divergingRgb(v, dmax), 3],
   ];
   grids.forEach(([m, color, digits], g) => {
     const x = left + g * (gw + GRID_GAP);

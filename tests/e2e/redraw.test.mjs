@@ -1,0 +1,179 @@
+// An input change redraws the figure in its own frame; the steps, result and
+// notes follow after that frame (app.js inputChanged): until then their panels
+// are marked busy (aria-busy, "updating") and the status is not "ok", and once
+// in they are those of a cold load. A fast series of changes ends with the last
+// one's steps, rendered once; an invalid input while they wait first shows the
+// waiting solution whole; an embed host hears "solved" only with the steps in.
+import { after, before, describe, test } from "node:test";
+import assert from "node:assert/strict";
+import { TEST_TIMEOUT, open, settled, start, visit } from "./harness.mjs";
+
+let env;
+before(async () => {
+  env = await start();
+});
+after(async () => {
+  await env?.close();
+});
+
+/** The steps' markup once fonts are in and the page has settled. */
+async function stepsHtml(page) {
+  assert.equal(await settled(page), "ok");
+  await page.evaluate(() => document.fonts.ready);
+  return page.evaluate(() => document.querySelector(".steps-body").innerHTML);
+}
+
+/**
+ * Puts window.__find() into the page: the first text input holding a number,
+ * its seed text and up to 4 texts with that number changed that solve (each
+ * tried, then the seed put back and settled).
+ */
+async function install(page) {
+  await page.evaluate(`window.__find = async () => {
+    const settle = async () => {
+      do await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      while (document.body.dataset.status === "updating");
+    };
+    const input = [...document.querySelectorAll(".input-form .field")]
+      .filter((w) => !w.hidden && !w.classList.contains("field-choice") && !w.classList.contains("field-flag"))
+      .map((w) => w.querySelector("input[type=text], textarea"))
+      .find((i) => i && !i.disabled && /\\d/.test(i.value));
+    const seed = input.value;
+    const m = /-?\\d+(?:\\.\\d+)?/.exec(seed);
+    const v = Number(m[0]);
+    const near = /\\./.test(m[0]) ? [1.01, 1.02, 1.03, 1.04, 1.05, 0.99, 0.98].map((k) => String(Number((v * k).toPrecision(6)))) : [1, 2, 3, 4, 5, 6, 7, 8, -1, -2].map((k) => String(v + k));
+    const texts = [];
+    for (const t of near) {
+      if (texts.length === 4) break;
+      input.value = seed.slice(0, m.index) + t + seed.slice(m.index + m[0].length);
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      await settle();
+      if (document.body.dataset.status === "ok") texts.push(input.value);
+    }
+    input.value = seed;
+    input.dispatchEvent(new Event("input", { bubbles: true }));
+    await settle();
+    return { input, seed, texts };
+  }`);
+}
+
+for (const id of ["ncc-1d", "lsm-affine"]) {
+  describe(`${id}: the figure first, the steps right after`, () => {
+    test("the figure is new in the change's frame, the steps busy until they are in, then those of a cold load", { timeout: TEST_TIMEOUT }, async () => {
+      const a = await open(env.browser);
+      const b = await open(env.browser);
+      try {
+        assert.equal(await visit(a.page, env.url, "index.html", `#/${id}`), "ok");
+        await install(a.page);
+        const seen = await a.page.evaluate(async () => {
+          const { input, texts } = await window.__find();
+          const canvas = document.querySelector(".figure-section canvas");
+          const panels = [".steps-panel", ".result-section", ".notes-section"].map((s) => document.querySelector(s));
+          const before = { pixels: canvas.toDataURL(), steps: document.querySelector(".steps-body").innerHTML };
+          input.value = texts[0];
+          input.dispatchEvent(new Event("input", { bubbles: true }));
+          const now = {
+            pixels: canvas.toDataURL() !== before.pixels,
+            stepsOld: document.querySelector(".steps-body").innerHTML === before.steps,
+            busy: panels.map((p) => p.getAttribute("aria-busy") === "true" && p.classList.contains("updating")),
+            status: document.body.dataset.status,
+          };
+          // the change's frame: the figure is painted, the steps are still waiting
+          const frame = await new Promise((r) =>
+            requestAnimationFrame(() => r({ pixels: canvas.toDataURL() !== before.pixels, busy: panels.map((p) => p.getAttribute("aria-busy") === "true"), status: document.body.dataset.status })),
+          );
+          return { now, frame, hash: location.hash };
+        });
+        assert.deepEqual(seen.now, { pixels: true, stepsOld: true, busy: [true, true, true], status: "updating" });
+        assert.deepEqual(seen.frame, { pixels: true, busy: [true, true, true], status: "updating" });
+        const changed = await stepsHtml(a.page);
+        assert.deepEqual(await a.page.evaluate(() => [...document.querySelectorAll(".panel[aria-busy], .panel.updating")].length), 0);
+        assert.equal(await visit(b.page, env.url, "index.html", seen.hash), "ok");
+        assert.equal(changed, await stepsHtml(b.page), `${id}: the steps after the change differ from a cold load of ${seen.hash}`);
+        assert.deepEqual(a.log.pageErrors, []);
+      } finally {
+        await a.context.close();
+        await b.context.close();
+      }
+    });
+
+    test("a fast series of changes ends with the last one's steps, rendered once", { timeout: TEST_TIMEOUT }, async () => {
+      const a = await open(env.browser);
+      const b = await open(env.browser);
+      try {
+        assert.equal(await visit(a.page, env.url, "index.html", `#/${id}`), "ok");
+        await install(a.page);
+        const hash = await a.page.evaluate(async () => {
+          const { input, texts } = await window.__find();
+          window.__settled = 0;
+          new PerformanceObserver((list) => (window.__settled += list.getEntriesByName("settled").length)).observe({ type: "measure" });
+          for (const t of texts.slice(0, 4)) {
+            input.value = t;
+            input.dispatchEvent(new Event("input", { bubbles: true }));
+          }
+          return location.hash;
+        });
+        const changed = await stepsHtml(a.page);
+        // the settled measure comes a frame after the steps
+        await a.page.waitForFunction(() => window.__settled > 0);
+        assert.equal(await a.page.evaluate(() => window.__settled), 1, "the steps were rendered once, for the last change");
+        assert.equal(await visit(b.page, env.url, "index.html", hash), "ok");
+        assert.equal(changed, await stepsHtml(b.page), `${id}: the steps after the series differ from a cold load of ${hash}`);
+        assert.deepEqual(a.log.pageErrors, []);
+      } finally {
+        await a.context.close();
+        await b.context.close();
+      }
+    });
+  });
+}
+
+test("an invalid input while the steps wait: the waiting solution is shown whole, then marked stale", { timeout: TEST_TIMEOUT }, async () => {
+  const a = await open(env.browser);
+  const b = await open(env.browser);
+  try {
+    assert.equal(await visit(a.page, env.url, "index.html", "#/ncc-1d"), "ok");
+    await install(a.page);
+    const seen = await a.page.evaluate(async () => {
+      const { input, seed, texts } = await window.__find();
+      input.value = texts[0];
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      const hash = location.hash;
+      input.value = `${seed}x`;
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      return { hash, status: document.body.dataset.status, busy: document.querySelectorAll(".panel[aria-busy]").length, banner: document.querySelector(".stale-banner").hidden };
+    });
+    assert.deepEqual({ status: seen.status, busy: seen.busy, banner: seen.banner }, { status: "invalid", busy: 0, banner: false });
+    const shown = await a.page.evaluate(() => document.querySelector(".steps-body").innerHTML);
+    assert.equal(await visit(b.page, env.url, "index.html", seen.hash), "ok");
+    await b.page.evaluate(() => document.fonts.ready);
+    assert.equal(shown, await b.page.evaluate(() => document.querySelector(".steps-body").innerHTML), "the steps are the last valid inputs' steps");
+    assert.deepEqual(a.log.pageErrors, []);
+  } finally {
+    await a.context.close();
+    await b.context.close();
+  }
+});
+
+test("embed: the page says solved (and posts its change) only with the steps in", { timeout: TEST_TIMEOUT }, async () => {
+  const a = await open(env.browser);
+  try {
+    assert.equal(await visit(a.page, env.url, "embed.html", "#/gsd"), "ok");
+    await install(a.page);
+    const seen = await a.page.evaluate(async () => {
+      const { input, texts } = await window.__find();
+      const events = [];
+      window.addEventListener("playground-solved", () => events.push({ busy: document.querySelectorAll(".panel[aria-busy]").length, status: document.body.dataset.status }));
+      input.value = texts[0];
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      const during = events.length;
+      await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      for (let i = 0; i < 50 && document.body.dataset.status === "updating"; i++) await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      return { during, events };
+    });
+    assert.equal(seen.during, 0, "nothing said while the steps wait");
+    assert.deepEqual(seen.events, [{ busy: 0, status: "ok" }]);
+  } finally {
+    await a.context.close();
+  }
+});
