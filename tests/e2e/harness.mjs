@@ -84,6 +84,19 @@ export async function settled(page) {
   return page.evaluate(() => document.body.dataset.status);
 }
 
+/**
+ * The steps' markup once the page has settled with "ok" (an input change's steps
+ * in), the network is idle, the fonts are in and the formulas fitted (a frame).
+ */
+export async function stepsHtml(page) {
+  const status = await settled(page);
+  if (status !== "ok") throw new Error(`stepsHtml: the page says "${status}", not "ok"`);
+  await page.waitForLoadState("networkidle");
+  await page.evaluate(() => document.fonts.ready);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+  return page.evaluate(() => document.querySelector(".steps-body").innerHTML);
+}
+
 /** Loads `file#hash` and waits for the page to settle. */
 export async function visit(page, base, file, hash = "") {
   await page.goto(`${base}${file}${hash}`);

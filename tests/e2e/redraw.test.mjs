@@ -6,7 +6,7 @@
 // waiting solution whole; an embed host hears "solved" only with the steps in.
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
-import { TEST_TIMEOUT, open, settled, start, visit } from "./harness.mjs";
+import { TEST_TIMEOUT, open, start, stepsHtml, visit } from "./harness.mjs";
 
 let env;
 before(async () => {
@@ -15,13 +15,6 @@ before(async () => {
 after(async () => {
   await env?.close();
 });
-
-/** The steps' markup once fonts are in and the page has settled. */
-async function stepsHtml(page) {
-  assert.equal(await settled(page), "ok");
-  await page.evaluate(() => document.fonts.ready);
-  return page.evaluate(() => document.querySelector(".steps-body").innerHTML);
-}
 
 /**
  * Puts window.__find() into the page: the first text input holding a number,

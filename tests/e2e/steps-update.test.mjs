@@ -4,7 +4,7 @@
 // markup is compared, after a change and after the change back.
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
-import { CATALOG_IDS, EXTRA_IDS, TEST_TIMEOUT, open, settled, start, visit } from "./harness.mjs";
+import { CATALOG_IDS, EXTRA_IDS, TEST_TIMEOUT, open, settled, start, stepsHtml, visit } from "./harness.mjs";
 
 let env;
 before(async () => {
@@ -13,14 +13,6 @@ before(async () => {
 after(async () => {
   await env?.close();
 });
-
-/** The steps' markup once fonts are in and the formulas fitted. */
-async function stepsHtml(page) {
-  await page.waitForLoadState("networkidle");
-  await page.evaluate(() => document.fonts.ready);
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
-  return page.evaluate(() => document.querySelector(".steps-body").innerHTML);
-}
 
 /**
  * Changes one number of the first input that has one (a nearby value that
