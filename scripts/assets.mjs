@@ -22,7 +22,8 @@
 //     modulepreload links for the static import graph of the page's module
 //     scripts, `<!-- catalog-data -->` by the catalog and each topic's files
 //     (read by core.js and preload-route.js), every src/href rewritten.
-//  0. Minified JS (terser: compress + mangle, one file at a time, no bundling),
+//  0. Minified JS (terser: compress + mangle, one file at a time; the page's
+//     modules are already one file, app.js, by scripts/bundle.mjs),
 //     every .js/.mjs but vendor/ (minified by its authors) and sw.js (whose
 //     precache list sw-manifest.mjs writes at a marker comment). It buys about
 //     40 % of the gzipped JS on every critical path (docs/BENCH-LOAD.md,
