@@ -1,26 +1,14 @@
 // The build's assets step (scripts/assets.mjs) on a small made-up site, and
 // the plain-text formulas shown before KaTeX arrives (www/math.js).
-import { after, describe, it } from "node:test";
+import { describe, it } from "node:test";
 import assert from "node:assert/strict";
 import crypto from "node:crypto";
 import fs from "node:fs";
-import os from "node:os";
 import path from "node:path";
 import { contentHash, fontFaces, hashAssets, jsRefs, minifyAll, minifyCss } from "../../scripts/assets.mjs";
 import { plainTex } from "../../www/math.js";
+import { site } from "./site.mjs";
 
-const made = [];
-after(() => made.forEach((dir) => fs.rmSync(dir, { recursive: true, force: true })));
-
-function site(files) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "assets-test-"));
-  made.push(dir);
-  for (const [name, text] of Object.entries(files)) {
-    fs.mkdirSync(path.dirname(path.join(dir, name)), { recursive: true });
-    fs.writeFileSync(path.join(dir, name), text);
-  }
-  return dir;
-}
 const read = (dir, name) => fs.readFileSync(path.join(dir, name), "utf8");
 const CSP = `<meta http-equiv="Content-Security-Policy" content="default-src 'self'; script-src 'self'; style-src 'self'">`;
 

@@ -3,28 +3,16 @@
 // re-exported, for the import map to point at the bundle); dynamic imports stay
 // files, named from the bundle's folder; a name exported by two such modules
 // stops the build. Then scripts/assets.mjs maps those names to the bundle.
-import { after, describe, it } from "node:test";
+import { describe, it } from "node:test";
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
 import fs from "node:fs";
-import os from "node:os";
 import path from "node:path";
 import { fileURLToPath, pathToFileURL } from "node:url";
 import { hashAssets } from "../../scripts/assets.mjs";
+import { site } from "./site.mjs";
 
 const BUNDLE = path.join(path.dirname(fileURLToPath(import.meta.url)), "../../scripts/bundle.mjs");
-const made = [];
-after(() => made.forEach((dir) => fs.rmSync(dir, { recursive: true, force: true })));
-
-function site(files) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "bundle-test-"));
-  made.push(dir);
-  for (const [name, text] of Object.entries(files)) {
-    fs.mkdirSync(path.dirname(path.join(dir, name)), { recursive: true });
-    fs.writeFileSync(path.join(dir, name), text);
-  }
-  return dir;
-}
 const run = (dir) => spawnSync(process.execPath, [BUNDLE, dir], { encoding: "utf8" });
 const HTML = `<!doctype html><head><meta http-equiv="Content-Security-Policy" content="script-src 'self'"><script type="module" src="./app.js"></script></head><body></body>`;
 
