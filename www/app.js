@@ -10,7 +10,7 @@
 import { loadCore, messageOf } from "./core.js";
 import { keepFitted, loadMath } from "./math.js";
 import { buildHash, parseHash } from "./url.js";
-import { el } from "./dom.js";
+import { el, keepTallest } from "./dom.js";
 import { buildForm } from "./form.js";
 import { renderAnswer, renderNotes, renderResult, updateSteps } from "./render.js";
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
@@ -137,6 +137,7 @@ function showMessage(title, message) {
 function destroyView() {
   if (view?.figure) view.figure.destroy();
   if (view?.stopFitting) view.stopFitting();
+  if (view?.stopKeeping) view.stopKeeping();
   view = null;
 }
 
@@ -230,6 +231,8 @@ function buildView(entry) {
 
   v.parts = { heading, answerLine, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
   v.stopFitting = keepFitted(stepsList);
+  // the answer line keeps its tallest height: the panels below stay put as it changes
+  v.stopKeeping = keepTallest(answerLine);
   document.title = `${entry.title} — ${SITE_TITLE}`;
   view = v;
   // view options, embedding, exports (embed-page.js)

@@ -29,3 +29,38 @@ export function append(node, children) {
 export function idPart(text) {
   return String(text).replace(/[^A-Za-z0-9_-]/g, (ch) => `_${ch.charCodeAt(0).toString(16)}`);
 }
+
+/**
+ * Keeps `node` at the tallest height it has had at its present width: a line
+ * whose text gets shorter (the answer line loses "the course notes print …"
+ * when an input leaves the seed's value) then keeps its room, and what is
+ * below it does not move (a move repaints the whole page: thousands of
+ * formula boxes). A new width starts afresh. Returns a stop function.
+ */
+export function keepTallest(node) {
+  let width = null;
+  let tallest = 0;
+  const observer = new ResizeObserver((entries) => {
+    const entry = entries[entries.length - 1];
+    const now = entry.contentRect.width;
+    const height = entry.borderBoxSize?.[0]?.blockSize ?? node.offsetHeight;
+    if (now !== width) {
+      // a phone turned, a window resized: the room kept for the old width goes
+      // (measured again without it: rare, so one read of the layout is fine)
+      width = now;
+      tallest = 0;
+      if (node.style.minHeight) {
+        node.style.minHeight = "";
+        tallest = node.offsetHeight;
+        if (tallest) node.style.minHeight = `${tallest}px`;
+        return;
+      }
+    }
+    if (height > tallest) {
+      tallest = height;
+      node.style.minHeight = `${height}px`;
+    }
+  });
+  observer.observe(node);
+  return () => observer.disconnect();
+}

@@ -170,3 +170,62 @@ test("embed: the page says solved (and posts its change) only with the steps in"
     await a.context.close();
   }
 });
+
+test("leaving the seed's values shortens the answer line, and nothing below it moves; a new width starts afresh", { timeout: TEST_TIMEOUT }, async () => {
+  const a = await open(env.browser);
+  try {
+    assert.equal(await visit(a.page, env.url, "index.html", "#/ncc-1d"), "ok");
+    await install(a.page);
+    const seen = await a.page.evaluate(async () => {
+      const { input, seed, texts } = await window.__find();
+      const line = document.querySelector(".answer-line");
+      const top = () => Math.round(document.querySelector(".layout").getBoundingClientRect().top);
+      const natural = () => {
+        const kept = line.style.minHeight;
+        line.style.minHeight = "";
+        const h = line.offsetHeight;
+        line.style.minHeight = kept;
+        return h;
+      };
+      const settle = async () => {
+        do await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+        while (document.body.dataset.status === "updating");
+      };
+      const at = (label) => ({ label, printed: /course notes print/.test(line.textContent), height: line.offsetHeight, natural: natural(), top: top() });
+      const out = [at("seed")];
+      input.value = texts[0];
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      await settle();
+      out.push(at("changed"));
+      input.value = seed;
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      await settle();
+      out.push(at("seed again"));
+      input.value = texts[0];
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      await settle();
+      return out;
+    });
+    const [s, c, s2] = seen;
+    assert.deepEqual([s.printed, c.printed, s2.printed], [true, false, true], "the printed value is shown with the seed's inputs only");
+    assert.ok(c.natural < s.natural, `the line without the printed value is shorter (${c.natural} < ${s.natural} px): else this test shows nothing`);
+    assert.deepEqual(
+      seen.map((x) => [x.height, x.top]),
+      seen.map(() => [s.height, s.top]),
+      "the answer line keeps its height and the panels below stay put",
+    );
+    // a phone: the room kept at 1280 px goes; the line is its own height at the new width
+    await a.page.setViewportSize({ width: 390, height: 844 });
+    await a.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    const phone = await a.page.evaluate(() => {
+      const line = document.querySelector(".answer-line");
+      const kept = line.offsetHeight;
+      line.style.minHeight = "";
+      return { kept, natural: line.offsetHeight };
+    });
+    assert.equal(phone.kept, phone.natural, "at a new width the answer line keeps no extra room");
+    assert.deepEqual(a.log.pageErrors, []);
+  } finally {
+    await a.context.close();
+  }
+});
