@@ -286,14 +286,6 @@ function clearStale() {
   view.parts.staleBanner.textContent = "";
 }
 
-/** Turns any Map the core might hand back into a plain object (API.md says plain; be safe). */
-function plain(value) {
-  if (value instanceof Map) return Object.fromEntries([...value].map(([k, v]) => [k, plain(v)]));
-  if (Array.isArray(value)) return value.map(plain);
-  if (value && typeof value === "object") return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, plain(v)]));
-  return value;
-}
-
 /**
  * The part of an input change a student sees move at once: the answer line
  * and the figure (they are drawn in the same frame as the change).
@@ -352,6 +344,7 @@ function markUpdating(on) {
  * Returns whether there was one.
  */
 function finishRest({ quiet = false } = {}) {
+  if (view?.urlPending) writeUrl();
   const job = pendingRest;
   pendingRest = null;
   if (!job || job.view !== view) return false;
@@ -428,6 +421,7 @@ function inputChanged() {
 }
 
 function writeUrl() {
+  view.urlPending = false;
   const hash = buildHash(view.id, [...view.form.entries(), ...embedPage.optionEntries()]);
   if (location.hash !== hash) history.replaceState(history.state, "", hash);
   if (view.openLink) view.openLink.setAttribute("href", `index.html${hash}`);
@@ -444,10 +438,13 @@ function recompute({ defer = false } = {}) {
   if (!view) return;
   const id = view.id;
   const texts = view.form.texts();
-  writeUrl();
+  // the address follows the inputs; after an input change it waits with the steps (finishRest,
+  // whatever the change turns out to be): history.replaceState costs 0.5–4 ms of the frame
+  if (defer && view.lastGood) view.urlPending = true;
+  else writeUrl();
   let parsed;
   try {
-    parsed = plain(core.parseInputs(id, texts));
+    parsed = core.parseInputs(id, texts); // plain objects (src/wasm.rs: json_compatible)
   } catch (e) {
     finishRest({ quiet: true });
     view.form.showErrors({});
@@ -470,7 +467,7 @@ function recompute({ defer = false } = {}) {
   }
   let solution;
   try {
-    solution = plain(core.solve(id, parsed.inputs ?? {}));
+    solution = core.solve(id, parsed.inputs ?? {});
   } catch (e) {
     finishRest({ quiet: true });
     const message = messageOf(e);
@@ -640,7 +637,8 @@ async function route({ focus = false } = {}) {
 
 async function main() {
   setStatus("loading");
-  root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
+  // (the HTML says "Loading the solver…" already: writing it again would lay the page out once more)
+  if (!root.querySelector(":scope > p.loading")) root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
   // the example in the address starts loading its module as soon as the catalog names it
   // (and its figures: both were preloaded from the HTML by preload-route.js)
   const early = loadCore().then((c) => {

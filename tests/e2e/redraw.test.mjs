@@ -19,7 +19,8 @@ after(async () => {
 /**
  * Puts window.__find() into the page: the first text input holding a number,
  * its seed text and up to 4 texts with that number changed that solve (each
- * tried, then the seed put back and settled).
+ * tried, then the seed put back and settled), with the address each left
+ * (the address follows a change once its steps are in).
  */
 async function install(page) {
   await page.evaluate(`window.__find = async () => {
@@ -36,17 +37,21 @@ async function install(page) {
     const v = Number(m[0]);
     const near = /\\./.test(m[0]) ? [1.01, 1.02, 1.03, 1.04, 1.05, 0.99, 0.98].map((k) => String(Number((v * k).toPrecision(6)))) : [1, 2, 3, 4, 5, 6, 7, 8, -1, -2].map((k) => String(v + k));
     const texts = [];
+    const hashes = [];
     for (const t of near) {
       if (texts.length === 4) break;
       input.value = seed.slice(0, m.index) + t + seed.slice(m.index + m[0].length);
       input.dispatchEvent(new Event("input", { bubbles: true }));
       await settle();
-      if (document.body.dataset.status === "ok") texts.push(input.value);
+      if (document.body.dataset.status === "ok") {
+        texts.push(input.value);
+        hashes.push(location.hash);
+      }
     }
     input.value = seed;
     input.dispatchEvent(new Event("input", { bubbles: true }));
     await settle();
-    return { input, seed, texts };
+    return { input, seed, texts, hashes };
   }`);
 }
 
@@ -59,7 +64,7 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
         assert.equal(await visit(a.page, env.url, "index.html", `#/${id}`), "ok");
         await install(a.page);
         const seen = await a.page.evaluate(async () => {
-          const { input, texts } = await window.__find();
+          const { input, texts, hashes } = await window.__find();
           const canvas = document.querySelector(".figure-section canvas");
           const panels = [".steps-panel", ".result-section", ".notes-section"].map((s) => document.querySelector(s));
           const before = { pixels: canvas.toDataURL(), steps: document.querySelector(".steps-body").innerHTML };
@@ -75,12 +80,13 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
           const frame = await new Promise((r) =>
             requestAnimationFrame(() => r({ pixels: canvas.toDataURL() !== before.pixels, busy: panels.map((p) => p.getAttribute("aria-busy") === "true"), status: document.body.dataset.status })),
           );
-          return { now, frame, hash: location.hash };
+          return { now, frame, hash: hashes[0] };
         });
         assert.deepEqual(seen.now, { pixels: true, stepsOld: true, busy: [true, true, true], status: "updating" });
         assert.deepEqual(seen.frame, { pixels: true, busy: [true, true, true], status: "updating" });
         const changed = await stepsHtml(a.page);
         assert.deepEqual(await a.page.evaluate(() => [...document.querySelectorAll(".panel[aria-busy], .panel.updating")].length), 0);
+        assert.equal(await a.page.evaluate(() => location.hash), seen.hash, "the address follows the change once its steps are in");
         assert.equal(await visit(b.page, env.url, "index.html", seen.hash), "ok");
         assert.equal(changed, await stepsHtml(b.page), `${id}: the steps after the change differ from a cold load of ${seen.hash}`);
         assert.deepEqual(a.log.pageErrors, []);
@@ -96,7 +102,7 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
       try {
         assert.equal(await visit(a.page, env.url, "index.html", `#/${id}`), "ok");
         await install(a.page);
-        const hash = await a.page.evaluate(async () => {
+        await a.page.evaluate(async () => {
           const { input, texts } = await window.__find();
           window.__settled = 0;
           new PerformanceObserver((list) => (window.__settled += list.getEntriesByName("settled").length)).observe({ type: "measure" });
@@ -104,11 +110,12 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
             input.value = t;
             input.dispatchEvent(new Event("input", { bubbles: true }));
           }
-          return location.hash;
         });
         const changed = await stepsHtml(a.page);
         // the settled measure comes a frame after the steps
         await a.page.waitForFunction(() => window.__settled > 0);
+        // the address, written with the steps: the last change's
+        const hash = await a.page.evaluate(() => location.hash);
         assert.equal(await a.page.evaluate(() => window.__settled), 1, "the steps were rendered once, for the last change");
         assert.equal(await visit(b.page, env.url, "index.html", hash), "ok");
         assert.equal(changed, await stepsHtml(b.page), `${id}: the steps after the series differ from a cold load of ${hash}`);
@@ -128,10 +135,10 @@ test("an invalid input while the steps wait: the waiting solution is shown whole
     assert.equal(await visit(a.page, env.url, "index.html", "#/ncc-1d"), "ok");
     await install(a.page);
     const seen = await a.page.evaluate(async () => {
-      const { input, seed, texts } = await window.__find();
+      const { input, seed, texts, hashes } = await window.__find();
       input.value = texts[0];
       input.dispatchEvent(new Event("input", { bubbles: true }));
-      const hash = location.hash;
+      const hash = hashes[0];
       input.value = `${seed}x`;
       input.dispatchEvent(new Event("input", { bubbles: true }));
       return { hash, status: document.body.dataset.status, busy: document.querySelectorAll(".panel[aria-busy]").length, banner: document.querySelector(".stale-banner").hidden };
