@@ -224,6 +224,10 @@ export function buildForm(entry, onInput) {
         let message = errors && Object.hasOwn(errors, key) ? String(errors[key]) : null;
         // "dpi: must be …" beside the dpi field reads better without the repeated name
         if (message && message.startsWith(`${key}: `)) message = message.slice(key.length + 2);
+        // unchanged fields are left alone: a write to each field on every keystroke would
+        // recalculate their style in the figure's frame (app.js inputChanged)
+        if ((c.shown ?? null) === message) continue;
+        c.shown = message;
         if (message) {
           c.error.textContent = message;
           c.error.hidden = false;

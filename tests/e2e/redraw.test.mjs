@@ -236,3 +236,40 @@ test("leaving the seed's values shortens the answer line, and nothing below it m
     await a.context.close();
   }
 });
+
+test("a valid change rewrites nothing in the form: no field's error, aria-invalid or class is touched", { timeout: TEST_TIMEOUT }, async () => {
+  const a = await open(env.browser);
+  try {
+    assert.equal(await visit(a.page, env.url, "index.html", "#/lsm-2d"), "ok");
+    await install(a.page);
+    const seen = await a.page.evaluate(async () => {
+      const { input, texts } = await window.__find();
+      const form = document.querySelector(".input-form");
+      const changes = [];
+      const note = (list) => {
+        for (const m of list) if (m.target !== input) changes.push(`${m.type} ${m.attributeName ?? ""} on ${m.target.id || m.target.className || m.target.nodeName}`);
+      };
+      const observer = new MutationObserver(note);
+      observer.observe(form, { attributes: true, childList: true, subtree: true, characterData: true });
+      input.value = texts[0];
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      note(observer.takeRecords());
+      const valid = [...changes];
+      // an invalid text: its field says so, and only its field
+      input.value = "x";
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+      const marked = [...form.querySelectorAll("[aria-invalid=true]")].map((n) => n === input);
+      const errors = [...form.querySelectorAll(".field-error")].filter((p) => !p.hidden).length;
+      observer.disconnect();
+      return { changes: valid, fields: form.querySelectorAll(".field").length, marked, errors };
+    });
+    assert.ok(seen.fields > 3, "lsm-2d has several fields");
+    assert.deepEqual(seen.changes, [], "nothing in the form changed but the input typed in");
+    assert.deepEqual(seen.marked, [true], "the invalid field alone is marked");
+    assert.equal(seen.errors, 1);
+    assert.deepEqual(a.log.pageErrors, []);
+  } finally {
+    await a.context.close();
+  }
+});
