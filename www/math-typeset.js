@@ -532,6 +532,40 @@ export function fitOne(formula) {
   fitAll([formula], { reset: false });
 }
 
+// Steps have content-visibility: auto (style.css): a step off screen is not
+// laid out, and reading a width inside it would lay it out (Chromium) just to
+// fit it. Its formulas wait instead, and are fitted when the browser renders
+// the step (contentvisibilityautostatechange, skipped false): scrolled to,
+// found, focused, or printed (keepFitted renders every step before print).
+
+/** The elements with content-visibility: auto that hold formulas. */
+const LAZY = ".steps > .step";
+/** Formulas waiting for their step to be rendered: step → Map(formula → reset). */
+const waiting = new WeakMap();
+
+function fitLater(step, formula, reset) {
+  let list = waiting.get(step);
+  if (!list) waiting.set(step, (list = new Map()));
+  list.set(formula, reset || list.get(formula) === true);
+}
+
+/** Fits what waits in `step` (now rendered); a formula replaced since was fitted as the new one. */
+function fitWaiting(step) {
+  const list = waiting.get(step);
+  if (!list) return;
+  waiting.delete(step);
+  const live = [...list].filter(([formula]) => formula.isConnected && step.contains(formula));
+  fitAll(live.filter(([, reset]) => reset).map(([formula]) => formula));
+  fitAll(live.filter(([, reset]) => !reset).map(([formula]) => formula), { reset: false });
+}
+
+if (typeof document !== "undefined") {
+  // the event does not bubble: caught on its way down
+  document.addEventListener("contentvisibilityautostatechange", (event) => {
+    if (!event.skipped) fitWaiting(event.target);
+  }, true);
+}
+
 /**
  * Fits `formulas` (elements .formula[data-tex]) to their lines, reading the
  * layout in as few passes as it can: all the writes of a pass, then all the
@@ -544,8 +578,16 @@ export function fitOne(formula) {
  * @param {{ reset?: boolean }} [options]
  */
 export function fitAll(formulas, { reset = true } = {}) {
+  // only what is rendered: a formula in a step off screen waits for the step (fitLater)
+  const shown = formulas.filter((formula) => {
+    if (!formula.checkVisibility || formula.checkVisibility({ contentVisibilityAuto: true })) return true;
+    // skipped by content-visibility: auto (not hidden): fitted when its step is rendered
+    const step = formula.checkVisibility() ? formula.closest(LAZY) : null;
+    if (step) fitLater(step, formula, reset);
+    return false; // hidden (display: none, a closed fold): no width to fit to
+  });
   // writes: a formula rearranged before starts again from its rendering
-  const list = formulas.map((formula) => {
+  const list = shown.map((formula) => {
     if (!reset || !formula.querySelector(".formula-refit, .formula-scroll")) return formula;
     const fresh = renderFormula(formula.dataset.tex, formula.className);
     formula.replaceWith(fresh);

@@ -257,7 +257,15 @@ export function keepFitted(root) {
   const again = () => {
     if (!stopped) fitFormulas(root);
   };
-  window.addEventListener("beforeprint", again);
+  // print: every step rendered (content-visibility: visible, style.css) and fitted, not
+  // only those that were on screen; back to rendering what is on screen afterwards
+  const printing = () => {
+    document.documentElement.classList.add("printing");
+    again();
+  };
+  const printed = () => document.documentElement.classList.remove("printing");
+  window.addEventListener("beforeprint", printing);
+  window.addEventListener("afterprint", printed);
   // KaTeX's fonts arrive after the first layout and make every formula wider
   document.fonts?.addEventListener?.("loadingdone", again);
   // after the first frame: reading document.fonts.ready recalculates the style of the
@@ -266,7 +274,8 @@ export function keepFitted(root) {
   return () => {
     stopped = true;
     observer.disconnect();
-    window.removeEventListener("beforeprint", again);
+    window.removeEventListener("beforeprint", printing);
+    window.removeEventListener("afterprint", printed);
     document.fonts?.removeEventListener?.("loadingdone", again);
   };
 }
