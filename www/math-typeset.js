@@ -549,21 +549,36 @@ function fitLater(step, formula, reset) {
   list.set(formula, reset || list.get(formula) === true);
 }
 
-/** Fits what waits in `step` (now rendered); a formula replaced since was fitted as the new one. */
-function fitWaiting(step) {
-  const list = waiting.get(step);
-  if (!list) return;
-  waiting.delete(step);
-  const live = [...list].filter(([formula]) => formula.isConnected && step.contains(formula));
+/** Steps rendered since the last frame whose formulas wait (fitted together: one layout). */
+const rendered = new Set();
+let frame = 0;
+
+/** Fits what waits in the steps rendered now; a formula replaced since was fitted as the new one. */
+function fitRendered() {
+  frame = 0;
+  const live = [];
+  for (const step of rendered) {
+    const list = waiting.get(step);
+    waiting.delete(step);
+    for (const entry of list ?? []) if (entry[0].isConnected && step.contains(entry[0])) live.push(entry);
+  }
+  rendered.clear();
   fitAll(live.filter(([, reset]) => reset).map(([formula]) => formula));
   fitAll(live.filter(([, reset]) => !reset).map(([formula]) => formula), { reset: false });
 }
 
 if (typeof document !== "undefined") {
-  // the event does not bubble: caught on its way down
-  document.addEventListener("contentvisibilityautostatechange", (event) => {
-    if (!event.skipped) fitWaiting(event.target);
-  }, true);
+  // the event does not bubble: caught on its way down; steps scrolled to together are
+  // fitted together, before the frame that paints them
+  document.addEventListener(
+    "contentvisibilityautostatechange",
+    (event) => {
+      if (event.skipped || !waiting.has(event.target)) return;
+      rendered.add(event.target);
+      if (!frame) frame = requestAnimationFrame(fitRendered);
+    },
+    true,
+  );
 }
 
 /**
@@ -581,10 +596,12 @@ export function fitAll(formulas, { reset = true } = {}) {
   // only what is rendered: a formula in a step off screen waits for the step (fitLater)
   const shown = formulas.filter((formula) => {
     if (!formula.checkVisibility || formula.checkVisibility({ contentVisibilityAuto: true })) return true;
-    // skipped by content-visibility: auto (not hidden): fitted when its step is rendered
-    const step = formula.checkVisibility() ? formula.closest(LAZY) : null;
+    // not rendered: skipped (its step off screen) or hidden (a closed fold, display: none;
+    // no width to fit to). Not told apart: checkVisibility() without the option would lay
+    // a skipped step out. A step's formulas wait for it to be rendered.
+    const step = formula.closest(LAZY);
     if (step) fitLater(step, formula, reset);
-    return false; // hidden (display: none, a closed fold): no width to fit to
+    return false;
   });
   // writes: a formula rearranged before starts again from its rendering
   const list = shown.map((formula) => {
