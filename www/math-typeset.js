@@ -523,8 +523,8 @@ function scrollable(term) {
  * gets whole matrices back.
  * @param {Element} root
  */
-export function fitFormulas(root) {
-  fitAll([...root.querySelectorAll(".formula[data-tex]")]);
+export function fitFormulas(root, { all = false } = {}) {
+  fitAll([...root.querySelectorAll(".formula[data-tex]")], { all });
 }
 
 /** Fits one formula's terms as they are now (no new start: a grid shown whole stays whole). */
@@ -588,14 +588,16 @@ if (typeof document !== "undefined") {
  * term was rearranged), not once per formula. A term wider than its line is
  * rearranged (refit); a grid gets fewer columns a block while a block is
  * still too wide; what still cannot fit scrolls (scrollable). With `reset`
- * a formula rearranged before starts again from its rendering.
+ * a formula rearranged before starts again from its rendering. With `all`
+ * every formula is read, those in steps off screen too (print: rendered
+ * by then, the browser has not yet said so).
  * @param {Element[]} formulas
  * @param {{ reset?: boolean }} [options]
  */
-export function fitAll(formulas, { reset = true } = {}) {
+export function fitAll(formulas, { reset = true, all = false } = {}) {
   // only what is rendered: a formula in a step off screen waits for the step (fitLater)
   const shown = formulas.filter((formula) => {
-    if (!formula.checkVisibility || formula.checkVisibility({ contentVisibilityAuto: true })) return true;
+    if (all || !formula.checkVisibility || formula.checkVisibility({ contentVisibilityAuto: true })) return true;
     // not rendered: skipped (its step off screen) or hidden (a closed fold, display: none;
     // no width to fit to). Not told apart: checkVisibility() without the option would lay
     // a skipped step out. A step's formulas wait for it to be rendered.

@@ -215,12 +215,15 @@ export function renderFormula(tex, className = "formula") {
 /**
  * Lays the formulas below `root` out again for the width they have now:
  * every refitted term starts from its original rendering, so a wider screen
- * gets whole matrices back. Nothing to do before KaTeX is in.
+ * gets whole matrices back. Nothing to do before KaTeX is in. Formulas in
+ * steps off screen are fitted when they are rendered; `all` fits them now
+ * (print).
  * @param {Element} root
+ * @param {{ all?: boolean }} [options]
  */
-export function fitFormulas(root) {
+export function fitFormulas(root, { all = false } = {}) {
   if (!katex || !root) return;
-  typeset.fitFormulas(root);
+  typeset.fitFormulas(root, { all });
 }
 
 /**
@@ -261,7 +264,7 @@ export function keepFitted(root) {
   // only those that were on screen; back to rendering what is on screen afterwards
   const printing = () => {
     document.documentElement.classList.add("printing");
-    again();
+    if (!stopped) fitFormulas(root, { all: true });
   };
   const printed = () => document.documentElement.classList.remove("printing");
   window.addEventListener("beforeprint", printing);
