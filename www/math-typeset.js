@@ -549,33 +549,23 @@ function fitLater(step, formula, reset) {
   list.set(formula, reset || list.get(formula) === true);
 }
 
-/** Steps rendered since the last frame whose formulas wait (fitted together: one layout). */
-const rendered = new Set();
-let frame = 0;
-
-/** Fits what waits in the steps rendered now; a formula replaced since was fitted as the new one. */
-function fitRendered() {
-  frame = 0;
-  const live = [];
-  for (const step of rendered) {
-    const list = waiting.get(step);
-    waiting.delete(step);
-    for (const entry of list ?? []) if (entry[0].isConnected && step.contains(entry[0])) live.push(entry);
-  }
-  rendered.clear();
+/** Fits what waits in `step`, rendered now; a formula replaced since was fitted as the new one. */
+function fitWaiting(step) {
+  const list = waiting.get(step);
+  if (!list) return;
+  waiting.delete(step);
+  const live = [...list].filter(([formula]) => formula.isConnected && step.contains(formula));
   fitAll(live.filter(([, reset]) => reset).map(([formula]) => formula));
   fitAll(live.filter(([, reset]) => !reset).map(([formula]) => formula), { reset: false });
 }
 
 if (typeof document !== "undefined") {
-  // the event does not bubble: caught on its way down; steps scrolled to together are
-  // fitted together, before the frame that paints them
+  // the event does not bubble: caught on its way down. Fitted at once; the steps rendered
+  // together share a layout (a fitting that rearranged nothing leaves none to redo)
   document.addEventListener(
     "contentvisibilityautostatechange",
     (event) => {
-      if (event.skipped || !waiting.has(event.target)) return;
-      rendered.add(event.target);
-      if (!frame) frame = requestAnimationFrame(fitRendered);
+      if (!event.skipped) fitWaiting(event.target);
     },
     true,
   );
