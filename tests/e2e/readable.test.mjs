@@ -114,6 +114,35 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
   });
 });
 
+describe("print", { timeout: TEST_TIMEOUT }, () => {
+  it("every step fitted before printing, those never scrolled to too (lsm-affine at 390 px)", async () => {
+    const { page, context } = await open(env.browser, { viewport: { width: 390, height: 900 } });
+    try {
+      await visit(page, env.url, "index.html", "#/lsm-affine");
+      await page.evaluate(() => document.fonts.ready);
+      // on a phone the steps are below the inputs: off screen, not rendered yet
+      const unseen = await page.$$eval(".steps > .step", (s) => s.filter((x) => !x.querySelector(".step-title").checkVisibility({ contentVisibilityAuto: true })).length);
+      assert.ok(unseen >= 3, `steps off screen: ${unseen}`);
+      // the page as the print lays it out: right after beforeprint, in the same task
+      const printed = await page.evaluate(() => {
+        window.dispatchEvent(new Event("beforeprint"));
+        const cut = [...document.querySelectorAll(".steps .formula-term")].filter((t) => t.clientWidth > 0 && t.scrollWidth > t.clientWidth + 1);
+        return { cut: cut.map((t) => t.dataset.tex.slice(0, 60)), rearranged: document.querySelectorAll(".steps .formula-refit").length };
+      });
+      assert.deepEqual(printed.cut, [], "every formula fits its line");
+      assert.ok(printed.rearranged >= 3, `the wide formulas of every step are rearranged (${printed.rearranged})`);
+      // and once the fonts those steps use are in
+      await page.evaluate(() => document.fonts.ready);
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+      assert.deepEqual(await clipped(page), [], "every formula fits its line, with its fonts");
+      await page.evaluate(() => window.dispatchEvent(new Event("afterprint")));
+      assert.equal(await page.evaluate(() => document.documentElement.classList.contains("printing")), false);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
 describe("the printed-vs-exact comparison", { timeout: TEST_TIMEOUT }, () => {
   it("gsd: exact, printed and exact − printed together, in plain words", async () => {
     const { page, context } = await open(env.browser, { viewport: { width: 390, height: 900 } });
