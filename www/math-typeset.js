@@ -523,13 +523,52 @@ function scrollable(term) {
  * gets whole matrices back.
  * @param {Element} root
  */
-export function fitFormulas(root) {
-  fitAll([...root.querySelectorAll(".formula[data-tex]")]);
+export function fitFormulas(root, { all = false } = {}) {
+  fitAll([...root.querySelectorAll(".formula[data-tex]")], { all });
 }
 
 /** Fits one formula's terms as they are now (no new start: a grid shown whole stays whole). */
 export function fitOne(formula) {
   fitAll([formula], { reset: false });
+}
+
+// Steps have content-visibility: auto (style.css): a step off screen is not
+// laid out, and reading a width inside it would lay it out (Chromium) just to
+// fit it. Its formulas wait instead, and are fitted when the browser renders
+// the step (contentvisibilityautostatechange, skipped false): scrolled to,
+// found, focused, or printed (keepFitted renders every step before print).
+
+/** The elements with content-visibility: auto that hold formulas. */
+const LAZY = ".steps > .step";
+/** Formulas waiting for their step to be rendered: step → Map(formula → reset). */
+const waiting = new WeakMap();
+
+function fitLater(step, formula, reset) {
+  let list = waiting.get(step);
+  if (!list) waiting.set(step, (list = new Map()));
+  list.set(formula, reset || list.get(formula) === true);
+}
+
+/** Fits what waits in `step`, rendered now; a formula replaced since was fitted as the new one. */
+function fitWaiting(step) {
+  const list = waiting.get(step);
+  if (!list) return;
+  waiting.delete(step);
+  const live = [...list].filter(([formula]) => formula.isConnected && step.contains(formula));
+  fitAll(live.filter(([, reset]) => reset).map(([formula]) => formula));
+  fitAll(live.filter(([, reset]) => !reset).map(([formula]) => formula), { reset: false });
+}
+
+if (typeof document !== "undefined") {
+  // the event does not bubble: caught on its way down. Fitted at once; the steps rendered
+  // together share a layout (a fitting that rearranged nothing leaves none to redo)
+  document.addEventListener(
+    "contentvisibilityautostatechange",
+    (event) => {
+      if (!event.skipped) fitWaiting(event.target);
+    },
+    true,
+  );
 }
 
 /**
@@ -539,13 +578,25 @@ export function fitOne(formula) {
  * term was rearranged), not once per formula. A term wider than its line is
  * rearranged (refit); a grid gets fewer columns a block while a block is
  * still too wide; what still cannot fit scrolls (scrollable). With `reset`
- * a formula rearranged before starts again from its rendering.
+ * a formula rearranged before starts again from its rendering. With `all`
+ * every formula is read, those in steps off screen too (print: rendered
+ * by then, the browser has not yet said so).
  * @param {Element[]} formulas
  * @param {{ reset?: boolean }} [options]
  */
-export function fitAll(formulas, { reset = true } = {}) {
+export function fitAll(formulas, { reset = true, all = false } = {}) {
+  // only what is rendered: a formula in a step off screen waits for the step (fitLater)
+  const shown = formulas.filter((formula) => {
+    if (all || !formula.checkVisibility || formula.checkVisibility({ contentVisibilityAuto: true })) return true;
+    // not rendered: skipped (its step off screen) or hidden (a closed fold, display: none;
+    // no width to fit to). Not told apart: checkVisibility() without the option would lay
+    // a skipped step out. A step's formulas wait for it to be rendered.
+    const step = formula.closest(LAZY);
+    if (step) fitLater(step, formula, reset);
+    return false;
+  });
   // writes: a formula rearranged before starts again from its rendering
-  const list = formulas.map((formula) => {
+  const list = shown.map((formula) => {
     if (!reset || !formula.querySelector(".formula-refit, .formula-scroll")) return formula;
     const fresh = renderFormula(formula.dataset.tex, formula.className);
     formula.replaceWith(fresh);

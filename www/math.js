@@ -215,12 +215,15 @@ export function renderFormula(tex, className = "formula") {
 /**
  * Lays the formulas below `root` out again for the width they have now:
  * every refitted term starts from its original rendering, so a wider screen
- * gets whole matrices back. Nothing to do before KaTeX is in.
+ * gets whole matrices back. Nothing to do before KaTeX is in. Formulas in
+ * steps off screen are fitted when they are rendered; `all` fits them now
+ * (print).
  * @param {Element} root
+ * @param {{ all?: boolean }} [options]
  */
-export function fitFormulas(root) {
+export function fitFormulas(root, { all = false } = {}) {
   if (!katex || !root) return;
-  typeset.fitFormulas(root);
+  typeset.fitFormulas(root, { all });
 }
 
 /**
@@ -257,7 +260,15 @@ export function keepFitted(root) {
   const again = () => {
     if (!stopped) fitFormulas(root);
   };
-  window.addEventListener("beforeprint", again);
+  // print: every step rendered (content-visibility: visible, style.css) and fitted, not
+  // only those that were on screen; back to rendering what is on screen afterwards
+  const printing = () => {
+    document.documentElement.classList.add("printing");
+    if (!stopped) fitFormulas(root, { all: true });
+  };
+  const printed = () => document.documentElement.classList.remove("printing");
+  window.addEventListener("beforeprint", printing);
+  window.addEventListener("afterprint", printed);
   // KaTeX's fonts arrive after the first layout and make every formula wider
   document.fonts?.addEventListener?.("loadingdone", again);
   // after the first frame: reading document.fonts.ready recalculates the style of the
@@ -266,7 +277,8 @@ export function keepFitted(root) {
   return () => {
     stopped = true;
     observer.disconnect();
-    window.removeEventListener("beforeprint", again);
+    window.removeEventListener("beforeprint", printing);
+    window.removeEventListener("afterprint", printed);
     document.fonts?.removeEventListener?.("loadingdone", again);
   };
 }

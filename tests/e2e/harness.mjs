@@ -85,15 +85,38 @@ export async function settled(page) {
 }
 
 /**
+ * Scrolls to every step as a reader going down the page would, twice (the second
+ * time with the fonts the first asked for), and back to the top. A step off
+ * screen is not rendered (content-visibility: auto): its formulas are fitted,
+ * and its layout and innerText are there, once it has been.
+ */
+export async function readSteps(page) {
+  for (let pass = 0; pass < 2; pass++) {
+    await page.evaluate(async () => {
+      const frame = () => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      for (const step of document.querySelectorAll(".steps-body .step")) {
+        step.scrollIntoView({ block: "start" });
+        // the step rendered (a frame), its formulas fitted (the next)
+        await frame();
+        await frame();
+      }
+      window.scrollTo(0, 0);
+      await document.fonts.ready;
+      await frame();
+    });
+  }
+}
+
+/**
  * The steps' markup once the page has settled with "ok" (an input change's steps
- * in), the network is idle, the fonts are in and the formulas fitted (a frame).
+ * in), the network is idle, the fonts are in and the formulas fitted (a frame),
+ * every step read (readSteps).
  */
 export async function stepsHtml(page) {
   const status = await settled(page);
   if (status !== "ok") throw new Error(`stepsHtml: the page says "${status}", not "ok"`);
   await page.waitForLoadState("networkidle");
-  await page.evaluate(() => document.fonts.ready);
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+  await readSteps(page);
   return page.evaluate(() => document.querySelector(".steps-body").innerHTML);
 }
 

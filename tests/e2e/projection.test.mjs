@@ -53,7 +53,8 @@ describe("map projection", () => {
       assert.equal(await cellText(page, "utm_text", "exact"), "32U 691\u2009875.632 m E, 6\u2009098\u2009907.825 m N");
       assert.equal(await cellText(page, "zone_rule", "exact"), "forced");
       // the steps with their formulas rendered
-      const steps = await page.locator(".steps .step-title").allInnerTexts();
+      // textContent: a step off screen is not rendered (content-visibility: auto), its innerText empty
+      const steps = await page.locator(".steps .step-title").allTextContents();
       assert.ok(steps.includes("Krüger's series") && steps.includes("Easting and northing"), steps.join(" | "));
       assert.ok((await page.locator(".steps .katex").count()) > 20);
       assert.equal(await page.locator(".formula-error").count(), 0, "every formula renders");

@@ -8,7 +8,7 @@
 import { after, before, describe, it } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
-import { open, start, visit, TEST_TIMEOUT } from "./harness.mjs";
+import { open, readSteps, start, visit, TEST_TIMEOUT } from "./harness.mjs";
 
 const AXE = fs.readFileSync("node_modules/axe-core/axe.min.js", "utf8");
 const WIDTHS = [390, 1280];
@@ -57,9 +57,10 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
         assert.ok(ids.length >= 23, `the catalog lists ${ids.length} examples`);
         for (const id of ids) {
           assert.equal(await visit(page, env.url, "index.html", `#/${id}`), "ok", id);
-          // KaTeX's fonts have loaded and the formulas are fitted to them
+          // KaTeX's fonts have loaded and the formulas are fitted to them, every step seen
           await page.evaluate(() => document.fonts.ready);
           await page.waitForTimeout(50);
+          await readSteps(page);
           assert.deepEqual(await clipped(page), [], `${id} at ${width} px`);
           const answer = page.locator(".answer-line");
           assert.ok(await answer.isVisible(), `${id}: the answer line is shown`);
@@ -87,6 +88,7 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
     try {
       await visit(page, env.url, "index.html", "#/ncc-2d");
       await page.evaluate(() => document.fonts.ready);
+      await readSteps(page);
       // the written-out sum of products: every term on the page, the result after "=" visible
       const sum = await page.evaluate(() => {
         const f = [...document.querySelectorAll(".formula-substituted")].find((x) => x.dataset.tex.includes("(48 - 58.77778)(52 - 59.11111)"));
@@ -102,8 +104,39 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
       await visit(page, env.url, "index.html", "#/fiducial-affine");
       await page.evaluate(() => document.fonts.ready);
       await page.waitForTimeout(50);
-      const captions = await page.locator(".formula-block-caption").allInnerTexts();
+      await readSteps(page);
+      // textContent: the steps off screen again are not rendered, their innerText is empty
+      const captions = await page.$$eval(".formula-block-caption", (c) => c.map((x) => x.textContent));
       assert.ok(captions.some((c) => /columns 1–\d of 6/.test(c)), `A (8×6) in blocks of columns: ${captions.join(" / ")}`);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
+describe("print", { timeout: TEST_TIMEOUT }, () => {
+  it("every step fitted before printing, those never scrolled to too (lsm-affine at 390 px)", async () => {
+    const { page, context } = await open(env.browser, { viewport: { width: 390, height: 900 } });
+    try {
+      await visit(page, env.url, "index.html", "#/lsm-affine");
+      await page.evaluate(() => document.fonts.ready);
+      // on a phone the steps are below the inputs: off screen, not rendered yet
+      const unseen = await page.$$eval(".steps > .step", (s) => s.filter((x) => !x.querySelector(".step-title").checkVisibility({ contentVisibilityAuto: true })).length);
+      assert.ok(unseen >= 3, `steps off screen: ${unseen}`);
+      // the page as the print lays it out: right after beforeprint, in the same task
+      const printed = await page.evaluate(() => {
+        window.dispatchEvent(new Event("beforeprint"));
+        const cut = [...document.querySelectorAll(".steps .formula-term")].filter((t) => t.clientWidth > 0 && t.scrollWidth > t.clientWidth + 1);
+        return { cut: cut.map((t) => t.dataset.tex.slice(0, 60)), rearranged: document.querySelectorAll(".steps .formula-refit").length };
+      });
+      assert.deepEqual(printed.cut, [], "every formula fits its line");
+      assert.ok(printed.rearranged >= 3, `the wide formulas of every step are rearranged (${printed.rearranged})`);
+      // and once the fonts those steps use are in
+      await page.evaluate(() => document.fonts.ready);
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+      assert.deepEqual(await clipped(page), [], "every formula fits its line, with its fonts");
+      await page.evaluate(() => window.dispatchEvent(new Event("afterprint")));
+      assert.equal(await page.evaluate(() => document.documentElement.classList.contains("printing")), false);
     } finally {
       await context.close();
     }
