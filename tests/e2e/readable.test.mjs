@@ -57,9 +57,7 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
         assert.ok(ids.length >= 23, `the catalog lists ${ids.length} examples`);
         for (const id of ids) {
           assert.equal(await visit(page, env.url, "index.html", `#/${id}`), "ok", id);
-          // KaTeX's fonts have loaded and the formulas are fitted to them, every step seen
-          await page.evaluate(() => document.fonts.ready);
-          await page.waitForTimeout(50);
+          // KaTeX's fonts have loaded and the formulas are fitted to them, every step seen (readSteps)
           await readSteps(page);
           assert.deepEqual(await clipped(page), [], `${id} at ${width} px`);
           const answer = page.locator(".answer-line");
@@ -87,7 +85,6 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
     const { page, context } = await open(env.browser, { viewport: { width: 390, height: 900 } });
     try {
       await visit(page, env.url, "index.html", "#/ncc-2d");
-      await page.evaluate(() => document.fonts.ready);
       await readSteps(page);
       // the written-out sum of products: every term on the page, the result after "=" visible
       const sum = await page.evaluate(() => {
@@ -102,8 +99,6 @@ describe("every example readable at 390 px and 1280 px", { timeout: TEST_TIMEOUT
       assert.match(sum.last, /1149\.222/);
       // a matrix too wide for a phone: shown whole, as blocks of columns
       await visit(page, env.url, "index.html", "#/fiducial-affine");
-      await page.evaluate(() => document.fonts.ready);
-      await page.waitForTimeout(50);
       await readSteps(page);
       // textContent: the steps off screen again are not rendered, their innerText is empty
       const captions = await page.$$eval(".formula-block-caption", (c) => c.map((x) => x.textContent));

@@ -17,17 +17,19 @@ after(async () => {
 });
 
 /**
- * Puts window.__find() into the page: the first text input holding a number,
+ * Puts window.__settle() (frames until the steps are in) and window.__find()
+ * into the page; __find(): the first text input holding a number,
  * its seed text and up to 4 texts with that number changed that solve (each
  * tried, then the seed put back and settled), with the address each left
  * (the address follows a change once its steps are in).
  */
 async function install(page) {
-  await page.evaluate(`window.__find = async () => {
-    const settle = async () => {
-      do await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
-      while (document.body.dataset.status === "updating");
-    };
+  await page.evaluate(`window.__settle = async () => {
+    do await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+    while (document.body.dataset.status === "updating");
+  };
+  window.__find = async () => {
+    const settle = window.__settle;
     const input = [...document.querySelectorAll(".input-form .field")]
       .filter((w) => !w.hidden && !w.classList.contains("field-choice") && !w.classList.contains("field-flag"))
       .map((w) => w.querySelector("input[type=text], textarea"))
@@ -194,23 +196,18 @@ test("leaving the seed's values shortens the answer line, and nothing below it m
         line.style.minHeight = kept;
         return h;
       };
-      const settle = async () => {
-        do await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
-        while (document.body.dataset.status === "updating");
+      const type = async (text) => {
+        input.value = text;
+        input.dispatchEvent(new Event("input", { bubbles: true }));
+        await window.__settle();
       };
       const at = (label) => ({ label, printed: /course notes print/.test(line.textContent), height: line.offsetHeight, natural: natural(), top: top() });
       const out = [at("seed")];
-      input.value = texts[0];
-      input.dispatchEvent(new Event("input", { bubbles: true }));
-      await settle();
+      await type(texts[0]);
       out.push(at("changed"));
-      input.value = seed;
-      input.dispatchEvent(new Event("input", { bubbles: true }));
-      await settle();
+      await type(seed);
       out.push(at("seed again"));
-      input.value = texts[0];
-      input.dispatchEvent(new Event("input", { bubbles: true }));
-      await settle();
+      await type(texts[0]);
       return out;
     });
     const [s, c, s2] = seen;
