@@ -34,7 +34,7 @@ const SITE_TITLE = "Photogrammetry Playground";
 const MAX_QUOTED_KEY = 40;
 /** How long "Link copied" stays. */
 const COPY_STATUS_MS = 4000;
-/** Where the "Show API names" choice is remembered. */
+/** Where the "Show API names" choice is remembered (theme-init.js reads it, before the page paints). */
 const API_NAMES_KEY = "photogrammetry-playground:show-api-names";
 
 const mode = document.body.dataset.mode === "embed" ? "embed" : "full";
@@ -142,20 +142,12 @@ function destroyView() {
 }
 
 function showApiNames(on) {
-  document.body.classList.toggle("show-api", on);
+  document.documentElement.classList.toggle("show-api", on);
   try {
     if (on) localStorage.setItem(API_NAMES_KEY, "1");
     else localStorage.removeItem(API_NAMES_KEY);
   } catch {
     // no storage (private mode): the choice lasts for this page only
-  }
-}
-
-function apiNamesRemembered() {
-  try {
-    return localStorage.getItem(API_NAMES_KEY) === "1";
-  } catch {
-    return false;
   }
 }
 
@@ -185,7 +177,7 @@ function buildView(entry) {
   const copyButton = el("button", { type: "button", class: "button" }, "Copy link");
   copyButton.addEventListener("click", () => copyLink(copyStatus));
   const apiBox = el("input", { type: "checkbox", id: `api-names-${id}` });
-  apiBox.checked = document.body.classList.contains("show-api");
+  apiBox.checked = document.documentElement.classList.contains("show-api");
   apiBox.addEventListener("change", () => showApiNames(apiBox.checked));
   const apiToggle = el("label", { class: "api-toggle", for: `api-names-${id}`, title: "The names course authors use in links and in the JS API" }, apiBox, "Show API names");
   const actions = el("div", { class: "actions" }, resetButton, copyButton, apiToggle, copyStatus);
@@ -213,7 +205,11 @@ function buildView(entry) {
 
   const children = [];
   if (mode === "full") {
-    const drawer = el("details", { class: "catalog-drawer" }, el("summary", {}, "Other examples"), catalogNav({ detailed: false, currentId: id }));
+    // its list is built when it is first opened (26 links the first solution need not wait for)
+    const drawer = el("details", { class: "catalog-drawer" }, el("summary", {}, "Other examples"));
+    drawer.addEventListener("toggle", () => {
+      if (drawer.open && !drawer.querySelector("nav")) drawer.append(catalogNav({ detailed: false, currentId: id }));
+    });
     children.push(el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog"), drawer));
   }
   children.push(el("header", { class: "example-head" }, heading, meta, summary), answerLine, urlNotice, errorBox, staleBanner, solutionArea);
@@ -664,7 +660,6 @@ async function main() {
     return;
   }
   core = coreResult.value;
-  if (apiNamesRemembered()) document.body.classList.add("show-api");
   try {
     entries = core.catalog(); // plain JSON; an entry's inputs arrive with its module (core.load)
   } catch (e) {

@@ -199,6 +199,32 @@ describe("catalog and embed", () => {
     }
   });
 
+  test("an example's \"Other examples\" drawer: its list built when first opened, the example on screen marked, its links work", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      assert.equal(await visit(page, env.url, "index.html", "#/ncc-1d"), "ok");
+      const drawer = page.locator("details.catalog-drawer");
+      assert.equal(await drawer.locator("nav").count(), 0, "not built before it is opened");
+      await drawer.locator("summary").click();
+      const nav = drawer.locator("nav.catalog-compact");
+      assert.equal(await nav.count(), 1);
+      const home = await page.evaluate(() => JSON.parse(document.getElementById("catalog-data").textContent).entries.filter((e) => e.status === "ready").length);
+      assert.equal(await nav.locator(".catalog-item.ready a").count(), home, "every ready example");
+      assert.equal(await nav.locator('a[aria-current="page"]').getAttribute("href"), "#/ncc-1d");
+      // closed and opened again: the one list, not a second
+      await drawer.locator("summary").click();
+      await drawer.locator("summary").click();
+      assert.equal(await drawer.locator("nav").count(), 1);
+      await nav.locator('a[href="#/gsd"]').click();
+      await page.waitForSelector('article.example[data-id="gsd"]');
+      await settled(page);
+      assert.ok(await exact(page, "gsd_cm"));
+      assert.deepEqual(log.pageErrors, []);
+    } finally {
+      await context.close();
+    }
+  });
+
   test("keyboard: a catalog link opens its example; Tab walks the labelled inputs", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page } = await open(env.browser);
     try {

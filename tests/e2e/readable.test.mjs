@@ -154,7 +154,16 @@ describe("the printed-vs-exact comparison", { timeout: TEST_TIMEOUT }, () => {
       assert.equal(await page.locator(".field-key:visible, .api-name:visible").count(), 0);
       await page.getByLabel("Show API names").check();
       assert.ok((await page.locator(".field-key:visible").count()) >= 3);
+      // remembered: after a reload the names are shown from the first paint (theme-init.js reads the choice)
+      await page.reload();
+      await page.waitForFunction(() => document.body.dataset.status === "ok");
+      assert.equal(await page.evaluate(() => document.documentElement.classList.contains("show-api")), true);
+      assert.equal(await page.getByLabel("Show API names").isChecked(), true);
+      assert.ok((await page.locator(".field-key:visible").count()) >= 3);
       await page.getByLabel("Show API names").uncheck();
+      await page.reload();
+      await page.waitForFunction(() => document.body.dataset.status === "ok");
+      assert.equal(await page.locator(".field-key:visible, .api-name:visible").count(), 0);
       // the stale banner speaks in labels, not keys
       await page.getByLabel(/Focal length/).fill("-1");
       await page.waitForFunction(() => document.body.dataset.status === "invalid");
