@@ -73,7 +73,7 @@ const ES_MODULE = /(?:^|[;}])[ \t]*(?:import\s*[\w{*"'`]|export\s*[\w{*])/m;
 /** A hashed name: stem.<8 hex>.ext */
 export const HASHED_NAME = /\.[0-9a-f]{8}\.[A-Za-z0-9]+$/;
 /** Classic scripts up to this size are inlined into the HTML (one request fewer before first paint). */
-const INLINE_MAX = 1024;
+const INLINE_MAX = 2048;
 export const IMMUTABLE = "public, max-age=31536000, immutable";
 export const REVALIDATE = "no-cache";
 
@@ -460,12 +460,17 @@ export function headersFile(dist, map) {
   // the top-most folders whose every file is hashed
   const allHashed = [...dirs].filter((d) => files.filter((f) => f.startsWith(`${d}/`)).every((f) => hashed.has(f)));
   const folders = allHashed.filter((d) => !allHashed.some((o) => o !== d && d.startsWith(`${o}/`))).sort();
+  // ... and those with none (prerender/: HTML, revalidated)
+  const noneHashed = [...dirs].filter((d) => files.filter((f) => f.startsWith(`${d}/`)).every((f) => !hashed.has(f)));
+  const plainFolders = noneHashed.filter((d) => !noneHashed.some((o) => o !== d && d.startsWith(`${o}/`))).sort();
   const inFolder = (f) => folders.some((d) => f.startsWith(`${d}/`));
+  const inPlainFolder = (f) => plainFolders.some((d) => f.startsWith(`${d}/`));
   const lines = ["# Cache rules (scripts/assets.mjs): content-hashed names never change; everything else is revalidated.", ""];
   for (const d of folders) lines.push(`/${d}/*`, `  Cache-Control: ${IMMUTABLE}`);
   for (const f of [...hashed].filter((f) => !inFolder(f)).sort()) lines.push(`/${f}`, `  Cache-Control: ${IMMUTABLE}`);
   lines.push("/", `  Cache-Control: ${REVALIDATE}`);
-  for (const f of files.filter((f) => !hashed.has(f) && !inFolder(f)).sort()) lines.push(`/${f}`, `  Cache-Control: ${REVALIDATE}`);
+  for (const d of plainFolders) lines.push(`/${d}/*`, `  Cache-Control: ${REVALIDATE}`);
+  for (const f of files.filter((f) => !hashed.has(f) && !inFolder(f) && !inPlainFolder(f)).sort()) lines.push(`/${f}`, `  Cache-Control: ${REVALIDATE}`);
   const rules = lines.filter((l) => l.startsWith("/")).length;
   if (rules > 100) console.warn(`assets: _headers has ${rules} rules (Cloudflare Pages reads the first 100)`);
   fs.writeFileSync(path.join(dist, "_headers"), `${lines.join("\n")}\n`);
@@ -546,14 +551,27 @@ export function compressAll(dist) {
 export { COMPRESSIBLE, HASHED_EXT };
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.argv[1])) {
-  const dist = path.resolve(process.argv[2] || "dist");
-  const [minified, rawBefore, rawAfter] = await minifyAll(dist);
-  console.log(`assets: ${minified} JS and CSS files minified (terser; minifyCss), ${(rawBefore / 1024).toFixed(0)} → ${(rawAfter / 1024).toFixed(0)} KB raw`);
-  const { map, stable, keptNames } = hashAssets(dist);
-  fs.writeFileSync(path.join(dist, "assets.json"), `${JSON.stringify(Object.fromEntries([...map].sort()), null, 1)}\n`);
-  const rules = headersFile(dist, map);
-  const sw = spawnSync(process.execPath, [path.join(path.dirname(fileURLToPath(import.meta.url)), "sw-manifest.mjs"), dist], { stdio: "inherit" });
-  if (sw.status !== 0) process.exit(sw.status ?? 1);
-  const n = compressAll(dist);
-  console.log(`assets: ${map.size} hashed names (dist/assets.json), ${stable.length} stable, ${keptNames.length} named only by computed URLs (kept: ${keptNames.join(", ") || "none"}); _headers ${rules} rules; .gz + .br for ${n} files`);
+  // two stages, so a step can run on the working site in between (scripts/build.sh:
+  // scripts/prerender.mjs): `--stage names` minifies, hashes and writes the HTML;
+  // `--stage finish` writes _headers, the service worker's list and the .gz/.br
+  // copies of what is there then; no --stage does both
+  const dist = path.resolve(process.argv.slice(2).find((a, i, all) => !a.startsWith("--") && all[i - 1] !== "--stage") || "dist");
+  const stageAt = process.argv.indexOf("--stage");
+  const stage = stageAt > 0 ? process.argv[stageAt + 1] : "all";
+  if (!["names", "finish", "all"].includes(stage)) throw new Error(`assets: --stage names|finish, not ${stage}`);
+  if (stage !== "finish") {
+    const [minified, rawBefore, rawAfter] = await minifyAll(dist);
+    console.log(`assets: ${minified} JS and CSS files minified (terser; minifyCss), ${(rawBefore / 1024).toFixed(0)} → ${(rawAfter / 1024).toFixed(0)} KB raw`);
+    const { map, stable, keptNames } = hashAssets(dist);
+    fs.writeFileSync(path.join(dist, "assets.json"), `${JSON.stringify(Object.fromEntries([...map].sort()), null, 1)}\n`);
+    console.log(`assets: ${map.size} hashed names (dist/assets.json), ${stable.length} stable, ${keptNames.length} named only by computed URLs (kept: ${keptNames.join(", ") || "none"})`);
+  }
+  if (stage !== "names") {
+    const map = new Map(Object.entries(JSON.parse(fs.readFileSync(path.join(dist, "assets.json"), "utf8"))));
+    const rules = headersFile(dist, map);
+    const sw = spawnSync(process.execPath, [path.join(path.dirname(fileURLToPath(import.meta.url)), "sw-manifest.mjs"), dist], { stdio: "inherit" });
+    if (sw.status !== 0) process.exit(sw.status ?? 1);
+    const n = compressAll(dist);
+    console.log(`assets: _headers ${rules} rules; .gz + .br for ${n} files`);
+  }
 }

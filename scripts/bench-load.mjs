@@ -3,13 +3,17 @@
 // catalog (its ids read from the page's own catalog, not from a list here):
 //
 //  1. bytes: the wasm, JS and CSS the browser requested before the page's
-//     `first-solution` mark (the critical path) and in all after network idle,
-//     gzip -9 of the file in dist/ (fonts and HTML apart); what the server
-//     really sent (resource timing's encodedBodySize) beside it;
-//  2. navigation → `first-solution`, cold (a new browser context each load,
+//     own first solution (its `solver-ready` mark: the critical path) and in
+//     all after network idle, gzip -9 of the file in dist/ (fonts and HTML
+//     apart; the build's saved solution, HTML, in a column of its own); what
+//     the server really sent (resource timing's encodedBodySize) beside it;
+//  2. navigation → `first-solution` (the first numbers on screen: the
+//     build's saved solution, scripts/prerender.mjs, where the page shows
+//     one, else the page's own) and → `solver-ready` (the page's own first
+//     solution, its inputs live), cold (a new browser context each load,
 //     service workers blocked), beside a FLOOR page from the same run (one tiny
 //     ES module instantiating a hand-assembled 41-byte wasm and writing one
-//     number), and their ratio;
+//     number), and their ratios;
 //  3. the same under a throttled phone profile (Chrome DevTools Protocol: CPU
 //     4× slower, 1.6 Mbit/s down, 750 kbit/s up, 150 ms latency);
 //  4. an input change → the figure redrawn (the page's `redraw` measure, see
@@ -129,8 +133,9 @@ const median = (xs) => {
 };
 const stats = (xs) => ({ median: median(xs), min: Math.min(...xs), max: Math.max(...xs), n: xs.length });
 
-/** What the page logs (init script below) when its `first-solution` mark is set. */
-const MARK_SIGNAL = "bench-load: first-solution";
+/** What the page logs (init script below) when one of these marks is set. */
+const MARKS = ["first-solution", "solver-ready"];
+const signalOf = (name) => `bench-load: ${name}`;
 
 /**
  * Resolves when the page's `first-solution` mark is set, told by a console
@@ -140,17 +145,21 @@ const MARK_SIGNAL = "bench-load: first-solution";
  * never spends, in the middle of every load timed (the floor's included; see
  * docs/BENCH-LOAD.md, "How it measures").
  */
-async function markSignalled(page, timeout = 60000) {
-  await page.addInitScript((signal) => {
+async function markSignalled(page, name = "first-solution", timeout = 60000) {
+  await page.addInitScript((marks) => {
+    const told = new Set();
     new PerformanceObserver((list, observer) => {
-      if (!list.getEntriesByName("first-solution").length) return;
-      observer.disconnect();
-      console.debug(signal);
+      for (const e of list.getEntries()) {
+        if (!marks.includes(e.name) || told.has(e.name)) continue;
+        told.add(e.name);
+        console.debug(`bench-load: ${e.name}`);
+      }
+      if (told.size === marks.length) observer.disconnect();
     }).observe({ type: "mark", buffered: true });
-  }, MARK_SIGNAL);
+  }, MARKS);
   const message = new Promise((resolve) => {
     page.on("console", (m) => {
-      if (m.text() === MARK_SIGNAL) resolve();
+      if (m.text() === signalOf(name)) resolve();
     });
   });
   // A console message can be lost (seen once in a run of hundreds): after 5 s the page is
@@ -161,8 +170,8 @@ async function markSignalled(page, timeout = 60000) {
     for (let wait = 5000; !done; wait = 500) {
       await new Promise((r) => setTimeout(r, wait).unref());
       if (done) return;
-      if (await page.evaluate(() => performance.getEntriesByName("first-solution").length > 0).catch(() => false)) return;
-      if (Date.now() - t0 > timeout) throw new Error(`no first-solution mark within ${timeout} ms: ${page.url()}`);
+      if (await page.evaluate((n) => performance.getEntriesByName(n).length > 0, name).catch(() => false)) return;
+      if (Date.now() - t0 > timeout) throw new Error(`no ${name} mark within ${timeout} ms: ${page.url()}`);
     }
   })();
   try {
@@ -172,8 +181,14 @@ async function markSignalled(page, timeout = 60000) {
   }
 }
 
-/** One cold load (new context) of `url`; returns the mark's time and the requests (resource timing). */
-async function coldLoad(url, { phone = false, throttle = false, details = false } = {}) {
+/**
+ * One cold load (new context) of `url`: the time of its `first-solution` mark
+ * (ms: the first numbers on screen, the build's saved solution where the
+ * page shows one) and, with `until: "solver-ready"`, of the page's own first
+ * solution (ready: its inputs live; the floor has no such mark), and the
+ * requests (resource timing).
+ */
+async function coldLoad(url, { phone = false, throttle = false, details = false, until = "first-solution" } = {}) {
   const context = await browser.newContext(phone ? PHONE : DESKTOP);
   try {
     const page = await context.newPage();
@@ -193,12 +208,12 @@ async function coldLoad(url, { phone = false, throttle = false, details = false 
       await page.addInitScript(() => performance.setResourceTimingBufferSize(2000));
       page.on("request", (r) => requested.push(r.url()));
     }
-    const marked = markSignalled(page);
+    const marked = markSignalled(page, until);
     marked.catch(() => {}); // awaited below; a failed goto must not leave it unhandled
     await page.goto(url, { waitUntil: "commit" });
     await marked;
-    const mark = await page.evaluate(() => performance.getEntriesByName("first-solution")[0].startTime);
-    if (!details) return { ms: mark };
+    const [mark, ready] = await page.evaluate((names) => names.map((n) => performance.getEntriesByName(n)[0]?.startTime ?? null), MARKS);
+    if (!details) return { ms: mark, ready };
     await page.waitForLoadState("networkidle");
     const status = await page.evaluate(() => document.body.dataset.status);
     const resources = await page.evaluate(() =>
@@ -210,7 +225,7 @@ async function coldLoad(url, { phone = false, throttle = false, details = false 
         decoded: e.decodedBodySize,
       })),
     );
-    return { ms: mark, status, resources, requested };
+    return { ms: mark, ready, status, resources, requested };
   } finally {
     await context.close();
   }
@@ -230,7 +245,8 @@ function bytesOf(load, origin) {
     files.push({
       path: key,
       kind: kindOf(key),
-      critical: r.start < load.ms,
+      // what the page's own first solution needed (its solver: wasm, JS, CSS), requested before it
+      critical: r.start < (load.ready ?? load.ms),
       start: r.start,
       gz: size ? size.gz : r.encoded,
       raw: size ? size.raw : r.decoded,
@@ -255,6 +271,8 @@ function bytesOf(load, origin) {
     criticalSent: sum((x) => x.critical && code(x), "sent"),
     totalSent: sum(code, "sent"),
     fonts: sum((x) => x.kind === "font"),
+    // the build's saved solution (scripts/prerender.mjs), HTML
+    saved: sum((x) => x.path.startsWith("/prerender/")),
     other: sum((x) => x.kind === "other"),
     lab: files.filter((x) => x.path.includes("/lab/")).map((x) => x.path),
   };
@@ -375,7 +393,7 @@ try {
   const unknown = wanted.filter((id) => !all.some((e) => e.id === id));
   if (unknown.length) throw new Error(`not in the page's catalog: ${unknown.join(", ")} (it has ${all.map((e) => e.id).join(", ")})`);
   examples = wanted.length ? wanted.map((id) => all.find((e) => e.id === id)) : all;
-  for (const e of examples) results[e.id] = { id: e.id, topic: e.topic, nav: [] };
+  for (const e of examples) results[e.id] = { id: e.id, topic: e.topic, nav: [], ready: [] };
   const origin = new URL(server.url).origin;
   console.log(`bench-load: ${examples.length} example(s), ${runs} cold loads each (+ floor), throttled: ${throttledSet}, redraw: ${doRedraw ? redraws : "off"}`);
 
@@ -384,8 +402,9 @@ try {
     for (let i = 0; i < examples.length; i++) {
       if (i % 3 === 0) floorDesktop.push((await coldLoad(floorServer.url)).ms);
       const { id } = examples[i];
-      const load = await coldLoad(`${server.url}#/${id}`, { details: round === 0 });
+      const load = await coldLoad(`${server.url}#/${id}`, { details: round === 0, until: "solver-ready" });
       results[id].nav.push(load.ms);
+      results[id].ready.push(load.ready);
       if (round === 0) {
         results[id].status = load.status;
         results[id].bytes = bytesOf(load, origin);
@@ -408,7 +427,9 @@ try {
     for (let round = 0; round < throttledRuns; round++) {
       floorThrottled.push((await coldLoad(floorServer.url, { phone: true, throttle: true })).ms);
       for (const { id } of set) {
-        (results[id].throttled ??= []).push((await coldLoad(`${server.url}#/${id}`, { phone: true, throttle: true })).ms);
+        const load = await coldLoad(`${server.url}#/${id}`, { phone: true, throttle: true, until: "solver-ready" });
+        (results[id].throttled ??= []).push(load.ms);
+        (results[id].throttledReady ??= []).push(load.ready);
       }
       process.stdout.write(`  throttled round ${round + 1}/${throttledRuns} done (${((Date.now() - t0) / 1000).toFixed(0)} s)\n`);
     }
@@ -459,7 +480,9 @@ const floorT = floorThrottled.length ? stats(floorThrottled) : null;
 const rows = examples.map(({ id, topic }) => {
   const r = results[id];
   const nav = stats(r.nav);
+  const ready = stats(r.ready);
   const th = r.throttled ? stats(r.throttled) : null;
+  const thReady = r.throttledReady ? stats(r.throttledReady) : null;
   const rd = r.redraw?.times?.length ? { ...stats(r.redraw.times.map((t) => t.ms)), js: median(r.redraw.times.map((t) => t.js)), frame: median(r.redraw.times.map((t) => t.frame)) } : null;
   const settledTimes = (r.redraw?.times ?? []).filter((t) => Number.isFinite(t.settled));
   const st = settledTimes.length
@@ -474,11 +497,15 @@ const rows = examples.map(({ id, topic }) => {
     critical_sent: r.bytes.criticalSent,
     total_sent: r.bytes.totalSent,
     fonts_gz: r.bytes.fonts,
+    saved_gz: r.bytes.saved,
     other_gz: r.bytes.other,
     lab_files: r.bytes.lab,
     nav_ms: nav,
     ratio: nav.median / floor.median,
+    ready_ms: ready,
+    ratio_ready: ready.median / floor.median,
     throttled_ms: th,
+    throttled_ready_ms: thReady,
     redraw_ms: rd,
     settled_ms: st,
     redraw_field: r.redraw?.field ?? null,
@@ -490,15 +517,18 @@ const rows = examples.map(({ id, topic }) => {
 
 // the throttled column says which examples it ran: by default the heaviest critical path of each topic ("–": not run)
 const throttledHead = { topics: "throttled ms (heaviest of its topic)", all: "throttled ms (every example)", none: "throttled ms (not run)" }[throttledSet] ?? "throttled ms";
-const head = ["example", "crit KB gz", "total KB gz", "sent KB", "nav ms med (min–max)", "× floor", throttledHead, "redraw med/worst ms", "settled med/worst ms", "input"];
+const head = ["example", "crit KB gz", "total KB gz", "sent KB", "saved KB gz", "numbers ms med (min–max)", "× floor", "solver ms med", "× floor", `${throttledHead}: numbers/solver`, "redraw med/worst ms", "settled med/worst ms", "input"];
 const lines = rows.map((r) => [
   r.id,
   KB(r.critical_gz),
   KB(r.total_gz),
   `${KB(r.critical_sent)}/${KB(r.total_sent)}`,
+  r.saved_gz ? KB(r.saved_gz) : "–",
   `${MS(r.nav_ms.median)} (${MS(r.nav_ms.min)}–${MS(r.nav_ms.max)})`,
   r.ratio.toFixed(2),
-  r.throttled_ms ? MS(r.throttled_ms.median) : "–",
+  MS(r.ready_ms.median),
+  r.ratio_ready.toFixed(2),
+  r.throttled_ms ? `${MS(r.throttled_ms.median)}/${MS(r.throttled_ready_ms.median)}` : "–",
   r.redraw_ms ? `${r.redraw_ms.median.toFixed(1)}/${r.redraw_ms.max.toFixed(1)}` : r.redraw_note ? "n/a" : "",
   r.settled_ms ? `${r.settled_ms.median.toFixed(1)}/${r.settled_ms.max.toFixed(1)}` : r.redraw_note ? "n/a" : "",
   r.redraw_field ? `${r.redraw_field} ${r.redraw_values.join("↔")}${r.redraw_note ? ` (${r.redraw_note})` : ""}` : r.redraw_note,
@@ -512,8 +542,10 @@ const maxBy = (f) => rows.reduce((best, r) => (f(r) > f(best) ? r : best), rows[
 const maxBytes = maxBy((r) => r.critical_gz);
 const maxTotal = maxBy((r) => r.total_gz);
 const maxRatio = maxBy((r) => r.ratio);
+const maxReady = maxBy((r) => r.ratio_ready);
 const withT = rows.filter((r) => r.throttled_ms);
 const maxT = withT.length ? withT.reduce((b, r) => (r.throttled_ms.median > b.throttled_ms.median ? r : b)) : null;
+const maxTR = withT.length ? withT.reduce((b, r) => (r.throttled_ready_ms.median > b.throttled_ready_ms.median ? r : b)) : null;
 const withR = rows.filter((r) => r.redraw_ms);
 const maxR = withR.length ? withR.reduce((b, r) => (r.redraw_ms.median > b.redraw_ms.median ? r : b)) : null;
 const worstR = withR.length ? withR.reduce((b, r) => (r.redraw_ms.max > b.redraw_ms.max ? r : b)) : null;
@@ -525,8 +557,9 @@ const notOk = rows.filter((r) => r.status !== "ok").map((r) => `${r.id} (${r.sta
 const summary = [
   `floor page: median ${MS(floor.median)} ms (min ${MS(floor.min)}, max ${MS(floor.max)}, ${floor.n} cold loads)${floorT ? `; throttled median ${MS(floorT.median)} ms (${floorT.n} loads) — the throttling applies: ${(floorT.median / floor.median).toFixed(1)}× the desktop floor` : ""}`,
   `largest critical path: ${maxBytes.id} ${KB(maxBytes.critical_gz)} KB gz vs aim ${AIM_KB} KB — ${verdict(maxBytes.critical_gz <= AIM_KB * 1024)}; largest total after network idle: ${maxTotal.id} ${KB(maxTotal.total_gz)} KB gz (fonts apart: ${KB(maxTotal.fonts_gz)} KB)`,
-  `largest ratio to floor: ${maxRatio.id} ${maxRatio.ratio.toFixed(2)}× (${MS(maxRatio.nav_ms.median)} ms) vs aim ${AIM_RATIO}× — ${verdict(maxRatio.ratio <= AIM_RATIO)}`,
-  maxT ? `slowest throttled (${throttledSet === "topics" ? "the heaviest example of each topic" : "every example"}, ${throttledRuns} loads each): ${maxT.id} ${MS(maxT.throttled_ms.median)} ms vs aim ${AIM_THROTTLED_MS} ms — ${verdict(maxT.throttled_ms.median <= AIM_THROTTLED_MS)}` : "throttled: not run",
+  `largest ratio to floor, the first numbers on screen (the build's saved solution where there is one): ${maxRatio.id} ${maxRatio.ratio.toFixed(2)}× (${MS(maxRatio.nav_ms.median)} ms) vs aim ${AIM_RATIO}× — ${verdict(maxRatio.ratio <= AIM_RATIO)}`,
+  `largest ratio to floor, the page's own first solution (its inputs live): ${maxReady.id} ${maxReady.ratio_ready.toFixed(2)}× (${MS(maxReady.ready_ms.median)} ms) vs aim ${AIM_RATIO}× — ${verdict(maxReady.ratio_ready <= AIM_RATIO)}`,
+  maxT ? `slowest throttled (${throttledSet === "topics" ? "the heaviest example of each topic" : "every example"}, ${throttledRuns} loads each), first numbers: ${maxT.id} ${MS(maxT.throttled_ms.median)} ms vs aim ${AIM_THROTTLED_MS} ms — ${verdict(maxT.throttled_ms.median <= AIM_THROTTLED_MS)}; the page's own solution: ${maxTR.id} ${MS(maxTR.throttled_ready_ms.median)} ms — ${verdict(maxTR.throttled_ready_ms.median <= AIM_THROTTLED_MS)}` : "throttled: not run",
   maxR ? `slowest redraw (median): ${maxR.id} ${maxR.redraw_ms.median.toFixed(1)} ms (JS ${maxR.redraw_ms.js.toFixed(1)} + frame ${maxR.redraw_ms.frame.toFixed(1)}); worst single: ${worstR.id} ${worstR.redraw_ms.max.toFixed(1)} ms; aim ${AIM_REDRAW_MS} ms — ${withR.filter((r) => r.redraw_ms.median > AIM_REDRAW_MS).length} example(s) over it by median, ${withR.filter((r) => r.redraw_ms.max > AIM_REDRAW_MS).length} by worst` : "redraw: not run",
   maxS
     ? `slowest settled (median; the steps, result and notes updated too): ${maxS.id} ${maxS.settled_ms.median.toFixed(1)} ms (redraw ${maxS.redraw_ms.median.toFixed(1)} + rest ${maxS.settled_ms.rest.toFixed(1)} + its frame ${maxS.settled_ms.rest_frame.toFixed(1)}; input to settled, the waits for frames included: ${maxS.settled_ms.wall.toFixed(1)}); worst single: ${worstS.id} ${worstS.settled_ms.max.toFixed(1)} ms`

@@ -50,7 +50,11 @@ mkdir -p dist/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 dist/vendor/katex/fonts/
 sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "dist/pkg/${name}_bg.wasm" | wc -c)"; done)
 lab="lab $(gzip -9c dist/lab/pkg/photogrammetry_lab_bg.wasm | wc -c), lab SIMD $(gzip -9c dist/lab/pkg-simd/photogrammetry_lab_bg.wasm | wc -c)"
-# hashed names, import map, .gz/.br, _headers, then the service worker's list (sw-manifest.mjs)
+# hashed names and the HTML with its import map; then each example's seed solution as the page
+# renders it (scripts/prerender.mjs, in Chromium: shown before the page's JS has run); then
+# _headers, the service worker's list (sw-manifest.mjs) and the .gz/.br copies
 node scripts/bundle.mjs dist
-node scripts/assets.mjs dist
+node scripts/assets.mjs dist --stage names
+node scripts/prerender.mjs dist
+node scripts/assets.mjs dist --stage finish
 echo "build: dist/ ready ($(du -sh dist | cut -f1); wasm gzipped bytes:$sizes; $lab)"

@@ -35,10 +35,12 @@ const marker = /^const BUILD = \{ version: "dev", files: \[\] \};.*$/m;
 if (!marker.test(source)) throw new Error("sw-manifest: the BUILD line of sw.js is missing");
 // Cached at install: the page and every topic's module (pkg/<topic>*: any
 // example works offline after the first visit). Cached when first used, not on
-// every first visit: the lab (its wasm and sample photos, about 1 MB), and
+// every first visit: the lab (its wasm and sample photos, about 1 MB),
 // pkg/all* (every example again plus practice, about 310 KB gzipped; loaded
-// by practice mode and the one-package API).
-const lazy = (f) => f.startsWith("lab/") || /^pkg\/all(_bg)?(\.[0-9a-f]{8})?\.(wasm|js)$/.test(f);
+// by practice mode and the one-package API), and the seed solutions the build
+// saved (prerender/: about 145 KB gzipped in all, each shown only while its
+// example's module loads, which the offline copy serves at once anyway).
+const lazy = (f) => f.startsWith("lab/") || f.startsWith("prerender/") || /^pkg\/all(_bg)?(\.[0-9a-f]{8})?\.(wasm|js)$/.test(f);
 const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files.filter((f) => !lazy(f))], lazy: files.filter(lazy) })};`;
 fs.writeFileSync(sw, source.replace(marker, () => line));
 fs.writeFileSync(path.join(dist, "version.json"), `${JSON.stringify({ version, files: files.length })}\n`);

@@ -128,6 +128,7 @@ function showMessage(title, message) {
   const parts = [el("h2", {}, title), el("p", {}, message)];
   if (mode === "full") parts.push(el("p", {}, el("a", { href: "#/" }, "← All examples")));
   root.replaceChildren(el("section", { class: "message" }, parts));
+  endPrerendered();
   setStatus("message");
 }
 
@@ -215,6 +216,7 @@ function buildView(entry) {
   children.push(el("header", { class: "example-head" }, heading, meta, summary), answerLine, urlNotice, errorBox, staleBanner, solutionArea);
   const article = el("article", { class: "example", "data-id": id }, children);
   root.replaceChildren(article);
+  endPrerendered();
   if (figureSection) {
     // a figure may edit inputs (a click on a grid or a window, a key, a preset button)
     const onInputs = (texts) => {
@@ -305,11 +307,26 @@ function renderRest(solution) {
 function renderSolution(solution) {
   renderQuick(solution);
   renderRest(solution);
-  // for `npm run bench`: navigation to the first solution on screen
-  if (!performance.getEntriesByName("first-solution").length) {
-    performance.mark("first-solution");
+  // for `npm run bench`: navigation to the first solution on screen (the build's
+  // saved one, preload-route.js, marks it first when it is shown), and to the
+  // page's own, its inputs live
+  if (!performance.getEntriesByName("solver-ready").length) {
+    if (!performance.getEntriesByName("first-solution").length) performance.mark("first-solution");
+    performance.mark("solver-ready");
     core.prefetch(); // the other topics' modules, when the browser is idle
   }
+}
+
+/**
+ * The build's saved solution (preload-route.js shows it, inert, in #app
+ * while the solver loads) ends when the page shows its own view; where the
+ * address asks for something else, "Loading…" takes its place at once.
+ */
+function endPrerendered({ loading = false } = {}) {
+  if (!root.hasAttribute("data-prerendered")) return;
+  if (loading) root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
+  root.removeAttribute("data-prerendered");
+  root.inert = false;
 }
 
 /**
@@ -577,6 +594,8 @@ async function route({ focus = false } = {}) {
   const hash = location.hash;
   const { id, params: allParams } = parseHash(hash);
   const params = embedPage.takeOptions(allParams); // theme, hide, lock …: embed-options.js
+  // the saved solution is the seed's: any other address (or parameter) replaces it
+  if (root.dataset.prerendered !== id || allParams.length) endPrerendered({ loading: true });
   if (id !== "lab") labModule?.closeLab();
   if (id === "lab" && mode === "full") {
     await showLab(params);
@@ -634,7 +653,8 @@ async function route({ focus = false } = {}) {
 async function main() {
   setStatus("loading");
   // (the HTML says "Loading the solver…" already: writing it again would lay the page out once more)
-  if (!root.querySelector(":scope > p.loading")) root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
+  // (nor over the build's saved solution, which preload-route.js may have shown)
+  if (!root.querySelector(":scope > p.loading") && !root.hasAttribute("data-prerendered")) root.replaceChildren(el("p", { class: "loading" }, "Loading the solver…"));
   // the example in the address starts loading its module as soon as the catalog names it
   // (and its figures: both were preloaded from the HTML by preload-route.js)
   const early = loadCore().then((c) => {
@@ -656,6 +676,7 @@ async function main() {
         `(${messageOf(coreResult.reason)}) The page needs the WebAssembly build: run “npm run build” and serve the dist/ folder.`,
       ),
     );
+    endPrerendered();
     setStatus("fatal");
     return;
   }
@@ -664,6 +685,7 @@ async function main() {
     entries = core.catalog(); // plain JSON; an entry's inputs arrive with its module (core.load)
   } catch (e) {
     root.replaceChildren(el("div", { class: "error-box", role: "alert" }, `The catalog could not be read: ${messageOf(e)}`));
+    endPrerendered();
     setStatus("fatal");
     return;
   }

@@ -24,6 +24,32 @@
     if (e.id === id && e.status === "ready") name = e.module;
   });
   files = name ? page.files[name] : [];
+  // The seed's solution saved by the build (scripts/prerender.mjs; listed in
+  // index.html only, for a bare #/<id>): shown, inert, as soon as it and the
+  // <main> are here, and marked as the first solution on screen; app.js's own
+  // view replaces it (its inputs live) as soon as the solver is in.
+  if (name && !m[2] && (page.prerendered || []).indexOf(id) >= 0) {
+    var hash = location.hash;
+    var html = null;
+    var show = function () {
+      var app = document.getElementById("app");
+      if (html === null || !app || location.hash !== hash || !app.querySelector(":scope > p.loading")) return;
+      app.innerHTML = html; // the build's own HTML (no script in it: prerender.mjs checks)
+      app.inert = true;
+      app.setAttribute("data-prerendered", id);
+      performance.mark("first-solution");
+    };
+    fetch("./prerender/" + encodeURIComponent(id) + ".html")
+      .then(function (r) {
+        return r.ok ? r.text() : null;
+      })
+      .then(function (text) {
+        html = text;
+        if (document.readyState !== "loading") show();
+      })
+      ["catch"](function () {}); // nothing shown early: the page's own view comes as before
+    document.addEventListener("readystatechange", show, { once: true });
+  }
   files.forEach(function (href) {
     if (/\.wasm$/.test(href)) {
       // fetched and compiled while the page's JS loads; core.js hands the compiled

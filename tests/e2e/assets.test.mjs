@@ -80,6 +80,8 @@ describe("the built dist/", () => {
     for (const f of served.filter((f) => f.endsWith(".html"))) {
       const html = read(f);
       for (const m of html.matchAll(/\s(?:src|href)=["']([^"']+)["']/g)) check(f, m[1]);
+      // a saved solution (scripts/prerender.mjs) is a fragment that goes into index.html: no head of its own
+      if (f.startsWith("prerender/")) continue;
       const json = /<script type="importmap">([^<]*)<\/script>/.exec(html);
       assert.ok(json, `${f} has an import map`);
       const { imports } = JSON.parse(json[1]);
@@ -157,6 +159,9 @@ describe("scripts/serve.mjs as a static host", () => {
     const rules = read("_headers");
     assert.match(rules, /^\/index\.html\n {2}Cache-Control: no-cache$/m);
     assert.match(rules, /^\/sw\.js\n {2}Cache-Control: no-cache$/m);
+    // the saved solutions (HTML, not hashed): one rule for their folder
+    assert.match(rules, /^\/prerender\/\*\n {2}Cache-Control: no-cache$/m);
+    assert.doesNotMatch(rules, /^\/prerender\/[a-z]/m);
     const app = assets["app.js"];
     const covered = new RegExp(`^/(${app.replace(/\./g, "\\.")}|vendor/\\*)\\n {2}Cache-Control: public, max-age=31536000, immutable$`, "m");
     assert.match(rules, covered);

@@ -1,0 +1,114 @@
+// The seed's solution of every example, as the page itself renders it, saved
+// at build time (issue 19: the numbers on screen before the page's JS and
+// wasm have run). Run by scripts/build.sh between the two stages of
+// scripts/assets.mjs, on the built site:
+//   node scripts/prerender.mjs [dist]
+//
+// For each ready example of the built catalog it opens index.html#/<id> in
+// headless Chromium (the page served from dist/ by scripts/serve.mjs; KaTeX
+// kept out, so formulas are the plain text the page shows until KaTeX is in;
+// service workers blocked) and waits for the page's own first solution (the
+// `solver-ready` mark of www/app.js). It saves the children of <main id="app">
+// as dist/prerender/<id>.html, with what the DOM holds and its HTML would
+// not (the inputs' values, a checkbox's state) written as attributes, and
+// what belongs to one window only (inline sizes the page measured) left out.
+// The numbers are the page's own: the same wasm, parse, solve and render code
+// computed them; nothing here formats a value.
+//
+// index.html's catalog-data block then lists the examples saved
+// ("prerendered"), which www/preload-route.js fetches for a bare #/<id> and
+// shows, inert, until the page's own view replaces it. embed.html's block is
+// left alone (the embed has its own view options).
+//
+// Without Chromium (/usr/bin/chromium, or CHROMIUM_PATH) the step says so and
+// saves nothing: the page works as before, its first numbers later.
+import fs from "node:fs";
+import path from "node:path";
+import { fileURLToPath } from "node:url";
+import { startServer } from "./serve.mjs";
+
+const CHROMIUM = process.env.CHROMIUM_PATH || "/usr/bin/chromium";
+const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking", "--disable-component-update"];
+/** The width the solutions are laid out at (the page's own CSS re-lays them at any other). */
+const VIEWPORT = { width: 1280, height: 900 };
+const DATA = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/;
+
+/**
+ * Runs in the page: the children of #app as HTML, with the inputs' state as
+ * attributes, no inline style but a canvas's size, and nothing the page set
+ * for this window only.
+ */
+function snapshot() {
+  const app = document.getElementById("app").cloneNode(true);
+  const live = document.getElementById("app");
+  const liveFields = live.querySelectorAll("input, textarea, select");
+  app.querySelectorAll("input, textarea, select").forEach((node, k) => {
+    const from = liveFields[k];
+    if (node.tagName === "TEXTAREA") node.textContent = from.value;
+    else if (node.tagName === "SELECT") [...node.options].forEach((o, i) => o.toggleAttribute("selected", i === from.selectedIndex));
+    else if (node.type === "checkbox" || node.type === "radio") node.toggleAttribute("checked", from.checked);
+    else node.setAttribute("value", from.value);
+  });
+  app.querySelectorAll("[style]").forEach((node) => {
+    if (node.tagName !== "CANVAS") node.removeAttribute("style");
+  });
+  // the print-only block names this server's address (the page's own view writes it with the reader's)
+  app.querySelectorAll(".print-only").forEach((node) => node.remove());
+  // its list is built when the drawer first opens; a closed drawer is saved closed
+  app.querySelectorAll("details").forEach((d) => d.removeAttribute("open"));
+  return app.innerHTML;
+}
+
+export async function prerender(dist) {
+  const index = path.join(dist, "index.html");
+  const html = fs.readFileSync(index, "utf8");
+  const block = DATA.exec(html);
+  if (!block) throw new Error("prerender: index.html has no catalog-data block (run scripts/assets.mjs first)");
+  const data = JSON.parse(block[1]);
+  const ids = data.entries.filter((e) => e.status === "ready").map((e) => e.id);
+  if (!fs.existsSync(CHROMIUM)) {
+    console.log(`prerender: skipped: no Chromium at ${CHROMIUM} (the page shows its numbers when its solver is in)`);
+    return [];
+  }
+  const { chromium } = await import("playwright-core");
+  const server = await startServer({ dir: dist, port: 0 });
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS });
+  const out = path.join(dist, "prerender");
+  fs.rmSync(out, { recursive: true, force: true });
+  fs.mkdirSync(out);
+  const saved = [];
+  try {
+    for (const id of ids) {
+      const context = await browser.newContext({ viewport: VIEWPORT, serviceWorkers: "block", reducedMotion: "reduce" });
+      try {
+        const page = await context.newPage();
+        const errors = [];
+        page.on("pageerror", (e) => errors.push(e.message));
+        await page.route(/\/vendor\/katex\//, (route) => route.abort());
+        await page.goto(`${server.url}index.html#/${encodeURIComponent(id)}`);
+        await page.waitForFunction(() => performance.getEntriesByName("solver-ready").length > 0 && document.body.dataset.status !== "loading", null, { timeout: 60_000 });
+        const status = await page.evaluate(() => document.body.dataset.status);
+        if (status !== "ok" || errors.length) throw new Error(`prerender: ${id}: the page says ${status} ${errors.join("; ")}`);
+        const saveHtml = await page.evaluate(snapshot);
+        if (/<script|\son\w+=/i.test(saveHtml)) throw new Error(`prerender: ${id}: the solution holds a script or an event handler`);
+        if (saveHtml.includes(new URL(server.url).host)) throw new Error(`prerender: ${id}: the solution names the build's own server (${server.url})`);
+        fs.writeFileSync(path.join(out, `${id}.html`), saveHtml);
+        saved.push(id);
+      } finally {
+        await context.close();
+      }
+    }
+  } finally {
+    await browser.close();
+    await server.close();
+  }
+  const json = JSON.stringify({ ...data, prerendered: saved });
+  fs.writeFileSync(index, html.replace(DATA, () => `<script type="application/json" id="catalog-data">${json}</script>`));
+  const kb = saved.reduce((s, id) => s + fs.statSync(path.join(out, `${id}.html`)).size, 0) / 1024;
+  console.log(`prerender: ${saved.length} solutions saved in ${path.relative(process.cwd(), out) || out}/ (${kb.toFixed(0)} KB raw in all)`);
+  return saved;
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.argv[1])) {
+  await prerender(path.resolve(process.argv[2] || "dist"));
+}
