@@ -9,11 +9,12 @@
 // kept out, so formulas are the plain text the page shows until KaTeX is in;
 // service workers blocked) and waits for the page's own first solution (the
 // `solver-ready` mark of www/app.js). It saves the children of <main id="app">
-// as dist/prerender/<id>.html, with what the DOM holds and its HTML would
-// not (the inputs' values, a checkbox's state) written as attributes, and
-// what belongs to one window only (inline sizes the page measured) left out.
+// (down to the answer line) as dist/prerender/<id>.html, with what belongs
+// to one window only (inline sizes the page measured) left out.
 // The numbers are the page's own: the same wasm, parse, solve and render code
-// computed them; nothing here formats a value.
+// computed them; nothing here formats a value. Only the part above the
+// inputs is saved: the heading, what the example is, and its answer line
+// with the printed values beside (see snapshot()).
 //
 // index.html's catalog-data block then lists the examples saved
 // ("prerendered"), which www/preload-route.js fetches for a bare #/<id> and
@@ -34,24 +35,29 @@ const VIEWPORT = { width: 1280, height: 900 };
 const DATA = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/;
 
 /**
- * Runs in the page: the children of #app as HTML, with the inputs' state as
- * attributes, no inline style but a canvas's size, and nothing the page set
- * for this window only.
+ * Runs in the page: the children of #app as HTML, down to the answer line
+ * (the example's heading, what it is, its answer with the printed values
+ * beside), with "Loading the solver…" where the inputs, steps, figure, result
+ * and notes come; no inline style, nothing the page set for this window only.
+ *
+ * Why not the whole solution: laying out and painting the whole saved page
+ * (steps, tables, notes: 20–35 KB of HTML) competes with the page's own start
+ * on the main thread: on this 2-core machine its own first solution came
+ * 50–70 ms later (interleaved cold loads of the same build with and without;
+ * docs/BENCH-LOAD.md, session 26), against about 10 ms for the answer line
+ * alone. On a phone the answer line is the first screen anyway.
  */
 function snapshot() {
   const app = document.getElementById("app").cloneNode(true);
-  const live = document.getElementById("app");
-  const liveFields = live.querySelectorAll("input, textarea, select");
-  app.querySelectorAll("input, textarea, select").forEach((node, k) => {
-    const from = liveFields[k];
-    if (node.tagName === "TEXTAREA") node.textContent = from.value;
-    else if (node.tagName === "SELECT") [...node.options].forEach((o, i) => o.toggleAttribute("selected", i === from.selectedIndex));
-    else if (node.type === "checkbox" || node.type === "radio") node.toggleAttribute("checked", from.checked);
-    else node.setAttribute("value", from.value);
-  });
-  app.querySelectorAll("[style]").forEach((node) => {
-    if (node.tagName !== "CANVAS") node.removeAttribute("style");
-  });
+  const article = app.querySelector("article.example");
+  const layout = article.querySelector(":scope > .layout");
+  while (layout.nextSibling) layout.nextSibling.remove();
+  const loading = document.createElement("p");
+  loading.className = "loading";
+  loading.textContent = "Loading the solver…";
+  layout.replaceWith(loading);
+  // (the answer line keeps its tallest height with an inline min-height: not another window's)
+  app.querySelectorAll("[style]").forEach((node) => node.removeAttribute("style"));
   // the print-only block names this server's address (the page's own view writes it with the reader's)
   app.querySelectorAll(".print-only").forEach((node) => node.remove());
   // its list is built when the drawer first opens; a closed drawer is saved closed

@@ -1,5 +1,7 @@
 // A tiny element builder. Strings always become text nodes: nothing here (or
-// anywhere in the page) parses data as HTML.
+// anywhere in the page) parses data as HTML. (The one HTML the page parses is
+// the build's own: the seed solution scripts/prerender.mjs saved from this
+// page, which preload-route.js shows until the page's view is in.)
 
 /**
  * el("p", { class: "note", "aria-live": "polite" }, "text", childNode, ...)

@@ -24,9 +24,9 @@
 // arrived is drawn at once as plain text (plainTex: the numbers readable, the
 // room taken) and marked .formula-pending; the first such formula schedules
 // KaTeX's load (script and stylesheet) for after the frame that paints those
-// numbers (scheduleMath: no request starts before the page's first-solution
-// mark), and when both are in every pending formula is typeset in place and
-// fitted. <html data-math> says where that is: "loading" (from the
+// numbers (scheduleMath: no request starts before the page's own first
+// solution, its solver-ready mark), and when both are in every pending formula
+// is typeset in place and fitted. <html data-math> says where that is: "loading" (from the
 // scheduling on), "ready" or "failed" (then the plain text stays). whenMath()
 // starts the load at once.
 //

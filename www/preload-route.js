@@ -24,10 +24,12 @@
     if (e.id === id && e.status === "ready") name = e.module;
   });
   files = name ? page.files[name] : [];
-  // The seed's solution saved by the build (scripts/prerender.mjs; listed in
-  // index.html only, for a bare #/<id>): shown, inert, as soon as it and the
-  // <main> are here, and marked as the first solution on screen; app.js's own
-  // view replaces it (its inputs live) as soon as the solver is in.
+  // The top of the seed's solution as the page rendered it at build time
+  // (scripts/prerender.mjs: the heading and the answer line with the printed
+  // values, then "Loading the solver…"; listed in index.html only, for a bare
+  // #/<id>): shown, inert, as soon as it and the <main> are here, and marked
+  // as the first solution on screen; app.js's own view replaces it (the whole
+  // solution, its inputs live) as soon as the solver is in.
   if (name && !m[2] && (page.prerendered || []).indexOf(id) >= 0) {
     var hash = location.hash;
     var html = null;
