@@ -1,25 +1,26 @@
-// The seed's solution of every example, as the page itself renders it, saved
-// at build time (issue 19: the numbers on screen before the page's JS and
-// wasm have run). Run by scripts/build.sh between the two stages of
+// The top of every example's seed solution, as the page itself renders it,
+// saved at build time (issue 19: the numbers on screen before the page's JS
+// and wasm have run). Run by scripts/build.sh between the two stages of
 // scripts/assets.mjs, on the built site:
 //   node scripts/prerender.mjs [dist]
 //
-// For each ready example of the built catalog it opens index.html#/<id> in
-// headless Chromium (the page served from dist/ by scripts/serve.mjs; KaTeX
-// kept out, so formulas are the plain text the page shows until KaTeX is in;
-// service workers blocked) and waits for the page's own first solution (the
-// `solver-ready` mark of www/app.js). It saves the children of <main id="app">
-// (down to the answer line) as dist/prerender/<id>.html, with what belongs
-// to one window only (inline sizes the page measured) left out.
-// The numbers are the page's own: the same wasm, parse, solve and render code
-// computed them; nothing here formats a value. Only the part above the
-// inputs is saved: the heading, what the example is, and its answer line
-// with the printed values beside (see snapshot()).
+// For each ready example of the built catalog it opens index.html#/<id> and
+// embed.html#/<id> in headless Chromium (the page served from dist/ by
+// scripts/serve.mjs; KaTeX kept out; service workers blocked) and waits for
+// the page's own first solution (the `solver-ready` mark of www/app.js). It
+// saves the children of <main id="app"> down to the answer line (the
+// heading, what the example is, its answer with the printed values beside),
+// then "Loading the solver…", as dist/prerender/<id>.html and
+// dist/prerender/embed/<id>.html; what belongs to one window only (inline
+// sizes the page measured) is left out. The numbers are the page's own: the
+// same wasm, parse, solve and render code computed them; nothing here
+// formats a value.
 //
-// index.html's catalog-data block then lists the examples saved
-// ("prerendered"), which www/preload-route.js fetches for a bare #/<id> and
-// shows, inert, until the page's own view replaces it. embed.html's block is
-// left alone (the embed has its own view options).
+// Each page's catalog-data block then says where its saved parts are and
+// which ("prerendered": { folder, ids, options }), and www/preload-route.js
+// fetches the example's for an address with no inputs (view options only:
+// `options`, the keys of www/embed-options.js) and shows it, inert, until the
+// page's own view replaces it.
 //
 // Without Chromium (/usr/bin/chromium, or CHROMIUM_PATH) the step says so and
 // saves nothing: the page works as before, its first numbers later.
@@ -65,54 +66,71 @@ function snapshot() {
   return app.innerHTML;
 }
 
+/**
+ * The two pages and where their saved parts go: the embed's differs (its
+ * heading is the page's h1, no "← Catalog"), and is the same for any of its
+ * view options (they show or hide the parts below the answer line).
+ */
+const PAGES = [
+  { file: "index.html", folder: "prerender" },
+  { file: "embed.html", folder: "prerender/embed" },
+];
+
 export async function prerender(dist) {
-  const index = path.join(dist, "index.html");
-  const html = fs.readFileSync(index, "utf8");
-  const block = DATA.exec(html);
-  if (!block) throw new Error("prerender: index.html has no catalog-data block (run scripts/assets.mjs first)");
-  const data = JSON.parse(block[1]);
-  const ids = data.entries.filter((e) => e.status === "ready").map((e) => e.id);
+  const pages = PAGES.map((p) => {
+    const html = fs.readFileSync(path.join(dist, p.file), "utf8");
+    const block = DATA.exec(html);
+    if (!block) throw new Error(`prerender: ${p.file} has no catalog-data block (run scripts/assets.mjs first)`);
+    return { ...p, html, data: JSON.parse(block[1]), saved: [] };
+  });
+  const ids = pages[0].data.entries.filter((e) => e.status === "ready").map((e) => e.id);
   if (!fs.existsSync(CHROMIUM)) {
     console.log(`prerender: skipped: no Chromium at ${CHROMIUM} (the page shows its numbers when its solver is in)`);
     return [];
   }
   const { chromium } = await import("playwright-core");
+  // the view options an address may carry beside an example's inputs (www/embed-options.js):
+  // with only these, preload-route.js still shows the saved part
+  const { OPTION_KEYS } = await import(new URL("../www/embed-options.js", import.meta.url).href);
   const server = await startServer({ dir: dist, port: 0 });
   const browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS });
-  const out = path.join(dist, "prerender");
-  fs.rmSync(out, { recursive: true, force: true });
-  fs.mkdirSync(out);
-  const saved = [];
+  fs.rmSync(path.join(dist, "prerender"), { recursive: true, force: true });
+  for (const p of pages) fs.mkdirSync(path.join(dist, p.folder), { recursive: true });
   try {
-    for (const id of ids) {
-      const context = await browser.newContext({ viewport: VIEWPORT, serviceWorkers: "block", reducedMotion: "reduce" });
-      try {
-        const page = await context.newPage();
-        const errors = [];
-        page.on("pageerror", (e) => errors.push(e.message));
-        await page.route(/\/vendor\/katex\//, (route) => route.abort());
-        await page.goto(`${server.url}index.html#/${encodeURIComponent(id)}`);
-        await page.waitForFunction(() => performance.getEntriesByName("solver-ready").length > 0 && document.body.dataset.status !== "loading", null, { timeout: 60_000 });
-        const status = await page.evaluate(() => document.body.dataset.status);
-        if (status !== "ok" || errors.length) throw new Error(`prerender: ${id}: the page says ${status} ${errors.join("; ")}`);
-        const saveHtml = await page.evaluate(snapshot);
-        if (/<script|\son\w+=/i.test(saveHtml)) throw new Error(`prerender: ${id}: the solution holds a script or an event handler`);
-        if (saveHtml.includes(new URL(server.url).host)) throw new Error(`prerender: ${id}: the solution names the build's own server (${server.url})`);
-        fs.writeFileSync(path.join(out, `${id}.html`), saveHtml);
-        saved.push(id);
-      } finally {
-        await context.close();
+    for (const p of pages) {
+      for (const id of ids) {
+        const context = await browser.newContext({ viewport: VIEWPORT, serviceWorkers: "block", reducedMotion: "reduce" });
+        try {
+          const page = await context.newPage();
+          const errors = [];
+          page.on("pageerror", (e) => errors.push(e.message));
+          await page.route(/\/vendor\/katex\//, (route) => route.abort());
+          await page.goto(`${server.url}${p.file}#/${encodeURIComponent(id)}`);
+          await page.waitForFunction(() => performance.getEntriesByName("solver-ready").length > 0 && document.body.dataset.status !== "loading", null, { timeout: 60_000 });
+          const status = await page.evaluate(() => document.body.dataset.status);
+          if (status !== "ok" || errors.length) throw new Error(`prerender: ${p.file}#/${id}: the page says ${status} ${errors.join("; ")}`);
+          const saveHtml = await page.evaluate(snapshot);
+          if (/<script|\son\w+=/i.test(saveHtml)) throw new Error(`prerender: ${p.file}#/${id}: the solution holds a script or an event handler`);
+          if (saveHtml.includes(new URL(server.url).host)) throw new Error(`prerender: ${p.file}#/${id}: the solution names the build's own server (${server.url})`);
+          fs.writeFileSync(path.join(dist, p.folder, `${id}.html`), saveHtml);
+          p.saved.push(id);
+        } finally {
+          await context.close();
+        }
       }
     }
   } finally {
     await browser.close();
     await server.close();
   }
-  const json = JSON.stringify({ ...data, prerendered: saved });
-  fs.writeFileSync(index, html.replace(DATA, () => `<script type="application/json" id="catalog-data">${json}</script>`));
-  const kb = saved.reduce((s, id) => s + fs.statSync(path.join(out, `${id}.html`)).size, 0) / 1024;
-  console.log(`prerender: ${saved.length} solutions saved in ${path.relative(process.cwd(), out) || out}/ (${kb.toFixed(0)} KB raw in all)`);
-  return saved;
+  let kb = 0;
+  for (const p of pages) {
+    const json = JSON.stringify({ ...p.data, prerendered: { folder: `./${p.folder}/`, ids: p.saved, options: OPTION_KEYS } });
+    fs.writeFileSync(path.join(dist, p.file), p.html.replace(DATA, () => `<script type="application/json" id="catalog-data">${json}</script>`));
+    kb += p.saved.reduce((s, id) => s + fs.statSync(path.join(dist, p.folder, `${id}.html`)).size, 0) / 1024;
+  }
+  console.log(`prerender: ${pages.map((p) => `${p.saved.length} answers for ${p.file} in ${p.folder}/`).join(", ")} (${kb.toFixed(0)} KB raw in all)`);
+  return pages.map((p) => p.saved);
 }
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === path.resolve(process.argv[1])) {

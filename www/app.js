@@ -594,8 +594,9 @@ async function route({ focus = false } = {}) {
   const hash = location.hash;
   const { id, params: allParams } = parseHash(hash);
   const params = embedPage.takeOptions(allParams); // theme, hide, lock …: embed-options.js
-  // the saved solution is the seed's: any other address (or parameter) replaces it
-  if (root.dataset.prerendered !== id || allParams.length) endPrerendered({ loading: true });
+  // the saved part is the seed's: another example, or any input in the address, replaces it
+  // (view options do not: preload-route.js shows it with them)
+  if (root.dataset.prerendered !== id || params.length) endPrerendered({ loading: true });
   if (id !== "lab") labModule?.closeLab();
   if (id === "lab" && mode === "full") {
     await showLab(params);

@@ -26,11 +26,25 @@
   files = name ? page.files[name] : [];
   // The top of the seed's solution as the page rendered it at build time
   // (scripts/prerender.mjs: the heading and the answer line with the printed
-  // values, then "Loading the solver…"; listed in index.html only, for a bare
-  // #/<id>): shown, inert, as soon as it and the <main> are here, and marked
-  // as the first solution on screen; app.js's own view replaces it (the whole
-  // solution, its inputs live) as soon as the solver is in.
-  if (name && !m[2] && (page.prerendered || []).indexOf(id) >= 0) {
+  // values, then "Loading the solver…"; each page's own, listed in its data
+  // block as { folder, ids, options }), for an address with no inputs (view
+  // options only): shown, inert, as soon as it and the <main> are here, and
+  // marked as the first solution on screen; app.js's own view replaces it
+  // (the whole solution, its inputs live) as soon as the solver is in.
+  var saved = page.prerendered;
+  var onlyOptions = function (query) {
+    try {
+      return query
+        .slice(1)
+        .split("&")
+        .every(function (kv) {
+          return !kv || saved.options.indexOf(decodeURIComponent(kv.split("=")[0])) >= 0;
+        });
+    } catch (e) {
+      return false; // a malformed address: the page says so itself
+    }
+  };
+  if (name && saved && saved.ids.indexOf(id) >= 0 && onlyOptions(m[2] || "")) {
     var hash = location.hash;
     var html = null;
     var show = function () {
@@ -41,7 +55,7 @@
       app.setAttribute("data-prerendered", id);
       performance.mark("first-solution");
     };
-    fetch("./prerender/" + encodeURIComponent(id) + ".html")
+    fetch(saved.folder + encodeURIComponent(id) + ".html")
       .then(function (r) {
         return r.ok ? r.text() : null;
       })

@@ -1,20 +1,24 @@
-// The seed's solution saved by the build (scripts/prerender.mjs) and shown
-// by preload-route.js before the page's JS and wasm have run (issue 19):
-// - dist/prerender/<id>.html for every ready example, listed in index.html's
-//   catalog-data (not embed.html's), with no script, no build-server address;
-// - a cold load of a bare #/<id> shows it, inert, marked `first-solution`,
+// The top of the seed's solution saved by the build (scripts/prerender.mjs)
+// and shown by preload-route.js before the page's JS and wasm have run
+// (issue 19):
+// - dist/prerender/<id>.html (index.html) and dist/prerender/embed/<id>.html
+//   (embed.html) for every ready example, listed in each page's
+//   catalog-data, with no script, no build-server address;
+// - a cold load of #/<id> with no inputs (view options only) shows it,
+//   inert, marked `first-solution`,
 //   while the solver loads (its wasm held back here): the example's heading
 //   and its answer line, reading exactly as the page's own view of the seed
 //   does once the solver is in — the saved file is not a second renderer's
 //   output but this page's;
 // - the page's own view then replaces it, its inputs live (`solver-ready`);
-// - a what-if address, embed.html, a move to another example before the
-//   solver is in, and a solver that fails to load each end or skip it.
+// - an address with inputs, practice and home skip it; a move to another
+//   example before the solver is in, and a solver that fails to load, end it.
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
 import { DIST, TEST_TIMEOUT, open, settled, start } from "./harness.mjs";
+import { OPTION_KEYS } from "../../www/embed-options.js";
 
 const ASSETS = JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
 const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, ASSETS["catalog.json"] ?? "catalog.json"), "utf8"));
@@ -50,6 +54,20 @@ async function held(hash, file = "index.html") {
   return { context, page, log, release };
 }
 
+/** <main id="app">'s state: saved part or not, inert or not, the two marks (how many), the examples in it, the status. */
+function appState(page) {
+  return page.evaluate(() => {
+    const app = document.getElementById("app");
+    return {
+      prerendered: app.getAttribute("data-prerendered"),
+      inert: app.inert,
+      marks: ["first-solution", "solver-ready"].map((n) => performance.getEntriesByName(n).length),
+      examples: [...app.querySelectorAll("article.example")].map((a) => a.dataset.id),
+      status: document.body.dataset.status,
+    };
+  });
+}
+
 /** The text of each saved part shown in #app (innerText: what a reader sees) and the answer line's markup. */
 function partsText(page) {
   return page.evaluate((parts) => {
@@ -59,60 +77,63 @@ function partsText(page) {
   }, PARTS);
 }
 
+/** Each page, where its saved parts are, and an address with view options only. */
+const PAGES = [
+  { file: "index.html", folder: "./prerender/", options: "", heading: "h2" },
+  { file: "embed.html", folder: "./prerender/embed/", options: "?id=e1&theme=dark&steps=collapsed", heading: "h1" },
+];
+
 describe("the saved solutions in dist/", () => {
-  test("one per ready example, listed in index.html's catalog-data only, no script, no build-server address", () => {
-    const listed = dataOf("index.html").prerendered;
-    assert.deepEqual([...listed].sort(), [...READY].sort());
-    assert.equal(dataOf("embed.html").prerendered, undefined, "the embed has its own view options: no saved solution");
-    for (const id of READY) {
-      const file = path.join(DIST, "prerender", `${id}.html`);
-      const html = fs.readFileSync(file, "utf8");
-      assert.match(html, new RegExp(`^<article class="example" data-id="${id}">`), id);
-      assert.doesNotMatch(html, /<script|\son\w+=|127\.0\.0\.1|localhost/i, id);
-      assert.match(html, /class="answer-line"/, id);
-      assert.ok(fs.existsSync(`${file}.gz`) && fs.existsSync(`${file}.br`), `${id}: .gz and .br`);
+  test("one per ready example and page, listed in the page's catalog-data, no script, no build-server address", () => {
+    for (const p of PAGES) {
+      const saved = dataOf(p.file).prerendered;
+      assert.equal(saved.folder, p.folder);
+      assert.deepEqual([...saved.ids].sort(), [...READY].sort(), p.file);
+      assert.deepEqual(saved.options, [...OPTION_KEYS], `${p.file}: the view options of www/embed-options.js`);
+      for (const id of READY) {
+        const file = path.join(DIST, p.folder, `${id}.html`);
+        const html = fs.readFileSync(file, "utf8");
+        assert.match(html, new RegExp(`^<article class="example" data-id="${id}">`), id);
+        assert.match(html, new RegExp(`<${p.heading} id="example-title"`), `${p.file} ${id}: the page's own heading`);
+        assert.equal(html.includes('class="crumbs"'), p.file === "index.html", `${p.file} ${id}: crumbs on the full page only`);
+        assert.doesNotMatch(html, /<script|\son\w+=|127\.0\.0\.1|localhost/i, id);
+        assert.match(html, /class="answer-line"/, id);
+        assert.ok(fs.existsSync(`${file}.gz`) && fs.existsSync(`${file}.br`), `${id}: .gz and .br`);
+      }
     }
     // cached by the offline copy when first used, not at install (sw-manifest.mjs)
     const sw = fs.readFileSync(path.join(DIST, "sw.js"), "utf8");
     const build = JSON.parse(/const BUILD = (\{.*\});/.exec(sw)[1]);
-    assert.ok(build.lazy.includes("prerender/gsd.html"));
+    assert.ok(build.lazy.includes("prerender/gsd.html") && build.lazy.includes("prerender/embed/gsd.html"));
     assert.ok(!build.files.some((f) => f.startsWith("prerender/")));
   });
 });
 
-describe("a cold load of a bare #/<id>", () => {
-  for (const id of READY) {
-    test(`${id}: the saved solution is shown, inert, while the solver loads, and reads as the page's own view`, { timeout: TEST_TIMEOUT }, async () => {
-      const { context, page, log, release } = await held(`#/${id}`);
-      try {
-        await page.waitForSelector(`#app[data-prerendered="${id}"] article.example[data-id="${id}"]`);
-        const early = await page.evaluate(() => ({
-          inert: document.getElementById("app").inert,
-          marks: ["first-solution", "solver-ready"].map((n) => performance.getEntriesByName(n).length),
-          status: document.body.dataset.status,
-        }));
-        assert.deepEqual(early, { inert: true, marks: [1, 0], status: "loading" });
-        const saved = await partsText(page);
-        assert.ok(saved[".answer-line"].trim().length > 0, `${id}: the answer line`);
-        // the rest comes with the solver
-        assert.equal(await page.locator("#app .layout").count(), 0);
-        assert.equal(await page.locator("#app p.loading").innerText(), "Loading the solver…");
-        await release();
-        assert.equal(await settled(page), "ok");
-        const own = await partsText(page);
-        assert.deepEqual(own, saved, `${id}: the saved solution and the page's own view of the seed differ`);
-        const after = await page.evaluate(() => ({
-          prerendered: document.getElementById("app").hasAttribute("data-prerendered"),
-          inert: document.getElementById("app").inert,
-          marks: ["first-solution", "solver-ready"].map((n) => performance.getEntriesByName(n).length),
-        }));
-        assert.deepEqual(after, { prerendered: false, inert: false, marks: [1, 1] });
-        assert.equal(log.requests.filter((u) => u.endsWith(`/prerender/${id}.html`)).length, 1);
-        assert.deepEqual(log.pageErrors, []);
-      } finally {
-        await context.close();
-      }
-    });
+describe("a cold load of #/<id> with no inputs", () => {
+  for (const p of PAGES) {
+    for (const id of READY) {
+      test(`${p.file}#/${id}${p.options}: the saved part is shown, inert, while the solver loads, and reads as the page's own view`, { timeout: TEST_TIMEOUT }, async () => {
+        const { context, page, log, release } = await held(`#/${id}${p.options}`, p.file);
+        try {
+          await page.waitForSelector(`#app[data-prerendered="${id}"] article.example[data-id="${id}"]`);
+          assert.deepEqual(await appState(page), { prerendered: id, inert: true, marks: [1, 0], examples: [id], status: "loading" });
+          const saved = await partsText(page);
+          assert.ok(saved[".answer-line"].trim().length > 0, `${id}: the answer line`);
+          // the rest comes with the solver
+          assert.equal(await page.locator("#app .layout").count(), 0);
+          assert.equal(await page.locator("#app p.loading").innerText(), "Loading the solver…");
+          await release();
+          assert.equal(await settled(page), "ok");
+          const own = await partsText(page);
+          assert.deepEqual(own, saved, `${id}: the saved part and the page's own view of the seed differ`);
+          assert.deepEqual(await appState(page), { prerendered: null, inert: false, marks: [1, 1], examples: [id], status: "ok" });
+          assert.equal(log.requests.filter((u) => u.endsWith(`${p.folder.slice(1)}${id}.html`)).length, 1);
+          assert.deepEqual(log.pageErrors, []);
+        } finally {
+          await context.close();
+        }
+      });
+    }
   }
 
   test("it takes no click until the page's own view is in (inert); then the inputs are live", { timeout: TEST_TIMEOUT }, async () => {
@@ -138,18 +159,20 @@ describe("a cold load of a bare #/<id>", () => {
 });
 
 describe("where no saved solution is shown", () => {
-  test("a what-if address, and embed.html, do not fetch one", { timeout: TEST_TIMEOUT }, async () => {
+  test("an address with inputs, practice and home do not fetch one", { timeout: TEST_TIMEOUT }, async () => {
     for (const [file, hash] of [
       ["index.html", "#/gsd?flying_height_m=2400"],
-      ["embed.html", "#/gsd"],
+      ["embed.html", "#/gsd?id=e1&flying_height_m=2400"],
+      ["index.html", "#/gsd?practice"],
       ["index.html", "#/"],
     ]) {
       const { context, page, log } = await open(env.browser);
       try {
         await page.goto(`${env.url}${file}${hash}`);
-        assert.ok(["ok", "home"].includes(await settled(page)), `${file}${hash}`);
+        await page.waitForFunction(() => ["ok", "home", "practice"].includes(document.body.dataset.status), null, { timeout: 15_000 });
         assert.deepEqual(log.requests.filter((u) => u.includes("/prerender/")), [], `${file}${hash}`);
-        assert.equal(await page.evaluate(() => document.getElementById("app")?.inert ?? false), false);
+        const state = await appState(page);
+        assert.deepEqual([state.prerendered, state.inert], [null, false], `${file}${hash}`);
       } finally {
         await context.close();
       }
@@ -166,7 +189,7 @@ describe("where no saved solution is shown", () => {
       await release();
       assert.equal(await settled(page), "ok");
       await page.waitForSelector('article.example[data-id="utm"]');
-      assert.deepEqual(await page.evaluate(() => [document.getElementById("app").inert, document.getElementById("app").hasAttribute("data-prerendered"), document.querySelectorAll("article.example").length]), [false, false, 1]);
+      assert.deepEqual(await appState(page), { prerendered: null, inert: false, marks: [1, 1], examples: ["utm"], status: "ok" });
     } finally {
       await context.close();
     }
@@ -184,7 +207,7 @@ describe("where no saved solution is shown", () => {
       refuse = true;
       for (const r of waiting.splice(0)) await r.abort();
       assert.equal(await settled(page), "message");
-      assert.deepEqual(await page.evaluate(() => [document.getElementById("app").inert, document.getElementById("app").hasAttribute("data-prerendered"), Boolean(document.querySelector("article.example"))]), [false, false, false]);
+      assert.deepEqual(await appState(page), { prerendered: null, inert: false, marks: [1, 0], examples: [], status: "message" });
       await page.getByRole("link", { name: "← All examples" }).click();
       assert.equal(await settled(page), "home");
     } finally {
