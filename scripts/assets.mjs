@@ -388,9 +388,23 @@ function catalogData(dist, map, rel, aliases) {
     if (map.has(wanted[2])) wanted.push(...staticImports(dist, wanted[2], map).filter((m) => !aliases.has(m) && m !== wanted[2]));
     files[e.module] = [...new Set(wanted)].filter((w) => map.has(w)).map(rel);
   }
-  const json = JSON.stringify({ entries, files });
-  if (/<\/script|<!--/i.test(json)) throw new Error("assets: catalog-data: the catalog would end its script element");
+  return dataBlock({ entries, files });
+}
+
+/** The data block of a built page: its element, and its JSON as group 1. */
+export const DATA_BLOCK = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/;
+
+/** The data block for `data` (scripts/prerender.mjs adds to it, the tests read it with DATA_BLOCK). */
+export function dataBlock(data) {
+  const json = JSON.stringify(data);
+  if (/<\/script|<!--/i.test(json)) throw new Error("assets: catalog-data: the data would end its script element");
   return `<script type="application/json" id="catalog-data">${json}</script>`;
+}
+
+/** The data of a built page's block (`html`: the page's text), or null when it has none. */
+export function readDataBlock(html) {
+  const m = DATA_BLOCK.exec(html);
+  return m ? JSON.parse(m[1]) : null;
 }
 
 function buildHtml(dist, f, source, map, files, aliases = new Map()) {

@@ -27,13 +27,13 @@
 import fs from "node:fs";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
+import { DATA_BLOCK, dataBlock, readDataBlock } from "./assets.mjs";
 import { startServer } from "./serve.mjs";
 
 const CHROMIUM = process.env.CHROMIUM_PATH || "/usr/bin/chromium";
 const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking", "--disable-component-update"];
 /** The width the solutions are laid out at (the page's own CSS re-lays them at any other). */
 const VIEWPORT = { width: 1280, height: 900 };
-const DATA = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/;
 
 /**
  * Runs in the page: the children of #app as HTML, down to the answer line
@@ -79,9 +79,9 @@ const PAGES = [
 export async function prerender(dist) {
   const pages = PAGES.map((p) => {
     const html = fs.readFileSync(path.join(dist, p.file), "utf8");
-    const block = DATA.exec(html);
-    if (!block) throw new Error(`prerender: ${p.file} has no catalog-data block (run scripts/assets.mjs first)`);
-    return { ...p, html, data: JSON.parse(block[1]), saved: [] };
+    const data = readDataBlock(html);
+    if (!data) throw new Error(`prerender: ${p.file} has no catalog-data block (run scripts/assets.mjs first)`);
+    return { ...p, html, data, saved: [] };
   });
   const ids = pages[0].data.entries.filter((e) => e.status === "ready").map((e) => e.id);
   if (!fs.existsSync(CHROMIUM)) {
@@ -125,8 +125,8 @@ export async function prerender(dist) {
   }
   let kb = 0;
   for (const p of pages) {
-    const json = JSON.stringify({ ...p.data, prerendered: { folder: `./${p.folder}/`, ids: p.saved, options: OPTION_KEYS } });
-    fs.writeFileSync(path.join(dist, p.file), p.html.replace(DATA, () => `<script type="application/json" id="catalog-data">${json}</script>`));
+    const block = dataBlock({ ...p.data, prerendered: { folder: `./${p.folder}/`, ids: p.saved, options: OPTION_KEYS } });
+    fs.writeFileSync(path.join(dist, p.file), p.html.replace(DATA_BLOCK, () => block));
     kb += p.saved.reduce((s, id) => s + fs.statSync(path.join(dist, p.folder, `${id}.html`)).size, 0) / 1024;
   }
   console.log(`prerender: ${pages.map((p) => `${p.saved.length} answers for ${p.file} in ${p.folder}/`).join(", ")} (${kb.toFixed(0)} KB raw in all)`);

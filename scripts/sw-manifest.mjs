@@ -37,9 +37,9 @@ if (!marker.test(source)) throw new Error("sw-manifest: the BUILD line of sw.js 
 // example works offline after the first visit). Cached when first used, not on
 // every first visit: the lab (its wasm and sample photos, about 1 MB),
 // pkg/all* (every example again plus practice, about 310 KB gzipped; loaded
-// by practice mode and the one-package API), and the seed solutions the build
-// saved (prerender/: about 145 KB gzipped in all, each shown only while its
-// example's module loads, which the offline copy serves at once anyway).
+// by practice mode and the one-package API), and the seed answers the build
+// saved (prerender/: 52 files, about 33 KB gzipped in all, each shown only
+// while its example's module loads, which the offline copy serves at once).
 const lazy = (f) => f.startsWith("lab/") || f.startsWith("prerender/") || /^pkg\/all(_bg)?(\.[0-9a-f]{8})?\.(wasm|js)$/.test(f);
 const line = `const BUILD = ${JSON.stringify({ version, files: ["./", ...files.filter((f) => !lazy(f))], lazy: files.filter(lazy) })};`;
 fs.writeFileSync(sw, source.replace(marker, () => line));

@@ -19,6 +19,7 @@ import fs from "node:fs";
 import path from "node:path";
 import { pathToFileURL } from "node:url";
 import { DIST, TEST_TIMEOUT, exact, open, start, visit } from "./harness.mjs";
+import { readDataBlock } from "../../scripts/assets.mjs";
 
 // the build names files by their content (scripts/assets.mjs): dist/assets.json maps
 // a logical name to the file, and `logical` turns a requested path back
@@ -59,9 +60,8 @@ describe("the catalog as data", () => {
   test("index.html and embed.html carry catalog.json itself, and each topic's files under their built names", () => {
     for (const page of ["index.html", "embed.html"]) {
       const html = fs.readFileSync(path.join(DIST, page), "utf8");
-      const m = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/.exec(html);
-      assert.ok(m, `${page} has the catalog-data block`);
-      const data = JSON.parse(m[1]);
+      const data = readDataBlock(html);
+      assert.ok(data, `${page} has the catalog-data block`);
       // the import map precedes every script: the preloaded figures resolve ../format.js through it
       assert.equal(html.indexOf("<script"), html.indexOf('<script type="importmap">'), `${page}: the import map is the first script`);
       assert.deepEqual(data.entries, CATALOG, page);

@@ -19,12 +19,12 @@ import fs from "node:fs";
 import path from "node:path";
 import { DIST, TEST_TIMEOUT, open, settled, start } from "./harness.mjs";
 import { OPTION_KEYS } from "../../www/embed-options.js";
+import { readDataBlock } from "../../scripts/assets.mjs";
 
 const ASSETS = JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
 const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, ASSETS["catalog.json"] ?? "catalog.json"), "utf8"));
 const READY = CATALOG.filter((e) => e.status === "ready").map((e) => e.id);
-const DATA = /<script type="application\/json" id="catalog-data">([\s\S]*?)<\/script>/;
-const dataOf = (page) => JSON.parse(DATA.exec(fs.readFileSync(path.join(DIST, page), "utf8"))[1]);
+const dataOf = (page) => readDataBlock(fs.readFileSync(path.join(DIST, page), "utf8"));
 const WASM = /_bg\.[0-9a-f]{8}\.wasm$/;
 const PARTS = [".crumbs", ".example-head", ".answer-line"];
 

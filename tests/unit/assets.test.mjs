@@ -5,7 +5,7 @@ import assert from "node:assert/strict";
 import crypto from "node:crypto";
 import fs from "node:fs";
 import path from "node:path";
-import { contentHash, fontFaces, hashAssets, jsRefs, minifyAll, minifyCss } from "../../scripts/assets.mjs";
+import { contentHash, dataBlock, fontFaces, hashAssets, headersFile, jsRefs, minifyAll, minifyCss, readDataBlock } from "../../scripts/assets.mjs";
 import { plainTex } from "../../www/math.js";
 import { site } from "./site.mjs";
 
@@ -148,6 +148,26 @@ describe("step 0: minified JS and CSS", () => {
     assert.equal(read(dir, "vendor/v.js"), source["vendor/v.js"]);
     assert.equal(read(dir, "sw.js"), source["sw.js"]);
     assert.equal(read(dir, "s.css"), ".a{color:red}\n");
+  });
+});
+
+describe("assets.mjs: the page's data block, and cache rules by folder", () => {
+  it("writes data that reads back the same, inside a page, and refuses what would end its element", () => {
+    const data = { entries: [{ id: "gsd" }], prerendered: { folder: "./prerender/", ids: ["gsd"], options: ["theme"] } };
+    const page = `<head>${dataBlock(data)}<script type="importmap">{}</script></head>`;
+    assert.deepEqual(readDataBlock(page), data);
+    assert.equal(readDataBlock("<head></head>"), null);
+    assert.throws(() => dataBlock({ title: "</script><script>x()" }), /would end its script element/);
+  });
+
+  it("gives a folder with no hashed file one no-cache rule, and one with only hashed files one immutable rule", () => {
+    const dir = site({ "index.html": "", "prerender/gsd.html": "", "prerender/embed/gsd.html": "", "pkg/a.12345678.js": "", "b.js": "" });
+    headersFile(dir, new Map([["pkg/a.js", "pkg/a.12345678.js"]]));
+    const text = read(dir, "_headers");
+    assert.match(text, /^\/prerender\/\*\n {2}Cache-Control: no-cache$/m);
+    assert.doesNotMatch(text, /^\/prerender\/(gsd|embed)/m);
+    assert.match(text, /^\/pkg\/\*\n {2}Cache-Control: public, max-age=31536000, immutable$/m);
+    assert.match(text, /^\/b\.js\n {2}Cache-Control: no-cache$/m);
   });
 });
 
