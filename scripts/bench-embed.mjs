@@ -8,7 +8,7 @@
 //    answer the build saved, scripts/prerender.mjs, where it is shown),
 //    both on one clock (each document's timeOrigin + its own time).
 //   node scripts/bench-embed.mjs [--runs 5] [--example gsd]
-import { chromium } from "playwright-core";
+import { launchChromium } from "./chromium.mjs";
 import fs from "node:fs";
 import http from "node:http";
 import zlib from "node:zlib";
@@ -44,10 +44,7 @@ const hostPage = `<!doctype html><html lang="en"><head><meta charset="utf-8"><ti
 const host = http.createServer((req, res) => res.writeHead(200, { "content-type": "text/html; charset=utf-8" }).end(hostPage));
 await new Promise((r) => host.listen(0, "127.0.0.1", r));
 const hostUrl = `http://127.0.0.1:${host.address().port}/`;
-const browser = await chromium.launch({
-  executablePath: "/usr/bin/chromium",
-  args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync"],
-});
+const browser = await launchChromium();
 
 async function once(page) {
   await page.goto(hostUrl);

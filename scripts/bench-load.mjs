@@ -26,7 +26,7 @@
 //   node scripts/bench-load.mjs [--quick] [--example ID ...] [--runs 9]
 //     [--throttled-runs 5] [--throttled topics|all|none] [--redraws 15]
 //     [--no-redraw] [--json FILE]
-import { chromium } from "playwright-core";
+import { launchChromium } from "./chromium.mjs";
 import fs from "node:fs";
 import os from "node:os";
 import path from "node:path";
@@ -91,11 +91,7 @@ fs.writeFileSync(
 
 const server = await startServer({ dir: DIST, port: 0 });
 const floorServer = await startServer({ dir: floorDir, port: 0 });
-const browser = await chromium.launch({
-  executablePath: "/usr/bin/chromium",
-  args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-    "--disable-background-networking", "--disable-component-update", "--disable-sync"],
-});
+const browser = await launchChromium();
 const DESKTOP = { viewport: { width: 1280, height: 900 }, serviceWorkers: "block" };
 const PHONE = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true, serviceWorkers: "block" };
 const THROTTLE = { cpu: 4, latency: 150, down: 1.6e6 / 8, up: 750e3 / 8 };

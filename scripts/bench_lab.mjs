@@ -11,7 +11,7 @@
 // (+ LSM), resampling, boundary, fiducials (on the scanned frame).
 import fs from "node:fs";
 import zlib from "node:zlib";
-import { chromium } from "playwright-core";
+import { launchChromium } from "./chromium.mjs";
 import { startServer } from "./serve.mjs";
 
 const N = Number(process.env.BENCH_SIZE || 2048);
@@ -111,10 +111,7 @@ for (const [name, type, a] of OPS) {
 
 // ------------------------------------------------------------------ Chromium worker
 const server = await startServer({ dir: "dist", port: 0 });
-const browser = await chromium.launch({
-  executablePath: "/usr/bin/chromium",
-  args: ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync"],
-});
+const browser = await launchChromium();
 const chrome = {};
 try {
   const page = await (await browser.newContext()).newPage();

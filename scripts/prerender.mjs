@@ -28,10 +28,9 @@ import fs from "node:fs";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
 import { DATA_BLOCK, dataBlock, readDataBlock } from "./assets.mjs";
+import { CHROMIUM, launchChromium } from "./chromium.mjs";
 import { startServer } from "./serve.mjs";
 
-const CHROMIUM = process.env.CHROMIUM_PATH || "/usr/bin/chromium";
-const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking", "--disable-component-update"];
 /** The width the solutions are laid out at (the page's own CSS re-lays them at any other). */
 const VIEWPORT = { width: 1280, height: 900 };
 
@@ -88,12 +87,11 @@ export async function prerender(dist) {
     console.log(`prerender: skipped: no Chromium at ${CHROMIUM} (the page shows its numbers when its solver is in)`);
     return [];
   }
-  const { chromium } = await import("playwright-core");
   // the view options an address may carry beside an example's inputs (www/embed-options.js):
   // with only these, preload-route.js still shows the saved part
   const { OPTION_KEYS } = await import(new URL("../www/embed-options.js", import.meta.url).href);
   const server = await startServer({ dir: dist, port: 0 });
-  const browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS });
+  const browser = await launchChromium();
   fs.rmSync(path.join(dist, "prerender"), { recursive: true, force: true });
   for (const p of pages) fs.mkdirSync(path.join(dist, p.folder), { recursive: true });
   try {

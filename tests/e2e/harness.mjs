@@ -5,22 +5,12 @@
 import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
-import { chromium } from "playwright-core";
+import { launchChromium } from "../../scripts/chromium.mjs";
 import { startServer } from "../../scripts/serve.mjs";
 
 /** The built site; E2E_DIST points elsewhere (e.g. a hand-assembled copy). */
 export const DIST = process.env.E2E_DIST || "dist";
-export const CHROMIUM = process.env.CHROMIUM_PATH || "/usr/bin/chromium";
-export const CHROMIUM_ARGS = [
-  "--headless",
-  "--no-sandbox",
-  "--disable-gpu",
-  "--disable-quic",
-  "--no-first-run",
-  "--disable-background-networking",
-  "--disable-component-update",
-  "--disable-sync",
-];
+export { launchChromium };
 /** Statuses the page sets on <body data-status> once it has settled. */
 const SETTLED = ["ok", "invalid", "error", "home", "message", "fatal"];
 export const TEST_TIMEOUT = 60_000;
@@ -35,7 +25,7 @@ export async function start() {
   const server = await startServer({ dir: DIST, port: 0 });
   let browser;
   try {
-    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+    browser = await launchChromium();
   } catch (e) {
     await server.close();
     throw e;

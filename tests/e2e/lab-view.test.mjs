@@ -9,9 +9,8 @@
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
-import { chromium } from "playwright-core";
 import { startServer } from "../../scripts/serve.mjs";
-import { start, open, DIST, CHROMIUM, CHROMIUM_ARGS, TEST_TIMEOUT } from "./harness.mjs";
+import { start, open, DIST, launchChromium, TEST_TIMEOUT } from "./harness.mjs";
 import { idle, sample } from "./lab-harness.mjs";
 
 let env;
@@ -272,7 +271,7 @@ test("the engine line: the SIMD128 build on one thread, or on several when the p
   await context.close();
 
   const isolated = await startServer({ dir: DIST, port: 0, isolate: true });
-  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  const browser = await launchChromium();
   try {
     const o = await openLab({}, isolated.url, browser);
     await o.page.waitForFunction(() => !/starting/.test(document.getElementById("lab-engine").textContent));

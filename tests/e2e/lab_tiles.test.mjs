@@ -6,15 +6,14 @@
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
-import { chromium } from "playwright-core";
 import { startServer } from "../../scripts/serve.mjs";
-import { DIST, CHROMIUM, CHROMIUM_ARGS, TEST_TIMEOUT } from "./harness.mjs";
+import { DIST, launchChromium, TEST_TIMEOUT } from "./harness.mjs";
 
 let isolated, plain, browser;
 before(async () => {
   isolated = await startServer({ dir: DIST, port: 0, isolate: true });
   plain = await startServer({ dir: DIST, port: 0 });
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  browser = await launchChromium();
 });
 after(async () => {
   await browser?.close().catch(() => {});
