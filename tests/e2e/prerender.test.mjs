@@ -37,21 +37,26 @@ after(async () => {
 });
 
 /**
- * Opens `hash` with every wasm request held until `release()` (KaTeX kept
- * out). Returns the page, its log and release.
+ * Opens `file` + `hash` with every wasm request held until `release()`
+ * (KaTeX kept out) and runs `fn({ page, log, release })`; the context is
+ * closed afterwards, whatever `fn` does.
  */
-async function held(hash, file = "index.html") {
+async function held(hash, file, fn) {
   const { context, page, log } = await open(env.browser);
-  const waiting = [];
-  let released = false;
-  await page.route(/\/vendor\/katex\//, (route) => route.abort());
-  await page.route(WASM, (route) => (released ? route.continue() : waiting.push(route)));
-  const release = async () => {
-    released = true;
-    for (const r of waiting.splice(0)) await r.continue();
-  };
-  await page.goto(`${env.url}${file}${hash}`);
-  return { context, page, log, release };
+  try {
+    const waiting = [];
+    let released = false;
+    await page.route(/\/vendor\/katex\//, (route) => route.abort());
+    await page.route(WASM, (route) => (released ? route.continue() : waiting.push(route)));
+    const release = async () => {
+      released = true;
+      for (const r of waiting.splice(0)) await r.continue();
+    };
+    await page.goto(`${env.url}${file}${hash}`);
+    return await fn({ page, log, release });
+  } finally {
+    await context.close();
+  }
 }
 
 /** <main id="app">'s state: saved part or not, inert or not, the two marks (how many), the examples in it, the status. */
@@ -113,8 +118,7 @@ describe("a cold load of #/<id> with no inputs", () => {
   for (const p of PAGES) {
     for (const id of READY) {
       test(`${p.file}#/${id}${p.options}: the saved part is shown, inert, while the solver loads, and reads as the page's own view`, { timeout: TEST_TIMEOUT }, async () => {
-        const { context, page, log, release } = await held(`#/${id}${p.options}`, p.file);
-        try {
+        await held(`#/${id}${p.options}`, p.file, async ({ page, log, release }) => {
           await page.waitForSelector(`#app[data-prerendered="${id}"] article.example[data-id="${id}"]`);
           assert.deepEqual(await appState(page), { prerendered: id, inert: true, marks: [1, 0], examples: [id], status: "loading" });
           const saved = await partsText(page);
@@ -129,16 +133,13 @@ describe("a cold load of #/<id> with no inputs", () => {
           assert.deepEqual(await appState(page), { prerendered: null, inert: false, marks: [1, 1], examples: [id], status: "ok" });
           assert.equal(log.requests.filter((u) => u.endsWith(`${p.folder.slice(1)}${id}.html`)).length, 1);
           assert.deepEqual(log.pageErrors, []);
-        } finally {
-          await context.close();
-        }
+        });
       });
     }
   }
 
   test("it takes no click until the page's own view is in (inert); then the inputs are live", { timeout: TEST_TIMEOUT }, async () => {
-    const { context, page, release } = await held("#/gsd");
-    try {
+    await held("#/gsd", "index.html", async ({ page, release }) => {
       await page.waitForSelector('#app[data-prerendered="gsd"]');
       // "← Catalog" in the saved part: a click does not follow it
       const link = await page.locator("#app .crumbs a").boundingBox();
@@ -152,9 +153,7 @@ describe("a cold load of #/<id> with no inputs", () => {
       await page.waitForFunction(() => /44\.56/.test(document.querySelector(".answer-line").innerText));
       await page.locator("#app .crumbs a").click();
       assert.equal(await settled(page), "home");
-    } finally {
-      await context.close();
-    }
+    });
   });
 });
 
@@ -180,8 +179,7 @@ describe("where no saved solution is shown", () => {
   });
 
   test("a move to another example before the solver is in replaces it with that example, live", { timeout: TEST_TIMEOUT }, async () => {
-    const { context, page, release } = await held("#/gsd");
-    try {
+    await held("#/gsd", "index.html", async ({ page, release }) => {
       await page.waitForSelector('#app[data-prerendered="gsd"]');
       await page.evaluate(() => {
         location.hash = "#/utm";
@@ -190,9 +188,7 @@ describe("where no saved solution is shown", () => {
       assert.equal(await settled(page), "ok");
       await page.waitForSelector('article.example[data-id="utm"]');
       assert.deepEqual(await appState(page), { prerendered: null, inert: false, marks: [1, 1], examples: ["utm"], status: "ok" });
-    } finally {
-      await context.close();
-    }
+    });
   });
 
   test("a solver that cannot load replaces it with the page's message, which takes clicks", { timeout: TEST_TIMEOUT }, async () => {
