@@ -183,6 +183,12 @@ async function markSignalled(page, name = "first-solution", timeout = 30000) {
   }
 }
 
+/** Loads whose frame was never reported (see coldLoad), with what the page said. */
+const retried = [];
+
+/** A load whose mark was set but whose frame was not reported: coldLoad tries it again. */
+class FrameNotReported extends Error {}
+
 /**
  * One cold load (new context) of `url`: the time the frame of its
  * `first-solution` mark was rendered (ms: the first numbers on screen, the
@@ -190,13 +196,8 @@ async function markSignalled(page, name = "first-solution", timeout = 30000) {
  * "solver-ready"`, of the page's own first solution (ready: its inputs live;
  * the floor has no such mark); the marks' own times (mark, readyMark); and
  * the requests (resource timing).
+ * A load whose bench init script did not run is loaded again (twice at most).
  */
-/** Loads whose frame was never reported (see coldLoad), with what the page said. */
-const retried = [];
-
-/** A load whose mark was set but whose frame was not reported: coldLoad tries it again. */
-class FrameNotReported extends Error {}
-
 async function coldLoad(url, options = {}) {
   for (let attempt = 1; ; attempt++) {
     try {
