@@ -11,7 +11,6 @@
 // floor page, 30–60 ms on the playground (docs/BENCH-LOAD.md).
 export function recordRendered(marks) {
   const rendered = (window.__benchRendered = {});
-  const channels = new Set(); // held until their message is in (an unreferenced channel may be collected first)
   const mark = performance.mark.bind(performance);
   performance.mark = function (name, ...rest) {
     const entry = mark(name, ...rest);
@@ -19,10 +18,8 @@ export function recordRendered(marks) {
       rendered[name] = null;
       requestAnimationFrame(() => {
         const channel = new MessageChannel();
-        channels.add(channel);
         channel.port1.onmessage = () => {
           channel.port1.close();
-          channels.delete(channel);
           rendered[name] = performance.now();
           console.debug(`bench: ${name}`);
         };
