@@ -22,17 +22,31 @@ import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, d
 const LAYOUT = Object.freeze({ margin: 12, axis: 24, maxCell: 44, minCols: 13, minRows: 9, infoGap: 10, labelMinCell: 15, axisLabelMinPx: 18 });
 /** Digits of numbers in the figure. */
 const DIGITS = 5;
-/** Colours beyond the shared palette (contrast ≥ 4.5:1 on white for text). */
+/** Colours beyond the shared palette, read from the palette in use when drawn (contrast ≥ 4.5:1 for text). */
 const INK = Object.freeze({
-  path: COLORS.pixelSystem,
+  get path() {
+    return COLORS.pixelSystem;
+  },
   pathFill: "rgba(29, 95, 191, 0.16)",
-  region: "#e1e6ec",
+  get region() {
+    return COLORS.theme === "dark" ? "#2b3440" : "#e1e6ec";
+  },
   otherRegion: "#8c959f",
-  broken: "#c62828",
-  start: "#2f7d32",
-  major: COLORS.highlight,
-  minor: COLORS.point,
-  rectangle: COLORS.imageSystem,
+  get broken() {
+    return COLORS.red;
+  },
+  get start() {
+    return COLORS.green;
+  },
+  get major() {
+    return COLORS.highlight;
+  },
+  get minor() {
+    return COLORS.point;
+  },
+  get rectangle() {
+    return COLORS.imageSystem;
+  },
 });
 
 /** The seed's edges and the preset shapes, as input data. */
@@ -375,7 +389,7 @@ function drawShape(ctx, L, res, labels) {
     dot(ctx, x0, y0, 4, INK.major);
     dot(ctx, x1, y1, 4, INK.major);
     labels.avoidLine(x0, y0, x1, y1, 2).avoidDot(x0, y0, 4).avoidDot(x1, y1, 4);
-    axisLabels.push([`D = ${fmt(res.diameter, 4)}`, [x0, y0, x1, y1], "#9a4a00"]);
+    axisLabels.push([`D = ${fmt(res.diameter, 4)}`, [x0, y0, x1, y1], COLORS.theme === "dark" ? COLORS.highlight : "#9a4a00"]);
   }
   const minor = pixelList(res.minor_axis);
   if (minor.length === 2 && finite(res.minor_axis_length) > 0) {

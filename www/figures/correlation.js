@@ -11,7 +11,7 @@
 //   subpixel-2d: the fitted quadric as contours over the 3×3 ρ, with its peak.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, line, text, textBlock, blockSize } from "./draw.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, greyLegend, greyScale, line, text, textBlock, blockSize } from "./draw.js";
 
 /** Digits shown for ρ, means and sums in the figures. */
 const RHO_DIGITS = 4;
@@ -27,7 +27,6 @@ const TEMPLATE_TITLE_W = 80;
 /** Positive ρ orange, negative ρ blue (the page's highlight and pixel colours). */
 const RHO_POS = [217, 119, 6];
 const RHO_NEG = [29, 95, 191];
-const SELECT = COLORS.point;
 const TITLE = { weight: "bold", size: FONT_SIZE };
 /** The seed's usual acceptance threshold for a match. */
 const THRESHOLD = 0.7;
@@ -43,16 +42,21 @@ function stepWith(solution, key, asList = false) {
   return list(solution.steps).find(has)?.values ?? {};
 }
 
-/** Grey shade of a grey value within [lo, hi]: dark for low values, light for high ones, as in an image. */
-function grey(v, lo, hi) {
-  const t = hi > lo ? (v - lo) / (hi - lo) : 0.5;
-  const g = Math.round(70 + 175 * Math.min(1, Math.max(0, t)));
-  return { fill: `rgb(${g}, ${g}, ${g})`, ink: g < 150 ? "#ffffff" : COLORS.ink };
+/** Room (CSS px) for a grey scale's legend under its grid. */
+const LEGEND_ROOM = GREY_LEGEND.height + 6;
+
+/**
+ * The shade function of cells() for grey values in [lo, hi], on the shared
+ * grey scale (draw.js: dark = low, as in an image); `.scale` records the cells.
+ */
+function grey(lo, hi, name) {
+  const scale = greyScale(lo, hi, { name, format: (v) => formatNumber(v, 5) });
+  return Object.assign((v) => ({ fill: scale.fill(v), ink: scale.ink(v) }), { scale });
 }
 
 /** Fill for a ρ in [−1, 1]: orange for positive, blue for negative, white at 0; none for null. */
 function rhoShade(r) {
-  if (!isNum(r)) return { fill: "#eceff2", ink: COLORS.muted };
+  if (!isNum(r)) return { fill: COLORS.noValue, ink: COLORS.muted };
   const a = Math.min(1, Math.abs(r));
   const [cr, cg, cb] = r >= 0 ? RHO_POS : RHO_NEG;
   const mix = (c) => Math.round(255 + (c - 255) * a);
@@ -77,6 +81,7 @@ function cells(ctx, rows, x, y, size, shade, digits = 4) {
       const { fill, ink } = shade(v);
       ctx.fillStyle = fill;
       ctx.fillRect(x + j * size, y + i * size, size, size);
+      shade.scale?.note(v, x + j * size, y + i * size, size, size);
       if (showNumbers) {
         text(ctx, isNum(v) ? show(v) : "—", x + (j + 0.5) * size, y + (i + 0.5) * size, { color: ink, size: fontSize, align: "center" });
       }
@@ -158,7 +163,7 @@ function selected1d(d, state) {
   return clampIndex(state?.k, d.rho.length, d.best ?? 0);
 }
 
-const ONE_D = { rowH: 34, barsH: 150, gap: 14, label: 16, axis: 30, headroom: 16 };
+const ONE_D = { rowH: 34, barsH: 150, gap: 14, label: 16, axis: 30, headroom: 16, legend: LEGEND_ROOM };
 
 function layout1d(width, d) {
   const n = Math.max(d.search.length, 1);
@@ -167,7 +172,7 @@ function layout1d(width, d) {
   const rowH = Math.min(ONE_D.rowH, Math.max(cell, 14));
   const ySearch = MARGIN + ONE_D.label;
   const yTemplate = ySearch + rowH + ONE_D.gap + ONE_D.label;
-  const yBars = yTemplate + rowH + ONE_D.gap + ONE_D.label;
+  const yBars = yTemplate + rowH + ONE_D.legend + ONE_D.gap + ONE_D.label;
   const yZero = yBars + ONE_D.headroom + ONE_D.barsH / 2;
   const yText = yBars + ONE_D.headroom + ONE_D.barsH + ONE_D.gap;
   return { cell, x0, rowH, ySearch, yTemplate, yBars, yZero, yText, n };
@@ -178,7 +183,7 @@ function lines1d(d, k) {
   const window = d.search.slice(k, k + n);
   const shown = window.length > 12 ? `[${window.slice(0, 10).map((v) => fmt(v)).join(", ")}, …]` : `[${window.map((v) => fmt(v)).join(", ")}]`;
   return [
-    { text: `Position ${k + 1}${k === d.best ? " (best)" : ""}: B${k + 1} = ${shown}`, weight: "bold", color: SELECT },
+    { text: `Position ${k + 1}${k === d.best ? " (best)" : ""}: B${k + 1} = ${shown}`, weight: "bold", color: COLORS.point },
     { text: `Ā = ${fmt(d.meanA)}, B̄ = ${fmt(d.means[k])}` },
     { text: `Σ(A−Ā)(B−B̄) = ${fmt(d.sumDadb[k])}, Σ(A−Ā)² = ${fmt(d.sumDa2)}, Σ(B−B̄)² = ${fmt(d.sumDb2[k])}` },
     {
@@ -202,18 +207,19 @@ function draw1d(ctx, width, height, solution, state) {
   const k = selected1d(d, state);
   const n = d.template.length;
   const [lo, hi] = range([...d.search, ...d.template]);
-  const shade = (v) => grey(v, lo, hi);
+  const shade = grey(lo, hi, "S and A");
   const X = (i) => L.x0 + i * L.cell;
 
   text(ctx, "Search array S", MARGIN, L.ySearch - 9, TITLE);
   cells(ctx, [d.search], X(0), L.ySearch, L.cell, shade);
-  if (d.rho.length) outline(ctx, X(k), L.ySearch - 2, n * L.cell, L.cell + 4, SELECT, 2.5);
+  if (d.rho.length) outline(ctx, X(k), L.ySearch - 2, n * L.cell, L.cell + 4, COLORS.point, 2.5);
 
-  text(ctx, `Template A, slid to position ${k + 1}`, MARGIN, L.yTemplate - 9, { ...TITLE, color: SELECT });
+  text(ctx, `Template A, slid to position ${k + 1}`, MARGIN, L.yTemplate - 9, { ...TITLE, color: COLORS.point });
   cells(ctx, [d.template], X(k), L.yTemplate, L.cell, shade);
-  outline(ctx, X(k), L.yTemplate, n * L.cell, L.cell, SELECT, 1.5);
-  line(ctx, X(k), L.ySearch + L.cell + 2, X(k), L.yTemplate, { color: SELECT, dash: DASH });
-  line(ctx, X(k + n), L.ySearch + L.cell + 2, X(k + n), L.yTemplate, { color: SELECT, dash: DASH });
+  outline(ctx, X(k), L.yTemplate, n * L.cell, L.cell, COLORS.point, 1.5);
+  line(ctx, X(k), L.ySearch + L.cell + 2, X(k), L.yTemplate, { color: COLORS.point, dash: DASH });
+  line(ctx, X(k + n), L.ySearch + L.cell + 2, X(k + n), L.yTemplate, { color: COLORS.point, dash: DASH });
+  greyLegend(ctx, MARGIN, L.yTemplate + L.rowH + 4, shade.scale, { maxWidth: width - 2 * MARGIN });
 
   // ρ bars at each window's centre
   text(ctx, "ρ at each position", MARGIN, L.yBars - 9, TITLE);
@@ -243,7 +249,7 @@ function draw1d(ctx, width, height, solution, state) {
     ctx.fillRect(cx - barW / 2, top, barW, h);
     labels.avoidRect(cx - barW / 2, top, barW, h, 1);
     if (i === k) {
-      outline(ctx, cx - barW / 2 - 2, top - 2, barW + 4, h + 4, SELECT, 2);
+      outline(ctx, cx - barW / 2 - 2, top - 2, barW + 4, h + 4, COLORS.point, 2);
       labels.avoidRect(cx - barW / 2 - 3, top - 3, barW + 6, h + 6);
     }
     bars.push({ i, r, cx });
@@ -331,7 +337,7 @@ function layout2d(width, d) {
   const xa = MARGIN + (width - 3 * MARGIN - 2 * gridW) / 2;
   const xb = xa + gridW + MARGIN;
   const y = MARGIN + 18;
-  const plotTop = y + rows * cell + 30;
+  const plotTop = y + rows * cell + LEGEND_ROOM + 30;
   const plotSize = Math.min(width - 2 * MARGIN - 40, 260);
   return { cell, xa, xb, y, plotTop, plotSize, rows, cols };
 }
@@ -343,14 +349,20 @@ function draw2d(ctx, width, height, solution, state) {
   const [loB, hiB] = range(d.b.flat());
   text(ctx, `A (Ā = ${fmt(d.ma)})`, L.xa, L.y - 10, TITLE);
   text(ctx, `B (B̄ = ${fmt(d.mb)})`, L.xb, L.y - 10, TITLE);
-  cells(ctx, d.a, L.xa, L.y, L.cell, (v) => grey(v, loA, hiA), 5);
-  cells(ctx, d.b, L.xb, L.y, L.cell, (v) => grey(v, loB, hiB), 5);
+  const shadeA = grey(loA, hiA, "A");
+  const shadeB = grey(loB, hiB, "B");
+  cells(ctx, d.a, L.xa, L.y, L.cell, shadeA, 5);
+  cells(ctx, d.b, L.xb, L.y, L.cell, shadeB, 5);
+  // each array's legend under it (each is stretched over its own range)
+  const legendY = L.y + L.rows * L.cell + 5;
+  greyLegend(ctx, L.xa, legendY, shadeA.scale, { maxWidth: L.xb - L.xa - 6 });
+  greyLegend(ctx, L.xb, legendY, shadeB.scale, { maxWidth: width - L.xb - 4 });
   const total = L.rows * L.cols;
   const sel = Number.isInteger(state?.i) && state.i < total ? state.i : null;
   if (sel !== null) {
     const [i, j] = [Math.floor(sel / L.cols), sel % L.cols];
-    outline(ctx, L.xa + j * L.cell, L.y + i * L.cell, L.cell, L.cell, SELECT);
-    outline(ctx, L.xb + j * L.cell, L.y + i * L.cell, L.cell, L.cell, SELECT);
+    outline(ctx, L.xa + j * L.cell, L.y + i * L.cell, L.cell, L.cell, COLORS.point);
+    outline(ctx, L.xb + j * L.cell, L.y + i * L.cell, L.cell, L.cell, COLORS.point);
   }
 
   // deviations: x = A − Ā, y = B − B̄; a product's sign is its quadrant
@@ -374,7 +386,7 @@ function draw2d(ctx, width, height, solution, state) {
   labels.avoidLine(cx, cy - L.plotSize / 2, cx, cy + L.plotSize / 2, 1);
   pts.forEach(([x, y], i) => {
     const r = i === sel ? 6 : 4;
-    dot(ctx, cx + x * s, cy - y * s, r, i === sel ? SELECT : COLORS.ink);
+    dot(ctx, cx + x * s, cy - y * s, r, i === sel ? COLORS.point : COLORS.ink);
     labels.avoidDot(cx + x * s, cy - y * s, r, 2);
   });
   // each quadrant pair named in a corner of one of its quadrants where no point is
@@ -407,7 +419,7 @@ function draw2d(ctx, width, height, solution, state) {
   const lines = [{ text: isNum(d.rho) ? `ρ = ${fmt(d.res.sum_dadb)} / √(${fmt(d.res.sum_da2)} × ${fmt(d.res.sum_db2)}) = ${fmt(d.rho, RHO_DIGITS)}` : "ρ: no value (an array without variance: 0/0)", weight: "bold" }];
   if (sel !== null) {
     const [x, y] = pts[sel];
-    lines.push({ text: `Selected (row ${Math.floor(sel / L.cols) + 1}, column ${(sel % L.cols) + 1}): (${fmt(x, 5)}) × (${fmt(y, 5)}) = ${fmt(x * y, 5)}`, color: SELECT });
+    lines.push({ text: `Selected (row ${Math.floor(sel / L.cols) + 1}, column ${(sel % L.cols) + 1}): (${fmt(x, 5)}) × (${fmt(y, 5)}) = ${fmt(x * y, 5)}`, color: COLORS.point });
   }
   textBlock(ctx, lines, MARGIN, L.plotTop + L.plotSize + 10, { size: FONT_SIZE_SMALL });
 }
@@ -432,7 +444,7 @@ function key2d(solution, key, state) {
 }
 
 const ncc2d = {
-  caption: "A and B shaded by grey value (dark = low), and every pair of deviations (A − Ā, B − B̄) as a point: points in the orange quadrants add to the sum of products, points in the blue ones subtract. Click a cell (or use the arrow keys) to follow one pair.",
+  caption: "A and B shaded by grey value (dark = low, each over its own range: see the legends), and every pair of deviations (A − Ā, B − B̄) as a point: points in the orange quadrants add to the sum of products, points in the blue ones subtract. Click a cell (or use the arrow keys) to follow one pair.",
   height: (width, solution) => {
     const L = layout2d(width, twoD(solution));
     return L.plotTop + L.plotSize + 10 + 2 * FONT_SIZE_SMALL * LINE_HEIGHT + 12 + MARGIN;
@@ -489,7 +501,7 @@ function layoutSurface(width, d) {
   const xs = xt + Math.max(tw * cell, TEMPLATE_TITLE_W) + MARGIN;
   cell = Math.min(cell, (width - MARGIN - xs) / sw);
   const y1 = MARGIN + 18;
-  const y2 = y1 + Math.max(th, sh) * cell + 34;
+  const y2 = y1 + Math.max(th, sh) * cell + LEGEND_ROOM + 34;
   const heat = Math.min(HEAT_MAX, (width - 2 * MARGIN) / Math.max(d.w, 1));
   const xh = MARGIN + (width - 2 * MARGIN - d.w * heat) / 2;
   const y3 = y2 + d.h * heat + 14;
@@ -501,7 +513,7 @@ function linesSurface(d, r, c) {
   const isBest = d.best && d.best[0] === r && d.best[1] === c;
   const rhoV = d.rho[r]?.[c];
   return [
-    { text: `Position ${pos}${isBest ? " (best)" : ""}: rows ${r + 1}–${r + d.template.length}, columns ${c + 1}–${c + (d.template[0]?.length ?? 0)} of S`, weight: "bold", color: SELECT },
+    { text: `Position ${pos}${isBest ? " (best)" : ""}: rows ${r + 1}–${r + d.template.length}, columns ${c + 1}–${c + (d.template[0]?.length ?? 0)} of S`, weight: "bold", color: COLORS.point },
     { text: `T̄ = ${fmt(d.meanT)}, B̄ = ${fmt(d.meanB[r]?.[c])}` },
     { text: `Σ(T−T̄)(B−B̄) = ${fmt(d.sumDadb[r]?.[c])}, Σ(T−T̄)² = ${fmt(d.sumDa2)}, Σ(B−B̄)² = ${fmt(d.sumDb2[r]?.[c])}` },
     { text: isNum(rhoV) ? `ρ = ${fmt(rhoV, RHO_DIGITS)}` : "ρ: no value (a window without variance: 0/0)", weight: "bold" },
@@ -513,12 +525,13 @@ function drawSurface(ctx, width, height, solution, state) {
   const L = layoutSurface(width, d);
   const [r, c] = selectedSurface(d, state);
   const [lo, hi] = range([...d.search.flat(), ...d.template.flat()]);
-  const shade = (v) => grey(v, lo, hi);
+  const shade = grey(lo, hi, "T and S");
   text(ctx, "Template T", L.xt, L.y1 - 10, TITLE);
   cells(ctx, d.template, L.xt, L.y1, L.cell, shade);
   text(ctx, "Search array S", L.xs, L.y1 - 10, TITLE);
   cells(ctx, d.search, L.xs, L.y1, L.cell, shade);
-  if (d.h) outline(ctx, L.xs + c * L.cell, L.y1 + r * L.cell, L.tw * L.cell, L.th * L.cell, SELECT, 3);
+  greyLegend(ctx, MARGIN, L.y1 + Math.max(L.th, L.sh) * L.cell + 5, shade.scale, { maxWidth: width - 2 * MARGIN });
+  if (d.h) outline(ctx, L.xs + c * L.cell, L.y1 + r * L.cell, L.tw * L.cell, L.th * L.cell, COLORS.point, 3);
   if (d.best) {
     // the best window's centre pixel
     const [br, bc] = d.best;
@@ -541,7 +554,7 @@ function drawSurface(ctx, width, height, solution, state) {
     outline(ctx, L.xh + c0 * L.heat, L.y2 + r0 * L.heat, (c1 - c0) * L.heat, (r1 - r0) * L.heat, COLORS.ink, 1.5, DASH);
     outline(ctx, L.xh + bc * L.heat + 1, L.y2 + br * L.heat + 1, L.heat - 2, L.heat - 2, COLORS.highlight, 3);
   }
-  if (d.h) outline(ctx, L.xh + c * L.heat - 1, L.y2 + r * L.heat - 1, L.heat + 2, L.heat + 2, SELECT, 2.5);
+  if (d.h) outline(ctx, L.xh + c * L.heat - 1, L.y2 + r * L.heat - 1, L.heat + 2, L.heat + 2, COLORS.point, 2.5);
   if (d.best) {
     const best = `Best: position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC)}, r = ${fmt(d.bestR)}`;
     text(ctx, best, MARGIN, L.y3 + 6, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL });
@@ -570,7 +583,7 @@ function keySurface(solution, key, state) {
 }
 
 const nccSurface = {
-  caption: "Template and search array shaded by grey value; the outlined window is the selected position. The heat map is ρ at every position, the best one outlined in orange with its 3×3 neighbourhood dashed. Click the heat map or the search array (or use the arrow keys) to see a window's computation.",
+  caption: "Template and search array shaded by grey value (dark = low, as the legend says); the outlined window is the selected position. The heat map is ρ at every position, the best one outlined in orange with its 3×3 neighbourhood dashed. Click the heat map or the search array (or use the arrow keys) to see a window's computation.",
   height: (width, solution) => {
     const L = layoutSurface(width, surf(solution));
     return L.y3 + FONT_SIZE_SMALL * LINE_HEIGHT + MARGIN;
@@ -826,8 +839,8 @@ function drawQuadric(ctx, width, height, solution) {
     lines.push({ text: `grey +: peak from the printed ρ (${fmt(d.printed[0])}, ${fmt(d.printed[1])})`, color: COLORS.muted });
   }
   if (isNum(d.cMax) && isNum(d.rMax)) {
-    cross(d.cMax, d.rMax, SELECT);
-    lines.unshift({ text: `peak (purple +): c = ${fmt(d.cMax)}, r = ${fmt(d.rMax)}`, weight: "bold", color: SELECT });
+    cross(d.cMax, d.rMax, COLORS.point);
+    lines.unshift({ text: `peak (purple +): c = ${fmt(d.cMax)}, r = ${fmt(d.rMax)}`, weight: "bold", color: COLORS.point });
   } else {
     const what = d.extremum === "saddle" ? "a saddle" : d.extremum === "minimum" ? "a minimum" : "no single stationary point";
     lines.unshift({ text: `Not concave: the surface has ${what}, no peak`, weight: "bold", color: COLORS.point });

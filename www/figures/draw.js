@@ -1,28 +1,80 @@
 // Shared look and drawing helpers for the figure modules. All sizes are CSS
 // pixels: the canvas context is already scaled for the device pixel ratio.
 
+import { formatNumber } from "../format.js";
+
 export const FONT_FAMILY = 'system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif';
 export const FONT_SIZE = 13;
 export const FONT_SIZE_SMALL = 11.5;
 export const LINE_HEIGHT = 1.3;
 
-/** One palette for every figure (contrast ≥ 4.5:1 on white for the text colours). */
-export const COLORS = Object.freeze({
-  background: "#ffffff",
-  ink: "#1b1f24",
-  muted: "#57606a",
-  grid: "#d0d7de",
-  frameFill: "#eef3f9",
-  frameStroke: "#3d4a5c",
-  pixelSystem: "#1d5fbf", // pixel coordinates (c, r): blue
-  imageSystem: "#b3400a", // image coordinates (x, y): orange-brown
-  point: "#8f1d8f", // the point p
-  ray: "#4a5361",
-  highlight: "#d97706",
-  highlightFill: "rgba(217, 119, 6, 0.28)",
-  ground: "#6b4f2a",
-  halo: "rgba(255, 255, 255, 0.88)",
+/**
+ * The figures' palettes: a light "paper" and a dark one for the dark theme
+ * (contrast ≥ 4.5:1 on its background for the text colours). `COLORS` holds
+ * the one in use: figures read it while they draw, and the plumbing
+ * (index.js) switches it with usePalette before each drawing. Image greys do
+ * not change with the theme (greyScale: dark = low in both).
+ */
+export const PALETTES = Object.freeze({
+  light: Object.freeze({
+    background: "#ffffff",
+    ink: "#1b1f24",
+    muted: "#57606a",
+    grid: "#d0d7de",
+    frameFill: "#eef3f9",
+    frameStroke: "#3d4a5c",
+    pixelSystem: "#1d5fbf", // pixel coordinates (c, r): blue
+    imageSystem: "#b3400a", // image coordinates (x, y): orange-brown
+    point: "#8f1d8f", // the point p
+    ray: "#4a5361",
+    highlight: "#d97706",
+    highlightFill: "rgba(217, 119, 6, 0.28)",
+    ground: "#6b4f2a",
+    green: "#2f7d32",
+    red: "#c62828",
+    noValue: "#eceff2", // a cell without a value
+    halo: "rgba(255, 255, 255, 0.88)",
+  }),
+  dark: Object.freeze({
+    background: "#10151c",
+    ink: "#e6edf3",
+    muted: "#a3adb8",
+    grid: "#3d444d",
+    frameFill: "#1a2636",
+    frameStroke: "#a9b8ca",
+    pixelSystem: "#79b8ff",
+    imageSystem: "#ff9a5c",
+    point: "#e59be5",
+    ray: "#a3adb8",
+    highlight: "#f5a524",
+    highlightFill: "rgba(245, 165, 36, 0.26)",
+    ground: "#c9a36b",
+    green: "#6fdd8b",
+    red: "#ff8a80",
+    noValue: "#2a313a",
+    halo: "rgba(16, 21, 28, 0.86)",
+  }),
 });
+
+/** The palette in use (a copy of one of PALETTES, switched by usePalette). */
+export const COLORS = { ...PALETTES.light, theme: "light" };
+
+/** Switches COLORS to the "light" or "dark" palette; returns the name in use. */
+export function usePalette(name) {
+  const theme = name === "dark" ? "dark" : "light";
+  Object.assign(COLORS, PALETTES[theme], { theme });
+  return theme;
+}
+
+/**
+ * The page's theme: <html data-theme="dark|light"> (the theme switch or the
+ * address's theme option), else the reader's system setting.
+ */
+export function pageTheme(doc = globalThis.document) {
+  const set = doc?.documentElement?.getAttribute("data-theme");
+  if (set === "dark" || set === "light") return set;
+  return globalThis.matchMedia?.("(prefers-color-scheme: dark)").matches ? "dark" : "light";
+}
 
 export const ARROW_HEAD = 8; // length of an arrow head
 export const DASH = Object.freeze([5, 4]);
@@ -181,6 +233,145 @@ export function finite(value, fallback = 0) {
 }
 
 // ---------------------------------------------------------------------------
+// Grey scales: one convention for every figure that maps numbers to greys,
+// an image's: dark = low, light = high, in both themes. A scale stretches
+// [lo, hi] over GREY_LEVELS (not quite black nor white, so a number stays
+// readable on every cell: `ink(v)` is the colour to write it in); the test
+// pattern's absolute 0…255 uses levels [0, 255]. Every scale drawn gets a
+// legend (greyLegend): a small ramp between its low and high values, and
+// "dark = low". The scales are recorded on the canvas (`canvas.greyScales`,
+// and as JSON in its `data-grey-scales`: { name, lo, hi, text, legend: box,
+// low, high: the lowest and highest valued cells drawn, {x, y, w, h, v} })
+// for the tests and for the figure's accessible label (index.js).
+
+/** Grey levels (0–255) of a stretched scale's low and high ends. */
+export const GREY_LEVELS = Object.freeze([60, 245]);
+/** Legend geometry (CSS px): the ramp's width, the legend's height. */
+export const GREY_LEGEND = Object.freeze({ ramp: 44, height: 16, gap: 5 });
+const INK_ON_LIGHT = "#1b1f24";
+const INK_ON_DARK = "#ffffff";
+
+/**
+ * The grey scale for values in [lo, hi]; `name` says what it shades (the
+ * legend's label), `levels` its [dark, light] grey levels, `format` writes
+ * the legend's numbers.
+ */
+export function greyScale(lo, hi, { name = "grey value", levels = GREY_LEVELS, format = (v) => formatNumber(v, 4) } = {}) {
+  const ok = Number.isFinite(lo) && Number.isFinite(hi);
+  const low = ok ? Math.min(lo, hi) : 0;
+  const high = ok ? Math.max(lo, hi) : 1;
+  const [dark, light] = levels;
+  const level = (v) => {
+    const t = high > low ? (v - low) / (high - low) : 0.5;
+    return Math.round(dark + (light - dark) * Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0.5)));
+  };
+  return {
+    name,
+    lo: low,
+    hi: high,
+    levels,
+    format,
+    low: null,
+    high: null,
+    level,
+    rgb: (v) => {
+      const g = level(v);
+      return [g, g, g];
+    },
+    fill: (v) => {
+      const g = level(v);
+      return `rgb(${g}, ${g}, ${g})`;
+    },
+    /** The colour of a number written on a cell of value v. */
+    ink: (v) => (level(v) < 150 ? INK_ON_DARK : INK_ON_LIGHT),
+    /** Records a cell of value v drawn at (x, y, w, h) (the lowest and highest are kept). */
+    note(v, x, y, w, h) {
+      if (!Number.isFinite(v)) return;
+      if (!this.low || v < this.low.v) this.low = { x, y, w, h, v };
+      if (!this.high || v > this.high.v) this.high = { x, y, w, h, v };
+    },
+    /** Fills a cell with v's grey and records it; returns the ink for a number on it. */
+    cell(ctx, v, x, y, w, h) {
+      ctx.fillStyle = this.fill(v);
+      ctx.fillRect(x, y, w, h);
+      this.note(v, x, y, w, h);
+      return this.ink(v);
+    },
+  };
+}
+
+/** The grey scale over the finite values of a list or matrix. */
+export function greyScaleOf(values, options = {}) {
+  const xs = [values].flat(Infinity).filter((v) => typeof v === "number" && Number.isFinite(v));
+  return greyScale(xs.length ? Math.min(...xs) : 0, xs.length ? Math.max(...xs) : 1, options);
+}
+
+/** A scale's legend in words (the figure's accessible label gets it too). */
+export function greyLegendText(scale) {
+  return `${scale.name}: grey from dark (${scale.format(scale.lo)}) to light (${scale.format(scale.hi)}), dark = low`;
+}
+
+function legendParts(scale, label) {
+  return { head: label ? `${label}: ` : "", lo: scale.format(scale.lo), hi: scale.format(scale.hi), tail: "dark = low" };
+}
+
+/** The width a legend takes (greyLegend's options). */
+export function greyLegendWidth(scale, { label = scale.name, size = FONT_SIZE_SMALL, ramp = GREY_LEGEND.ramp } = {}) {
+  const p = legendParts(scale, label);
+  const g = GREY_LEGEND.gap;
+  return textWidth(p.head, size) + textWidth(p.lo, size) + g + ramp + g + textWidth(p.hi, size) + 2 * g + textWidth(p.tail, size);
+}
+
+/**
+ * Draws a scale's legend on one line from (x, y) (its top-left): "label: lo
+ * [ramp] hi  dark = low"; within `maxWidth` the label, then the ramp's
+ * length give way. Records the scale on the canvas. Returns its box.
+ */
+export function greyLegend(ctx, x, y, scale, { label = scale.name, size = FONT_SIZE_SMALL, maxWidth = Infinity } = {}) {
+  let head = label;
+  let ramp = GREY_LEGEND.ramp;
+  if (greyLegendWidth(scale, { label: head, size, ramp }) > maxWidth) head = "";
+  if (greyLegendWidth(scale, { label: head, size, ramp }) > maxWidth) ramp = Math.max(16, ramp - (greyLegendWidth(scale, { label: head, size, ramp }) - maxWidth));
+  const p = legendParts(scale, head);
+  const g = GREY_LEGEND.gap;
+  const h = GREY_LEGEND.height;
+  const cy = y + h / 2;
+  let at = x;
+  const put = (str) => {
+    if (!str) return;
+    const b = text(ctx, str, at, cy, { size, color: COLORS.muted });
+    at = b.x + b.w;
+  };
+  put(p.head);
+  put(p.lo);
+  at += g;
+  const gradient = ctx.createLinearGradient(at, 0, at + ramp, 0);
+  gradient.addColorStop(0, scale.fill(scale.lo));
+  gradient.addColorStop(1, scale.fill(scale.hi));
+  ctx.save();
+  ctx.fillStyle = gradient;
+  ctx.fillRect(at, cy - 5, ramp, 10);
+  ctx.strokeStyle = COLORS.muted;
+  ctx.lineWidth = 1;
+  ctx.strokeRect(at + 0.5, cy - 4.5, ramp - 1, 9);
+  ctx.restore();
+  at += ramp + g;
+  put(p.hi);
+  at += 2 * g;
+  put(p.tail);
+  const box = { x, y, w: at - x, h };
+  recordGreyScale(ctx.canvas, scale, box);
+  return box;
+}
+
+function recordGreyScale(canvas, scale, legend) {
+  if (!canvas) return;
+  const entry = { name: scale.name, lo: scale.lo, hi: scale.hi, text: greyLegendText(scale), legend, low: scale.low, high: scale.high };
+  canvas.greyScales = [...(canvas.greyScales ?? []), entry];
+  if (canvas.dataset) canvas.dataset.greyScales = JSON.stringify(canvas.greyScales);
+}
+
+// ---------------------------------------------------------------------------
 // Label placement: a figure registers its labels (each with an anchor and a
 // few candidate spots, best first) and the things a label must not cover
 // (dots, bars, lines, arrows, other texts); `draw()` puts each label, in the
@@ -239,11 +430,15 @@ function overlapArea(a, b) {
 
 const grow = (b, d) => ({ x: b.x - d, y: b.y - d, w: b.w + 2 * d, h: b.h + 2 * d });
 
-/** Resets a canvas's record of placed labels (the figure plumbing calls it before each drawing). */
+/** Resets a canvas's record of placed labels and grey scales (the figure plumbing calls it before each drawing). */
 export function clearLabelBoxes(canvas) {
   if (!canvas) return;
   canvas.labelBoxes = [];
-  if (canvas.dataset) delete canvas.dataset.labelBoxes;
+  canvas.greyScales = [];
+  if (canvas.dataset) {
+    delete canvas.dataset.labelBoxes;
+    delete canvas.dataset.greyScales;
+  }
 }
 
 function recordLabelBoxes(canvas, boxes) {

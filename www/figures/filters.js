@@ -9,7 +9,7 @@
 // keys move the selection.
 
 import { formatNumber } from "../format.js";
-import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, line, text, textBlock, textWidth, wrapWords } from "./draw.js";
+import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, greyLegend, greyScaleOf, line, text, textBlock, textWidth, wrapWords } from "./draw.js";
 
 /** Layout constants (CSS px). */
 export const GRID = Object.freeze({
@@ -22,7 +22,7 @@ export const GRID = Object.freeze({
   numbersFrom: 20, // below this cell size the numbers are left out
   weightFrom: 40, // below this the kernel weights in the window's cells are left out
   sumGap: 12,
-  legendRoom: 24, // below the sum, for the colour legend
+  legendLine: GREY_LEGEND.height + 4, // below the sum, one line for each colour legend
   maxHeight: 900, // the figure registry's largest canvas height
   comfortable: 44, // the first arrangement (fewest rows) whose cells are this large is taken,
   readable: 34, // else the first with cells this large, else one panel per row
@@ -34,7 +34,6 @@ const MAX_ALPHA = 0.5;
 /** Diverging scale colours: below and above zero. */
 const NEGATIVE = "29, 95, 191";
 const POSITIVE = "217, 119, 6";
-const GREY = "87, 96, 106";
 
 export const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
 
@@ -51,21 +50,26 @@ export function isMatrix(m) {
   return Array.isArray(m) && m.length > 0 && Array.isArray(m[0]) && m[0].length > 0 && m.every((r) => Array.isArray(r) && r.length === m[0].length);
 }
 
+/** Whether a matrix has a negative value (it is then shaded on the diverging scale). */
+const signedMatrix = (m) => m.flat().some((v) => Number.isFinite(v) && v < 0);
+
 /**
  * A shading function for a matrix: diverging (blue < 0 < orange) when it has
- * values of both signs or only negative ones, a grey ramp otherwise.
+ * a negative value, else the shared grey scale (draw.js: dark = low, as in an
+ * image; `scale` records the cells for its legend), named `name`.
  */
-export function shader(m) {
+export function shader(m, name = "grey value") {
   const flat = m.flat().filter(Number.isFinite);
-  const lo = Math.min(...flat);
-  const hi = Math.max(...flat);
-  if (lo < 0) {
-    const max = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
+  if (signedMatrix(m)) {
+    const max = Math.max(...flat.map(Math.abs)) || 1;
     return { signed: true, fill: (v) => `rgba(${v < 0 ? NEGATIVE : POSITIVE}, ${(MAX_ALPHA * Math.abs(v)) / max})` };
   }
-  const span = hi - lo || 1;
-  return { signed: false, fill: (v) => `rgba(${GREY}, ${0.05 + (0.4 * (v - lo)) / span})` };
+  const scale = greyScaleOf(flat, { name, format: (v) => fmt(v) });
+  return { signed: false, fill: scale.fill, ink: scale.ink, scale };
 }
+
+/** No shading: the kernel's weights are not grey values. */
+const PLAIN = Object.freeze({ signed: false, fill: () => COLORS.background });
 
 /**
  * A grid of numbers with its top-left at (x0, y0): shaded cells, thin lines,
@@ -82,13 +86,14 @@ export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, sha
       const v = m[r][c];
       ctx.fillStyle = Number.isFinite(v) ? shade.fill(v) : COLORS.background;
       ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
+      shade.scale?.note(v, x0 + c * cell, y0 + r * cell, cell, cell);
       if (cell >= GRID.numbersFrom && Number.isFinite(v)) {
         const size = cell < 30 ? 9.5 : cell < 40 ? FONT_SIZE_SMALL : FONT_SIZE;
         texts.push(
           text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
             align: "center",
             size,
-            color: muted && muted(c, r) ? COLORS.muted : COLORS.ink,
+            color: muted && muted(c, r) ? COLORS.muted : shade.ink ? shade.ink(v) : COLORS.ink,
           }),
         );
       }
@@ -130,9 +135,8 @@ export function cellAt(g, x, y) {
   return c >= 0 && r >= 0 && c < g.cols && r < g.rows ? { c, r } : null;
 }
 
-/** The colour legend of a diverging scale. */
-function legend(ctx, x, y, signed) {
-  if (!signed) return;
+/** The colour legend of the diverging scale; (x, y) its left end, vertically centred. */
+function legend(ctx, x, y) {
   const sw = 12;
   ctx.fillStyle = `rgba(${NEGATIVE}, ${MAX_ALPHA})`;
   ctx.fillRect(x, y - sw / 2, sw, sw);
@@ -269,7 +273,11 @@ function layout(width, d) {
     return wrapWords(l.text.trim(), maxW - textWidth("    ", sumSize), sumSize, l.weight ?? "normal").map((t, i) => ({ ...l, text: i ? `    ${t}` : t }));
   });
   const sumH = lines.length * sumSize * LINE_HEIGHT + 10;
-  const fixed = 2 * m + GRID.sumGap + sumH + GRID.legendRoom;
+  // a legend line for each grey scale (the window, each unsigned output) and one for the diverging scale
+  const greys = [d.window, ...d.outputs.map((o) => o.m)].filter((mat) => !signedMatrix(mat)).length;
+  const signed = [d.window, ...d.kernels.map((k) => k.m), ...d.outputs.map((o) => o.m)].some(signedMatrix);
+  const legendH = (greys + (signed ? 1 : 0)) * GRID.legendLine + 4;
+  const fixed = 2 * m + GRID.sumGap + sumH + legendH;
   // the largest cell that fits the width and keeps the figure within its height
   const cellFor = (rows) => {
     const byWidth = Math.min(...rows.map((row) => Math.floor((width - 2 * m - GRID.axis - (row.length - 1) * GRID.gap) / colsOf(row))));
@@ -304,8 +312,8 @@ function layout(width, d) {
     y += rowH + GRID.gap + top;
   }
   const gridsBottom = y - GRID.gap - top;
-  const height = gridsBottom + GRID.sumGap + sumH + GRID.legendRoom + m;
-  return { cell, panels, gridsBottom, lines, sumSize, height };
+  const height = gridsBottom + GRID.sumGap + sumH + legendH + m;
+  return { cell, panels, gridsBottom, lines, sumSize, height, legendTop: gridsBottom + GRID.sumGap + sumH + 6 };
 }
 
 /** A panel's title, or its short form where the title would leave the canvas. */
@@ -318,13 +326,16 @@ function drawFigure(ctx, width, d) {
   const L = layout(width, d);
   const sel = { c: d.sel.c - 1, r: d.sel.r - 1 };
   const geo = {};
-  const outShade = d.outputs.map((o) => (o.unsigned ? shader([[0, 1]]) : null));
   let signed = false;
+  const greys = []; // the grey scales drawn, for their legends
   L.panels.forEach((p) => {
     if (p.kind === "window") {
       const kw = d.kernels[0]?.m[0].length ?? 3;
       const kh = d.kernels[0]?.m.length ?? 3;
-      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: "Window f", first: { c: 1, r: 1 } });
+      const shade = shader(p.mat, "Window f");
+      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: "Window f", first: { c: 1, r: 1 }, shade });
+      if (shade.scale) greys.push(shade.scale);
+      signed = signed || shade.signed;
       geo.window = g;
       const c0 = sel.c - Math.floor(kw / 2);
       const r0 = sel.r - Math.floor(kh / 2);
@@ -346,17 +357,20 @@ function drawFigure(ctx, width, d) {
         );
       }
     } else if (p.kind === "kernel") {
-      drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width) });
-      signed = signed || p.mat.flat().some((v) => v < 0);
+      // weights, not grey values: shaded only on the diverging scale when some are negative
+      const shade = signedMatrix(p.mat) ? shader(p.mat) : PLAIN;
+      drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width), shade });
+      signed = signed || shade.signed;
     } else if (p.kind === "median") {
       const blank = p.mat.map((r) => r.map(() => NaN));
       const g = drawGrid(ctx, blank, p.x, p.y, L.cell, { title: "Median 3×3" });
       text(ctx, "middle of 9", g.x0 + g.w / 2, g.y0 + g.h / 2, { align: "center", size: FONT_SIZE_SMALL, color: COLORS.muted, halo: true });
     } else {
       const i = d.outputs.indexOf(p.item);
-      const shade = outShade[i] ?? shader(p.mat);
+      const shade = shader(p.mat, p.item.short ?? p.item.name);
       if (shade.signed) signed = true;
-      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width), first: d.first, shade: p.item.unsigned ? shader(p.mat) : shade });
+      if (shade.scale) greys.push(shade.scale);
+      const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width), first: d.first, shade });
       geo[`output${i}`] = g;
       const oc = sel.c - (d.first.c - 1);
       const or = sel.r - (d.first.r - 1);
@@ -365,7 +379,13 @@ function drawFigure(ctx, width, d) {
   });
   const y = L.gridsBottom + GRID.sumGap;
   textBlock(ctx, L.lines, GRID.margin, y, { size: L.sumSize });
-  legend(ctx, GRID.margin, L.height - GRID.margin - 6, signed);
+  // the legends, one a line: each grey scale's, then the diverging scale's
+  let ly = L.legendTop;
+  for (const scale of greys) {
+    greyLegend(ctx, GRID.margin, ly, scale, { maxWidth: width - 2 * GRID.margin });
+    ly += GRID.legendLine;
+  }
+  if (signed) legend(ctx, GRID.margin, ly + GREY_LEGEND.height / 2);
   return { L, geo };
 }
 
@@ -404,7 +424,7 @@ function selectionInteract(dataOf) {
 
 const filterSpec = {
   caption:
-    "The window with the kernel laid over the selected pixel (orange frame, the kernel's weights in the corners of its cells), the kernel, and the output grid (shaded on a diverging scale, blue below 0 and orange above, when it has negative values; otherwise darker = larger). Below: the selected pixel's multiply-and-sum, one line per kernel row.",
+    "The window with the kernel laid over the selected pixel (orange frame, the kernel's weights in the corners of its cells), the kernel, and the output grid (shaded on a diverging scale, blue below 0 and orange above, when it has negative values; otherwise in grey, dark = low as in an image, with its legend). Below: the selected pixel's multiply-and-sum, one line per kernel row.",
   height(width, solution) {
     const d = filterData(solution);
     return d ? layout(width, d).height : 120;
@@ -424,7 +444,7 @@ const filterSpec = {
 
 const edgeSpec = {
   caption:
-    "The window with the 3×3 neighbourhood of the selected pixel framed in orange, the two kernels, then Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude (darker = larger). Below: the selected pixel's sums, one line per kernel row, and its magnitude.",
+    "The window with the 3×3 neighbourhood of the selected pixel framed in orange, the two kernels, then Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude (grey, dark = low as in an image, with its legend). Below: the selected pixel's sums, one line per kernel row, and its magnitude.",
   height(width, solution) {
     const d = edgeData(solution);
     return d ? layout(width, d).height : 120;

@@ -8,7 +8,7 @@
 //       caption: "Side view of the camera …",          // shown under the canvas
 //       height(width, solution) { return 300; },       // CSS px for a CSS width
 //       describe(solution) { return "…"; },             // the canvas's aria-label
-//       draw(ctx, width, height, solution) { … },       // ctx scaled to CSS px, cleared white
+//       draw(ctx, width, height, solution) { … },       // ctx scaled to CSS px, cleared to COLORS.background
 //     },
 //   };
 //
@@ -61,7 +61,10 @@
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
-import { COLORS, clearLabelBoxes, font, FONT_SIZE } from "./draw.js";
+import { COLORS, clearLabelBoxes, font, FONT_SIZE, pageTheme, usePalette } from "./draw.js";
+
+/** While the page prints, figures are drawn on the light paper whatever the theme. */
+let printing = false;
 
 /**
  * The figure module of each topic (the catalog's `topic`), loaded when an
@@ -146,13 +149,17 @@ function paint(panel, solution, shared = { selected: null }) {
   if (canvas.height !== bh) canvas.height = bh;
   const ctx = canvas.getContext("2d");
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  // the page's theme: a dark paper in the dark theme (image greys keep dark = low)
+  canvas.dataset.theme = usePalette(printing ? "light" : pageTheme());
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
   const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null };
   clearLabelBoxes(canvas);
   try {
     spec.draw(ctx, width, height, solution, state);
-    canvas.setAttribute("aria-label", spec.describe(solution, state));
+    // the legend of every grey scale drawn, in words
+    const scales = (canvas.greyScales ?? []).map((g) => `${g.text}.`);
+    canvas.setAttribute("aria-label", [spec.describe(solution, state), ...scales].join(" "));
     if (panel.status) panel.status.textContent = spec.status(solution, state) ?? "";
   } catch (e) {
     console.error("figure failed", e);
@@ -420,6 +427,22 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   };
   watchRatio();
 
+  // the theme switch (<html data-theme>), the system setting, and print (light paper) redraw
+  const themeObserver = new MutationObserver(redraw);
+  themeObserver.observe(document.documentElement, { attributes: true, attributeFilter: ["data-theme"] });
+  const scheme = window.matchMedia("(prefers-color-scheme: dark)");
+  scheme.addEventListener("change", redraw);
+  const beforePrint = () => {
+    printing = true;
+    redraw();
+  };
+  const afterPrint = () => {
+    printing = false;
+    redraw();
+  };
+  window.addEventListener("beforeprint", beforePrint);
+  window.addEventListener("afterprint", afterPrint);
+
   return {
     update(next) {
       solution = next;
@@ -442,6 +465,10 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     redraw,
     destroy() {
       observer.disconnect();
+      themeObserver.disconnect();
+      scheme.removeEventListener("change", redraw);
+      window.removeEventListener("beforeprint", beforePrint);
+      window.removeEventListener("afterprint", afterPrint);
       if (media) media.removeEventListener("change", onRatio);
       panels.forEach((p) => p.figure.remove());
     },

@@ -7,10 +7,10 @@
 //     and N as above.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, dot, finite, line, text, textBlock, textWidth } from "./draw.js";
+import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, Labels, arrow, dot, finite, greyLegend, greyScale, greyScaleOf, line, text, textBlock, textWidth } from "./draw.js";
 
 /** Layout constants (CSS px). */
-const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26 });
+const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26, greyLegend: GREY_LEGEND.height + 8 });
 const ELLIPSE = Object.freeze({ height: 290, panelMin: 200, clip: 2.6, margin: 14 });
 const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, compactPanel: 150, maxShown: 4, overviewMin: 26, overviewMax: 48, key: 20 });
 const IMAGE = Object.freeze({ margin: 14, maxSide: 620, tRadiusCells: 1, clip: 3 });
@@ -18,10 +18,10 @@ const IMAGE = Object.freeze({ margin: 14, maxSide: 620, tRadiusCells: 1, clip: 3
 const DIGITS = 4;
 /** The four Moravec directions, in the order of the core's `diffs`. */
 const DIRECTIONS = Object.freeze([
-  { name: "row", glyph: "→", from: [-1, 0], to: [1, 0], color: "#1d5fbf" },
-  { name: "column", glyph: "↓", from: [0, -1], to: [0, 1], color: "#b3400a" },
-  { name: "main diagonal", glyph: "↘", from: [-1, -1], to: [1, 1], color: "#2f7d32" },
-  { name: "other diagonal", glyph: "↙", from: [1, -1], to: [-1, 1], color: "#8f1d8f" },
+  { name: "row", glyph: "→", from: [-1, 0], to: [1, 0], key: "pixelSystem" },
+  { name: "column", glyph: "↓", from: [0, -1], to: [0, 1], key: "imageSystem" },
+  { name: "main diagonal", glyph: "↘", from: [-1, -1], to: [1, 1], key: "green" },
+  { name: "other diagonal", glyph: "↙", from: [1, -1], to: [-1, 1], key: "point" },
 ]);
 
 const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
@@ -39,26 +39,21 @@ function isMatrix(m) {
   return Array.isArray(m) && m.length > 0 && m.every((r) => Array.isArray(r) && r.length === m[0].length);
 }
 
-/** Fill grey for a grey value between lo and hi: light for low, darker for high, text stays readable. */
-function cellShade(v, lo, hi) {
-  const t = hi > lo ? (v - lo) / (hi - lo) : 0;
-  const g = Math.round(250 - 120 * t);
-  return { fill: `rgb(${g},${g},${g})`, ink: COLORS.ink };
-}
+/** The shared grey scale (draw.js: dark = low, as in an image) over a window's values. */
+const windowScale = (win) => greyScaleOf(win, { name: "Window", format: (v) => fmt(v, 5) });
 
-/** The window grid with its numbers; arrows of (gx, gy) at the interior pixels. */
+/**
+ * The window grid with its numbers; arrows of (gx, gy) at the interior
+ * pixels. Returns its grey scale (for the legend).
+ */
 function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
-  const flat = win.flat();
-  const lo = Math.min(...flat);
-  const hi = Math.max(...flat);
+  const scale = windowScale(win);
   const rows = win.length;
   const cols = win[0].length;
   for (let r = 0; r < rows; r++) {
     for (let c = 0; c < cols; c++) {
       const v = win[r][c];
-      const { fill } = cellShade(v, lo, hi);
-      ctx.fillStyle = fill;
-      ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
+      scale.cell(ctx, v, x0 + c * cell, y0 + r * cell, cell, cell);
       const interior = r > 0 && c > 0 && r < rows - 1 && c < cols - 1;
       text(ctx, fmt(v, 5), x0 + c * cell + 4, y0 + r * cell + 3, {
         size: cell < 34 ? 9.5 : FONT_SIZE_SMALL,
@@ -76,10 +71,10 @@ function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
   ctx.lineWidth = 1.5;
   ctx.strokeRect(x0 + cell, y0 + cell, (cols - 2) * cell, (rows - 2) * cell);
   ctx.restore();
-  if (!isMatrix(gx) || !isMatrix(gy)) return;
+  if (!isMatrix(gx) || !isMatrix(gy)) return scale;
   const mags = gx.flatMap((row, r) => row.map((v, c) => Math.hypot(v, gy[r][c])));
   const maxMag = Math.max(...mags);
-  if (!(maxMag > 0)) return;
+  if (!(maxMag > 0)) return scale;
   const reach = 0.46 * cell;
   gx.forEach((row, r) =>
     row.forEach((vx, c) => {
@@ -87,13 +82,17 @@ function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
       const cx = x0 + (c + 1.5) * cell;
       const cy = y0 + (r + 1.5) * cell + 4;
       const k = reach / maxMag;
+      // on a white underlay: the arrows stay visible on dark (low) cells
       if (Math.hypot(vx, vy) * k < 3) {
-        dot(ctx, cx, cy, 2, COLORS.pixelSystem);
+        dot(ctx, cx, cy, 3.5, "#ffffff");
+        dot(ctx, cx, cy, 2, PALETTES.light.pixelSystem);
         return;
       }
-      arrow(ctx, cx, cy, cx + vx * k, cy + vy * k, { color: COLORS.pixelSystem, width: 2, size: 7 });
+      arrow(ctx, cx, cy, cx + vx * k, cy + vy * k, { color: "#ffffff", width: 4.5, size: 9 });
+      arrow(ctx, cx, cy, cx + vx * k, cy + vy * k, { color: PALETTES.light.pixelSystem, width: 2, size: 7 });
     }),
   );
+  return scale;
 }
 
 function windowCell(width, win) {
@@ -103,11 +102,11 @@ function windowCell(width, win) {
 
 const windowSpec = (source) => ({
   caption:
-    "The window: grey values (darker = brighter value), the interior framed; each blue arrow is the gradient (g′x, g′y) of an interior pixel by central differences, drawn to scale with the longest one.",
+    "The window: grey values (dark = low, as in an image; see the legend), the interior framed; each blue arrow is the gradient (g′x, g′y) of an interior pixel by central differences, drawn to scale with the longest one.",
   height(width, solution) {
     const win = source(solution).window;
     if (!isMatrix(win)) return 120;
-    return win.length * windowCell(width, win) + 2 * GRID.margin + GRID.legend;
+    return win.length * windowCell(width, win) + 2 * GRID.margin + GRID.greyLegend + GRID.legend;
   },
   describe(solution) {
     const { window: win, gx, gy } = source(solution);
@@ -124,7 +123,8 @@ const windowSpec = (source) => ({
     if (!isMatrix(win)) return;
     const cell = windowCell(width, win);
     const x0 = Math.max(GRID.margin, (width - win[0].length * cell) / 2);
-    drawWindow(ctx, x0, GRID.margin, cell, win, gx, gy);
+    const scale = drawWindow(ctx, x0, GRID.margin, cell, win, gx, gy);
+    greyLegend(ctx, GRID.margin, GRID.margin + win.length * cell + 6, scale, { maxWidth: width - 2 * GRID.margin });
     text(ctx, "c →  r ↓  (from 1)   arrow = (g′x, g′y) at an interior pixel", GRID.margin, height - GRID.legend / 2, {
       size: FONT_SIZE_SMALL,
       color: COLORS.muted,
@@ -178,7 +178,7 @@ function ellipseLines(solution) {
     { text: `q = 4 det N / trace² N = ${fmt(r.q)}` },
     { text: `λ(N) = ${fmt(r.lambda_max)}, ${fmt(r.lambda_min)}` },
     { text: `λmax(Σuv) = ${typeof r.lambda_max_shift === "number" ? fmt(r.lambda_max_shift) : "∞"} px² ${r.accepted ? "≤" : ">"} T² = ${fmt(T * T)}`, color: r.accepted ? COLORS.ink : COLORS.imageSystem },
-    { text: `case: ${r.case}${r.accepted ? " (accepted)" : " (rejected)"}`, weight: "bold", color: r.accepted ? "#2f7d32" : COLORS.imageSystem },
+    { text: `case: ${r.case}${r.accepted ? " (accepted)" : " (rejected)"}`, weight: "bold", color: r.accepted ? COLORS.green : COLORS.imageSystem },
   ];
 }
 
@@ -276,25 +276,21 @@ function moravecLayout(width, count) {
   return { compact, perRow, panelW, cell, panelH, rows: Math.ceil(count / perRow), keyH: compact ? MORAVEC.key : 0 };
 }
 
-function drawOverview(ctx, width, m) {
+function drawOverview(ctx, width, m, scale) {
   const O = overviewLayout(width, m.win);
-  const flat = m.win.flat();
-  const lo = Math.min(...flat);
-  const hi = Math.max(...flat);
   const sums = new Map(m.all.map((p) => [`${p.c},${p.r}`, p.sum]));
   text(ctx, width < 520 ? "Click an interior pixel (Σ: its sum)." : "Click an interior pixel or use the arrow keys; Σ under a grey value is that pixel’s sum.", MORAVEC.panelGap, MORAVEC.panelGap, { size: FONT_SIZE_SMALL, color: COLORS.muted });
   m.win.forEach((row, r) =>
     row.forEach((v, c) => {
       const x = O.x0 + c * O.cell;
       const y = O.y0 + r * O.cell;
-      ctx.fillStyle = cellShade(v, lo, hi).fill;
-      ctx.fillRect(x, y, O.cell, O.cell);
+      scale.cell(ctx, v, x, y, O.cell, O.cell);
       ctx.strokeStyle = COLORS.grid;
       ctx.lineWidth = 1;
       ctx.strokeRect(x + 0.5, y + 0.5, O.cell - 1, O.cell - 1);
       text(ctx, fmt(v), x + 3, y + 3, { size: 9.5, baseline: "top", halo: true });
       const sum = sums.get(`${c + 1},${r + 1}`);
-      if (sum !== undefined) text(ctx, `Σ ${fmt(sum)}`, x + 3, y + O.cell - 3, { size: 9, baseline: "bottom", color: "#1d5fbf", halo: true });
+      if (sum !== undefined) text(ctx, `Σ ${fmt(sum)}`, x + 3, y + O.cell - 3, { size: 9, baseline: "bottom", color: COLORS.pixelSystem, halo: true });
     }),
   );
   const s = m.selected;
@@ -314,7 +310,7 @@ const moravecSpec = {
     const m = moravecPixels(solution, state);
     const L = moravecLayout(width, Math.max(m.shown.length, 1));
     const top = m.selected ? overviewLayout(width, m.win).h : 0;
-    return top + L.keyH + L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20;
+    return top + L.keyH + L.rows * (L.panelH + MORAVEC.panelGap) + MORAVEC.panelGap + 20 + GRID.greyLegend;
   },
   describe(solution, state) {
     const m = moravecPixels(solution, state);
@@ -350,21 +346,19 @@ const moravecSpec = {
     if (!win) return;
     const L = moravecLayout(width, Math.max(shown.length, 1));
     const labels = new Labels(ctx, width, height);
-    let top = m.selected ? drawOverview(ctx, width, m) : 0;
+    const scale = windowScale(win);
+    let top = m.selected ? drawOverview(ctx, width, m, scale) : 0;
     if (L.compact) {
       // the key to the arrows of the compact lines
       let x = MORAVEC.panelGap;
       const y = top + MORAVEC.panelGap + L.keyH / 2 - 4;
       DIRECTIONS.forEach((dir) => {
-        const b = text(ctx, `${dir.glyph} ${dir.name}`, x, y, { size: FONT_SIZE_SMALL, color: dir.color });
+        const b = text(ctx, `${dir.glyph} ${dir.name}`, x, y, { size: FONT_SIZE_SMALL, color: COLORS[dir.key] });
         labels.avoid(b);
         x = b.x + b.w + 10;
       });
       top += L.keyH;
     }
-    const flat = win.flat();
-    const lo = Math.min(...flat);
-    const hi = Math.max(...flat);
     const lh = FONT_SIZE_SMALL * LINE_HEIGHT;
     shown.forEach((p, i) => {
       const px = MORAVEC.panelGap + (i % L.perRow) * (L.panelW + MORAVEC.panelGap);
@@ -378,8 +372,11 @@ const moravecSpec = {
           const v = win[p.r - 1 + dr]?.[p.c - 1 + dc];
           const x = gx0 + (dc + 1) * L.cell;
           const y = gy0 + (dr + 1) * L.cell;
-          ctx.fillStyle = typeof v === "number" ? cellShade(v, lo, hi).fill : COLORS.background;
-          ctx.fillRect(x, y, L.cell, L.cell);
+          if (typeof v === "number") scale.cell(ctx, v, x, y, L.cell, L.cell);
+          else {
+            ctx.fillStyle = COLORS.background;
+            ctx.fillRect(x, y, L.cell, L.cell);
+          }
           ctx.strokeStyle = dr === 0 && dc === 0 ? COLORS.frameStroke : COLORS.grid;
           ctx.lineWidth = dr === 0 && dc === 0 ? 2 : 1;
           ctx.strokeRect(x + 0.5, y + 0.5, L.cell - 1, L.cell - 1);
@@ -394,7 +391,7 @@ const moravecSpec = {
         const [x1, y1] = centre(dir.to);
         const shrink = 0.28;
         const [ax0, ay0, ax1, ay1] = [x0 + (x1 - x0) * shrink, y0 + (y1 - y0) * shrink, x1 - (x1 - x0) * shrink, y1 - (y1 - y0) * shrink];
-        arrow(ctx, ax0, ay0, ax1, ay1, { color: dir.color, width: 2, size: 6 });
+        arrow(ctx, ax0, ay0, ax1, ay1, { color: COLORS[dir.key], width: 2, size: 6 });
         // the label in the middle may cover where the arrows cross, not their ends
         labels.avoidDot(ax0, ay0, 2).avoidDot(ax1, ay1, 6);
         labels.avoidLine(ax0, ay0, ax1, ay1, 1, "crossing");
@@ -403,7 +400,7 @@ const moravecSpec = {
         const b = win[p.r - 1 + dir.from[1]]?.[p.c - 1 + dir.from[0]];
         const sub = typeof b === "number" && b < 0 ? `(${fmt(b)})` : fmt(b);
         const what = L.compact ? dir.glyph : `${dir.name}:`;
-        labels.avoid(text(ctx, `${what} (${fmt(a)} − ${sub})² = ${fmt(diff * diff)}`, px + 8, gy0 + 3 * L.cell + 12 + k * lh, { size: FONT_SIZE_SMALL, color: dir.color }));
+        labels.avoid(text(ctx, `${what} (${fmt(a)} − ${sub})² = ${fmt(diff * diff)}`, px + 8, gy0 + 3 * L.cell + 12 + k * lh, { size: FONT_SIZE_SMALL, color: COLORS[dir.key] }));
       });
       labels.avoid(text(ctx, `sum = ${fmt(p.sum)}`, px + 8, gy0 + 3 * L.cell + 14 + 4 * lh, { size: FONT_SIZE_SMALL, weight: "bold" }));
       // the centre pixel's value on top of the arrows' crossing (or in a corner)
@@ -414,6 +411,7 @@ const moravecSpec = {
         candidates: ["C", { cx: cx - L.cell / 2 + 10, cy: cy - L.cell / 2 + 9 }],
       });
     });
+    labels.avoid(greyLegend(ctx, MORAVEC.panelGap, height - 22 - GRID.greyLegend, scale, { maxWidth: width - 2 * MORAVEC.panelGap }));
     const note = m.selected ? ` (${total} pixels)` : "";
     labels.add(`mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { weight: "bold", candidates: ["E"], gap: 0 });
     labels.draw();
@@ -470,7 +468,7 @@ const imageSpec = {
     const img = stepValue(solution, "image");
     if (!isMatrix(img)) return 120;
     const L = imageLayout(width, img);
-    return L.side * L.cell + 2 * IMAGE.margin + 14 + legendLines(width, solution, 1).length * (FONT_SIZE * LINE_HEIGHT + 2);
+    return L.side * L.cell + 2 * IMAGE.margin + 14 + legendLines(width, solution, 1).length * (FONT_SIZE * LINE_HEIGHT + 2) + GRID.greyLegend;
   },
   describe(solution) {
     const r = solution.result ?? {};
@@ -488,15 +486,18 @@ const imageSpec = {
     const L = imageLayout(width, img);
     const X = (c) => L.x0 + c * L.cell; // c zero-based, left edge of the pixel
     const Y = (rr) => L.y0 + rr * L.cell;
+    // grey values 0…255 as they are (the shared scale with levels 0 and 255: dark = low)
+    const scale = greyScale(0, 255, { name: "Pattern", levels: [0, 255], format: (v) => String(v) });
     let shade = -1; // the pattern is mostly flat: set (and parse) a colour only when it changes
     for (let rr = 0; rr < L.side; rr++) {
       for (let c = 0; c < L.side; c++) {
         const g = Math.max(0, Math.min(255, Math.round(img[rr][c])));
         if (g !== shade) {
-          ctx.fillStyle = `rgb(${g},${g},${g})`;
+          ctx.fillStyle = scale.fill(g);
           shade = g;
         }
         ctx.fillRect(X(c), Y(rr), L.cell + 0.5, L.cell + 0.5);
+        scale.note(g, X(c), Y(rr), L.cell, L.cell);
       }
     }
     const cands = stepValue(solution, "candidates");
@@ -568,6 +569,7 @@ const imageSpec = {
       text(ctx, line.text, IMAGE.margin, y, line.style);
       y += lh;
     }
+    greyLegend(ctx, IMAGE.margin, y - lh / 2 + 4, scale, { maxWidth: width - 2 * IMAGE.margin });
   },
 };
 

@@ -8,10 +8,8 @@
 //     parameters against the iteration number.
 
 import { formatNumber } from "../format.js";
-import { COLORS, FONT_SIZE_SMALL, dot, finite, line, text, textWidth, wrapWords } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, GREY_LEGEND, dot, finite, greyLegend, greyScaleOf, line, text, textWidth, wrapWords } from "./draw.js";
 
-const TEMPLATE_COLOR = COLORS.imageSystem; // orange-brown
-const PATCH_COLOR = COLORS.pixelSystem; // blue
 const PAD = Object.freeze({ left: 44, right: 16, top: 34, bottom: 38 });
 const DOT = 4;
 const DIGITS = 5;
@@ -19,6 +17,8 @@ const DIGITS = 5;
 const CELL_TEXT_MIN = 30;
 const GRID_GAP = 18;
 const GRID_TITLE = 22;
+/** A grey scale's legend line under the grids (one for the template, one for the patch). */
+const LEGEND_LINE = GREY_LEGEND.height + 4;
 const MINI_HEIGHT = 74;
 const MINI_GAP = 12;
 
@@ -97,17 +97,17 @@ function profileDraw(ctx, w, h, solution, state) {
     for (let i = 1; i < ys.length; i += 1) line(ctx, X(pos[i - 1]), Y(ys[i - 1]), X(pos[i]), Y(ys[i]), { color, width: 2, dash });
     ys.forEach((v, i) => dot(ctx, X(pos[i]), Y(v), DOT, color));
   };
-  poly(template, TEMPLATE_COLOR, null);
-  poly(modelled, PATCH_COLOR, [6, 4]);
+  poly(template, COLORS.imageSystem, null);
+  poly(modelled, COLORS.pixelSystem, [6, 4]);
   line(ctx, X(c), y0, X(c), y1, { color: COLORS.highlight, dash: [3, 3] });
   const gain = tv.a ? `, a = ${f(a)}, b = ${f(b)}` : "";
   text(ctx, `iteration ${k + 1} of ${n}: c = ${f(c)}${gain}`, x0 + 4, 12, { weight: "bold" });
-  const key = text(ctx, "● template G_t", x0 + 4, 27, { color: TEMPLATE_COLOR, size: FONT_SIZE_SMALL });
+  const key = text(ctx, "● template G_t", x0 + 4, 27, { color: COLORS.imageSystem, size: FONT_SIZE_SMALL });
   // the patch's key in full where it fits, else shorter
   const patchKeys = tv.a ? ["● a·G_s + b resampled at the template's pixels", "● a·G_s + b, resampled"] : ["● G_s resampled at the template's pixels", "● G_s, resampled"];
   const kx = Math.max(x0 + 104, key.x + key.w + 12);
   const patchKey = patchKeys.find((t) => kx + textWidth(t, FONT_SIZE_SMALL) <= w - 4) ?? patchKeys[patchKeys.length - 1];
-  text(ctx, patchKey, kx, 27, { color: PATCH_COLOR, size: FONT_SIZE_SMALL });
+  text(ctx, patchKey, kx, 27, { color: COLORS.pixelSystem, size: FONT_SIZE_SMALL });
 }
 
 function profileDescribe(solution, state) {
@@ -117,13 +117,6 @@ function profileDescribe(solution, state) {
 }
 
 // ---------------------------------------------------------------- 2-D grids
-
-/** A grey level [r, g, b] for v between lo and hi. */
-function greyRgb(v, lo, hi) {
-  const t = hi > lo ? (v - lo) / (hi - lo) : 0.5;
-  const g = Math.round(30 + 200 * Math.min(1, Math.max(0, t)));
-  return [g, g, g];
-}
 
 /** Blue for negative, orange for positive, white at zero: [r, g, b] for v within ±m. */
 function divergingRgb(v, m) {
@@ -163,7 +156,7 @@ function gridsHeight(width, solution) {
     for (let k = 1; k <= n; k++) lines = Math.max(lines, gridNotes(width, gridsData(solution, { slider: k })).length);
     noteLines.set(solution, { width, lines });
   }
-  return gh + GRID_TITLE + 36 + 16 * lines;
+  return gh + GRID_TITLE + 36 + 2 * LEGEND_LINE + 16 * lines;
 }
 
 /** The grids' left edge. */
@@ -187,7 +180,7 @@ function gridNotes(w, { template, diff }) {
  * image pixel a cell, drawn enlarged without smoothing (one drawImage, not a
  * fillRect per cell); the numbers in the cells where they fit.
  */
-function drawGrid(ctx, m, x, y, cell, rgb, digits) {
+function drawGrid(ctx, m, x, y, cell, rgb, digits, scale = null) {
   const rows = m.length;
   const cols = Math.max(0, ...m.map((row) => row.length));
   if (!rows || !cols) return;
@@ -196,6 +189,7 @@ function drawGrid(ctx, m, x, y, cell, rgb, digits) {
     row.forEach((v, i) => {
       const [r, g, b] = rgb(v);
       image.data.set([r, g, b, 255], 4 * (j * cols + i));
+      scale?.note(v, x + i * cell, y + j * cell, cell, cell);
     }),
   );
   const pixels = document.createElement("canvas");
@@ -221,26 +215,29 @@ function gridsDraw(ctx, w, h, solution, state) {
   const { cell, gw } = gridLayout(w, rows, cols);
   const left = gridsLeft(w, rows, cols);
   const top = GRID_TITLE + 20;
-  const range = (m) => {
-    const v = m.flat().filter(Number.isFinite);
-    return [Math.min(...v), Math.max(...v)];
-  };
-  const [tlo, thi] = range(template);
-  const [plo, phi] = patch.length ? range(patch) : [0, 1];
+  // the shared grey scale (draw.js: dark = low), stretched per grid
+  const format = (v) => formatNumber(v, 4);
+  const tScale = greyScaleOf(template, { name: "template", format });
+  const pScale = greyScaleOf(patch.length ? patch : [0, 1], { name: "resampled Gₛ", format });
   const dmax = Math.max(1e-9, ...diff.flat().map((v) => Math.abs(finite(v))));
   text(ctx, `iteration ${k + 1} of ${n} — ${statusWords(solution)} after ${n}`, left, 12, { weight: "bold" });
   const titles = ["template", "resampled Gₛ", "difference dL"];
   const grids = [
-    [template, (v) => greyRgb(v, tlo, thi), 4],
-    [patch, (v) => greyRgb(v, plo, phi), 4],
-    [diff, (v) => divergingRgb(v, dmax), 3],
+    [template, tScale.rgb, 4, tScale],
+    [patch, pScale.rgb, 4, pScale],
+    [diff, (v) => divergingRgb(v, dmax), 3, null],
   ];
-  grids.forEach(([m, color, digits], g) => {
+  grids.forEach(([m, color, digits, scale], g) => {
     const x = left + g * (gw + GRID_GAP);
     text(ctx, titles[g], x, top - 10, { size: FONT_SIZE_SMALL, color: COLORS.muted });
-    if (m.length) drawGrid(ctx, m, x, top, cell, color, digits);
+    if (m.length) drawGrid(ctx, m, x, top, cell, color, digits, scale);
   });
-  const below = top + rows * cell + 14;
+  let legendY = top + rows * cell + 6;
+  for (const scale of patch.length ? [tScale, pScale] : [tScale]) {
+    greyLegend(ctx, left, legendY, scale, { maxWidth: w - left - 8 });
+    legendY += LEGEND_LINE;
+  }
+  const below = top + rows * cell + 14 + 2 * LEGEND_LINE;
   const notes = gridNotes(w, { template, diff });
   notes.forEach((t, i) => text(ctx, t, left, below + 16 * i, { size: FONT_SIZE_SMALL, color: COLORS.muted }));
 }
@@ -321,12 +318,12 @@ function paramsDraw(ctx, w, h, solution) {
     const Y = (v) => py1 - ((v - lo) / (hi - lo)) * (py1 - py0);
     ctx.strokeStyle = COLORS.grid;
     ctx.strokeRect(px0 + 0.5, py0 + 0.5, px1 - px0, py1 - py0);
-    if (ser.truth !== null) line(ctx, px0, Y(ser.truth), px1, Y(ser.truth), { color: TEMPLATE_COLOR, dash: [4, 3] });
-    for (let i = 1; i < vals.length; i += 1) line(ctx, X(i - 1), Y(vals[i - 1]), X(i), Y(vals[i]), { color: PATCH_COLOR, width: 1.5 });
-    if (vals.length <= 60) vals.forEach((v, i) => dot(ctx, X(i), Y(v), 2.5, PATCH_COLOR));
+    if (ser.truth !== null) line(ctx, px0, Y(ser.truth), px1, Y(ser.truth), { color: COLORS.imageSystem, dash: [4, 3] });
+    for (let i = 1; i < vals.length; i += 1) line(ctx, X(i - 1), Y(vals[i - 1]), X(i), Y(vals[i]), { color: COLORS.pixelSystem, width: 1.5 });
+    if (vals.length <= 60) vals.forEach((v, i) => dot(ctx, X(i), Y(v), 2.5, COLORS.pixelSystem));
     text(ctx, ser.label, x, y + 14, { weight: "bold", size: FONT_SIZE_SMALL });
-    text(ctx, f(vals[vals.length - 1]), x, y + 30, { size: FONT_SIZE_SMALL, color: PATCH_COLOR });
-    if (ser.truth !== null) text(ctx, `true ${f(ser.truth)}`, x, y + 45, { size: FONT_SIZE_SMALL, color: TEMPLATE_COLOR });
+    text(ctx, f(vals[vals.length - 1]), x, y + 30, { size: FONT_SIZE_SMALL, color: COLORS.pixelSystem });
+    if (ser.truth !== null) text(ctx, `true ${f(ser.truth)}`, x, y + 45, { size: FONT_SIZE_SMALL, color: COLORS.imageSystem });
     text(ctx, "1", px0, py1 + 8, { size: FONT_SIZE_SMALL, color: COLORS.muted, align: "center" });
     text(ctx, "end", px1, py1 + 8, { size: FONT_SIZE_SMALL, color: COLORS.muted, align: "right" });
   });

@@ -13,11 +13,12 @@ import { COLORS, DASH, DOTS, FONT_SIZE_SMALL, dot, line, text, textWidth } from 
 
 const PAD = Object.freeze({ left: 58, right: 16, top: 30, bottom: 44 });
 const TICK = 4;
-const CM_COLOR = "#1d5fbf"; // central meridian: blue
-const EDGE_COLOR = "#b3400a"; // zone edges: orange-brown
-const EQUATOR_COLOR = "#1b7f3b"; // equator: green
-const CURVE = "#1b1f24";
-const CLASSIC = "#b3400a";
+// colours of the palette in use (read when drawn: the dark theme has its own)
+const CM_COLOR = () => COLORS.pixelSystem; // central meridian: blue
+const EDGE_COLOR = () => COLORS.imageSystem; // zone edges: orange-brown
+const EQUATOR_COLOR = () => COLORS.green; // equator: green
+const CURVE = () => COLORS.ink;
+const CLASSIC = () => COLORS.imageSystem;
 const POINT_R = 5;
 const MAP_ASPECT_MAX = 1.25; // the map is at most this tall per unit width
 const PLOT_HEIGHT = Object.freeze({ min: 230, perWidth: 0.55, max: 340 });
@@ -155,17 +156,17 @@ const map = {
     const lon0 = v.map_central_meridian;
     v.parallels.forEach((p, i) => {
       const lat = v.parallel_latitudes[i];
-      polyline(ctx, p, m, lat === 0 ? { color: EQUATOR_COLOR, width: 2.5 } : { color: COLORS.muted, width: 0.8 });
+      polyline(ctx, p, m, lat === 0 ? { color: EQUATOR_COLOR(), width: 2.5 } : { color: COLORS.muted, width: 0.8 });
     });
     v.meridians.forEach((p, i) => {
       const d0 = v.meridian_longitudes[i] - lon0;
       const centre = Math.abs(d0) < 1e-9;
-      polyline(ctx, p, m, centre ? { color: CM_COLOR, width: 2.5 } : { color: COLORS.muted, width: 0.8 });
+      polyline(ctx, p, m, centre ? { color: CM_COLOR(), width: 2.5 } : { color: COLORS.muted, width: 0.8 });
     });
     // the zone's edges, ±3°, from the meridians at those offsets
     v.meridians.forEach((p, i) => {
       const d0 = v.meridian_longitudes[i] - lon0;
-      if (Math.abs(Math.abs(d0) - 3) < 1e-9) polyline(ctx, p, m, { color: EDGE_COLOR, width: 2, dash: DASH });
+      if (Math.abs(Math.abs(d0) - 3) < 1e-9) polyline(ctx, p, m, { color: EDGE_COLOR(), width: 2, dash: DASH });
     });
     ctx.restore();
     // labels along the top edge: the central meridian first, then the zone's
@@ -184,7 +185,7 @@ const map = {
       if (boxL.x < box.x || boxL.x + w > box.x + box.w) continue;
       if (placed.some((q) => boxL.x < q.x + q.w && q.x < boxL.x + w)) continue;
       placed.push(boxL);
-      const color = rank === 0 ? CM_COLOR : rank === 1 ? EDGE_COLOR : COLORS.muted;
+      const color = rank === 0 ? CM_COLOR() : rank === 1 ? EDGE_COLOR() : COLORS.muted;
       text(ctx, label, X, box.y + 9, { size: FONT_SIZE_SMALL, align: "center", color, halo: true, weight: rank === 0 ? "bold" : "normal" });
     }
     let lastTop = Infinity;
@@ -193,7 +194,7 @@ const map = {
       const Y = m.sy(left[1]);
       if (Y < box.y + 18 || Y > box.y + box.h - 8 || Y + 14 > lastTop) return;
       const lat = v.parallel_latitudes[i];
-      const b = text(ctx, latName(lat), box.x + 4, Y, { size: FONT_SIZE_SMALL, color: lat === 0 ? EQUATOR_COLOR : COLORS.muted, halo: true });
+      const b = text(ctx, latName(lat), box.x + 4, Y, { size: FONT_SIZE_SMALL, color: lat === 0 ? EQUATOR_COLOR() : COLORS.muted, halo: true });
       lastTop = b.y;
     });
     const [pe, pn] = v.point;
@@ -269,21 +270,21 @@ function kSpec(seedLine) {
       ctx.beginPath();
       ctx.rect(box.x, box.y, box.w, box.h);
       ctx.clip();
-      line(ctx, box.x, m.sy(1), box.x + box.w, m.sy(1), { color: CM_COLOR, dash: DASH });
+      line(ctx, box.x, m.sy(1), box.x + box.w, m.sy(1), { color: CM_COLOR(), dash: DASH });
       for (const e of [-3, 3]) {
         const x = xAt(rows, e);
-        if (x != null) line(ctx, m.sx(x), box.y, m.sx(x), box.y + box.h, { color: EDGE_COLOR, width: 1.5, dash: DASH });
+        if (x != null) line(ctx, m.sx(x), box.y, m.sx(x), box.y + box.h, { color: EDGE_COLOR(), width: 1.5, dash: DASH });
       }
       if (seedLine) for (const s of [-90, 90]) line(ctx, m.sx(s), box.y, m.sx(s), box.y + box.h, { color: COLORS.point, dash: DOTS, width: 1.5 });
-      polyline(ctx, rows.map((r) => [r[1], r[2]]), m, { color: CURVE, width: 2 });
+      polyline(ctx, rows.map((r) => [r[1], r[2]]), m, { color: CURVE(), width: 2 });
       ctx.restore();
-      text(ctx, "k = 1", box.x + 4, m.sy(1) - 9, { size: FONT_SIZE_SMALL, color: CM_COLOR, halo: true });
+      text(ctx, "k = 1", box.x + 4, m.sy(1) - 9, { size: FONT_SIZE_SMALL, color: CM_COLOR(), halo: true });
       const kc = ks[Math.floor(ks.length / 2)];
       text(ctx, `${formatNumber(kc, 6)} on the central meridian`, m.sx(0), m.sy(kc) - 12, { size: FONT_SIZE_SMALL, align: "center", halo: true });
       const kEdge = kAt(rows, 3);
       const xEdge = xAt(rows, 3);
       if (kEdge != null && xEdge != null) {
-        text(ctx, `edge: ${formatNumber(kEdge, 7)}`, m.sx(xEdge) - 4, box.y + 12, { size: FONT_SIZE_SMALL, color: EDGE_COLOR, align: "right", halo: true });
+        text(ctx, `edge: ${formatNumber(kEdge, 7)}`, m.sx(xEdge) - 4, box.y + 12, { size: FONT_SIZE_SMALL, color: EDGE_COLOR(), align: "right", halo: true });
       }
       if (seedLine) text(ctx, "seed: 90 km", m.sx(90) + 4, box.y + box.h - 12, { size: FONT_SIZE_SMALL, color: COLORS.point, halo: true });
       const pd = p.v.point_dlon;
@@ -349,8 +350,8 @@ const difference = {
     ctx.beginPath();
     ctx.rect(box.x, box.y, box.w, box.h);
     ctx.clip();
-    line(ctx, box.x, m.sy(1e-3), box.x + box.w, m.sy(1e-3), { color: CM_COLOR, dash: DASH });
-    polyline(ctx, rows.map((r) => [r[1], r[2]]), m, { color: CLASSIC, width: 2 });
+    line(ctx, box.x, m.sy(1e-3), box.x + box.w, m.sy(1e-3), { color: CM_COLOR(), dash: DASH });
+    polyline(ctx, rows.map((r) => [r[1], r[2]]), m, { color: CLASSIC(), width: 2 });
     ctx.restore();
     const pd = Math.abs(stepWith(solution, "point_dlon")?.point_dlon ?? NaN);
     const res = solution.result ?? {};
