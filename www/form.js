@@ -104,6 +104,10 @@ export function buildForm(entry, onInput) {
       for (const opt of field.options ?? []) {
         control.append(el("option", { value: opt.value }, opt.label ?? opt.value));
       }
+      // the chosen option's full text, where a browser cuts it in the box (style.css wraps it where it can)
+      const titled = () => {
+        control.title = control.selectedOptions[0]?.textContent ?? "";
+      };
       getText = () => control.value;
       setText = (t) => {
         const s = String(t);
@@ -114,11 +118,13 @@ export function buildForm(entry, onInput) {
           control.prepend(bad);
         }
         control.value = s;
+        titled();
       };
       control.addEventListener("input", () => {
         for (const o of control.querySelectorAll("option[data-invalid]")) {
           if (o.value !== control.value) o.remove();
         }
+        titled();
       });
       label = el("label", { for: inputId }, field.label, unit, " ", keyTag);
     } else if (field.kind === "vector" || field.kind === "matrix" || field.kind === "points") {
@@ -257,13 +263,22 @@ function shownText(field, text) {
   return String(text).replace(/\n/g, "; ");
 }
 
-/** The rows of a point-list text: lines (or ";"-separated parts) of tokens split by spaces or commas. */
+/**
+ * The rows of a point-list text for the table's cells: lines (or ";"-separated
+ * parts) of tokens split by spaces or commas, except that in a row whose numbers
+ * are separated by spaces only, a comma between two digits is a decimal comma
+ * ("0,5 1,5"): the split of the core's one reader (src/practice/read.rs,
+ * read_list), which reads the numbers; this only cuts the text into cells.
+ */
 function splitPoints(text) {
   return String(text)
     .split(/[\n;]/)
     .map((line) => line.trim())
     .filter((line) => line.length > 0)
-    .map((line) => line.split(/[\s,]+/).filter((t) => t.length > 0));
+    .map((line) => {
+      const decimalComma = /\s/.test(line) && /\d,\d/.test(line) && !/,(?!\d)|(?<!\d),/.test(line);
+      return line.split(decimalComma ? /\s+/ : /[\s,]+/).filter((t) => t.length > 0);
+    });
 }
 
 /**

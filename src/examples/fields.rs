@@ -4,6 +4,7 @@
 //! `solve` (typed values) and `parse_inputs` (texts) alike.
 
 use crate::error::{Error, Result};
+use crate::practice::read::{self, short};
 use crate::solution::{fmt_sig, Record, Value};
 use serde::Serialize;
 
@@ -449,29 +450,42 @@ impl Field {
     }
 
     /// Parses the text a user typed (or a URL carried) and checks it.
+    /// Numbers are read by the one number reader of the playground
+    /// ([`crate::practice::read`], the practice boxes' rules: a decimal
+    /// point or comma, `1.5e3`, `1.5×10^3`, fractions, and the field's unit
+    /// or one of its dimension after a number); lists by its
+    /// [`read::read_rows`], whose rule for a decimal comma in a list is
+    /// stated there (and in docs/API.md).
     pub fn parse_text(&self, text: &str) -> Result<Value> {
         let key = self.key;
         let t = text.trim();
+        let bad = |why: String| Error::input(key, why);
         let v = match &self.kind {
-            Kind::Number { .. } | Kind::Integer { .. } => Value::Number(parse_number(key, t)?),
-            Kind::Vector { .. } => {
-                let cleaned = t.replace(['[', ']'], " ");
-                Value::numbers(&parse_numbers(key, &cleaned)?)
-            }
+            Kind::Number { unit, .. } => Value::Number(read::read_value(t, *unit).map_err(bad)?),
+            Kind::Integer { .. } => Value::Number(read::read_value(t, None).map_err(bad)?),
+            Kind::Vector { .. } => Value::numbers(&read::read_list(t).map_err(bad)?),
             Kind::Matrix { .. } | Kind::Points { .. } => {
-                let rows = split_rows(t)
-                    .map(|row| parse_numbers(key, row))
-                    .collect::<Result<Vec<_>>>()?;
-                Value::matrix(&rows)
+                Value::matrix(&read::read_rows(t).map_err(bad)?)
             }
             Kind::Choice { .. } | Kind::Angle { .. } => Value::Text(t.to_string()),
             Kind::Flag => match t {
                 "true" | "1" | "yes" | "on" => Value::Bool(true),
                 "false" | "0" | "no" | "off" | "" => Value::Bool(false),
-                _ => return Err(Error::input(key, format!("\"{t}\" is not true or false"))),
+                _ => return Err(bad(format!("\"{}\" is not true or false", short(t)))),
             },
         };
+        // A list of the wrong size whose commas may have been decimal commas
+        // says how the reader took them.
         self.check(&v)
+            .map_err(|e| match (&v, read::comma_hint(t), e) {
+                (Value::List(_), Some(hint), Error::InvalidInput { field, reason }) => {
+                    Error::InvalidInput {
+                        field,
+                        reason: format!("{reason} ({hint})"),
+                    }
+                }
+                (_, _, e) => e,
+            })
     }
 
     /// The text form of a value, as [`Field::parse_text`] reads it back.
@@ -581,52 +595,6 @@ fn number_rows(key: &str, v: &Value) -> Result<Vec<Vec<f64>>> {
             format!("must be a list of rows, got {}", other.type_name()),
         )),
     }
-}
-
-fn short(s: &str) -> String {
-    let mut out: String = s.chars().take(24).collect();
-    if s.chars().count() > 24 {
-        out.push('…');
-    }
-    out
-}
-
-fn parse_number(key: &str, t: &str) -> Result<f64> {
-    if t.is_empty() {
-        return Err(Error::input(key, "is empty; enter a number"));
-    }
-    // Rust also reads "NaN" and "inf"; a user means neither.
-    let plain = t
-        .chars()
-        .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
-    match t.parse::<f64>() {
-        Ok(x) if plain && x.is_finite() => Ok(x),
-        Ok(_) if plain => Err(Error::input(key, format!("\"{}\" is too large", short(t)))),
-        _ if t.contains(',') && t.replace(',', ".").parse::<f64>().is_ok() => Err(Error::input(
-            key,
-            format!(
-                "\"{}\" is not a number: use a point as the decimal separator",
-                short(t)
-            ),
-        )),
-        _ => Err(Error::input(
-            key,
-            format!("\"{}\" is not a number", short(t)),
-        )),
-    }
-}
-
-fn parse_numbers(key: &str, t: &str) -> Result<Vec<f64>> {
-    t.split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|s| !s.is_empty())
-        .map(|s| parse_number(key, s))
-        .collect()
-}
-
-fn split_rows(t: &str) -> impl Iterator<Item = &str> {
-    t.split([';', '\n'])
-        .map(|r| r.trim().trim_matches(['[', ']']).trim())
-        .filter(|r| !r.is_empty())
 }
 
 /// Checks a whole input object against an example's fields: unknown keys are

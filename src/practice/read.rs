@@ -137,11 +137,11 @@ pub fn check_unit(typed: Option<&str>, expected: Option<&str>) -> UnitCheck {
     }
 }
 
-/// Reads an answer text. `Ok(None)` for an empty box; `Err` says what
-/// could not be read.
-pub fn read(text: &str) -> Result<Option<Reading>, String> {
-    let t: String = text
-        .trim()
+/// The one reader's spelling rules, before anything is read: a real minus
+/// (−) and a dash are a minus, a thin or no-break space is a space, and
+/// `×`, `⋅`, `·` are a multiplication (`2.5×10^-3`).
+fn normalise(text: &str) -> String {
+    text.trim()
         .chars()
         .map(|ch| match ch {
             '\u{2212}' | '\u{2013}' => '-',
@@ -149,11 +149,21 @@ pub fn read(text: &str) -> Result<Option<Reading>, String> {
             '\u{00d7}' | '\u{22c5}' | '\u{00b7}' => '*',
             c => c,
         })
-        .collect();
-    if t.is_empty() {
-        return Ok(None);
+        .collect()
+}
+
+/// A text quoted in a message: at most 24 characters (a pasted page is not
+/// echoed back whole).
+pub(crate) fn short(s: &str) -> String {
+    let mut out: String = s.chars().take(24).collect();
+    if s.chars().count() > 24 {
+        out.push('…');
     }
-    // Split the number part from a trailing unit.
+    out
+}
+
+/// Splits a normalised text into its number part and a trailing unit.
+fn split_unit(t: &str) -> (&str, &str) {
     let num_end = t
         .char_indices()
         .find(|&(i, ch)| {
@@ -163,8 +173,40 @@ pub fn read(text: &str) -> Result<Option<Reading>, String> {
         })
         .map_or(t.len(), |(i, _)| i);
     let (num_text, unit_text) = t.split_at(num_end);
-    let num_text = num_text.trim();
-    let unit_text = unit_text.trim();
+    (num_text.trim(), unit_text.trim())
+}
+
+/// The number part of a text (no unit), with half a unit of its last digit.
+fn number_part(num_text: &str) -> Result<(f64, f64), String> {
+    if num_text.is_empty() {
+        return Err("there is no number in it".to_string());
+    }
+    if num_text.contains(' ') {
+        return Err(format!(
+            "\"{}\" has a space inside the number; write it without spaces",
+            short(num_text)
+        ));
+    }
+    let (x, half) = read_number(num_text)?;
+    if !x.is_finite() {
+        return Err(format!("\"{}\" is too large", short(num_text)));
+    }
+    Ok((x, half))
+}
+
+/// Reads an answer text. `Ok(None)` for an empty box; `Err` says what
+/// could not be read.
+///
+/// This is the one number reader of the playground: a practice answer box
+/// here; an example's input fields through [`read_value`] (a number, with
+/// the field's unit) and [`read_rows`] (lists), on the same rules.
+/// Practice grading (`grade.rs`) relies on this signature: keep it stable.
+pub fn read(text: &str) -> Result<Option<Reading>, String> {
+    let t = normalise(text);
+    if t.is_empty() {
+        return Ok(None);
+    }
+    let (num_text, unit_text) = split_unit(&t);
     let unit = if unit_text.is_empty() {
         None
     } else {
@@ -172,25 +214,141 @@ pub fn read(text: &str) -> Result<Option<Reading>, String> {
             Some(u) => Some(u.canonical),
             None => {
                 return Err(format!(
-                "\"{unit_text}\" is not a unit this box knows (try mm, cm, m, km, px, °, rad, ppm)"
-            ))
+                    "\"{}\" is not a unit this box knows (try mm, cm, m, km, px, °, rad, ppm)",
+                    short(unit_text)
+                ))
             }
         }
     };
-    if num_text.is_empty() {
-        return Err("there is no number in it".to_string());
-    }
-    if num_text.contains(' ') {
-        return Err(format!(
-            "\"{num_text}\" has a space inside the number; write it without spaces"
-        ));
-    }
-    let (number, half_ulp) = read_number(num_text)?;
+    let (number, half_ulp) = number_part(num_text)?;
     Ok(Some(Reading {
         number,
         half_ulp,
         unit,
     }))
+}
+
+/// Reads the text of a number input field whose unit is `unit` (`None`: a
+/// plain number), on [`read`]'s rules (a decimal point or comma, `1.5e3`,
+/// `1.5×10^3`, a fraction `3/4`), and a unit after the number when the
+/// field has one: the field's own unit, or one of the same dimension,
+/// converted (`26.7 cm` in a millimetre field is 267). The message of an
+/// `Err` says what could not be read; the caller names the field.
+pub fn read_value(text: &str, unit: Option<&str>) -> Result<f64, String> {
+    let t = normalise(text);
+    if t.is_empty() {
+        return Err("is empty; enter a number".to_string());
+    }
+    let (num_text, unit_text) = split_unit(&t);
+    let not_a_number = || format!("\"{}\" is not a number", short(&t));
+    if num_text.is_empty() {
+        return Err(not_a_number());
+    }
+    let (x, _) = number_part(num_text)?;
+    if unit_text.is_empty() {
+        return Ok(x);
+    }
+    let Some(own) = unit else {
+        if unit_def(unit_text).is_none() {
+            return Err(not_a_number());
+        }
+        return Err(format!(
+            "\"{}\": this field takes a plain number, without a unit",
+            short(&t)
+        ));
+    };
+    if unit_text.eq_ignore_ascii_case(own) {
+        return Ok(x);
+    }
+    match check_unit(Some(unit_text), Some(own)) {
+        UnitCheck::Fits { factor } => Ok(x * factor),
+        _ if unit_def(unit_text).is_none() => Err(format!(
+            "\"{}\" is not a unit (this field is in {own})",
+            short(unit_text)
+        )),
+        _ => Err(format!(
+            "this field is in {own}; {} does not fit it",
+            short(unit_text)
+        )),
+    }
+}
+
+/// Reads the text of a list input (a vector, or a matrix or point list of
+/// rows): rows are separated by `;` or new lines, square brackets are
+/// ignored, empty rows skipped, and each row is read by [`read_list`].
+pub fn read_rows(text: &str) -> Result<Vec<Vec<f64>>, String> {
+    text.split([';', '\n'])
+        .map(|r| r.trim().trim_matches(['[', ']']).trim())
+        .filter(|r| !r.is_empty())
+        .map(read_list)
+        .collect()
+}
+
+/// Reads one row of numbers. How a decimal comma and a list's commas live
+/// together (the rule docs/API.md states for every list input):
+/// - the numbers of a row are separated by spaces or by commas;
+/// - in a row with no space (`1,2,3`), every comma separates numbers;
+/// - in a row whose numbers are separated by spaces only (`0,5 1,5 2`), a
+///   comma between two digits is a decimal comma;
+/// - a row with both (`1,5, 2`: a comma with a space separates, and another
+///   comma stands between two digits) is ambiguous: refused, saying so.
+///
+/// Each number follows [`read`]'s rules, without a unit.
+pub fn read_list(row: &str) -> Result<Vec<f64>, String> {
+    let t = normalise(&row.replace(['[', ']'], " "));
+    let spaced = t.contains(char::is_whitespace);
+    let decimal_comma = has_digit_comma(&t);
+    let separating_comma = t.split(',').count() - 1 > digit_commas(&t);
+    if spaced && decimal_comma && separating_comma {
+        return Err(format!(
+            "\"{}\" is ambiguous: a comma with a space separates numbers in it, and another comma stands between two digits (a decimal comma, or one more separator?); write decimal points (1.5), or separate the numbers with spaces only (0,5 1,5)",
+            short(&t)
+        ));
+    }
+    // A decimal comma only where spaces alone separate the numbers.
+    let tokens: Vec<&str> = if spaced && decimal_comma {
+        t.split_whitespace().collect()
+    } else {
+        t.split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|s| !s.is_empty())
+            .collect()
+    };
+    tokens
+        .into_iter()
+        .map(|tok| {
+            number_part(tok).map(|(x, _)| x).map_err(|e| {
+                if tok.contains(',') {
+                    format!("{e} (in a row of numbers separated by spaces, a comma between two digits is a decimal comma: 0,5 1,5)")
+                } else {
+                    e
+                }
+            })
+        })
+        .collect()
+}
+
+/// A hint for a list that was read but came out the wrong size, when a
+/// row without spaces has a comma between two digits that may have been
+/// meant as a decimal comma (it separated two numbers).
+pub fn comma_hint(text: &str) -> Option<&'static str> {
+    text.split([';', '\n'])
+        .map(|r| r.trim().trim_matches(['[', ']']).trim())
+        .any(|r| !r.contains(char::is_whitespace) && has_digit_comma(r))
+        .then_some(
+            "in a row written without spaces every comma separates two numbers; for a decimal comma, separate the numbers with spaces (0,5 1,5)",
+        )
+}
+
+/// The number of commas with a digit on both sides.
+fn digit_commas(s: &str) -> usize {
+    let b = s.as_bytes();
+    (1..b.len().saturating_sub(1))
+        .filter(|&i| b[i] == b',' && b[i - 1].is_ascii_digit() && b[i + 1].is_ascii_digit())
+        .count()
+}
+
+fn has_digit_comma(s: &str) -> bool {
+    digit_commas(s) > 0
 }
 
 fn next_is_exponent(rest: &str) -> bool {
@@ -205,7 +363,7 @@ fn read_number(s: &str) -> Result<(f64, f64), String> {
         let (x, _) = read_decimal(a)?;
         let (y, _) = read_decimal(b)?;
         if y == 0.0 {
-            return Err(format!("\"{s}\" divides by zero"));
+            return Err(format!("\"{}\" divides by zero", short(s)));
         }
         return Ok((x / y, 0.0));
     }
@@ -225,7 +383,12 @@ fn read_number(s: &str) -> Result<(f64, f64), String> {
                 .parse()
                 .ok()
                 .filter(|k: &i32| k.abs() <= 300)
-                .ok_or_else(|| format!("\"{e}\" is not a whole-number exponent"))?;
+                .ok_or_else(|| {
+                    format!(
+                        "\"{}\": the exponent must be a whole number from −300 to 300",
+                        short(s)
+                    )
+                })?;
             let p = 10f64.powi(k);
             Ok((m * p, half * p))
         }
@@ -245,12 +408,12 @@ fn read_decimal(s: &str) -> Result<(f64, f64), String> {
             .all(|c| c.is_ascii_digit() || c == '.' || c == ',')
         && unsigned.chars().any(|c| c.is_ascii_digit());
     if !ok {
-        return Err(format!("\"{s}\" is not a number"));
+        return Err(format!("\"{}\" is not a number", short(s)));
     }
     let normal = s.replace(',', ".");
     let x: f64 = normal
         .parse()
-        .map_err(|_| format!("\"{s}\" is not a number"))?;
+        .map_err(|_| format!("\"{}\" is not a number", short(s)))?;
     let decimals = normal.split_once('.').map_or(0, |(_, f)| f.len());
     let half = 0.5 * 10f64.powi(-(decimals.min(300) as i32));
     Ok((x, half))
@@ -304,6 +467,75 @@ mod tests {
         ] {
             assert!(read(bad).is_err(), "{bad} should not read");
         }
+    }
+
+    #[test]
+    fn an_input_field_reads_as_an_answer_box_does() {
+        // issue 29, item 2: the same value from the same text, wherever typed
+        for text in ["0,5", "0.5", "1/2", "5e-1", "5×10^-1", "+0,5", "50e-2"] {
+            let answer = read(text).unwrap().unwrap().number;
+            assert_eq!(read_value(text, None), Ok(answer), "{text}");
+            assert!((answer - 0.5).abs() < 1e-15, "{text}");
+        }
+        assert_eq!(read_value("1,5e3", None), Ok(1500.0));
+        assert_eq!(read_value("3/4", Some("mm")), Ok(0.75));
+        assert_eq!(read_value("−12,42", Some("mm")), Ok(-12.42));
+        // a unit where the field has one: its own, or converted within its dimension
+        assert_eq!(read_value("1200 dpi", Some("dpi")), Ok(1200.0));
+        assert_eq!(read_value("26,7 cm", Some("mm")), Ok(267.0));
+        assert_eq!(read_value("0.5 m", Some("mm")), Ok(500.0));
+        assert_eq!(
+            read_value("8 px", Some("mm")),
+            Err("this field is in mm; px does not fit it".to_string())
+        );
+        assert_eq!(
+            read_value("8 px", None),
+            Err("\"8 px\": this field takes a plain number, without a unit".to_string())
+        );
+        assert_eq!(
+            read_value("8 parsecs", Some("mm")),
+            Err("\"parsecs\" is not a unit (this field is in mm)".to_string())
+        );
+        for bad in [
+            "",
+            "abc",
+            "NaN",
+            "inf",
+            "1e999",
+            "9".repeat(400).as_str(),
+            "12 34",
+        ] {
+            assert!(read_value(bad, None).is_err(), "{bad}");
+        }
+        // a long text is quoted short
+        let e = read_value(&"1".repeat(500).replace('1', "x"), None).unwrap_err();
+        assert!(e.len() < 120, "{e}");
+    }
+
+    #[test]
+    fn lists_take_a_decimal_comma_only_between_spaces() {
+        assert_eq!(read_list("1,2,3"), Ok(vec![1.0, 2.0, 3.0]));
+        assert_eq!(read_list("1, 2, 3"), Ok(vec![1.0, 2.0, 3.0]));
+        assert_eq!(read_list("1 2 3"), Ok(vec![1.0, 2.0, 3.0]));
+        assert_eq!(read_list("0,5 1,5 2"), Ok(vec![0.5, 1.5, 2.0]));
+        assert_eq!(read_list("[0.5, 1.5]"), Ok(vec![0.5, 1.5]));
+        assert_eq!(read_list("1/2 3/4 −1e1"), Ok(vec![0.5, 0.75, -10.0]));
+        assert_eq!(read_list("1 , 2"), Ok(vec![1.0, 2.0]));
+        let e = read_list("1,5, 2").unwrap_err();
+        assert!(e.contains("is ambiguous") && e.contains("0,5 1,5"), "{e}");
+        let e = read_list("1,2,3 4").unwrap_err();
+        assert!(e.contains("decimal comma"), "{e}");
+        assert_eq!(
+            read_rows("1,5 2; 3 4,5\n[5 6]"),
+            Ok(vec![vec![1.5, 2.0], vec![3.0, 4.5], vec![5.0, 6.0]])
+        );
+        assert_eq!(
+            read_rows("1,2; 3,4"),
+            Ok(vec![vec![1.0, 2.0], vec![3.0, 4.0]])
+        );
+        assert!(comma_hint("0,5").is_some());
+        assert!(comma_hint("0,5 1").is_none());
+        assert!(comma_hint("1, 2").is_none());
     }
 
     #[test]

@@ -2,7 +2,10 @@
 //! degrees, minutes and seconds (`55°30'12.5"N`, `55 30 12.5`, `55d30'`,
 //! `55:30:12.5 S`, `W 6 15`). A hemisphere letter (N, S, E, W, either case)
 //! may stand first or last instead of a sign; S and W make the angle
-//! negative.
+//! negative. Each number is read by the one number reader
+//! ([`crate::practice::read`]): a decimal point or comma (`55,5`).
+
+use crate::practice::read::{read_value, short};
 
 /// Reads an angle in degrees; `pos`/`neg` are the hemisphere letters the
 /// field allows (`'N'`/`'S'` for a latitude, `'E'`/`'W'` for a longitude).
@@ -70,14 +73,15 @@ pub fn parse(text: &str, pos: char, neg: char) -> Result<f64, String> {
     }
     let mut numbers = [0.0; 3];
     for (i, p) in parts.iter().enumerate() {
-        let plain = p.chars().all(|c| c.is_ascii_digit() || c == '.');
-        match p.parse::<f64>() {
-            Ok(x) if plain && x.is_finite() => numbers[i] = x,
+        // each part on the one number reader's rules (a decimal point or comma)
+        match read_value(p, None) {
+            Ok(x) if x >= 0.0 && !p.starts_with('+') => numbers[i] = x,
             _ => {
                 return Err(format!(
-                    "\"{}\" is not an angle: \"{}\" is not a number (use a point as the decimal separator)",
+                    "\"{}\" is not an angle: \"{}\" is not a number of {}",
                     short(t),
-                    short(p)
+                    short(p),
+                    ["degrees", "minutes", "seconds"][i]
                 ))
             }
         }
@@ -126,14 +130,6 @@ pub fn format(deg: f64, pos: char, neg: char, decimals: usize) -> String {
             width = decimals
         )
     }
-}
-
-fn short(s: &str) -> String {
-    let mut out: String = s.chars().take(24).collect();
-    if s.chars().count() > 24 {
-        out.push('…');
-    }
-    out
 }
 
 #[cfg(test)]

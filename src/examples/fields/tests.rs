@@ -58,15 +58,59 @@ fn a_choice_of_numbers_also_takes_the_number() {
 fn number_text_parsing() {
     let f = dpi();
     assert_eq!(f.parse_text(" 1e3 "), Ok(Value::Number(1000.0)));
-    for bad in ["", "abc", "NaN", "inf", "1e999", "9,5", "<img>"] {
+    // the one number reader's rules (practice's): a decimal comma, fractions, ×10^, a unit
+    assert_eq!(f.parse_text("1200,5"), Ok(Value::Number(1200.5)));
+    assert_eq!(f.parse_text("1,2e3"), Ok(Value::Number(1200.0)));
+    assert_eq!(f.parse_text("2400/2"), Ok(Value::Number(1200.0)));
+    assert_eq!(f.parse_text("1.2×10^3 dpi"), Ok(Value::Number(1200.0)));
+    for bad in [
+        "", "abc", "NaN", "inf", "1e999", "9 5", "<img>", "5 mm", "-5",
+    ] {
         let e = f.parse_text(bad).unwrap_err();
         assert_eq!(e.field(), Some("dpi"), "{bad}: {e}");
     }
-    assert!(f
-        .parse_text("9,5")
-        .unwrap_err()
-        .to_string()
-        .contains("decimal separator"));
+    assert_eq!(
+        f.parse_text("5 mm").unwrap_err().to_string(),
+        "dpi: this field is in dpi; mm does not fit it"
+    );
+    let mm = Field::number("x_mm", "x", 0.0).unit("mm");
+    assert_eq!(mm.parse_text("-1,242 cm"), Ok(Value::Number(-12.42)));
+    let n = Field::integer("n", "n", 3.0);
+    assert_eq!(n.parse_text("1,5e1"), Ok(Value::Number(15.0)));
+    assert_eq!(
+        n.parse_text("1,5").unwrap_err().to_string(),
+        "n: must be a whole number (got 1.5)"
+    );
+}
+
+#[test]
+fn list_texts_say_how_they_read_a_comma() {
+    let v = Field {
+        key: "v",
+        label: "V",
+        help: "",
+        kind: Kind::Vector {
+            min_len: 2,
+            max_len: 9,
+        },
+        default: Value::numbers(&[1.0, 2.0]),
+        when: None,
+    };
+    assert_eq!(v.parse_text("0,5 1,5"), Ok(Value::numbers(&[0.5, 1.5])));
+    assert_eq!(v.parse_text("1,2,3"), Ok(Value::numbers(&[1.0, 2.0, 3.0])));
+    let e = v.parse_text("1,5, 2").unwrap_err().to_string();
+    assert!(e.starts_with("v: \"1,5, 2\" is ambiguous"), "{e}");
+    // too few numbers after commas that separated: the message says how they were read
+    let p = Field::points("p", "P", 3, 9, &[vec![1.0, 2.0, 3.0]]);
+    assert_eq!(
+        p.parse_text("1,5 2,5 3,5; 1,5,2"),
+        Ok(Value::matrix(&[vec![1.5, 2.5, 3.5], vec![1.0, 5.0, 2.0]]))
+    );
+    let e = p.parse_text("0,5").unwrap_err().to_string();
+    assert!(
+        e.contains("every comma separates two numbers") && e.contains("0,5 1,5"),
+        "{e}"
+    );
 }
 
 #[test]
