@@ -424,6 +424,21 @@ pub fn exact_minus_printed(exact: f64, printed: f64, unit: &str) -> String {
     format!("exact − printed = {sign}{}{unit}", num(d.abs()))
 }
 
+/// [`exact_minus_printed`] and the same difference as a share of the
+/// printed value, in one equation so that both carry the one sign:
+/// `"exact − printed = +0.065 mm = +0.79 % of the printed value"`
+/// ((exact − printed) / |printed|; the share is left out when nothing was
+/// printed, 0).
+pub fn exact_minus_printed_share(exact: f64, printed: f64, unit: &str) -> String {
+    let d = exact_minus_printed(exact, printed, unit);
+    if printed == 0.0 {
+        return d;
+    }
+    let p = (exact - printed) / printed.abs() * 100.0;
+    let sign = if p < 0.0 { "−" } else { "+" };
+    format!("{d} = {sign}{} % of the printed value", fmt_sig(p.abs(), 2))
+}
+
 /// [`fmt_sig`] with 7 significant digits: what the steps show.
 pub fn num(x: f64) -> String {
     fmt_sig(x, 7)
@@ -465,6 +480,22 @@ mod tests {
             "exact − printed = −4.744882 px"
         );
         assert_eq!(exact_minus_printed(0.5, 0.5, ""), "exact − printed = +0");
+    }
+
+    #[test]
+    fn the_share_carries_the_sign_of_the_difference() {
+        assert_eq!(
+            exact_minus_printed_share(25.4 / 600.0, 0.0423, "mm"),
+            "exact − printed = +0.00003333333 mm = +0.079 % of the printed value"
+        );
+        assert_eq!(
+            exact_minus_printed_share(-1.98, -2.0, ""),
+            "exact − printed = +0.02 = +1 % of the printed value"
+        );
+        assert_eq!(
+            exact_minus_printed_share(8.19, 8.255, "mm"),
+            "exact − printed = −0.065 mm = −0.79 % of the printed value"
+        );
     }
 
     #[test]

@@ -5,7 +5,9 @@ use super::fields::{is_seed, Field, Inputs};
 use super::Entry;
 use crate::coords::{self, Frame};
 use crate::error::Result;
-use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step};
+use crate::solution::{
+    exact_minus_printed, exact_minus_printed_share, num, tex, NoteKind, Record, Solution, Step,
+};
 
 const TOPIC: &str = "Coordinates";
 /// The largest scan resolution accepted (dpi).
@@ -106,13 +108,6 @@ fn photo_to_pixel_fields() -> Vec<Field> {
     ]
 }
 
-/// Relative difference in percent, for notes.
-fn percent(printed: f64, exact: f64) -> String {
-    let p = (printed - exact) / exact * 100.0;
-    let sign = if p > 0.0 { "+" } else { "" };
-    format!("{sign}{} %", crate::solution::fmt_sig(p, 2))
-}
-
 /// Labels of the result keys shared by the three examples.
 fn label_results(s: &mut Solution) {
     s.label_present(&[
@@ -174,12 +169,11 @@ fn pixel_rounding_note(s: &mut Solution, dpi: f64, exact: f64, printed: f64) {
     s.note(
         NoteKind::Rounding,
         format!(
-            "The course notes round the pixel size 25.4/{} = {} mm to {} mm ({}; {}) and compute on with the rounded value; every length derived from the pixel size is off by about the same proportion.",
+            "The course notes round the pixel size 25.4/{} = {} mm to {} mm ({}) and compute on with the rounded value; every length derived from the pixel size is off by about the same proportion.",
             num(dpi),
             num(exact),
             num(printed),
-            exact_minus_printed(exact, printed, "mm"),
-            percent(printed, exact)
+            exact_minus_printed_share(exact, printed, "mm"),
         ),
     )
     .about(&["pixel_size_mm"]);
@@ -365,10 +359,9 @@ fn gsd(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "The course notes round the scale number 1920/0.152 = {} to {m} ({}); harmless on its own ({}).",
+                "The course notes round the scale number 1920/0.152 = {} to {m} ({}): harmless on its own.",
                 num(g.scale_denominator),
-                exact_minus_printed(g.scale_denominator, m, ""),
-                percent(m, g.scale_denominator)
+                exact_minus_printed_share(g.scale_denominator, m, ""),
             ),
         )
         .about(&["scale_denominator"]);
@@ -376,13 +369,12 @@ fn gsd(inputs: &Record) -> Result<Solution> {
         s.note(
             NoteKind::Rounding,
             format!(
-                "With both rounded values the course notes get 0.028 × 12632 = {} mm ≈ {mm} mm = {cm} cm instead of the exact {} mm = {} cm ({}; {}; {}), almost all of it from the pixel size.",
+                "With both rounded values the course notes get 0.028 × 12632 = {} mm ≈ {mm} mm = {cm} cm instead of the exact {} mm = {} cm ({}; {}), almost all of it from the pixel size.",
                 num(p * m),
                 num(g.gsd_mm),
                 num(gsd_cm),
-                exact_minus_printed(g.gsd_mm, mm, "mm"),
+                exact_minus_printed_share(g.gsd_mm, mm, "mm"),
                 exact_minus_printed(gsd_cm, cm, "cm"),
-                percent(mm, g.gsd_mm)
             ),
         )
         .about(&["gsd_mm", "gsd_cm"]);

@@ -618,7 +618,8 @@ fn example_13_notes(s: &mut Solution, f: &Forstner) {
             num(printed_det),
             num(196.75 / printed_det),
             crate::solution::fmt_sig(
-                m.trace_inverse.map_or(0.0, |t| (t - printed_tr) / t * 100.0),
+                m.trace_inverse
+                    .map_or(0.0, |t| ((t - printed_tr) / t * 100.0).abs()),
                 2
             )
         ),

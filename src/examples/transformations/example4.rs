@@ -180,12 +180,13 @@ pub(super) fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f6
     s.note(
         NoteKind::Rounding,
         format!(
-            "The printed residuals come from the unrounded parameters: with the printed X they would reach {} mm (instead of at most {} mm), because the scale a = {} printed as 0.043 is {} off, which over 5300 pixels is about {} mm. Three decimals are far too few for a scale in mm per pixel; the exact values are given here with seven significant digits.",
+            "The printed residuals come from the unrounded parameters: with the printed X they would reach {} mm (instead of at most {} mm), because the scale a = {} printed as 0.043 is {} % too {} (of the printed value), which over 5300 pixels is about {} mm. Three decimals are far too few for a scale in mm per pixel; the exact values are given here with seven significant digits.",
             fmt_sig(max_abs(&v), 3),
             fmt_sig(max_abs(&fit.adjustment.v), 2),
             num(a),
-            format_args!("{:.1} %", (0.043 - a) / a * 100.0),
-            fmt_sig((0.043 - a) * 5305.0, 2)
+            fmt_sig(((a - 0.043) / 0.043 * 100.0).abs(), 2),
+            if a > 0.043 { "small" } else { "large" },
+            fmt_sig(((0.043 - a) * 5305.0).abs(), 2)
         ),
     ).about(&["residuals"]);
 }
