@@ -22,8 +22,16 @@
 // `options`, the keys of www/embed-options.js) and shows it, inert, until the
 // page's own view replaces it.
 //
+// On index.html it also saves the catalog's picture of each example's figure
+// (issue 29: its first canvas for the seed, 320 × 200 WebP, and a dark one
+// when the figures draw one for <html data-theme="dark">) in
+// dist/prerender/thumbs/, listed in that page's data block as
+// "thumbs": { folder, ids, dark }; www/catalog.js shows them, loaded lazily,
+// and the service worker caches them when first used (prerender/ is lazy).
+//
 // Without Chromium (/usr/bin/chromium, or CHROMIUM_PATH) the step says so and
-// saves nothing: the page works as before, its first numbers later.
+// saves nothing: the page works as before, its first numbers later and its
+// catalog without pictures.
 import fs from "node:fs";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
@@ -66,12 +74,55 @@ function snapshot() {
 }
 
 /**
+ * The catalog's picture of an example's figure (issue 29, item 14): its first
+ * canvas as the page drew it for the seed, scaled to fit THUMB (pixels: twice
+ * the size catalog.js shows it at, for 2× screens) on the figure's own
+ * background, as WebP. Null when the example has no figure.
+ */
+const THUMB = { width: 320, height: 200, quality: 0.8 };
+
+/** Runs in the page: the picture of the figure on screen as a data: URL, or null. */
+function thumbnail({ width, height, quality }) {
+  const canvas = document.querySelector(".figure-section canvas.figure-canvas");
+  if (!canvas || !canvas.width || !canvas.height) return null;
+  const out = document.createElement("canvas");
+  out.width = width;
+  out.height = height;
+  const ctx = out.getContext("2d");
+  // the figure's own background (its top-left pixel) around it
+  const [r, g, b] = canvas.getContext("2d").getImageData(0, 0, 1, 1).data;
+  ctx.fillStyle = `rgb(${r} ${g} ${b})`;
+  ctx.fillRect(0, 0, width, height);
+  // the whole figure where it is about as wide as the picture; a tall one fills the width and
+  // shows its top (a figure's title, scale and first rows are at its top)
+  const scale = Math.max(Math.min(width / canvas.width, height / canvas.height), (0.75 * width) / canvas.width);
+  const w = canvas.width * scale;
+  const h = canvas.height * scale;
+  ctx.imageSmoothingEnabled = true;
+  ctx.imageSmoothingQuality = "high";
+  ctx.drawImage(canvas, (width - w) / 2, h > height ? 0 : (height - h) / 2, w, h);
+  return out.toDataURL("image/webp", quality);
+}
+
+/** Two frames: what a change of <html data-theme> makes the figures draw is on the canvas. */
+function twoFrames() {
+  return new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(() => resolve())));
+}
+
+/** A data: URL's bytes. */
+function dataBytes(url) {
+  const m = /^data:image\/webp;base64,(.*)$/.exec(url ?? "");
+  if (!m) throw new Error("prerender: a figure's picture is not WebP (does this Chromium encode WebP?)");
+  return Buffer.from(m[1], "base64");
+}
+
+/**
  * The two pages and where their saved parts go: the embed's differs (its
  * heading is the page's h1, no "← Catalog"), and is the same for any of its
  * view options (they show or hide the parts below the answer line).
  */
 const PAGES = [
-  { file: "index.html", folder: "prerender" },
+  { file: "index.html", folder: "prerender", thumbs: "prerender/thumbs" },
   { file: "embed.html", folder: "prerender/embed" },
 ];
 
@@ -80,7 +131,7 @@ export async function prerender(dist) {
     const html = fs.readFileSync(path.join(dist, p.file), "utf8");
     const data = readDataBlock(html);
     if (!data) throw new Error(`prerender: ${p.file} has no catalog-data block (run scripts/assets.mjs first)`);
-    return { ...p, html, data, saved: [] };
+    return { ...p, html, data, saved: [], pictured: [], dark: [] };
   });
   const ids = pages[0].data.entries.filter((e) => e.status === "ready").map((e) => e.id);
   if (!fs.existsSync(CHROMIUM)) {
@@ -93,7 +144,7 @@ export async function prerender(dist) {
   const server = await startServer({ dir: dist, port: 0 });
   const browser = await launchChromium();
   fs.rmSync(path.join(dist, "prerender"), { recursive: true, force: true });
-  for (const p of pages) fs.mkdirSync(path.join(dist, p.folder), { recursive: true });
+  for (const p of pages) for (const f of [p.folder, p.thumbs].filter(Boolean)) fs.mkdirSync(path.join(dist, f), { recursive: true });
   try {
     for (const p of pages) {
       for (const id of ids) {
@@ -112,6 +163,22 @@ export async function prerender(dist) {
           if (saveHtml.includes(new URL(server.url).host)) throw new Error(`prerender: ${p.file}#/${id}: the solution names the build's own server (${server.url})`);
           fs.writeFileSync(path.join(dist, p.folder, `${id}.html`), saveHtml);
           p.saved.push(id);
+          if (p.thumbs) {
+            // the figure's picture for the catalog, and the dark one where the figures draw one
+            // (they redraw when <html data-theme> changes; an identical picture is not kept)
+            const light = await page.evaluate(thumbnail, THUMB);
+            if (light) {
+              fs.writeFileSync(path.join(dist, p.thumbs, `${id}.webp`), dataBytes(light));
+              p.pictured.push(id);
+              await page.evaluate(() => document.documentElement.setAttribute("data-theme", "dark"));
+              await page.evaluate(twoFrames);
+              const dark = await page.evaluate(thumbnail, THUMB);
+              if (dark && dark !== light) {
+                fs.writeFileSync(path.join(dist, p.thumbs, `${id}.dark.webp`), dataBytes(dark));
+                p.dark.push(id);
+              }
+            }
+          }
         } finally {
           await context.close();
         }
@@ -123,11 +190,16 @@ export async function prerender(dist) {
   }
   let kb = 0;
   for (const p of pages) {
-    const block = dataBlock({ ...p.data, prerendered: { folder: `./${p.folder}/`, ids: p.saved, options: OPTION_KEYS } });
+    const thumbs = p.thumbs ? { thumbs: { folder: `./${p.thumbs}/`, ids: p.pictured, dark: p.dark } } : {};
+    const block = dataBlock({ ...p.data, prerendered: { folder: `./${p.folder}/`, ids: p.saved, options: OPTION_KEYS }, ...thumbs });
     fs.writeFileSync(path.join(dist, p.file), p.html.replace(DATA_BLOCK, () => block));
     kb += p.saved.reduce((s, id) => s + fs.statSync(path.join(dist, p.folder, `${id}.html`)).size, 0) / 1024;
   }
   console.log(`prerender: ${pages.map((p) => `${p.saved.length} answers for ${p.file} in ${p.folder}/`).join(", ")} (${kb.toFixed(0)} KB raw in all)`);
+  for (const p of pages.filter((x) => x.thumbs)) {
+    const bytes = fs.readdirSync(path.join(dist, p.thumbs)).reduce((sum, f) => sum + fs.statSync(path.join(dist, p.thumbs, f)).size, 0);
+    console.log(`prerender: ${p.pictured.length} pictures of figures (${p.dark.length} dark) in ${p.thumbs}/, ${(bytes / 1024).toFixed(0)} KB, loaded lazily by the catalog`);
+  }
   return pages.map((p) => p.saved);
 }
 

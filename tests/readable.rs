@@ -406,7 +406,7 @@ fn every_entry_names_its_course_document() {
     assert_eq!(gsd.source, "Worked examples, Example 2");
     assert_eq!(
         gsd.document,
-        "Course notes 000 — Point coordinates on digital images (worked examples)"
+        "Course notes — Worked examples 1–18 (digital image coordinates to boundary descriptors)"
     );
     let f = cat.iter().find(|e| e.id == "forstner-window").unwrap();
     assert!(

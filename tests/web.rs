@@ -198,7 +198,7 @@ fn notes_answer_and_mode_fields_cross_as_plain_data() {
     assert!(get(&gsd, "document")
         .as_string()
         .unwrap()
-        .starts_with("Course notes 000 — Point coordinates on digital images"));
+        .starts_with("Course notes — Worked examples 1–18"));
     let chain = cat
         .iter()
         .find(|e| get(e, "id").as_string().as_deref() == Some("chain-code"))

@@ -16,19 +16,9 @@ import { renderAnswer, renderNotes, renderResult, updateSteps } from "./render.j
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
+import { catalogNav, homeView } from "./catalog.js";
+import { mountShell } from "./shell.js";
 
-/** Topics in page order (docs/API.md); unknown topics follow in catalog order. */
-const TOPIC_ORDER = [
-  "Coordinates",
-  "Transformations",
-  "Correlation",
-  "Least-squares matching",
-  "Resampling",
-  "Filters and edges",
-  "Interest operators",
-  "Chain codes and boundaries",
-  "Map projection",
-];
 const SITE_TITLE = "Photogrammetry Playground";
 /** Longest URL key quoted back in the "ignored" notice. */
 const MAX_QUOTED_KEY = 40;
@@ -39,6 +29,8 @@ const API_NAMES_KEY = "photogrammetry-playground:show-api-names";
 
 const mode = document.body.dataset.mode === "embed" ? "embed" : "full";
 const root = document.getElementById("app");
+// the header's theme switch and the skip link (the site's page only)
+if (mode === "full") mountShell();
 
 let core = null;
 let entries = [];
@@ -54,40 +46,10 @@ function entryById(id) {
   return entries.find((e) => e.id === id) ?? null;
 }
 
-function topicsInOrder() {
-  const topics = [...TOPIC_ORDER];
-  for (const e of entries) if (!topics.includes(e.topic)) topics.push(e.topic);
-  return topics.filter((t) => entries.some((e) => e.topic === t));
-}
-
 // ---------------------------------------------------------------------------
-// The catalog
+// The catalog (catalog.js)
 
-function catalogNav({ detailed, currentId = null }) {
-  const nav = el("nav", { class: `catalog ${detailed ? "catalog-detailed" : "catalog-compact"}`, "aria-label": "All examples" });
-  for (const topic of topicsInOrder()) {
-    const headingId = `topic-${topic.replace(/[^A-Za-z0-9]+/g, "-").toLowerCase()}${detailed ? "" : "-menu"}`;
-    const list = el("ul", { class: "catalog-list", "aria-labelledby": headingId });
-    for (const e of entries.filter((x) => x.topic === topic)) {
-      const ready = e.status === "ready";
-      const item = el("li", { class: `catalog-item ${ready ? "ready" : "coming"}`, "data-id": e.id, "data-status": e.status });
-      if (ready) {
-        item.append(el("a", { href: `#/${encodeURIComponent(e.id)}`, "aria-current": e.id === currentId ? "page" : null }, e.title));
-      } else {
-        item.append(el("span", { class: "coming-title" }, e.title), " ", el("span", { class: "badge badge-coming" }, "coming"));
-      }
-      if (detailed) {
-        item.append(el("span", { class: "catalog-source" }, e.source ?? ""));
-        if (e.summary) item.append(el("p", { class: "catalog-summary" }, e.summary));
-      }
-      list.append(item);
-    }
-    nav.append(el("section", { class: "catalog-topic" }, el(detailed ? "h2" : "h3", { id: headingId }, topic), list));
-  }
-  return nav;
-}
-
-function showHome() {
+function showHome(params = []) {
   destroyView();
   document.title = SITE_TITLE;
   if (mode === "embed") {
@@ -97,28 +59,7 @@ function showHome() {
     setStatus("home");
     return;
   }
-  const ready = entries.filter((e) => e.status === "ready").length;
-  root.replaceChildren(
-    el(
-      "section",
-      { class: "home" },
-      el(
-        "p",
-        { class: "intro" },
-        "Worked examples of digital photogrammetry and image processing, solved step by step with every intermediate number. Choose an example, change any input, and the whole solution follows at once; the address holds the inputs, so a what-if is a link.",
-      ),
-      el(
-        "p",
-        { class: "muted" },
-        ready === entries.length
-          ? `All ${ready} examples are ready.`
-          : `${ready} of ${entries.length} examples are ready; ${entries.length - ready === 1 ? "the other is" : "the others are"} marked “coming”.`,
-      ),
-      el("p", { class: "lab-link" }, el("a", { href: "#/lab" }, "Image lab: run these operators on real photos, and open the example behind any pixel →")),
-      catalogNav({ detailed: true }),
-      el("p", { class: "practice-home-link" }, el("a", { href: "#/practice" }, "Practice: every example with fresh numbers, checked step by step →")),
-    ),
-  );
+  root.replaceChildren(homeView(entries, { query: params.find(([k]) => k === "q")?.[1] ?? "" }));
   setStatus("home");
 }
 
@@ -201,15 +142,16 @@ function buildView(entry) {
   const result = el("section", { class: "panel result-section", "aria-labelledby": "result-h" }, el("h3", { id: "result-h" }, "Result"), resultBody);
   const notesBody = el("div", { class: "notes-body" });
   const notes = el("section", { class: "panel notes-section", "aria-labelledby": "notes-h" }, el("h3", { id: "notes-h" }, "Notes"), notesBody);
-  const side = el("div", { class: "side" }, figureSection, result, notes);
-  const solutionArea = el("div", { class: "layout" }, inputs, steps, side);
+  const side = el("div", { class: "side" }, result, notes);
+  // the figure right after the inputs (style.css .layout: beside the steps on a wide screen)
+  const solutionArea = el("div", { class: "layout" }, inputs, figureSection, steps, side);
 
   const children = [];
   if (mode === "full") {
     // its list is built when it is first opened (26 links the first solution need not wait for)
     const drawer = el("details", { class: "catalog-drawer" }, el("summary", {}, "Other examples"));
     drawer.addEventListener("toggle", () => {
-      if (drawer.open && !drawer.querySelector("nav")) drawer.append(catalogNav({ detailed: false, currentId: id }));
+      if (drawer.open && !drawer.querySelector("nav")) drawer.append(catalogNav(entries, { detailed: false, currentId: id }));
     });
     children.push(el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog"), drawer));
   }
@@ -583,8 +525,9 @@ async function showLab(params = []) {
     showMessage("The image lab could not be loaded", messageOf(e));
     return;
   }
+  // the lab's whole state is in its link (family, photo, controls, pixel, view): lab.js reads it
   const family = params.find(([k]) => k === "family")?.[1] ?? null;
-  labModule.openLab(root, { family });
+  labModule.openLab(root, { family, params });
 }
 
 // ---------------------------------------------------------------------------
@@ -603,7 +546,7 @@ async function route({ focus = false } = {}) {
     return;
   }
   if (!id) {
-    showHome();
+    showHome(params);
     return;
   }
   if (id === "practice" || params.some(([key]) => key === "practice")) {

@@ -39,7 +39,7 @@ pub fn keys(id: &str) -> &'static [&'static str] {
 const DOCUMENTS: [(&[&str], &str); 3] = [
     (
         &["Worked examples", "Seed 000", "seed 000"],
-        "Course notes 000 — Point coordinates on digital images (worked examples)",
+        "Course notes — Worked examples 1–18 (digital image coordinates to boundary descriptors)",
     ),
     (
         &["Lecture 21", "Seed 003", "seed 003"],
@@ -74,10 +74,10 @@ mod tests {
 
     #[test]
     fn documents_follow_the_source_in_order() {
-        assert!(document("Worked examples, Example 2").starts_with("Course notes 000"));
+        assert!(document("Worked examples, Example 2").starts_with("Course notes — Worked"));
         let both = document("Lecture 21: Image matching; Worked examples, Example 13");
         assert!(both.starts_with("Higher Surveying"), "{both}");
-        assert!(both.contains("; Course notes 000"), "{both}");
+        assert!(both.contains("; Course notes — Worked"), "{both}");
         assert!(document("Seed 004").starts_with("Lecture 7 — Image processing"));
         assert_eq!(document("nowhere"), "");
     }
