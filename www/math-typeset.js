@@ -5,7 +5,7 @@
 // text. The page uses math.js (renderFormula, fitFormulas, keepFitted); the
 // unit tests (tests/unit/math.test.mjs) read the splitting rules here.
 
-import { renderFormula } from "./math.js";
+import { plainTex, renderFormula } from "./math.js";
 
 const KATEX_OPTIONS = Object.freeze({
   displayMode: false, // terms are inline boxes; \displaystyle keeps display-size fractions
@@ -288,6 +288,101 @@ function range(a, b) {
 }
 
 // ---------------------------------------------------------------------------
+// A split matrix keeps its name, and the equation around it reads on after
+// the whole matrix (issue 29): "A, columns 1–2 of 4", "A, columns 3–4 of 4",
+// then "A X = L" with the name standing for the matrix shown above.
+
+/** A matrix's name: a letter with an optional subscript and transpose (A, N, Q_{xx}, A^\mathsf{T}). */
+const SYMBOL = /^[A-Za-z](?:_\{[^{}]*\}|_[A-Za-z0-9])?(?:\^\{?\\mathsf\{T\}\}?)?$/;
+/** What may stand before a matrix on its first block: a size, "N =" (its name), or a relation ("= "). */
+const LEAD = /^\s*((?:\\(?:small|footnotesize|scriptsize)\s*)?)(?:([A-Za-z](?:_\{[^{}]*\}|_[A-Za-z0-9])?(?:\^\{?\\mathsf\{T\}\}?)?)\s*=|=|\\approx)?\s*$/;
+/** What may follow a matrix on its last block: a comma or a full stop. */
+const TRAIL = /^\s*[,.;]?\s*$/;
+
+/**
+ * A formula's top level with each grid replaced by "@k@": its operands and
+ * the operators between them (=, +, −, \cdot, \times and the thin space of
+ * a product), for matching a substituted formula to its symbolic form.
+ */
+function skeleton(tex) {
+  let flat = "";
+  let rest = tex;
+  let k = 0;
+  let g;
+  while ((g = findGrid(rest))) {
+    flat += `${g.before}@${k++}@`;
+    rest = g.after;
+  }
+  flat += rest;
+  const ops = [];
+  const operands = [];
+  let start = 0;
+  scan(flat, (i, t, depth, paren) => {
+    if (paren) return;
+    const op = t.ch === "=" || t.ch === "+" || t.ch === "-" ? t.ch : ["cdot", "times", ","].includes(t.cmd) ? t.cmd : null;
+    if (op === null) return;
+    operands.push(flat.slice(start, i).trim());
+    ops.push(op);
+    start = i + (t.length ?? 1);
+  });
+  operands.push(flat.slice(start).trim());
+  return { ops, operands };
+}
+
+/**
+ * The names of the matrices of `substituted` (in their order), read from
+ * the symbolic formula where both have the same operators
+ * ("A\,X = L + V" names the three matrices of "[…]\,[…] = […] + V" A, X
+ * and L); null where there is no name.
+ * @param {string} symbolic
+ * @param {string} substituted
+ * @returns {(string | null)[]}
+ */
+export function gridNames(symbolic, substituted) {
+  const b = skeleton(String(substituted ?? ""));
+  const names = [];
+  const a = symbolic ? skeleton(String(symbolic)) : null;
+  const same = a && a.ops.join(" ") === b.ops.join(" ");
+  b.operands.forEach((o, i) => {
+    const m = /^@(\d+)@$/.exec(o);
+    if (m) names[Number(m[1])] = same && SYMBOL.test(a.operands[i]) ? a.operands[i] : null;
+  });
+  // grids inside an operand ("s[…][…]") have no name of their own
+  const count = (String(substituted ?? "").match(/\\begin\{/g) ?? []).length;
+  return Array.from({ length: Math.max(names.length, 0) }, (_, k) => names[k] ?? null).slice(0, count);
+}
+
+/**
+ * How a grid split into blocks sits in its term. A grid with only a size,
+ * "N =" or a relation before it and only punctuation after keeps them on
+ * its first and last blocks (`lead`, `trail`); otherwise the blocks carry
+ * just the size and the term is written again after the whole matrix
+ * (`rest`), the matrix's name (or "[matrix above]") standing for it.
+ * `name` (LaTeX): "N" of "N = […]", else `known` (from the symbolic
+ * formula: gridNames), else null.
+ * @returns {{ size: string, lead: string, trail: string, name: string | null, rest: string | null }}
+ */
+export function gridContext(grid, known = null) {
+  const size = /^\s*(\\(?:small|footnotesize|scriptsize)\s*)?/.exec(grid.before)[1] ?? "";
+  const lead = LEAD.exec(grid.before);
+  if (lead && TRAIL.test(grid.after)) return { size, lead: grid.before, trail: grid.after, name: lead[2] ?? known, rest: null };
+  const stand = known ?? String.raw`\left[\,\text{matrix above}\,\right]`;
+  const before = grid.before.slice(grid.before.indexOf(size) + size.length);
+  return { size, lead: size, trail: "", name: known, rest: `${size}${before}${stand}${grid.after}`.trim() };
+}
+
+/** A matrix's name as plain text: "Aᵀ", "Q_xx". */
+function matrixName(name) {
+  return plainTex(name).replace(/\^\(?T\)?$/, "ᵀ").replace(/_\((\w+)\)/, "_$1");
+}
+
+/** A block's caption: "A, columns 1–3 of 4" (plain text). */
+export function blockCaption(name, b) {
+  const cols = b.from === b.to ? `column ${b.from} of ${b.of}` : `columns ${b.from}–${b.to} of ${b.of}`;
+  return name ? `${matrixName(name)}, ${cols}` : cols;
+}
+
+// ---------------------------------------------------------------------------
 // Rendering
 
 /** Between boxes: a place to wrap that takes no room (KaTeX spaces the operators itself). */
@@ -445,8 +540,11 @@ function refit(term, room, wide) {
     term.replaceWith(rowsNode);
     return { node: rowsNode };
   }
-  const grid = findGrid(tex);
-  if (grid) {
+  const found = findGrid(tex);
+  // an equation around a matrix ("[…] = s[…]", "[…]\,[…] = […]") first parts at its
+  // relation: the matrix may then fit whole; one that does not is split below
+  const grid = found && { ...found, context: gridContext(found, knownName(term, found)) };
+  if (grid && !(grid.context.rest !== null && firstRelation(tex) > 0)) {
     const rows = gridRows(grid.body);
     const ncols = Math.max(...rows.map((r) => r.cells.length));
     const first = grid.env === "array" ? 1 : 0;
@@ -466,6 +564,25 @@ function refit(term, room, wide) {
     return { node: line };
   }
   return null;
+}
+
+/** The name of a term's matrix from the symbolic formula of its step (gridNames), or null. */
+function knownName(term, grid) {
+  const formula = term.closest(".formula");
+  if (!formula) return null;
+  const full = formula.dataset.tex ?? "";
+  const prev = formula.previousElementSibling;
+  const symbolic = prev?.classList.contains("formula-symbolic") ? prev.dataset.tex : null;
+  if (!symbolic) return null;
+  const grids = [];
+  let rest = full;
+  let g;
+  while ((g = findGrid(rest))) {
+    grids.push(g);
+    rest = g.after;
+  }
+  const k = grids.findIndex((x) => x.env === grid.env && x.body === grid.body);
+  return k >= 0 ? (gridNames(symbolic, full)[k] ?? null) : null;
 }
 
 /** Where the first top-level relation ("=", \approx) of a term stands, or -1. */
@@ -491,22 +608,48 @@ function rowLinesNode(grid) {
   return node;
 }
 
+/**
+ * A grid as blocks of `per` columns, each captioned with the matrix's name
+ * ("A, columns 1–2 of 4"); what its term says around the matrix
+ * (grid.context, gridContext) follows the whole matrix, on a line of its own.
+ */
 function blocksNode(grid, per) {
+  const { size = "", lead = grid.before, trail = grid.after, name = null, rest = null } = grid.context ?? {};
   const node = document.createElement("span");
   node.className = "formula-piece formula-rows formula-refit formula-blocks";
+  if (name) node.dataset.matrix = matrixName(name);
   const blocks = gridBlocks(grid, per);
   blocks.forEach((b, k) => {
     const block = document.createElement("span");
     block.className = "formula-block";
     const caption = document.createElement("span");
     caption.className = "formula-block-caption";
-    caption.textContent = b.from === b.to ? `column ${b.from} of ${b.of}` : `columns ${b.from}–${b.to} of ${b.of}`;
-    const before = k === 0 ? grid.before : "";
-    const after = k === blocks.length - 1 ? grid.after : "";
+    caption.textContent = blockCaption(name, b);
+    const before = k === 0 ? lead : size;
+    const after = k === blocks.length - 1 ? trail : "";
     block.append(caption, termNode(`${before}${b.tex}${after}`));
     node.append(block);
   });
+  if (rest) {
+    // the equation, after the whole matrix
+    const line = lineNode(termsOf(rest));
+    line.classList.add("formula-blocks-rest");
+    node.append(line);
+  }
   return node;
+}
+
+/** How many times the parts of a rearranged term are rearranged again. */
+const REFIT_DEPTH = 3;
+
+/** refit, or null when the rearrangement fails (KaTeX cannot read it: the term stays whole, scrolling). */
+function tryRefit(term, room, width) {
+  try {
+    return refit(term, room, width);
+  } catch (e) {
+    console.warn("formula could not be rearranged", e);
+    return null;
+  }
 }
 
 /** The last resort for an atom that cannot be broken: a labelled scroll region. */
@@ -612,36 +755,42 @@ export function fitAll(formulas, { reset = true, all = false } = {}) {
   }
   if (!wide.length) return;
   // writes: the first rearrangement of each
-  let jobs = wide.map(({ term, room, width }) => {
-    try {
-      return { term, ...(refit(term, room, width) ?? { node: null }) };
-    } catch (e) {
-      // a rearrangement KaTeX cannot read: the term stays whole, scrolling
-      console.warn("formula could not be rearranged", e);
-      return { term, node: null };
-    }
-  });
+  let jobs = wide.map(({ term, room, width }) => ({ term, depth: 0, ...(tryRefit(term, room, width) ?? { node: null }) }));
   const stuck = [];
   while (jobs.length) {
-    // reads: which new terms are still too wide
+    // reads: which new terms are still too wide (with their widths)
     const next = [];
-    const still = jobs.map((job) => (job.node ? [...job.node.querySelectorAll(".formula-term")].filter(tooWide) : [job.term]));
-    // writes: a grid with blocks still too wide tries fewer columns; the rest is done
+    const still = jobs.map((job) =>
+      job.node ? [...job.node.querySelectorAll(".formula-term")].filter(tooWide).map((term) => ({ term, room: term.clientWidth, width: term.scrollWidth })) : [{ term: job.term }],
+    );
+    // writes: a grid with blocks still too wide tries fewer columns; a term around it (or a
+    // part of an equation) still too wide is rearranged in its turn, a few levels deep; the rest is done
     jobs.forEach((job, k) => {
-      if (!job.grid || !still[k].length) {
-        stuck.push(...still[k]);
+      if (!still[k].length) return;
+      if (!job.node) {
+        stuck.push(...still[k].map((w) => w.term));
+        return;
+      }
+      const ownBlock = (w) => job.grid && w.term.parentElement?.classList.contains("formula-block") && w.term.parentElement.parentElement === job.node;
+      const blocks = still[k].filter(ownBlock);
+      if (!blocks.length) {
+        for (const w of still[k]) {
+          const again = (job.depth ?? 0) < REFIT_DEPTH ? tryRefit(w.term, w.room, w.width) : null;
+          if (again?.node) next.push({ term: w.term, ...again, depth: (job.depth ?? 0) + 1 });
+          else stuck.push(w.term);
+        }
         return;
       }
       try {
         if (job.per === 1) {
           if (job.grid.env !== "array") {
-            stuck.push(...still[k]);
+            stuck.push(...blocks.map((w) => w.term));
             return;
           }
           // a table too wide even one column at a time: one line per row, "key: header = cell"
           const lines = rowLinesNode(job.grid);
           job.node.replaceWith(lines);
-          next.push({ term: job.term, node: lines });
+          next.push({ term: job.term, node: lines, depth: job.depth });
           return;
         }
         const per = Math.max(1, Math.min(job.per - 1, Math.floor(job.per * 0.8)));
@@ -650,7 +799,7 @@ export function fitAll(formulas, { reset = true, all = false } = {}) {
         next.push({ ...job, node, per });
       } catch (e) {
         console.warn("formula could not be rearranged", e);
-        stuck.push(...still[k]);
+        stuck.push(...blocks.map((w) => w.term));
       }
     });
     jobs = next;

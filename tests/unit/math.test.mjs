@@ -2,7 +2,7 @@
 // string work; the page lays the pieces out and fits them to the width.
 import { describe, it } from "node:test";
 import assert from "node:assert/strict";
-import { findGrid, gridBlocks, splitFormula, splitTerms } from "../../www/math-typeset.js"; // loaded with KaTeX (www/math.js)
+import { blockCaption, findGrid, gridBlocks, gridContext, gridNames, splitFormula, splitTerms } from "../../www/math-typeset.js"; // loaded with KaTeX (www/math.js)
 
 describe("splitFormula: groups and relation chains", () => {
   it("the left-hand side stays with the first relation; the result is a piece of its own", () => {
@@ -71,5 +71,33 @@ describe("grids: matrices and tables in blocks of columns", () => {
     const blocks = gridBlocks(findGrid(table), 2);
     assert.equal(blocks.length, 2);
     assert.match(blocks[1].tex, /^\\begin\{array\}\{c\|rr\} k & c & d \\\\ \\hline 1 & 30 & 40/);
+  });
+});
+
+describe("a split matrix keeps its name and its equation (issue 29)", () => {
+  const substituted = String.raw`\begin{bmatrix} 48.15 & 2699.98 & 1 & 0 \\ -2699.98 & 48.15 & 0 & 1 \end{bmatrix}\,\begin{bmatrix} a \\ b \\ c \\ d \end{bmatrix} = \begin{bmatrix} -113.002 \\ 0.008 \end{bmatrix} + V`;
+  it("gridNames reads the matrices' names from the symbolic formula with the same operators", () => {
+    assert.deepEqual(gridNames(String.raw`A\,X = L + V`, substituted), ["A", "X", "L"]);
+    // another shape: no names
+    assert.deepEqual(gridNames(String.raw`A\,X = L`, substituted), [null, null, null]);
+    assert.deepEqual(gridNames(String.raw`N = A^\mathsf{T} A`, String.raw`N = \begin{bmatrix} 1 & 2 \end{bmatrix}`), [null]);
+  });
+  it("N = […], the name before the matrix and punctuation after stay on its first and last blocks", () => {
+    const c = gridContext(findGrid(String.raw`\small N = \begin{bmatrix} 1 & 2 & 3 \end{bmatrix},`));
+    assert.deepEqual(c, { size: String.raw`\small `, lead: String.raw`\small N = `, trail: ",", name: "N", rest: null });
+  });
+  it("A X: the blocks are A alone, and the product is written again after the whole matrix", () => {
+    const term = String.raw`\begin{bmatrix} 1 & 2 \end{bmatrix}\,\begin{bmatrix} a \\ b \end{bmatrix}`;
+    const c = gridContext(findGrid(term), "A");
+    assert.equal(c.lead, "");
+    assert.equal(c.trail, "");
+    assert.equal(c.rest, String.raw`A\,\begin{bmatrix} a \\ b \end{bmatrix}`);
+    // without a name, a word stands for the matrix
+    assert.match(gridContext(findGrid(term), null).rest, /^\\left\[\\,\\text\{matrix above\}/);
+  });
+  it("each block's caption names the matrix", () => {
+    assert.equal(blockCaption("A", { from: 1, to: 3, of: 4 }), "A, columns 1–3 of 4");
+    assert.equal(blockCaption(String.raw`A^\mathsf{T}`, { from: 4, to: 4, of: 4 }), "Aᵀ, column 4 of 4");
+    assert.equal(blockCaption(null, { from: 2, to: 3, of: 5 }), "columns 2–3 of 5");
   });
 });
