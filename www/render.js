@@ -299,6 +299,10 @@ export function renderAnswer(solution) {
     const exact = result[key];
     const printed = Object.hasOwn(textbook, key) ? textbook[key] : undefined;
     const u = unit ? ` ${unit}` : "";
+    if (exact === null || exact === undefined) {
+      // no value: say why, from the note about it (e.g. resample's bicubic value off the patch)
+      return el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, "no value"), ...noValueReason(solution, key));
+    }
     const span = el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, `${answerText(exact, printed, unit)}${u}`));
     if (printed !== undefined) {
       const { agrees, explained } = compare(solution, key, exact, printed);
@@ -307,6 +311,22 @@ export function renderAnswer(solution) {
     return span;
   });
   return parts.flatMap((p, i) => (i ? [el("span", { class: "answer-sep" }, " · "), p] : [p]));
+}
+
+/**
+ * Why a result has no value, for the answer line: the first sentence of the
+ * note about it (a warning first) and a link to that note; a plain word when
+ * no note says.
+ */
+function noValueReason(solution, key) {
+  const about = notesAbout(solution, key);
+  const note = about.find(({ kind }) => kind === "warning") ?? about[0];
+  if (!note) return [el("span", { class: "answer-why" }, " (these inputs give none)")];
+  // "No bicubic value here: Lecture 7's … (7 missing). The lecture's …" → its first sentence, without the "No … here:"
+  const text = String(note.note.text ?? "");
+  const first = (/^[\s\S]*?[.!?](?=\s|$)/.exec(text)?.[0] ?? text).replace(/^No [^:.]{0,60}:\s*/, "");
+  const why = first ? first.charAt(0).toUpperCase() + first.slice(1) : "See the note.";
+  return [el("span", { class: "answer-why" }, ` — ${why} (`, noteLink(note), ")")];
 }
 
 function answerText(value, printed, unit = null) {

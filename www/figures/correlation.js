@@ -11,7 +11,7 @@
 //   subpixel-2d: the fitted quadric as contours over the 3×3 ρ, with its peak.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, greyLegend, greyScale, line, text, textBlock, blockSize } from "./draw.js";
+import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, greyLegend, greyScale, line, text, textBlock, blockSize } from "./draw.js";
 
 /** Digits shown for ρ, means and sums in the figures. */
 const RHO_DIGITS = 4;
@@ -60,7 +60,8 @@ function rhoShade(r) {
   const a = Math.min(1, Math.abs(r));
   const [cr, cg, cb] = r >= 0 ? RHO_POS : RHO_NEG;
   const mix = (c) => Math.round(255 + (c - 255) * a);
-  return { fill: `rgb(${mix(cr)}, ${mix(cg)}, ${mix(cb)})`, ink: a > 0.6 ? "#ffffff" : COLORS.ink };
+  // the cells are mixed from white in both themes: their numbers in dark ink, white on the strongest
+  return { fill: `rgb(${mix(cr)}, ${mix(cg)}, ${mix(cb)})`, ink: a > 0.6 ? "#ffffff" : PALETTES.light.ink };
 }
 
 function range(values) {
