@@ -15,7 +15,7 @@
   var m = /[?&]theme=(light|dark|auto)(?:&|$)/.exec(location.hash);
   var theme = m && m[1] !== "auto" ? m[1] : null;
   try {
-    var chosen = /embed\.html$/.test(location.pathname) ? null : localStorage.getItem("photogrammetry-playground:theme");
+    var chosen = /\/embed(\.html)?$/.test(location.pathname) ? null : localStorage.getItem("photogrammetry-playground:theme");
     if (chosen === "light" || chosen === "dark") theme = chosen;
     if (localStorage.getItem("photogrammetry-playground:show-api-names") === "1") root.classList.add("show-api");
   } catch (e) {
