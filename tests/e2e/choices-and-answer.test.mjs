@@ -18,9 +18,11 @@ async function selectFits(page) {
     [...document.querySelectorAll(".inputs .field select")].map((s) => {
       const cs = getComputedStyle(s);
       const text = s.selectedOptions[0]?.textContent ?? "";
-      // the text's room: the box less its padding, border and the picker's arrow (1.5em)
-      const em = parseFloat(cs.fontSize);
-      const room = s.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight) - 1.5 * em;
+      // the text's room: the box less its padding and the picker's arrow with the gap before it
+      // (the arrow's own width where the browser says it, else 1.5em)
+      const icon = parseFloat(getComputedStyle(s, "::picker-icon").width);
+      const arrow = Number.isFinite(icon) ? icon + (parseFloat(cs.columnGap) || 0) : 1.5 * parseFloat(cs.fontSize);
+      const room = s.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight) - arrow;
       const probe = document.createElement("div");
       Object.assign(probe.style, { position: "absolute", visibility: "hidden", font: cs.font, lineHeight: cs.lineHeight, width: `${room}px`, whiteSpace: "normal", overflowWrap: "normal" });
       probe.textContent = text;
