@@ -180,10 +180,20 @@ describe("grey scales: dark = low, with a legend, in both themes", { timeout: 20
       );
       // the canvas's own background (before it is drawn) is dark too
       assert.equal(await page.evaluate(() => getComputedStyle(document.querySelector(".figure-canvas")).backgroundColor), "rgb(16, 21, 28)");
+      // print: the light paper whatever the theme, the dark one again afterwards
+      await page.evaluate(() => window.dispatchEvent(new Event("beforeprint")));
+      assert.equal(await page.evaluate(() => document.querySelector(".figure-canvas").dataset.theme), "light");
+      await page.evaluate(() => window.dispatchEvent(new Event("afterprint")));
+      assert.equal(await page.evaluate(() => document.querySelector(".figure-canvas").dataset.theme), "dark");
       await page.evaluate(() => document.documentElement.setAttribute("data-theme", "light"));
       await page.waitForFunction(() => document.querySelector(".figure-canvas").dataset.theme === "light", null, { timeout: 5000 });
       figures = await readFigures(page);
       assert.ok(luminance(figures[0].paper) > 0.9);
+      // an embed with theme=dark: its figure on the dark paper, the greys in the same order
+      assert.equal(await visit(page, env.url, "embed.html", "#/filter-window?theme=dark"), "ok");
+      figures = await readFigures(page);
+      assert.ok(figures.length > 0 && figures.every((f) => f.theme === "dark" && luminance(f.paper) < 0.05), `embed: ${figures.map((f) => [f.theme, f.paper])}`);
+      assertScales(figures, "embed filter-window, theme=dark");
       assert.deepEqual(log.pageErrors, []);
     } finally {
       await context.close();
