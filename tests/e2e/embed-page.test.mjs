@@ -216,13 +216,13 @@ describe("exports and Embed this", { timeout: TEST_TIMEOUT * 2 }, () => {
       assert.ok(iframe.includes(`src="${env.url}embed.html#/gsd?dpi=1200&amp;focal_length_mm=152&amp;flying_height_m=1920&amp;theme=dark&amp;lock=true"`), iframe);
       assert.match(iframe, /title="Ground sample distance — Photogrammetry Playground"/);
       assert.ok((await page.inputValue('[data-snippet="script"]')).includes('data-theme="dark" data-lock="true"'));
-      // the preview reports its height; the iframe snippet takes it (rounded up to 10 px)
+      // the preview reports its height; the iframe snippet takes it as measured
       const preview = await (await page.$(".embed-preview")).contentFrame();
       await preview.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
       await page.waitForFunction(() => /height="\d+"/.test(document.querySelector('[data-snippet="iframe"]').value) && !document.querySelector('[data-snippet="iframe"]').value.includes('height="900"'), null, { timeout: WAIT });
       const content = await preview.evaluate(() => Math.ceil(document.body.getBoundingClientRect().height));
       iframe = await page.inputValue('[data-snippet="iframe"]');
-      assert.equal(Number(/height="(\d+)"/.exec(iframe)[1]), Math.ceil(content / 10) * 10);
+      assert.equal(Number(/height="(\d+)"/.exec(iframe)[1]), content);
       assert.equal(await preview.evaluate(() => document.documentElement.dataset.theme), "dark");
       // the snippets follow an edit of the inputs
       await page.fill('[data-key="dpi"] input', "1500");
