@@ -1,8 +1,9 @@
 //! Issue 13, "every solution readable on every screen": the parts of the
 //! interface the page reads for it, over the whole catalog: each example's
 //! answer keys, labels for every key the page shows, notes keyed to their
-//! quantities with differences stated one way (exact − printed), and fields
-//! that apply only in some modes.
+//! quantities with differences stated one way (exact − printed) and their
+//! percentages with the same sign (issue 29), and fields that apply only in
+//! some modes.
 
 use photogrammetry_playground::examples::{catalog, parse_inputs, solve};
 use photogrammetry_playground::solution::{NoteKind, Record, Solution, Value};
@@ -172,28 +173,39 @@ fn photo_to_pixel_sign_slip_is_an_erratum_keyed_to_the_row_offset() {
     );
 }
 
+const TAG: &str = "exact − printed = ";
+
 /// Every "exact − printed = ±d" a note states, as numbers.
 fn stated_differences(text: &str) -> Vec<f64> {
-    let tag = "exact − printed = ";
-    text.match_indices(tag)
+    text.match_indices(TAG)
         .map(|(i, _)| {
-            let rest = &text[i + tag.len()..];
-            let (sign, rest) = if let Some(r) = rest.strip_prefix('−') {
-                (-1.0, r)
-            } else if let Some(r) = rest.strip_prefix('+') {
-                (1.0, r)
-            } else {
-                panic!("a stated difference without its sign: {text}")
-            };
-            let digits: String = rest
-                .chars()
-                .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e' || *c == '-')
-                .collect();
-            sign * digits
-                .parse::<f64>()
-                .unwrap_or_else(|_| panic!("no number after the sign: {text}"))
+            let (sign, d) = signed_number(&text[i + TAG.len()..])
+                .unwrap_or_else(|| panic!("no number after the sign: {text}"));
+            assert!(
+                sign.is_some(),
+                "a stated difference without its sign: {text}"
+            );
+            d
         })
         .collect()
+}
+
+/// A signed number at the start of `s` ("−0.79", "+2.3e-5"), with the
+/// sign it was written with (`None` when it has none).
+fn signed_number(s: &str) -> Option<(Option<f64>, f64)> {
+    let (sign, rest) = if let Some(r) = s.strip_prefix('−') {
+        (Some(-1.0), r)
+    } else if let Some(r) = s.strip_prefix('+') {
+        (Some(1.0), r)
+    } else {
+        (None, s)
+    };
+    let digits: String = rest
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || *c == '.' || *c == 'e' || *c == '-')
+        .collect();
+    let x: f64 = digits.parse().ok()?;
+    Some((sign, sign.unwrap_or(1.0) * x))
 }
 
 /// The numbers of a value, flattened (a number, a list, a matrix).
@@ -205,10 +217,10 @@ fn flat(v: &Value) -> Vec<f64> {
     }
 }
 
-/// Differences the page's table shows for `key`: exact − printed, element
-/// by element, where the result (or a step value) and the printed value are
+/// The (exact, printed) pairs of the page's table for `key`, element by
+/// element, where the result (or a step value) and the printed value are
 /// numbers of the same shape.
-fn table_differences(s: &Solution, key: &str) -> Vec<f64> {
+fn table_pairs(s: &Solution, key: &str) -> Vec<(f64, f64)> {
     let Some(printed) = s.textbook.as_ref().and_then(|t| t.get(key)) else {
         return Vec::new();
     };
@@ -222,7 +234,12 @@ fn table_differences(s: &Solution, key: &str) -> Vec<f64> {
     if exact.len() != printed.len() {
         return Vec::new();
     }
-    exact.iter().zip(&printed).map(|(e, p)| e - p).collect()
+    exact.into_iter().zip(printed).collect()
+}
+
+/// Differences the page's table shows for `key`: exact − printed.
+fn table_differences(s: &Solution, key: &str) -> Vec<f64> {
+    table_pairs(s, key).iter().map(|(e, p)| e - p).collect()
 }
 
 #[test]
@@ -262,6 +279,117 @@ fn a_wrong_sign_would_fail_the_difference_check() {
     assert!((wrong[0] - c[0]).abs() > 1.0);
     let right = stated_differences("c: exact − printed = +2.314173 px");
     assert!((right[0] - c[0]).abs() < 1e-6);
+}
+
+// ------------------------------------------------- percentages (issue 29, item 3)
+// Every "exact − printed = ±d" a note states, and the percentage stated with
+// it, carry the same sign: the share is (exact − printed) / |printed|, written
+// "exact − printed = +0.0002222222 mm = +0.79 % of the printed value".
+
+/// Every stated difference of a note with the percentages that follow it
+/// (before the next stated difference): `[(d, [(sign, share)])]`.
+fn differences_and_shares(text: &str) -> Vec<(f64, Vec<(Option<f64>, f64)>)> {
+    let starts: Vec<usize> = text.match_indices(TAG).map(|(i, _)| i).collect();
+    starts
+        .iter()
+        .enumerate()
+        .map(|(k, &i)| {
+            let end = starts.get(k + 1).copied().unwrap_or(text.len());
+            let span = &text[i + TAG.len()..end];
+            let (_, d) =
+                signed_number(span).unwrap_or_else(|| panic!("no number after \"{TAG}\": {text}"));
+            // every "<number> %" of the span, read back from its first digit or sign
+            let shares = span
+                .match_indices(" %")
+                .filter_map(|(j, _)| {
+                    let before = &span[..j];
+                    let start = before
+                        .char_indices()
+                        .rev()
+                        .take_while(|(_, c)| c.is_ascii_digit() || matches!(c, '.' | '−' | '+'))
+                        .last()
+                        .map(|(s, _)| s)?;
+                    signed_number(&before[start..])
+                })
+                .collect();
+            (d, shares)
+        })
+        .collect()
+}
+
+#[test]
+fn every_percentage_has_the_sign_and_size_of_its_difference() {
+    let mut checked = 0;
+    for s in seed_solutions() {
+        for n in &s.notes {
+            for (d, shares) in differences_and_shares(&n.text) {
+                for (sign, share) in shares {
+                    let sign = sign.unwrap_or_else(|| {
+                        panic!(
+                            "{}: a percentage without its sign after exact − printed: {}",
+                            s.id, n.text
+                        )
+                    });
+                    assert_eq!(
+                        sign,
+                        if d < 0.0 { -1.0 } else { 1.0 },
+                        "{}: exact − printed = {d} but the percentage is {share} %: {}",
+                        s.id,
+                        n.text
+                    );
+                    // the share of the printed value, from the table's own numbers
+                    let pair = n
+                        .keys
+                        .iter()
+                        .flat_map(|k| table_pairs(&s, k))
+                        .find(|(x, p)| ((x - p) - d).abs() <= 1e-6 * d.abs().max(1e-9));
+                    let (x, p) = pair
+                        .unwrap_or_else(|| panic!("{}: no table row gives {d}: {}", s.id, n.text));
+                    let want = (x - p) / p.abs() * 100.0;
+                    assert!(
+                        (share - want).abs() <= 0.05 * want.abs(),
+                        "{}: the note says {share} %, the table gives {want} %: {}",
+                        s.id,
+                        n.text
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    // gsd (scale number, pixel size, GSD) and the pixel size of the two
+    // pixel/photo examples
+    assert!(checked >= 5, "only {checked} percentages found");
+}
+
+#[test]
+fn the_note_of_the_issue_would_fail() {
+    // "exact − printed = +0.000222 mm; −0.79 %", as the issue saw it
+    let found = differences_and_shares("(exact − printed = +0.000222 mm; −0.79 %)");
+    assert_eq!(found, vec![(0.000222, vec![(Some(-1.0), -0.79)])]);
+    let found = differences_and_shares(
+        "(exact − printed = −0.065 mm = −0.79 % of the printed value; exact − printed = +1 px)",
+    );
+    assert_eq!(
+        found,
+        vec![(-0.065, vec![(Some(-1.0), -0.79)]), (1.0, vec![])]
+    );
+}
+
+#[test]
+fn the_gsd_pixel_size_note_reads_as_one_equation() {
+    let s = solve("gsd", &Record::new()).unwrap();
+    let n = s
+        .notes
+        .iter()
+        .find(|n| n.text.contains("round the pixel size"))
+        .expect("the pixel size note");
+    assert!(
+        n.text
+            .contains("(exact − printed = +0.0002222222 mm = +0.79 % of the printed value)"),
+        "{}",
+        n.text
+    );
 }
 
 // ------------------------------------------------------- mode-dependent fields
