@@ -16,7 +16,6 @@ import { renderAnswer, renderNotes, renderResult, updateSteps } from "./render.j
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
-import { catalogNav, homeView } from "./catalog.js";
 import { mountShell } from "./shell.js";
 
 const SITE_TITLE = "Photogrammetry Playground";
@@ -47,9 +46,10 @@ function entryById(id) {
 }
 
 // ---------------------------------------------------------------------------
-// The catalog (catalog.js)
+// The catalog (catalog.js: its own module, loaded for the home view and the
+// "Other examples" list, not on an example's first load)
 
-function showHome(params = []) {
+async function showHome(params = []) {
   destroyView();
   document.title = SITE_TITLE;
   if (mode === "embed") {
@@ -59,6 +59,10 @@ function showHome(params = []) {
     setStatus("home");
     return;
   }
+  const hash = location.hash;
+  if (!root.querySelector(".home")) setStatus("loading");
+  const { homeView } = await import("./catalog.js");
+  if (location.hash !== hash) return; // the reader moved on; that hashchange routes
   root.replaceChildren(homeView(entries, { query: params.find(([k]) => k === "q")?.[1] ?? "" }));
   setStatus("home");
 }
@@ -150,8 +154,10 @@ function buildView(entry) {
   if (mode === "full") {
     // its list is built when it is first opened (26 links the first solution need not wait for)
     const drawer = el("details", { class: "catalog-drawer" }, el("summary", {}, "Other examples"));
-    drawer.addEventListener("toggle", () => {
-      if (drawer.open && !drawer.querySelector("nav")) drawer.append(catalogNav(entries, { detailed: false, currentId: id }));
+    drawer.addEventListener("toggle", async () => {
+      if (!drawer.open || drawer.querySelector("nav")) return;
+      const { catalogNav } = await import("./catalog.js");
+      if (!drawer.querySelector("nav")) drawer.append(catalogNav(entries, { detailed: false, currentId: id }));
     });
     children.push(el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog"), drawer));
   }
@@ -546,7 +552,7 @@ async function route({ focus = false } = {}) {
     return;
   }
   if (!id) {
-    showHome(params);
+    await showHome(params);
     return;
   }
   if (id === "practice" || params.some(([key]) => key === "practice")) {

@@ -207,6 +207,7 @@ describe("catalog and embed", () => {
       assert.equal(await drawer.locator("nav").count(), 0, "not built before it is opened");
       await drawer.locator("summary").click();
       const nav = drawer.locator("nav.catalog-compact");
+      await nav.waitFor(); // (catalog.js is loaded when the list is first wanted)
       assert.equal(await nav.count(), 1);
       const home = await page.evaluate(() => JSON.parse(document.getElementById("catalog-data").textContent).entries.filter((e) => e.status === "ready").length);
       assert.equal(await nav.locator(".catalog-item.ready a").count(), home, "every ready example");
