@@ -38,6 +38,7 @@ import { fileURLToPath } from "node:url";
 import { DATA_BLOCK, dataBlock, readDataBlock } from "./assets.mjs";
 import { CHROMIUM, launchChromium } from "./chromium.mjs";
 import { startServer } from "./serve.mjs";
+import { THUMB as SHOWN } from "../www/catalog.js";
 
 /** The width the solutions are laid out at (the page's own CSS re-lays them at any other). */
 const VIEWPORT = { width: 1280, height: 900 };
@@ -76,10 +77,10 @@ function snapshot() {
 /**
  * The catalog's picture of an example's figure (issue 29, item 14): its first
  * canvas as the page drew it for the seed, scaled to fit THUMB (pixels: twice
- * the size catalog.js shows it at, for 2× screens) on the figure's own
+ * the size catalog.js shows it at, SHOWN, for 2× screens) on the figure's own
  * background, as WebP. Null when the example has no figure.
  */
-const THUMB = { width: 320, height: 200, quality: 0.8 };
+const THUMB = { width: 2 * SHOWN.width, height: 2 * SHOWN.height, quality: 0.8 };
 
 /** Runs in the page: the picture of the figure on screen as a data: URL, or null. */
 function thumbnail({ width, height, quality }) {

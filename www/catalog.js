@@ -14,27 +14,15 @@
 import { el } from "./dom.js";
 import { buildHash } from "./url.js";
 
-/** Topics in page order (docs/API.md); unknown topics follow in catalog order. */
-export const TOPIC_ORDER = [
-  "Coordinates",
-  "Transformations",
-  "Correlation",
-  "Least-squares matching",
-  "Resampling",
-  "Filters and edges",
-  "Interest operators",
-  "Chain codes and boundaries",
-  "Map projection",
-];
-
 /** The size a figure's picture is shown at (CSS px; the files have twice as many pixels). */
 export const THUMB = Object.freeze({ width: 160, height: 100 });
 
-/** The topics of `entries` in page order. */
+/**
+ * The topics of `entries` in page order: the catalog's own (the Rust entries
+ * come grouped by topic in src/examples/mod.rs TOPICS order).
+ */
 export function topicsInOrder(entries) {
-  const topics = [...TOPIC_ORDER];
-  for (const e of entries) if (!topics.includes(e.topic)) topics.push(e.topic);
-  return topics.filter((t) => entries.some((e) => e.topic === t));
+  return [...new Set(entries.map((e) => e.topic))];
 }
 
 /** The build's pictures of the figures ({ folder, ids, dark }), or null. */
