@@ -10,6 +10,12 @@
 //! - [`export_all!`]`()`: the same over the whole catalog, plus `practice`
 //!   and `grade` (practice mode and the compatibility package).
 //!
+//! Every argument of every export is taken as a `JsValue` and its JS type
+//! checked here ([`string_arg`], `record_from_js`): a wrong type is a thrown
+//! `Error` that names the argument ("id: must be a string naming an example,
+//! got a number"), never a trap (tests/e2e/api-types.test.mjs calls every
+//! export of every module with every kind of JS value).
+//!
 //! The functions below are what the macros call; they are not exports.
 
 use crate::error::Error;
@@ -27,15 +33,81 @@ fn js_error(e: Error) -> JsError {
     JsError::new(&e.to_string())
 }
 
+#[wasm_bindgen]
+extern "C" {
+    #[wasm_bindgen(js_namespace = Array, js_name = isArray)]
+    fn js_is_array(v: &JsValue) -> bool;
+    #[wasm_bindgen(js_namespace = ArrayBuffer, js_name = isView)]
+    fn js_is_view(v: &JsValue) -> bool;
+}
+
+/// What kind of JS value `v` is, as a message says it: "a number",
+/// "null", "an array", "a typed array", "a function" …
+pub fn js_kind(v: &JsValue) -> &'static str {
+    if v.is_undefined() {
+        "undefined"
+    } else if v.is_null() {
+        "null"
+    } else if v.is_string() {
+        "a string"
+    } else if v.as_f64().is_some() {
+        "a number"
+    } else if v.as_bool().is_some() {
+        "a boolean"
+    } else if v.is_function() {
+        "a function"
+    } else if v.is_bigint() {
+        "a BigInt"
+    } else if v.is_symbol() {
+        "a symbol"
+    } else if js_is_array(v) {
+        "an array"
+    } else if js_is_view(v) {
+        "a typed array"
+    } else {
+        "an object"
+    }
+}
+
+/// Longer strings cannot be an id or a code: they reach the core cut short,
+/// so that its message quotes a few characters, not the whole text.
+const LONGEST_NAME: usize = 64;
+
+/// Argument `what` of an export, which must be a string; `meaning` says
+/// what it is for ("naming an example"). Every string argument of the
+/// exports comes through here: wasm-bindgen's own `&str` would copy a
+/// non-string into wasm memory and trap.
+pub fn string_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
+    match v.as_string() {
+        Some(s) if s.chars().count() > LONGEST_NAME => Ok(crate::practice::read::short(&s)),
+        Some(s) => Ok(s),
+        None => Err(JsError::new(&format!(
+            "{what}: must be a string {meaning}, got {}",
+            js_kind(v)
+        ))),
+    }
+}
+
+/// The id argument of every export.
+fn id_arg(id: &JsValue) -> Result<String, JsError> {
+    string_arg("id", "naming an example", id)
+}
+
 /// Reads a JS object of inputs; `undefined`/`null` mean "all defaults".
 fn record_from_js(what: &str, v: JsValue) -> Result<Record, JsError> {
     if v.is_undefined() || v.is_null() {
         return Ok(Record::new());
     }
+    if !v.is_object() || v.is_function() || js_is_array(&v) || js_is_view(&v) {
+        return Err(JsError::new(&format!(
+            "{what}: must be an object of fields like {{ dpi: 1200 }}, got {}",
+            js_kind(&v)
+        )));
+    }
     match serde_wasm_bindgen::from_value::<Value>(v) {
         Ok(Value::Object(r)) => Ok(r),
         Ok(other) => Err(JsError::new(&format!(
-            "{what}: must be an object of fields, got {}",
+            "{what}: must be an object of fields like {{ dpi: 1200 }}, got {}",
             other.type_name()
         ))),
         Err(e) => Err(JsError::new(&format!("{what}: cannot be read: {e}"))),
@@ -53,16 +125,22 @@ pub fn catalog_all() -> Result<JsValue, JsError> {
 }
 
 /// `solve(id, inputs)` among `entries`.
-pub fn solve_in(entries: Vec<Entry>, id: &str, inputs: JsValue) -> Result<JsValue, JsError> {
+pub fn solve_in(entries: Vec<Entry>, id: &JsValue, inputs: JsValue) -> Result<JsValue, JsError> {
+    let id = id_arg(id)?;
     let inputs = record_from_js("inputs", inputs)?;
-    let solution = examples::solve_in(entries, id, &inputs).map_err(js_error)?;
+    let solution = examples::solve_in(entries, &id, &inputs).map_err(js_error)?;
     to_js(&solution)
 }
 
 /// `parse_inputs(id, texts)` among `entries`.
-pub fn parse_inputs_in(entries: Vec<Entry>, id: &str, texts: JsValue) -> Result<JsValue, JsError> {
+pub fn parse_inputs_in(
+    entries: Vec<Entry>,
+    id: &JsValue,
+    texts: JsValue,
+) -> Result<JsValue, JsError> {
+    let id = id_arg(id)?;
     let texts = record_from_js("texts", texts)?;
-    let parsed = examples::parse_inputs_in(entries, id, &texts).map_err(js_error)?;
+    let parsed = examples::parse_inputs_in(entries, &id, &texts).map_err(js_error)?;
     to_js(&parsed)
 }
 
@@ -74,24 +152,26 @@ extern "C" {
 }
 
 /// `practice(id, code)`: see [`export_all!`].
-pub fn practice(id: &str, code: JsValue) -> Result<JsValue, JsError> {
+pub fn practice(id: &JsValue, code: &JsValue) -> Result<JsValue, JsError> {
+    let id = id_arg(id)?;
     let code = if code.is_undefined() || code.is_null() {
         None
     } else {
-        Some(
-            code.as_string()
-                .ok_or_else(|| JsError::new("code: must be a string like \"1K7Q2\""))?,
-        )
+        Some(string_arg("code", CODE_MEANING, code)?)
     };
     let fresh = (math_random() * f64::from(crate::practice::VARIANTS)) as u32;
-    let p = crate::practice::practice(id, code.as_deref(), fresh).map_err(js_error)?;
+    let p = crate::practice::practice(&id, code.as_deref(), fresh).map_err(js_error)?;
     to_js(&p)
 }
 
+const CODE_MEANING: &str = "like \"1K7Q2\" (a practice variant's code)";
+
 /// `grade(id, code, answers)`: see [`export_all!`].
-pub fn grade(id: &str, code: &str, answers: JsValue) -> Result<JsValue, JsError> {
+pub fn grade(id: &JsValue, code: &JsValue, answers: JsValue) -> Result<JsValue, JsError> {
+    let id = id_arg(id)?;
+    let code = string_arg("code", CODE_MEANING, code)?;
     let answers = record_from_js("answers", answers)?;
-    let g = crate::practice::grade(id, code, &answers).map_err(js_error)?;
+    let g = crate::practice::grade(&id, &code, &answers).map_err(js_error)?;
     to_js(&g)
 }
 
@@ -118,19 +198,19 @@ macro_rules! export_examples {
         /// the field on bad input.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn solve(
-            id: &str,
+            id: ::wasm_bindgen::JsValue,
             inputs: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::solve_in(entries(), id, inputs)
+            $crate::wasm::solve_in(entries(), &id, inputs)
         }
 
         /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn parse_inputs(
-            id: &str,
+            id: ::wasm_bindgen::JsValue,
             texts: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::parse_inputs_in(entries(), id, texts)
+            $crate::wasm::parse_inputs_in(entries(), &id, texts)
         }
     };
 }
@@ -153,19 +233,19 @@ macro_rules! export_all {
         /// the field on bad input.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn solve(
-            id: &str,
+            id: ::wasm_bindgen::JsValue,
             inputs: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::solve_in($crate::examples::entries(), id, inputs)
+            $crate::wasm::solve_in($crate::examples::entries(), &id, inputs)
         }
 
         /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn parse_inputs(
-            id: &str,
+            id: ::wasm_bindgen::JsValue,
             texts: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::parse_inputs_in($crate::examples::entries(), id, texts)
+            $crate::wasm::parse_inputs_in($crate::examples::entries(), &id, texts)
         }
 
         /// A practice variant of example `id`: `{ id, code, inputs, boxes }`;
@@ -173,10 +253,10 @@ macro_rules! export_all {
         /// one when `code` is `undefined` or `null`.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn practice(
-            id: &str,
+            id: ::wasm_bindgen::JsValue,
             code: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::practice(id, code)
+            $crate::wasm::practice(&id, &code)
         }
 
         /// Grades `answers` (`{ box key: text }`) for variant `code` of
@@ -184,11 +264,11 @@ macro_rules! export_all {
         /// read, value, precision, unit, points } }, score, out_of }`.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn grade(
-            id: &str,
-            code: &str,
+            id: ::wasm_bindgen::JsValue,
+            code: ::wasm_bindgen::JsValue,
             answers: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::grade(id, code, answers)
+            $crate::wasm::grade(&id, &code, answers)
         }
     };
 }

@@ -190,9 +190,13 @@ fn stated_differences(text: &str) -> Vec<f64> {
         .collect()
 }
 
+/// A number as a note writes it: the sign it was written with (`None`
+/// when it has none) and its value.
+type Signed = (Option<f64>, f64);
+
 /// A signed number at the start of `s` ("−0.79", "+2.3e-5"), with the
 /// sign it was written with (`None` when it has none).
-fn signed_number(s: &str) -> Option<(Option<f64>, f64)> {
+fn signed_number(s: &str) -> Option<Signed> {
     let (sign, rest) = if let Some(r) = s.strip_prefix('−') {
         (Some(-1.0), r)
     } else if let Some(r) = s.strip_prefix('+') {
@@ -288,7 +292,7 @@ fn a_wrong_sign_would_fail_the_difference_check() {
 
 /// Every stated difference of a note with the percentages that follow it
 /// (before the next stated difference): `[(d, [(sign, share)])]`.
-fn differences_and_shares(text: &str) -> Vec<(f64, Vec<(Option<f64>, f64)>)> {
+fn differences_and_shares(text: &str) -> Vec<(f64, Vec<Signed>)> {
     let starts: Vec<usize> = text.match_indices(TAG).map(|(i, _)| i).collect();
     starts
         .iter()

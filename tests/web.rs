@@ -32,7 +32,7 @@ fn obj(json: &str) -> JsValue {
 
 /// Calls `solve` and returns the thrown JS Error's message.
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
@@ -79,7 +79,7 @@ fn catalog_is_plain_data_with_typed_fields() {
 
 #[wasm_bindgen_test]
 fn solve_returns_the_seed_solution_as_plain_objects() {
-    let s = solve("gsd", JsValue::UNDEFINED).unwrap();
+    let s = solve("gsd".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "gsd_cm"]) - 35.649_122_8).abs() < 1e-6);
     assert_eq!(num(&s, &["textbook", "gsd_cm"]), 35.37);
     let steps: Array = get(&s, "steps").dyn_into().unwrap();
@@ -95,15 +95,15 @@ fn solve_returns_the_seed_solution_as_plain_objects() {
         Some("rounding")
     );
 
-    let s = solve("pixel-to-photo", obj("{}")).unwrap();
+    let s = solve("pixel-to-photo".into(), obj("{}")).unwrap();
     assert!((num(&s, &["result", "x_mm"]) - 8.255).abs() < 1e-12);
-    let s = solve("photo-to-pixel", JsValue::NULL).unwrap();
+    let s = solve("photo-to-pixel".into(), JsValue::NULL).unwrap();
     assert!((num(&s, &["result", "r"]) - 1_349.055_118).abs() < 1e-6);
 }
 
 #[wasm_bindgen_test]
 fn a_what_if_fills_the_other_fields_with_defaults() {
-    let s = solve("gsd", obj(r#"{"dpi": 1200}"#)).unwrap();
+    let s = solve("gsd".into(), obj(r#"{"dpi": 1200}"#)).unwrap();
     let expected = 25.4 / 1200.0 * (1920.0 / 0.152) / 10.0;
     assert!((num(&s, &["result", "gsd_cm"]) - expected).abs() < 1e-9);
     assert_eq!(num(&s, &["inputs", "focal_length_mm"]), 152.0);
@@ -133,13 +133,13 @@ fn errors_are_js_errors_and_the_module_keeps_answering() {
     assert!(solve_err("nope", JsValue::UNDEFINED).contains("unknown example id \"nope\""));
     assert!(solve_err("gsd", JsValue::from_f64(3.0)).starts_with("inputs: must be an object"));
     // after all that, the module still answers
-    let s = solve("gsd", JsValue::UNDEFINED).unwrap();
+    let s = solve("gsd".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "gsd_cm"]) - 35.649_122_8).abs() < 1e-6);
 }
 
 #[wasm_bindgen_test]
 fn parse_inputs_returns_typed_inputs_and_per_field_errors() {
-    let p = parse_inputs("gsd", obj(r#"{"dpi": "1200", "flying_height_m": "abc"}"#)).unwrap();
+    let p = parse_inputs("gsd".into(), obj(r#"{"dpi": "1200", "flying_height_m": "abc"}"#)).unwrap();
     assert_eq!(num(&p, &["inputs", "dpi"]), 1200.0);
     assert_eq!(
         get(&get(&p, "errors"), "flying_height_m")
@@ -147,14 +147,14 @@ fn parse_inputs_returns_typed_inputs_and_per_field_errors() {
             .as_deref(),
         Some("flying_height_m: \"abc\" is not a number")
     );
-    let s = solve("gsd", get(&p, "inputs")).unwrap();
+    let s = solve("gsd".into(), get(&p, "inputs")).unwrap();
     assert!((num(&s, &["result", "gsd_cm"]) - 26.736_842).abs() < 1e-6);
 }
 
 #[wasm_bindgen_test]
 fn notes_answer_and_mode_fields_cross_as_plain_data() {
     // every note carries `keys` (an array, possibly empty); `answer` lists result keys
-    let s = solve("photo-to-pixel", JsValue::UNDEFINED).unwrap();
+    let s = solve("photo-to-pixel".into(), JsValue::UNDEFINED).unwrap();
     let notes: Array = get(&s, "notes").dyn_into().unwrap();
     let mut erratum_keys = None;
     for n in notes.iter() {
@@ -176,7 +176,7 @@ fn notes_answer_and_mode_fields_cross_as_plain_data() {
             .collect::<Vec<_>>(),
         ["c", "r"]
     );
-    let s = solve("gsd", JsValue::UNDEFINED).unwrap();
+    let s = solve("gsd".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(
         Array::from(&get(&s, "answer"))
             .get(0)
@@ -218,15 +218,15 @@ fn notes_answer_and_mode_fields_cross_as_plain_data() {
     assert!(get(&field("given"), "when").is_null());
 
     // a field that does not apply never blocks: chain-code from pixels with an empty code
-    let p = parse_inputs("chain-code", obj(r#"{"given": "pixels", "code": ""}"#)).unwrap();
+    let p = parse_inputs("chain-code".into(), obj(r#"{"given": "pixels", "code": ""}"#)).unwrap();
     assert_eq!(
         Object::keys(get(&p, "errors").unchecked_ref::<Object>()).length(),
         0
     );
-    let s = solve("chain-code", get(&p, "inputs")).unwrap();
+    let s = solve("chain-code".into(), get(&p, "inputs")).unwrap();
     assert_eq!(Array::from(&get(&get(&s, "result"), "code")).length(), 16);
     // where it applies, the same text is an error at its field
-    let p = parse_inputs("chain-code", obj(r#"{"given": "code", "code": ""}"#)).unwrap();
+    let p = parse_inputs("chain-code".into(), obj(r#"{"given": "code", "code": ""}"#)).unwrap();
     assert!(get(&get(&p, "errors"), "code")
         .as_string()
         .unwrap()

@@ -36,7 +36,7 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
@@ -52,7 +52,7 @@ fn notes_text(s: &JsValue) -> String {
 
 #[wasm_bindgen_test]
 fn example_17_and_the_exercise_cross_the_boundary() {
-    let s = solve("chain-code", JsValue::UNDEFINED).unwrap();
+    let s = solve("chain-code".into(), JsValue::UNDEFINED).unwrap();
     let code = [
         1., 8., 8., 8., 7., 1., 1., 2., 3., 4., 4., 2., 1., 1., 2., 2.,
     ];
@@ -64,7 +64,7 @@ fn example_17_and_the_exercise_cross_the_boundary() {
     assert_eq!(list(&s, &["textbook", "code"]), code);
     let pixels: Array = at(&s, &["result", "pixels"]).dyn_into().unwrap();
     assert_eq!(pixels.length(), 17);
-    let s = solve("chain-code", obj(r#"{"from": "end"}"#)).unwrap();
+    let s = solve("chain-code".into(), obj(r#"{"from": "end"}"#)).unwrap();
     assert_eq!(
         list(&s, &["result", "code"]),
         [6., 6., 5., 5., 6., 8., 8., 7., 6., 5., 5., 3., 4., 4., 4., 5.]
@@ -74,10 +74,10 @@ fn example_17_and_the_exercise_cross_the_boundary() {
 
 #[wasm_bindgen_test]
 fn example_18_and_the_descriptors_cross_the_boundary() {
-    let s = solve("boundary-length", JsValue::NULL).unwrap();
+    let s = solve("boundary-length".into(), JsValue::NULL).unwrap();
     assert!((num(&s, &["result", "length"]) - (8.0 + 9.0 * 2f64.sqrt())).abs() < 1e-12);
     assert_eq!(num(&s, &["textbook", "length"]), 20.7);
-    let s = solve("boundary-shape", JsValue::UNDEFINED).unwrap();
+    let s = solve("boundary-shape".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "eccentricity"]) - 2.125).abs() < 1e-12);
     let rect: Array = at(&s, &["result", "basic_rectangle"]).dyn_into().unwrap();
     assert_eq!(rect.length(), 4);
@@ -85,28 +85,28 @@ fn example_18_and_the_descriptors_cross_the_boundary() {
 
 #[wasm_bindgen_test]
 fn broken_branching_and_single_pixel_paths_are_documented_answers() {
-    let s = solve("chain-code", obj(r#"{"pixels": [[0,0],[1,0],[3,0]]}"#)).unwrap();
+    let s = solve("chain-code".into(), obj(r#"{"pixels": [[0,0],[1,0],[3,0]]}"#)).unwrap();
     assert!(at(&s, &["result", "code"]).is_null());
     let breaks: Array = at(&s, &["result", "breaks"]).dyn_into().unwrap();
     assert_eq!(breaks.length(), 1);
     assert!(notes_text(&s).contains("pixel 2 (1, 0) and pixel 3 (3, 0) are not neighbours"));
     let s = solve(
-        "chain-code",
+        "chain-code".into(),
         obj(r#"{"pixels": [[0,0],[1,0],[2,0],[1,0],[1,1]]}"#),
     )
     .unwrap();
     assert_eq!(list(&s, &["result", "code"]), [1., 1., 5., 7.]);
     assert!(notes_text(&s).contains("pixel 4 (1, 0) is pixel 2 again"));
     // a single pixel: an empty code and zero length, for each example
-    let s = solve("chain-code", obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
+    let s = solve("chain-code".into(), obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
     assert_eq!(list(&s, &["result", "code"]), Vec::<f64>::new());
-    let s = solve("boundary-length", obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
+    let s = solve("boundary-length".into(), obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
     assert_eq!(num(&s, &["result", "length"]), 0.0);
-    let s = solve("boundary-shape", obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
+    let s = solve("boundary-shape".into(), obj(r#"{"pixels": [[3,3]]}"#)).unwrap();
     assert_eq!(num(&s, &["result", "diameter"]), 0.0);
     assert!(at(&s, &["result", "eccentricity"]).is_null());
     let s = solve(
-        "chain-code",
+        "chain-code".into(),
         obj(r#"{"given": "region", "pixels": [[0,0],[1,0],[0,1],[1,1]]}"#),
     )
     .unwrap();
@@ -138,18 +138,18 @@ fn bad_inputs_are_js_errors_and_the_module_keeps_answering() {
             .contains("can be traced")
     );
     // still answering
-    let s = solve("chain-code", JsValue::UNDEFINED).unwrap();
+    let s = solve("chain-code".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(list(&s, &["result", "code"]).len(), 16);
 }
 
 #[wasm_bindgen_test]
 fn texts_from_the_form_parse_and_solve() {
     let p = parse_inputs(
-        "chain-code",
+        "chain-code".into(),
         obj(r#"{"given": "code", "connectivity": "4", "code": "441121141122233"}"#),
     )
     .unwrap();
-    let s = solve("chain-code", get(&p, "inputs")).unwrap();
+    let s = solve("chain-code".into(), get(&p, "inputs")).unwrap();
     assert_eq!(
         list(&s, &["result", "code"]),
         [4., 4., 1., 1., 2., 1., 1., 4., 1., 1., 2., 2., 2., 3., 3.]
@@ -161,12 +161,12 @@ fn texts_from_the_form_parse_and_solve() {
 fn a_numeric_choice_takes_the_number_across_the_boundary() {
     // {connectivity: 4} as a JS number is the choice "4"
     let by_number = solve(
-        "boundary-length",
+        "boundary-length".into(),
         obj(r#"{"given": "code", "connectivity": 4, "code": [4, 4, 1, 1, 2, 1, 1, 4]}"#),
     )
     .unwrap();
     let by_text = solve(
-        "boundary-length",
+        "boundary-length".into(),
         obj(r#"{"given": "code", "connectivity": "4", "code": [4, 4, 1, 1, 2, 1, 1, 4]}"#),
     )
     .unwrap();

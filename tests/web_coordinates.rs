@@ -42,21 +42,21 @@ fn the_catalog_is_the_topics_own() {
 
 #[wasm_bindgen_test]
 fn its_examples_parse_and_solve() {
-    let p = parse_inputs("gsd", JSON::parse(r#"{"dpi":"1200"}"#).unwrap()).unwrap();
-    let s = solve("gsd", get(&p, "inputs")).unwrap();
+    let p = parse_inputs("gsd".into(), JSON::parse(r#"{"dpi":"1200"}"#).unwrap()).unwrap();
+    let s = solve("gsd".into(), get(&p, "inputs")).unwrap();
     let gsd = get(&get(&s, "result"), "gsd_cm").as_f64().unwrap();
     // 1200 dpi: a 25.4/1200 mm pixel at scale 1 : 1920 m / 0.152 m → 26.737 cm
     let expected = 25.4 / 1200.0 * (1920.0 / 0.152) / 10.0;
     assert!((gsd - expected).abs() < 1e-9, "{gsd} vs {expected}");
     assert!((gsd - 26.737).abs() < 1e-3, "{gsd}");
-    let s = solve("pixel-to-photo", JsValue::UNDEFINED).unwrap();
+    let s = solve("pixel-to-photo".into(), JsValue::UNDEFINED).unwrap();
     assert!(get(&get(&s, "result"), "x_mm").as_f64().is_some());
 }
 
 #[wasm_bindgen_test]
 fn another_topics_example_is_unknown_here() {
-    let m = message(solve("ncc-2d", JsValue::UNDEFINED).unwrap_err());
+    let m = message(solve("ncc-2d".into(), JsValue::UNDEFINED).unwrap_err());
     assert!(m.contains("ncc-2d"), "{m}");
-    let m = message(parse_inputs("utm", JsValue::UNDEFINED).unwrap_err());
+    let m = message(parse_inputs("utm".into(), JsValue::UNDEFINED).unwrap_err());
     assert!(m.contains("utm"), "{m}");
 }

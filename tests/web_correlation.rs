@@ -37,7 +37,7 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
@@ -93,52 +93,52 @@ fn the_five_entries_are_ready_with_editable_arrays() {
 
 #[wasm_bindgen_test]
 fn the_seed_solutions_cross_the_boundary() {
-    let s = solve("ncc-1d", JsValue::UNDEFINED).unwrap();
+    let s = solve("ncc-1d".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(num(&s, &["result", "best"]), 5.0);
     assert!((arr(&s, &["result", "rho"]).get(3).as_f64().unwrap() - 0.673_053_19).abs() < 1e-8);
     assert_eq!(arr(&s, &["textbook", "rho"]).get(3).as_f64(), Some(0.69));
     assert!(has_note(&s, "erratum", "ρ4 is printed as 0.69"));
 
-    let s = solve("ncc-2d", JsValue::NULL).unwrap();
+    let s = solve("ncc-2d".into(), JsValue::NULL).unwrap();
     assert!((num(&s, &["result", "rho"]) - 0.775_269_268).abs() < 1e-9);
     assert_eq!(num(&s, &["textbook", "mean_a"]), 58.5);
     assert!(has_note(&s, "erratum", "without the squares"));
 
-    let s = solve("ncc-surface", obj("{}")).unwrap();
+    let s = solve("ncc-surface".into(), obj("{}")).unwrap();
     assert_eq!(num(&s, &["result", "best_position"]), 10.0);
     assert_eq!(num(&s, &["result", "best_c"]), 3.0);
     assert_eq!(num(&s, &["result", "best_r"]), 4.0);
     let row3: Array = arr(&s, &["result", "rho"]).get(2).dyn_into().unwrap();
     assert!((row3.get(1).as_f64().unwrap() - 0.966_489_366).abs() < 1e-8);
 
-    let s = solve("subpixel-1d", JsValue::UNDEFINED).unwrap();
+    let s = solve("subpixel-1d".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "c_max"]) - 86.0 / 11.0).abs() < 1e-12);
     assert_eq!(num(&s, &["textbook", "c_max"]), 7.82);
-    let s = solve("subpixel-1d", obj(r#"{"rho_from": "exact"}"#)).unwrap();
+    let s = solve("subpixel-1d".into(), obj(r#"{"rho_from": "exact"}"#)).unwrap();
     assert!((num(&s, &["result", "c_max"]) - 47.0 / 6.0).abs() < 1e-12);
     assert!((num(&s, &["result", "peak_shift"]) - (47.0 / 6.0 - 86.0 / 11.0)).abs() < 1e-12);
 
-    let s = solve("subpixel-2d", JsValue::UNDEFINED).unwrap();
+    let s = solve("subpixel-2d".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "c_max"]) - 3.011_096_372).abs() < 1e-8);
     assert!((num(&s, &["result", "r_max"]) - 4.075_987_003).abs() < 1e-8);
     assert_eq!(num(&s, &["textbook", "c_max"]), 3.012);
-    let s = solve("subpixel-2d", obj(r#"{"rho_from": "exact"}"#)).unwrap();
+    let s = solve("subpixel-2d".into(), obj(r#"{"rho_from": "exact"}"#)).unwrap();
     assert!((num(&s, &["result", "c_max"]) - 3.011_087_663).abs() < 1e-8);
 }
 
 #[wasm_bindgen_test]
 fn documented_answers_are_null_with_a_note_not_nan() {
     // flat B
-    let s = solve("ncc-2d", obj(r#"{"b": [[5,5,5],[5,5,5],[5,5,5]]}"#)).unwrap();
+    let s = solve("ncc-2d".into(), obj(r#"{"b": [[5,5,5],[5,5,5],[5,5,5]]}"#)).unwrap();
     assert!(at(&s, &["result", "rho"]).is_null());
     assert!(has_note(&s, "warning", "B has no variance"));
     // flat template in 1-D
-    let s = solve("ncc-1d", obj(r#"{"template": [2, 2, 2]}"#)).unwrap();
+    let s = solve("ncc-1d".into(), obj(r#"{"template": [2, 2, 2]}"#)).unwrap();
     assert!(arr(&s, &["result", "rho"]).iter().all(|v| v.is_null()));
     assert!(at(&s, &["result", "best"]).is_null());
     // a saddle is reported, not returned as a peak
     let s = solve(
-        "subpixel-2d",
+        "subpixel-2d".into(),
         obj(r#"{"rho": [[0.5,0.9,0.5],[0.1,0.5,0.1],[0.5,0.9,0.5]]}"#),
     )
     .unwrap();
@@ -150,7 +150,7 @@ fn documented_answers_are_null_with_a_note_not_nan() {
     );
     assert!(has_note(&s, "warning", "not concave"));
     // a valley in 1-D
-    let s = solve("subpixel-1d", obj(r#"{"rho": [0.9, 0.2, 0.8]}"#)).unwrap();
+    let s = solve("subpixel-1d".into(), obj(r#"{"rho": [0.9, 0.2, 0.8]}"#)).unwrap();
     assert!(at(&s, &["result", "c_max"]).is_null());
 }
 
@@ -192,14 +192,14 @@ fn bad_inputs_throw_js_errors_and_the_module_keeps_answering() {
         "rho_from: \"rounded\" is not one of the choices (printed, exact)"
     );
     // parse_inputs: per-field messages for the form
-    let p = parse_inputs("ncc-2d", obj(r#"{"a": "1 2; 3", "b": "1 2; 3 4"}"#)).unwrap();
+    let p = parse_inputs("ncc-2d".into(), obj(r#"{"a": "1 2; 3", "b": "1 2; 3 4"}"#)).unwrap();
     assert!(get(&get(&p, "errors"), "a")
         .as_string()
         .unwrap()
         .contains("same length"));
     assert_eq!(arr(&p, &["inputs", "b"]).length(), 2);
     // after all that, the module still answers
-    let s = solve("ncc-surface", JsValue::UNDEFINED).unwrap();
+    let s = solve("ncc-surface".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(num(&s, &["result", "best_position"]), 10.0);
 }
 
@@ -224,7 +224,7 @@ fn a_64_by_64_search_array_solves_in_the_browser() {
     let inputs = obj(&format!(
         r#"{{"search": {search}, "template": [[1,5,2],[7,3,9],[4,8,6]]}}"#
     ));
-    let s = solve("ncc-surface", inputs).unwrap();
+    let s = solve("ncc-surface".into(), inputs).unwrap();
     let rho = arr(&s, &["result", "rho"]);
     assert_eq!(rho.length(), 62);
     let t_mean = template.iter().flatten().sum::<f64>() / 9.0;

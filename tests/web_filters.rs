@@ -43,7 +43,7 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
@@ -75,12 +75,12 @@ fn the_three_entries_are_ready_with_typed_fields() {
 
 #[wasm_bindgen_test]
 fn example_12a_across_the_boundary() {
-    let s = solve("resample", JsValue::UNDEFINED).unwrap();
+    let s = solve("resample".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(num(&s, &["result", "nearest"]), 72.0);
     assert!((num(&s, &["result", "bilinear"]) - 75.3584).abs() < 1e-9);
     assert!(get(&get(&s, "result"), "bicubic").is_null());
     assert_eq!(num(&s, &["textbook", "bilinear"]), 75.35);
-    let s = solve("resample", obj(r#"{"c": 546.5, "r": 818.5}"#)).unwrap();
+    let s = solve("resample".into(), obj(r#"{"c": 546.5, "r": 818.5}"#)).unwrap();
     // weights −0.125, 0.625, 0.625, −0.125 at s = t = 0.5 (a = −1):
     // rows 66.625, 75.875, 67.625, 57.375, then 74.1875
     assert!((num(&s, &["result", "bicubic"]) - 74.1875).abs() < 1e-9);
@@ -89,12 +89,12 @@ fn example_12a_across_the_boundary() {
 
 #[wasm_bindgen_test]
 fn examples_15_and_16_across_the_boundary() {
-    let s = solve("filter-window", JsValue::UNDEFINED).unwrap();
+    let s = solve("filter-window".into(), JsValue::UNDEFINED).unwrap();
     let out = matrix(&get(&get(&s, "result"), "output"));
     assert!((out[2][0] - 125.0 / 9.0).abs() < 1e-12);
     assert_eq!(matrix(&get(&get(&s, "textbook"), "output"))[2][0], 12.9);
     let s = solve(
-        "filter-window",
+        "filter-window".into(),
         obj(r#"{"window": [[1,2,1,1,1],[1,1,9,2,1],[1,9,9,8,1],[1,1,8,1,2],[2,1,1,1,1]], "kernel": "laplacian-8"}"#),
     )
     .unwrap();
@@ -106,7 +106,7 @@ fn examples_15_and_16_across_the_boundary() {
             vec![24.0, -33.0, 23.0]
         ]
     );
-    let s = solve("edge-window", obj(r#"{"operator": "sobel"}"#)).unwrap();
+    let s = solve("edge-window".into(), obj(r#"{"operator": "sobel"}"#)).unwrap();
     assert_eq!(matrix(&get(&get(&s, "result"), "gx"))[2][2], -43.0);
     assert_eq!(num(&s, &["result", "selected_gy"]), -11.0);
 }
@@ -141,6 +141,6 @@ fn bad_inputs_are_js_errors_and_the_module_keeps_answering() {
         solve_err("filter-window", obj(r#"{"select_c": 9}"#)),
         "select_c: column 9 is outside the window (it has 5 columns)"
     );
-    let s = solve("filter-window", JsValue::UNDEFINED).unwrap();
+    let s = solve("filter-window".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "selected"]) - 102.0 / 9.0).abs() < 1e-12);
 }

@@ -40,7 +40,7 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
@@ -63,7 +63,7 @@ fn the_interest_entries_are_ready() {
 
 #[wasm_bindgen_test]
 fn example_13_across_the_boundary() {
-    let s = solve("forstner-window", JsValue::UNDEFINED).unwrap();
+    let s = solve("forstner-window".into(), JsValue::UNDEFINED).unwrap();
     let r = get(&s, "result");
     assert_eq!(matrix(&get(&r, "n")), [[82.0, -22.25], [-22.25, 114.75]]);
     assert_eq!(num(&r, &["det_n"]), 8914.4375);
@@ -86,7 +86,7 @@ fn example_13_across_the_boundary() {
 
 #[wasm_bindgen_test]
 fn example_14_and_a_flat_window_with_nulls() {
-    let s = solve("moravec-window", JsValue::NULL).unwrap();
+    let s = solve("moravec-window".into(), JsValue::NULL).unwrap();
     assert_eq!(
         matrix(&get(&get(&s, "result"), "sums")),
         [[47.0, 361.0], [153.0, 171.0]]
@@ -95,7 +95,7 @@ fn example_14_and_a_flat_window_with_nulls() {
     assert_eq!(num(&s, &["textbook", "mean"]), 183.0);
 
     let s = solve(
-        "forstner-window",
+        "forstner-window".into(),
         obj(r#"{"window": [[5,5,5,5,5],[5,5,5,5,5],[5,5,5,5,5],[5,5,5,5,5],[5,5,5,5,5]]}"#),
     )
     .unwrap();
@@ -110,7 +110,7 @@ fn example_14_and_a_flat_window_with_nulls() {
 
 #[wasm_bindgen_test]
 fn the_image_mode_across_the_boundary() {
-    let s = solve("forstner-image", obj(r#"{"c": 16, "r": 9}"#)).unwrap();
+    let s = solve("forstner-image".into(), obj(r#"{"c": 16, "r": 9}"#)).unwrap();
     let r = get(&s, "result");
     assert_eq!(get(&r, "case").as_string().as_deref(), Some("edge"));
     assert_eq!(matrix(&get(&r, "window")).len(), 5);
@@ -158,7 +158,7 @@ fn bad_windows_are_js_errors_and_the_module_keeps_answering() {
         "window_size: must be odd so that the window has a centre pixel (got 6)"
     );
     assert!(solve_err("forstner-image", obj(r#"{"c": 1}"#)).starts_with("c: must be between 3"));
-    let p = parse_inputs("forstner-window", obj(r#"{"window": "1 2 3; 4 5 6; 7 8"}"#)).unwrap();
+    let p = parse_inputs("forstner-window".into(), obj(r#"{"window": "1 2 3; 4 5 6; 7 8"}"#)).unwrap();
     assert!(get(&get(&p, "errors"), "window")
         .as_string()
         .unwrap()
@@ -180,6 +180,6 @@ fn bad_windows_are_js_errors_and_the_module_keeps_answering() {
         "window[2][3]: is NaN; give a number"
     );
     // still answering
-    let s = solve("moravec-window", JsValue::UNDEFINED).unwrap();
+    let s = solve("moravec-window".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(num(&s, &["result", "mean"]), 183.0);
 }

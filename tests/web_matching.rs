@@ -38,32 +38,32 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
 
 #[wasm_bindgen_test]
 fn example_10_across_the_boundary() {
-    let s = solve("lsm-1d", JsValue::UNDEFINED).unwrap();
+    let s = solve("lsm-1d".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "first_dc"]) + 11.5 / 39.0).abs() < 1e-12);
     assert!(get(&get(&s, "result"), "first_da").is_null());
     assert_eq!(get(&get(&s, "result"), "converged").as_bool(), Some(true));
     assert_eq!(num(&s, &["result", "iterations"]), 13.0);
     assert!((num(&s, &["result", "c"]) - 7.769_971).abs() < 2e-4);
     assert_eq!(num(&s, &["textbook", "first_dc"]), -0.2945);
-    let s = solve("lsm-1d", obj(r#"{"radiometric": true}"#)).unwrap();
+    let s = solve("lsm-1d".into(), obj(r#"{"radiometric": true}"#)).unwrap();
     assert!((num(&s, &["result", "first_da"]) - 5.0 / 32.0).abs() < 1e-12);
     assert_eq!(num(&s, &["result", "iterations"]), 7.0);
 }
 
 #[wasm_bindgen_test]
 fn example_11_both_readings() {
-    let s = solve("lsm-2d", JsValue::UNDEFINED).unwrap();
+    let s = solve("lsm-2d".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&s, &["result", "first_dc"]) - 0.186_049_4).abs() < 1e-6);
     assert!((num(&s, &["result", "c"]) - 3.163_718).abs() < 2e-4);
     assert_eq!(num(&s, &["result", "iterations"]), 11.0);
-    let s = solve("lsm-2d", obj(r#"{"gradients": "patch-edge"}"#)).unwrap();
+    let s = solve("lsm-2d".into(), obj(r#"{"gradients": "patch-edge"}"#)).unwrap();
     assert!((num(&s, &["result", "first_dc"]) - 0.193_654_5).abs() < 1e-6);
     assert!((num(&s, &["result", "first_db"]) + 5.372_021).abs() < 1e-5);
     assert_eq!(num(&s, &["result", "iterations"]), 81.0);
@@ -81,27 +81,27 @@ fn example_11_both_readings() {
 
 #[wasm_bindgen_test]
 fn every_end_status_arrives() {
-    let s = solve("lsm-1d", obj(r#"{"search": [5,5,5,5,5,5,5,5,5,5,5,5]}"#)).unwrap();
+    let s = solve("lsm-1d".into(), obj(r#"{"search": [5,5,5,5,5,5,5,5,5,5,5,5]}"#)).unwrap();
     assert_eq!(text(&s, &["result", "status"]), "degenerate");
     assert!(get(&get(&s, "result"), "first_dc").is_null());
     let s = solve(
-        "lsm-2d",
+        "lsm-2d".into(),
         obj(r#"{"gradients": "patch-edge", "max_iterations": 30}"#),
     )
     .unwrap();
     assert_eq!(text(&s, &["result", "status"]), "not-converged");
     assert_eq!(get(&get(&s, "result"), "converged").as_bool(), Some(false));
-    let s = solve("lsm-affine", obj(r#"{"shift_c": 6, "shift_r": 0}"#)).unwrap();
+    let s = solve("lsm-affine".into(), obj(r#"{"shift_c": 6, "shift_r": 0}"#)).unwrap();
     assert_eq!(text(&s, &["result", "status"]), "left-window");
     let s = solve(
-        "lsm-affine",
+        "lsm-affine".into(),
         obj(r#"{"shift_c": 3, "shift_r": 1.5, "rotation_deg": 35}"#),
     )
     .unwrap();
     assert_eq!(text(&s, &["result", "status"]), "not-converged");
-    let s = solve("lsm-1d", obj(r#"{"c0": 4}"#)).unwrap();
+    let s = solve("lsm-1d".into(), obj(r#"{"c0": 4}"#)).unwrap();
     assert_eq!(text(&s, &["result", "status"]), "left-window");
-    let s = solve("lsm-affine", JsValue::UNDEFINED).unwrap();
+    let s = solve("lsm-affine".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(text(&s, &["result", "status"]), "converged");
     let est: Array = get(&get(&s, "result"), "parameters").dyn_into().unwrap();
     assert_eq!(est.length(), 8);
@@ -118,6 +118,6 @@ fn bad_inputs_are_js_errors_and_the_module_keeps_answering() {
         .starts_with("patch_size: must be odd"));
     assert!(solve_err("lsm-2d", obj(r#"{"template": [[1, 2], [3]]}"#))
         .starts_with("template: rows must all have the same length"));
-    let s = solve("lsm-1d", JsValue::UNDEFINED).unwrap();
+    let s = solve("lsm-1d".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(num(&s, &["result", "iterations"]), 13.0);
 }

@@ -39,14 +39,14 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
 
 #[wasm_bindgen_test]
 fn utm_default_and_the_checkpoint_in_the_browser() {
-    let s = solve("utm", JsValue::UNDEFINED).unwrap();
+    let s = solve("utm".into(), JsValue::UNDEFINED).unwrap();
     assert!(s.is_instance_of::<Object>());
     // GeoConvert: 47n 662176.290477 1520582.494360
     assert_eq!(num(&s, &["result", "zone"]), 47.0);
@@ -57,7 +57,7 @@ fn utm_default_and_the_checkpoint_in_the_browser() {
     assert_eq!(num(&s, &["textbook", "zone"]), 47.0);
     assert_eq!(string(&s, &["labels", "easting", "unit"]), "m");
     let c = solve(
-        "utm",
+        "utm".into(),
         obj(r#"{"latitude": 55, "longitude": 12, "ellipsoid": "grs80", "zone": 32}"#),
     )
     .unwrap();
@@ -80,16 +80,16 @@ fn utm_default_and_the_checkpoint_in_the_browser() {
 #[wasm_bindgen_test]
 fn dms_texts_parse_and_the_inverse_returns_the_point() {
     let p = parse_inputs(
-        "utm",
+        "utm".into(),
         obj(r#"{"latitude": "55°00'00\"N", "longitude": "12 0 0 E", "ellipsoid": "grs80", "zone": "32"}"#),
     )
     .unwrap();
     let errors: Array = Object::keys(&get(&p, "errors").dyn_into::<Object>().unwrap());
     assert_eq!(errors.length(), 0);
     assert_eq!(num(&p, &["inputs", "latitude"]), 55.0);
-    let s = solve("utm", get(&p, "inputs")).unwrap();
+    let s = solve("utm".into(), get(&p, "inputs")).unwrap();
     let back = solve(
-        "utm-inverse",
+        "utm-inverse".into(),
         obj(&format!(
             r#"{{"zone": 32, "hemisphere": "U", "easting": {}, "northing": {}, "ellipsoid": "grs80"}}"#,
             num(&s, &["result", "easting"]),
@@ -100,7 +100,7 @@ fn dms_texts_parse_and_the_inverse_returns_the_point() {
     assert!((num(&back, &["result", "latitude"]) - 55.0).abs() < 1e-9);
     assert!((num(&back, &["result", "longitude"]) - 12.0).abs() < 1e-9);
     let bad = parse_inputs(
-        "utm",
+        "utm".into(),
         obj(r#"{"latitude": "55 61", "longitude": "12 W E"}"#),
     )
     .unwrap();
@@ -137,7 +137,7 @@ fn bad_input_throws_errors_naming_the_field_and_the_module_keeps_answering() {
     )
     .starts_with("northing: must be between 1 000 000 m"));
     // still answering
-    let facts = solve("utm-facts", JsValue::UNDEFINED).unwrap();
+    let facts = solve("utm-facts".into(), JsValue::UNDEFINED).unwrap();
     assert!((num(&facts, &["result", "k1_distance_km"]) - 179.754).abs() < 1e-3);
     assert_eq!(num(&facts, &["textbook", "k1_distance_km"]), 90.0);
     let thai: Array = at(&facts, &["result", "zones_thailand"])

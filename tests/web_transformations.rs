@@ -27,7 +27,7 @@ fn obj(json: &str) -> JsValue {
 }
 
 fn solve_err(id: &str, inputs: JsValue) -> String {
-    let e: JsValue = solve(id, inputs).expect_err("should throw").into();
+    let e: JsValue = solve(id.into(), inputs).expect_err("should throw").into();
     let e: JsErr = e.dyn_into().expect("a real JS Error");
     String::from(e.message())
 }
@@ -70,7 +70,7 @@ fn the_catalog_offers_a_point_table_a_model_and_prepared_sets() {
 
 #[wasm_bindgen_test]
 fn example_4_solves_across_the_boundary() {
-    let s = solve("fiducial-similarity", JsValue::UNDEFINED).unwrap();
+    let s = solve("fiducial-similarity".into(), JsValue::UNDEFINED).unwrap();
     let x = numbers(&get(&get(&s, "result"), "parameters"));
     assert!((x[0] - 0.042_600_109_339).abs() < 1e-11);
     assert!((x[2] + 115.034_781_491).abs() < 1e-8);
@@ -89,7 +89,7 @@ fn example_4_solves_across_the_boundary() {
             && get(&n, "text").as_string().unwrap().contains("y′ = −r")
     ));
 
-    let s = solve("fiducial-affine", obj("{}")).unwrap();
+    let s = solve("fiducial-affine".into(), obj("{}")).unwrap();
     let x = numbers(&get(&get(&s, "result"), "parameters"));
     assert!((x[4] - 0.042_599_978_6).abs() < 1e-9);
 }
@@ -99,7 +99,7 @@ fn transform_fit_with_an_edited_point_and_every_model() {
     let edited = obj(
         r#"{"model": "affine", "points": [[48.15, -2699.98, -113.002, 0.008], [5353.12, -2699.13, 112.991, 0.036], [2700.21, -47.62, 0.008, 112.998], [2700.56, -5352.74, -0.016, -112.9]]}"#,
     );
-    let s = solve("transform-fit", edited).unwrap();
+    let s = solve("transform-fit".into(), edited).unwrap();
     let v = numbers(&get(&get(&s, "result"), "residuals"));
     assert!(v.iter().any(|r| r.abs() > 0.02), "{v:?}");
     assert!(get(&s, "textbook").is_null());
@@ -113,7 +113,7 @@ fn transform_fit_with_an_edited_point_and_every_model() {
         "polynomial-3",
     ] {
         let s = solve(
-            "transform-fit",
+            "transform-fit".into(),
             obj(&format!(r#"{{"model": "{m}", "point_set": "control-12"}}"#)),
         )
         .unwrap();
@@ -122,7 +122,7 @@ fn transform_fit_with_an_edited_point_and_every_model() {
         assert!(get(&get(&s, "result"), "sigma0").as_f64().is_some(), "{m}");
     }
     // r = 0: sigma0 arrives as null, not NaN
-    let s = solve("transform-fit", obj(r#"{"model": "projective"}"#)).unwrap();
+    let s = solve("transform-fit".into(), obj(r#"{"model": "projective"}"#)).unwrap();
     assert!(get(&get(&s, "result"), "sigma0").is_null());
 }
 
@@ -191,12 +191,12 @@ fn bad_points_are_js_errors_and_the_module_keeps_answering() {
         "points[1][1]: is infinite; give a finite number"
     );
     // parse_inputs reports the bad point text per field
-    let p = parse_inputs("transform-fit", obj(r#"{"points": "1 2 3 4; 5 6 x 8"}"#)).unwrap();
+    let p = parse_inputs("transform-fit".into(), obj(r#"{"points": "1 2 3 4; 5 6 x 8"}"#)).unwrap();
     assert_eq!(
         get(&get(&p, "errors"), "points").as_string().as_deref(),
         Some("points: \"x\" is not a number")
     );
     // still answering
-    let s = solve("fiducial-similarity", JsValue::UNDEFINED).unwrap();
+    let s = solve("fiducial-similarity".into(), JsValue::UNDEFINED).unwrap();
     assert_eq!(get(&get(&s, "result"), "redundancy").as_f64(), Some(4.0));
 }

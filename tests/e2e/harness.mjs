@@ -5,6 +5,7 @@
 import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
+import { pathToFileURL } from "node:url";
 import { launchChromium } from "../../scripts/chromium.mjs";
 import { startServer } from "../../scripts/serve.mjs";
 
@@ -15,6 +16,20 @@ export { launchChromium };
 const SETTLED = ["ok", "invalid", "error", "home", "message", "fatal"];
 export const TEST_TIMEOUT = 60_000;
 const WAIT = 15_000;
+
+/** A built file's name (content-hashed: dist/assets.json) from its logical name ("pkg/all.js"). */
+export function built(file) {
+  assets ??= JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
+  return assets[file] ?? file;
+}
+let assets = null;
+
+/** A module of dist/pkg ("all", "coordinates" …), initialised in Node: its exports. */
+export async function nodeModule(name) {
+  const m = await import(pathToFileURL(path.resolve(DIST, built(`pkg/${name}.js`))).href);
+  m.initSync({ module: fs.readFileSync(path.resolve(DIST, built(`pkg/${name}_bg.wasm`))) });
+  return m;
+}
 
 /** Starts the server and the browser; `close()` stops both. */
 export async function start() {

@@ -17,25 +17,15 @@ import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
-import { pathToFileURL } from "node:url";
-import { DIST, TEST_TIMEOUT, exact, open, start, visit } from "./harness.mjs";
+import { DIST, TEST_TIMEOUT, built, exact, nodeModule, open, start, visit } from "./harness.mjs";
 import { readDataBlock } from "../../scripts/assets.mjs";
 
 // the build names files by their content (scripts/assets.mjs): dist/assets.json maps
-// a logical name to the file, and `logical` turns a requested path back
-const ASSETS = JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
-const built = (f) => ASSETS[f] ?? f;
+// a logical name to the file (harness.mjs `built`), and `logical` turns a requested path back
 const logical = (p) => p.replace(/\.[0-9a-f]{8}(\.[A-Za-z0-9]+)$/, "$1");
 const WASM = /_bg(\.[0-9a-f]{8})?\.wasm$/;
 const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, built("catalog.json")), "utf8"));
 const MODULES = [...new Set(CATALOG.map((e) => e.module))];
-
-/** A module of dist/pkg, initialised in Node. */
-async function nodeModule(name) {
-  const m = await import(pathToFileURL(path.resolve(DIST, built(`pkg/${name}.js`))).href);
-  m.initSync({ module: fs.readFileSync(path.resolve(DIST, built(`pkg/${name}_bg.wasm`))) });
-  return m;
-}
 
 const all = await nodeModule("all");
 

@@ -29,11 +29,27 @@ export async function catalog() {
   return (await theCore()).catalog();
 }
 
+/** What kind of JS value `v` is, as the wasm exports' messages say it (src/wasm.rs, js_kind). */
+function kindOf(v) {
+  if (v === null) return "null";
+  if (Array.isArray(v)) return "an array";
+  if (ArrayBuffer.isView(v)) return "a typed array";
+  const t = typeof v;
+  if (t === "undefined") return t;
+  return { number: "a number", boolean: "a boolean", function: "a function", bigint: "a BigInt", symbol: "a symbol" }[t] ?? "an object";
+}
+
+/** An id that is not a string never reaches the catalog's lookup (a Symbol cannot even be quoted). */
+function checkId(id) {
+  if (typeof id !== "string") throw new Error(`id: must be a string naming an example, got ${kindOf(id)}`);
+}
+
 /**
  * Loads example `id`'s module once; its `solve(inputs)` and
  * `parseInputs(texts)` are then synchronous.
  */
 export async function loadExample(id) {
+  checkId(id);
   const c = await theCore();
   await c.load(id);
   const entry = c.catalog().find((e) => e.id === id);
