@@ -11,6 +11,7 @@ use photogrammetry_playground::interest::{self, Measures};
 use photogrammetry_playground::matching::{self, Gradients, Matching, Model, Params, Settings};
 use photogrammetry_playground::raster::{Border, Gray, Grid};
 use photogrammetry_playground::resample::{self, Method};
+use photogrammetry_playground::solution::fmt_sig;
 use photogrammetry_playground::transform::{self, Fit, PointPair};
 
 mod custom;
@@ -463,6 +464,64 @@ pub fn correlate(
         lsm,
         lsm_window,
     })
+}
+
+/// Below this ρ a best match is called doubtful: the window found looks
+/// little like the template (a ρ of 0.7 leaves half of the template's
+/// variance, 1 − ρ², unexplained).
+pub const DOUBT_RHO: f64 = 0.7;
+
+/// A least-squares gain outside `1/DOUBT_GAIN … DOUBT_GAIN` is called
+/// doubtful: the contrast had to change by more than half to fit, which two
+/// photos of one scene seldom need; LSM has likely fitted another feature.
+pub const DOUBT_GAIN: f64 = 1.5;
+
+/// Why a match is doubtful, one sentence per reason (none: nothing to say):
+/// the best whole-pixel position on the edge of the search box (ρ may rise
+/// further outside it), a best ρ below [`DOUBT_RHO`], an LSM gain outside
+/// `1/DOUBT_GAIN … DOUBT_GAIN`. LSM's own "converged" says only that the
+/// updates became small, not that the match is right.
+pub fn doubts(m: &Correlation) -> Vec<String> {
+    let mut out = Vec::new();
+    let s = &m.surface;
+    if let Some((i, j)) = s.best {
+        let mut sides = Vec::new();
+        if i == 0 {
+            sides.push("left");
+        }
+        if i + 1 == s.width {
+            sides.push("right");
+        }
+        if j == 0 {
+            sides.push("top");
+        }
+        if j + 1 == s.height {
+            sides.push("bottom");
+        }
+        if !sides.is_empty() {
+            out.push(format!(
+                "the best position is on the {} edge of the search area, so ρ may rise further outside it: search further (a larger ±)",
+                sides.join(" and ")
+            ));
+        }
+        if let Some(rho) = s.rho(i, j).filter(|r| *r < DOUBT_RHO) {
+            out.push(format!(
+                "the best ρ = {} is below {DOUBT_RHO}: the window found looks little like the template",
+                fmt_sig(rho, 3)
+            ));
+        }
+    }
+    if let Some(l) = &m.lsm {
+        let gain = l.params.a[6];
+        if !(1.0 / DOUBT_GAIN..=DOUBT_GAIN).contains(&gain) {
+            out.push(format!(
+                "LSM's gain {} is outside {} … {DOUBT_GAIN} (far from 1): it changed the contrast a lot to fit, likely to another feature",
+                fmt_sig(gain, 3),
+                fmt_sig(1.0 / DOUBT_GAIN, 3)
+            ));
+        }
+    }
+    out
 }
 
 /// Resampling by a transformation of output pixel → input position

@@ -290,6 +290,18 @@ impl ForstnerMaps {
             .map_err(js_error)?;
         Ok(points_js(&ps))
     }
+    /// The threshold chosen for this photo (`ops::auto_threshold`):
+    /// `{ thresholdPx, wMin, share }`, or null when `w_min` is 0.
+    pub fn auto_threshold(&self, sigma_n: f64) -> Result<JsValue, JsError> {
+        match ops::auto_threshold(&self.kept.map, sigma_n) {
+            Some(a) => obj(&[
+                ("thresholdPx", a.threshold_px.into()),
+                ("wMin", a.w_min.into()),
+                ("share", ops::W_TOP_SHARE.into()),
+            ]),
+            None => Ok(JsValue::NULL),
+        }
+    }
 }
 
 /// Prewitt or Sobel: layers gx, gy, magnitude, direction.
@@ -419,6 +431,15 @@ pub fn run_correlation(
         ("around", around),
         ("subpixel", opt2(m.subpixel)),
         ("lsm", lsm),
+        // why the match is doubtful (ops::doubts): sentences, none when nothing is
+        (
+            "doubts",
+            ops::doubts(&m)
+                .iter()
+                .map(|d| JsValue::from_str(d))
+                .collect::<Array>()
+                .into(),
+        ),
     ])
 }
 

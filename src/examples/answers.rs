@@ -18,8 +18,9 @@ pub fn keys(id: &str) -> &'static [&'static str] {
         "lsm-2d" => &["c", "r"],
         "lsm-affine" => &["parameters", "sigma0"],
         "resample" => &["nearest", "bilinear", "bicubic"],
-        "filter-window" => &["output"],
-        "edge-window" => &["gx", "gy", "magnitude"],
+        // the selected pixel first: the number the image lab explains
+        "filter-window" => &["selected", "output"],
+        "edge-window" => &["selected_gx", "selected_gy", "selected_magnitude"],
         "forstner-window" => &["w", "q", "accepted"],
         "moravec-window" => &["sums", "mean"],
         "forstner-image" => &["w", "q", "points"],

@@ -60,6 +60,203 @@ async function results(context, base, href, keys) {
 
 const near = (a, b, tol = 1e-9) => Math.abs(a - b) <= tol;
 
+/**
+ * The example a link opens, in a second page: its answer line's item `key`
+ * (the text shown and the number in it) and the result's exact value.
+ */
+async function answerOf(context, base, href, key) {
+  const p = await context.newPage();
+  try {
+    await p.goto(new URL(href, base).href);
+    assert.equal(await settled(p), "ok", `${href} did not solve`);
+    const item = p.locator(`.answer-line .answer-item[data-key="${key}"]`);
+    assert.equal(await item.count(), 1, `${href}: no ${key} in the answer line: ${await p.locator(".answer-line").innerText()}`);
+    const text = (await item.locator("strong").innerText()).trim();
+    const raw = await p.locator(`.result-table tr[data-key="${key}"] td.exact`).getAttribute("data-value");
+    const exact = raw === null ? (await p.locator(`.result-table tr[data-key="${key}"] td.exact`).innerText()).trim() : JSON.parse(raw);
+    return { text, exact, line: await p.locator(".answer-line").innerText() };
+  } finally {
+    await p.close();
+  }
+}
+
+/** The answer line's number is `value` as shown: `value` rounded to the digits written. */
+function showsValue(text, value, what) {
+  const m = text.replace(/\u2212/g, "-").match(/^-?\d+(\.\d+)?(e-?\d+)?/);
+  assert.ok(m, `${what}: no number in the answer "${text}"`);
+  const decimals = (m[1] ?? ".").length - 1;
+  assert.ok(Math.abs(Number(m[0]) - value) <= 0.5 * 10 ** -decimals * (1 + 1e-9) * (m[2] ? Math.abs(value) * 10 ** decimals : 1), `${what}: the answer line shows ${text}, the lab ${value}`);
+}
+
+/** Clicks (c, r), waits for the explanation: the lab's value and the link. */
+async function explainAt(page, c, r) {
+  await page.evaluate(() => document.getElementById("lab-explain").replaceChildren());
+  await clickPixel(page, c, r);
+  await page.waitForSelector("#lab-explain-link");
+  const [pc, pr] = (await page.textContent("#lab-explain p")).match(/column (\d+), row (\d+)/).slice(1).map(Number);
+  return {
+    c: pc,
+    r: pr,
+    value: Number(await page.getAttribute("#lab-explain-value", "data-value")),
+    href: await page.getAttribute("#lab-explain-link", "href"),
+    key: await page.getAttribute("#lab-explain-link", "data-key"),
+  };
+}
+
+// Issue 29, item 1: every family's "Explain this pixel" opens its example
+// with the clicked pixel selected, and the example's answer line (the line
+// under its title) is the lab's number.
+
+test("filters: the example selects the clicked pixel (the window's centre) and its answer line is the lab's value", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "left01.jpg");
+  await page.selectOption("#lab-family", "filters");
+  for (const [kernel, side] of [["mean", 5], ["gaussian-5", 7], ["median", 5]]) {
+    await page.selectOption("#lab-kernel", kernel);
+    await page.click("#lab-run");
+    await idle(page);
+    const x = await explainAt(page, 320, 240);
+    const q = new URLSearchParams(x.href.split("?")[1]);
+    // the window of side k + 2 round the pixel: the pixel is its centre, (side + 1)/2 counted from 1
+    assert.equal(q.get("select_c"), String((side + 1) / 2), x.href.slice(0, 60));
+    assert.equal(q.get("select_r"), String((side + 1) / 2));
+    assert.equal(x.key, "selected");
+    const a = await answerOf(context, page.url(), x.href, "selected");
+    assert.equal(a.exact, x.value, `${kernel} at (${x.c}, ${x.r}): the example's selected pixel ${a.exact}, the lab ${x.value}`);
+    showsValue(a.text, x.value, `${kernel} at (${x.c}, ${x.r})`);
+    assert.match(a.line, /^Output at the selected pixel = /);
+  }
+  // a custom kernel (3 rows × 5 columns): the window 5 × 7, its centre (4, 3)
+  await page.selectOption("#lab-kernel", "custom");
+  await page.fill("#lab-custom", "1 1 1 1 1\n1 2 3 2 1\n1 1 1 1 1");
+  await page.click("#lab-run");
+  await idle(page);
+  const x = await explainAt(page, 100, 50);
+  const q = new URLSearchParams(x.href.split("?")[1]);
+  assert.deepEqual([q.get("select_c"), q.get("select_r")], ["4", "3"]);
+  const a = await answerOf(context, page.url(), x.href, "selected");
+  assert.ok(near(a.exact, x.value, 1e-12), `custom: ${a.exact} vs ${x.value}`);
+  showsValue(a.text, x.value, "custom");
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("edges: gx, gy and the magnitude of the clicked pixel are the example's answer line", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "left01.jpg");
+  await page.selectOption("#lab-family", "edges");
+  await page.selectOption("#lab-operator", "prewitt");
+  await page.click("#lab-run");
+  await idle(page);
+  const names = await page.locator("#lab-layer option").allTextContents();
+  for (const [layer, c, r] of [["magnitude", 320, 240], ["gx", 250, 170], ["gy", 0, 0]]) {
+    await page.selectOption("#lab-layer", String(names.indexOf(layer)));
+    const x = await explainAt(page, c, r);
+    assert.equal(x.key, `selected_${layer}`);
+    const q = new URLSearchParams(x.href.split("?")[1]);
+    assert.deepEqual([q.get("select_c"), q.get("select_r")], ["3", "3"]);
+    const a = await answerOf(context, page.url(), x.href, `selected_${layer}`);
+    assert.equal(a.exact, x.value, `${layer} at (${x.c}, ${x.r})`);
+    showsValue(a.text, x.value, `${layer} at (${x.c}, ${x.r})`);
+  }
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("interest operators: w and q of Förstner's window and Moravec's mean are the example's answer line", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "left01.jpg");
+  await page.selectOption("#lab-family", "interest");
+  for (const [op, layer, key] of [["forstner", "w", "w"], ["forstner", "q", "q"], ["moravec", "moravec", "mean"]]) {
+    await page.selectOption("#lab-interest", op);
+    await page.click("#lab-run");
+    await idle(page);
+    await page.waitForFunction(() => document.body.dataset.forstnerLive !== "busy");
+    await page.selectOption("#lab-layer", { label: layer });
+    const x = await explainAt(page, 320, 240);
+    const a = await answerOf(context, page.url(), x.href, key);
+    assert.ok(near(a.exact, x.value, 1e-9 * Math.max(1, Math.abs(x.value))), `${op} ${layer}: ${a.exact} vs ${x.value}`);
+    showsValue(a.text, x.value, `${op} ${layer}`);
+  }
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("correlation: a surface pixel's ρ and the subpixel peak are their examples' answer lines", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "aero1.jpg");
+  await page.selectOption("#lab-family", "correlation");
+  await page.selectOption("#lab-template", "15");
+  await page.fill("#lab-reach", "10");
+  await clickPixel(page, 300, 200);
+  await page.waitForFunction(() => document.body.dataset.matched, null, { timeout: 30_000 });
+  await idle(page);
+  const sub = (await page.evaluate(() => document.body.dataset.subpixel)).split(",").map(Number);
+  const href = await page.locator("#lab-explain a", { hasText: "subpixel-2d" }).getAttribute("href");
+  const s = await answerOf(context, page.url(), href, "c_max");
+  assert.ok(near(s.exact, sub[0]), `${s.exact} vs ${sub[0]}`);
+  showsValue(s.text, sub[0], "c_max");
+  const fig = page.locator(".lab-pair canvas").first();
+  const box = await fig.boundingBox();
+  await fig.click({ position: { x: box.width / 2 + 20, y: box.height / 2 + 15 } });
+  await page.waitForSelector("#lab-explain-link");
+  const rho = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+  const a = await answerOf(context, page.url(), await page.getAttribute("#lab-explain-link", "href"), "rho");
+  assert.ok(near(a.exact, rho, 1e-12), `${a.exact} vs ${rho}`);
+  showsValue(a.text, rho, "ρ");
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("resampling and boundaries: a rotated pixel's value and a region's chain code are their examples' answer lines", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "camera.png");
+  await page.selectOption("#lab-family", "resampling");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.resampled === "nearest,bilinear,bicubic", null, { timeout: 30_000 });
+  await idle(page);
+  for (const [fig, method] of [[2, "bilinear"], [3, "bicubic"]]) {
+    const canvas = page.locator(`#lab-methods figure:nth-child(${fig}) canvas`);
+    const box = await canvas.boundingBox();
+    await page.evaluate(() => document.getElementById("lab-explain").replaceChildren());
+    await canvas.click({ position: { x: box.width / 2 + 13, y: box.height / 2 - 7 } });
+    await page.waitForSelector("#lab-explain-link");
+    const value = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+    const a = await answerOf(context, page.url(), await page.getAttribute("#lab-explain-link", "href"), method);
+    assert.ok(near(a.exact, value, 1e-9), `${method}: ${a.exact} vs ${value}`);
+    showsValue(a.text, value, method);
+  }
+  // boundaries: a fiducial's bright disc on the generated frame
+  await sample(page, "frame");
+  await page.selectOption("#lab-family", "boundaries");
+  const truth = await page.evaluate(async () => (await import("./lab/lab.js")).truthForTests());
+  await clickPixel(page, Math.round(truth.marks[0]), Math.round(truth.marks[1]));
+  await page.waitForSelector("#lab-boundary");
+  const code = await page.evaluate(() => document.body.dataset.code);
+  const href = await page.locator("#lab-explain a").first().getAttribute("href");
+  const a = await answerOf(context, page.url(), href, "code");
+  assert.equal(String(a.exact).replace(/\D/g, ""), code);
+  const shownDigits = a.text.replace(/\D/g, "");
+  assert.ok(shownDigits.length > 0 && code.startsWith(shownDigits), `the answer line shows ${a.text.slice(0, 40)}; the lab's code ${code.slice(0, 20)}…`);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("fiducials: the affine fitted to the lab's marks is Example 4's answer line", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "frame");
+  await page.selectOption("#lab-family", "fiducials");
+  await page.click("#lab-run");
+  await page.waitForSelector("#lab-fid-link");
+  await idle(page);
+  const lab = (await page.evaluate(() => document.body.dataset.fidAffine)).split(",").map(Number);
+  const a = await answerOf(context, page.url(), await page.getAttribute("#lab-fid-link", "href"), "parameters");
+  lab.forEach((v, k) => assert.ok(near(a.exact[k], v, 1e-9 * Math.max(1, Math.abs(v))), `a${k}: ${a.exact[k]} vs ${v}`));
+  showsValue(a.text.replace(/^\[/, ""), lab[0], "the affine's first parameter");
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
 test("every match explains: subpixel-2d, lsm-2d (shift, shift + radiometric), lsm-affine and a surface pixel give the lab's numbers", { timeout: TEST_TIMEOUT * 4 }, async () => {
   const { page, log, context } = await openLab();
   await sample(page, "aero1.jpg");
@@ -228,6 +425,7 @@ test("an edge direction is atan2(gy, gx) of the gx and gy its edge-window comput
     const href = await page.getAttribute("#lab-explain-link", "href");
     const e = await results(context, page.url(), href, ["gx", "gy"]);
     assert.equal(e.gx[1][1], gx);
+    assert.equal(e.gx[1][1], (await results(context, page.url(), href, ["selected_gx"])).selected_gx, "the selected pixel is the window's centre");
     // the link explain.js builds for a direction pixel: the same window, gx and gy
     const link = await page.evaluate(async ([h]) => {
       const X = await import("./lab/explain.js");
@@ -236,7 +434,7 @@ test("an edge direction is atan2(gy, gx) of the gx and gy its edge-window comput
       return { same: `index.html${l.hash}` === h, derive: l.derive, dir: null };
     }, [href]);
     assert.ok(link.same, "a direction pixel links to the same edge-window");
-    assert.deepEqual(link.derive.keys, ["gx", "gy"]);
+    assert.deepEqual(link.derive.keys, ["selected_gx", "selected_gy"]);
     const want = (Math.atan2(e.gy[1][1], e.gx[1][1]) * 180) / Math.PI;
     assert.ok(near(dir, want, 1e-12), `(${c}, ${r}): the lab's direction ${dir}, atan2 of the example's gy ${e.gy[1][1]}, gx ${e.gx[1][1]}: ${want}`);
   }

@@ -25,3 +25,21 @@ export async function sample(page, id) {
   await idle(page);
   await page.waitForFunction((want) => (document.body.dataset.image || "").startsWith(want), id === "frame" ? "scanned frame" : id);
 }
+
+/** The main view's geometry (lab.js's viewForTests). */
+export function viewOf(page) {
+  return page.evaluate(async () => (await import("./lab/lab.js")).viewForTests());
+}
+
+/** Page coordinates of image pixel (c, r)'s centre in the main view. */
+export async function pixelPos(page, c, r) {
+  await page.locator("#lab-stage .lab-canvas").scrollIntoViewIfNeeded();
+  const g = await viewOf(page);
+  return { x: g.left + ((c + 0.5) * g.zoom + g.ox) * (g.w / g.cw), y: g.top + ((r + 0.5) * g.zoom + g.oy) * (g.h / g.ch) };
+}
+
+/** Clicks image pixel (c, r) of the main view with the mouse. */
+export async function clickPixel(page, c, r) {
+  const p = await pixelPos(page, c, r);
+  await page.mouse.click(p.x, p.y);
+}

@@ -23,49 +23,62 @@ export function kernelSide(kernel) {
 }
 
 /**
+ * The selected pixel of a window of `w × h` read round the lab's pixel (the
+ * neighbourhood under the lab's border policy: the pixel is always its
+ * centre), as the examples' 1-based `select_c`, `select_r`.
+ */
+export function centreSelection(w, h) {
+  return [["select_c", String((w + 1) / 2)], ["select_r", String((h + 1) / 2)]];
+}
+
+/**
  * filter-window: the (k+2)×(k+2) neighbourhood read under the lab's border
- * policy; the example's `output` is the 3×3 interior, whose centre is the
- * lab's pixel.
+ * policy, its centre (the lab's pixel) selected; the example's `selected`
+ * (its answer line) and the centre of its 3×3 `output` are the lab's value.
  */
 export function filterLink(kernel, window, side) {
   return {
-    hash: buildHash("filter-window", [["window", matrixText(toRows(window, side))], ["kernel", kernel]]),
-    key: "output",
-    index: [1, 1],
+    hash: buildHash("filter-window", [["window", matrixText(toRows(window, side))], ["kernel", kernel], ...centreSelection(side, side)]),
+    key: "selected",
+    index: null,
   };
 }
 
 /**
  * filter-window with a custom kernel (`rows`, `divisor`): the neighbourhood
- * one pixel wider than the kernel on each side, `w` columns; the example's
- * `output` is its 3×3 interior under crop, whose centre is the lab's pixel.
+ * one pixel wider than the kernel on each side, `w` columns, its centre (the
+ * lab's pixel) selected; the example's `selected` is the lab's value.
  */
 export function customFilterLink(rows, divisor, window, w) {
+  const h = window.length / w;
   return {
     hash: buildHash("filter-window", [
       ["window", matrixText(toRows(window, w))],
       ["kernel", "custom"],
       ["custom_kernel", matrixText(rows)],
       ["custom_divisor", String(divisor)],
+      ...centreSelection(w, h),
     ]),
-    key: "output",
-    index: [1, 1],
+    key: "selected",
+    index: null,
   };
 }
 
 /**
- * edge-window: the 5×5 neighbourhood; gx, gy, magnitude at the centre of
- * the 3×3 interior. edge-window has no direction result: a direction pixel
- * links to the same window with `derive` saying how its value follows from
- * the example's gx and gy there (`direction(gx, gy)`).
+ * edge-window: the 5×5 neighbourhood, its centre (the lab's pixel)
+ * selected: the example's selected_gx, selected_gy, selected_magnitude (its
+ * answer line) are the lab's gx, gy, magnitude there. edge-window has no
+ * direction result: a direction pixel links to the same window with
+ * `derive` saying how its value follows from the example's gx and gy
+ * (`direction(gx, gy)`).
  */
 export function edgeLink(operator, window, layerName) {
   const dir = layerName === "direction";
   return {
-    hash: buildHash("edge-window", [["window", matrixText(toRows(window, 5))], ["operator", operator]]),
-    key: dir ? "gx" : layerName,
-    index: [1, 1],
-    ...(dir ? { derive: { keys: ["gx", "gy"], formula: "atan2(gy, gx) in degrees" } } : {}),
+    hash: buildHash("edge-window", [["window", matrixText(toRows(window, 5))], ["operator", operator], ...centreSelection(5, 5)]),
+    key: dir ? "selected_gx" : `selected_${layerName}`,
+    index: null,
+    ...(dir ? { derive: { keys: ["selected_gx", "selected_gy"], words: "Gx and Gy at the selected pixel", formula: "atan2(Gy, Gx) in degrees" } } : {}),
   };
 }
 

@@ -5,6 +5,7 @@
 
 import { el } from "../dom.js";
 import * as X from "./explain.js";
+import { fmt } from "./view.js";
 import { Live } from "./live.js";
 
 const BORDERS = [["replicate", "replicate the edge"], ["reflect", "reflect at the edge"], ["zero", "zero outside"], ["crop", "crop (interior only)"]];
@@ -200,7 +201,7 @@ const edges = {
   id: "edges",
   title: "Edges (Prewitt, Sobel)",
   create(lab, box) {
-    const [op, opLabel] = select("lab-operator", "Operator", [["prewitt", "Prewitt"], ["sobel", "Sobel"]], "sobel");
+    const [op, opLabel] = select("lab-operator", "Edge operator", [["prewitt", "Prewitt"], ["sobel", "Sobel"]], "sobel");
     const [border, borderLabel] = select("lab-border", "Border", BORDERS, "replicate");
     const run = runButton();
     box.append(opLabel, " ", borderLabel, " ", run,
@@ -238,11 +239,21 @@ const interest = {
   id: "interest",
   title: "Interest points (Förstner, Moravec)",
   create(lab, box) {
-    const [op, opLabel] = select("lab-interest", "Operator", [["forstner", "Förstner"], ["moravec", "Moravec"]], "forstner");
+    const [op, opLabel] = select("lab-interest", "Interest operator", [["forstner", "Förstner"], ["moravec", "Moravec"]], "forstner");
     const [size, sizeLabel] = number("lab-window", "Window", 5, { min: "3", max: "15", step: "1" });
     const [sigma, sigmaLabel] = number("lab-sigma", "σn (grey values)", 8, { min: "0.01" });
     // the threshold is a live slider: it re-thresholds the kept map
-    const thr = el("input", { type: "range", id: "lab-threshold", min: "0.05", max: "3", step: "0.05", value: "0.5", "aria-describedby": "lab-threshold-out" });
+    // its default is chosen for each photo (the strongest 0.1 % of w: ops::auto_threshold) until the student moves it
+    const thr = el("input", { type: "range", id: "lab-threshold", min: "0.01", max: "3", step: "0.01", value: "0.5", "aria-describedby": "lab-threshold-out lab-threshold-rule" });
+    const rule = el("p", { class: "muted", id: "lab-threshold-rule" });
+    // while the photo's own T is used: its exact value (the slider shows its nearest step; the link leaves it out)
+    let autoT = null;
+    let thrSet = false;
+    thr.addEventListener("change", () => {
+      thrSet = true;
+      autoT = null;
+      delete thr.dataset.auto;
+    });
     const thrOut = el("output", { id: "lab-threshold-out", for: "lab-threshold" }, "0.5 px");
     const thrLabel = el("label", { class: "lab-slider" }, "Threshold T ", thr, " ", thrOut);
     const [qmin, qLabel] = number("lab-qmin", "Roundness q ≥", 0.5, { min: "0", max: "1" });
@@ -251,7 +262,7 @@ const interest = {
     const note = el("p", { class: "muted" });
     const sync = () => {
       const f = op.value === "forstner";
-      for (const l of [sigmaLabel, thrLabel, qLabel]) l.hidden = !f;
+      for (const l of [sigmaLabel, thrLabel, qLabel, rule]) l.hidden = !f;
       mthrLabel.hidden = f;
       if (!f && Number(size.value) === 5) size.value = "4";
       if (f && Number(size.value) === 4) size.value = "5";
@@ -261,7 +272,7 @@ const interest = {
     };
     op.addEventListener("change", sync);
     sync();
-    box.append(opLabel, " ", sizeLabel, " ", sigmaLabel, " ", thrLabel, " ", qLabel, " ", mthrLabel, " ", run, note);
+    box.append(opLabel, " ", sizeLabel, " ", sigmaLabel, " ", thrLabel, " ", qLabel, " ", mthrLabel, " ", run, note, rule);
     let used = null;
     const drawPoints = (p) => {
       const shapes = [];
@@ -280,7 +291,7 @@ const interest = {
     // map), then points for the current T, σn, q from the kept map
     const live = new Live(lab, "forstner");
     let mapSize = null;
-    const params = () => ({ size: Number(size.value), sigmaN: Number(sigma.value), thresholdPx: Number(thr.value), qMin: Number(qmin.value), threshold: Number(mthr.value) });
+    const params = () => ({ size: Number(size.value), sigmaN: Number(sigma.value), thresholdPx: autoT ?? Number(thr.value), qMin: Number(qmin.value), threshold: Number(mthr.value) });
     const points = () => {
       const args = params();
       live.request({
@@ -301,11 +312,23 @@ const interest = {
       mapSize = null;
       live.request({
         type: "forstnerMaps",
-        args: { size: n },
+        args: { size: n, sigmaN: Number(sigma.value) },
         label: `Förstner operator (${n}×${n} windows)`,
         cancel: true,
         apply(r) {
           mapSize = r.size;
+          const a = r.auto;
+          if (a && !thrSet) {
+            autoT = a.thresholdPx;
+            thr.value = String(autoT);
+            thr.dataset.auto = "1";
+            thrOut.textContent = `${fmt(autoT, 3)} px`;
+          }
+          rule.textContent = !a
+            ? "This photo has no textured pixel (every w is 0): no threshold can be chosen from it."
+            : thrSet
+              ? `T = ${thr.value} px as you set it. For this photo the lab would choose ${fmt(a.thresholdPx, 3)} px: w at least ${fmt(a.wMin, 4)}, the w of its strongest ${a.share * 100} % of pixels.`
+              : `T = ${fmt(a.thresholdPx, 3)} px, chosen for this photo: its strongest ${a.share * 100} % of pixels have w ≥ ${fmt(a.wMin, 4)}, and T = σn/√w_min = ${fmt(Number(sigma.value), 4)}/√${fmt(a.wMin, 4)} keeps the pixels whose λmin(N) ≥ w_min (w ≤ λmin(N) ≤ 2w). A fixed T would keep the photo's texture as well; move the slider to choose your own.`;
           used = { op: "forstner", ...params(), size: r.size };
           lab.setLayers(r.layers);
           document.body.dataset.mapRuns = String(r.mapRuns);
@@ -313,8 +336,12 @@ const interest = {
         },
       });
     };
-    const retune = () => {
-      thrOut.textContent = `${thr.value} px`;
+    const retune = (ev) => {
+      if (ev?.target === thr) {
+        autoT = null;
+        delete thr.dataset.auto;
+      }
+      thrOut.textContent = autoT === null ? `${thr.value} px` : `${fmt(autoT, 3)} px`;
       if (op.value !== "forstner" || !lab.image) return;
       if (mapSize !== null && mapSize === Number(size.value)) points();
       // (while a map is computed, its points follow with the newest values)
@@ -339,6 +366,9 @@ const interest = {
     return {
       imageChanged() {
         mapSize = null;
+        thrSet = false;
+        autoT = null;
+        rule.textContent = "";
       },
       async pick(c, r) {
         const layer = currentLayer(lab);

@@ -190,8 +190,12 @@ const correlation = {
           else if (sw) links.push(el("span", { class: "muted" }, `(the ${lsm.window[2]}×${lsm.window[3]} LSM window is too long for a link: a smaller template gives one)`));
           document.body.dataset.lsm = [...p, lsm.window[0], lsm.window[1]].join(",");
         }
+        // a converged LSM is not yet a right match: say when it is doubtful and why (ops::doubts)
+        const doubts = res.doubts ?? [];
+        if (doubts.length) rows.push(["Doubtful", `${doubts.map((d) => d[0].toUpperCase() + d.slice(1)).join(". ")}.`]);
+        document.body.dataset.doubts = String(doubts.length);
         lab.explain.replaceChildren(
-          el("table", { class: "lab-table", id: "lab-match" }, rows.map(([k, v]) => el("tr", {}, el("th", {}, k), el("td", {}, v)))),
+          el("table", { class: "lab-table", id: "lab-match" }, rows.map(([k, v]) => el("tr", k === "Doubtful" ? { class: "lab-doubt", id: "lab-doubts" } : {}, el("th", {}, k), el("td", {}, v)))),
           el("p", {}, "Open the worked example with these numbers: ", links.flatMap((a, i) => (i ? [" · ", a] : [a]))),
         );
         if (stale()) return;

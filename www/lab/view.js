@@ -8,6 +8,14 @@
 const LABEL_ZOOM = 28;
 const MIN_ZOOM = 0.05;
 const MAX_ZOOM = 64;
+/**
+ * A finger covers about 40 CSS pixels: a tap picks a pixel only when one
+ * image pixel is at least TAP_PICK CSS pixels wide; a tap on a view zoomed
+ * out further zooms in to TAP_ZOOM about the tapped point instead (the next
+ * tap picks).
+ */
+export const TAP_PICK = 12;
+export const TAP_ZOOM = 24;
 
 /** A number for people: up to `digits` significant digits, no trailing noise. */
 export function fmt(v, digits = 5) {
@@ -98,6 +106,7 @@ export class Viewer {
     this.opacity = 0.7;
     this.mode = "over";
     this.shapes = [];
+    this.mark = null;
     this.zoom = 1;
     this.ox = 0;
     this.oy = 0;
@@ -107,6 +116,7 @@ export class Viewer {
   }
 
   destroy() {
+    clearTimeout(this.viewTimer);
     this.resizer.disconnect();
     this.canvas.remove();
   }
@@ -161,6 +171,25 @@ export class Viewer {
     this.draw();
   }
 
+  /** Marks pixel `[c, r]` (the clicked one: an outlined square, visible at any zoom), or none. */
+  setMark(p) {
+    this.mark = p;
+    this.draw();
+  }
+
+  /** The image position (pixel centres at integers) at the view's centre. */
+  centre() {
+    const panels = this.mode === "beside" && this.layer ? 2 : 1;
+    return { c: (this.canvas.width / panels / 2 - this.ox) / this.zoom - 0.5, r: (this.canvas.height / 2 - this.oy) / this.zoom - 0.5 };
+  }
+
+  /** Tells the owner the view moved (zoom, pan, fit), at most every 250 ms. */
+  viewChanged() {
+    if (!this.opts.onView) return;
+    clearTimeout(this.viewTimer);
+    this.viewTimer = setTimeout(() => this.opts.onView(), 250);
+  }
+
   resize() {
     const w = Math.max(200, this.canvas.parentElement?.clientWidth || 600);
     const img = this.image;
@@ -197,6 +226,7 @@ export class Viewer {
     this.fitted = true;
     this.atFit = true;
     this.draw();
+    this.viewChanged();
   }
 
   /** Image position (continuous, pixel centres at integers) under canvas point (px, py). */
@@ -216,6 +246,7 @@ export class Viewer {
     this.zoom = z;
     this.atFit = false;
     this.draw();
+    this.viewChanged();
   }
 
   /** Moves the image by (dx, dy) canvas pixels. */
@@ -224,6 +255,7 @@ export class Viewer {
     this.oy += dy;
     this.atFit = false;
     this.draw();
+    this.viewChanged();
   }
 
   /** Zooms so that one image pixel is `z` screen pixels, centred on (c, r). */
@@ -233,6 +265,7 @@ export class Viewer {
     this.oy = this.canvas.height / 2 - (r + 0.5) * z;
     this.atFit = false;
     this.draw();
+    this.viewChanged();
   }
 
   bind() {
@@ -297,6 +330,11 @@ export class Viewer {
       }
       if (!p || !this.image) return;
       if (moved < 6) {
+        if (ev.pointerType === "touch" && this.opts.tapZoom !== false && this.zoom / (this.dpr || 1) < TAP_PICK) {
+          this.zoomAt(TAP_ZOOM * (this.dpr || 1) / this.zoom, p[0], p[1]);
+          this.opts.onTapZoom?.();
+          return;
+        }
         const [x, y] = this.toImage(p[0], p[1]);
         const c = Math.round(x);
         const r = Math.round(y);
@@ -373,6 +411,7 @@ export class Viewer {
       }
       if (this.zoom >= LABEL_ZOOM) this.labels(ctx, p * w, w, onlyLayer);
       this.drawShapes(ctx);
+      this.drawMark(ctx);
       ctx.restore();
     }
   }
@@ -410,6 +449,31 @@ export class Viewer {
         const text = Number.isInteger(v) ? String(v) : v.toFixed(Math.abs(v) < 10 ? 2 : 1);
         ctx.fillText(text, c + 0.5, r + 0.5, 0.95);
       }
+    }
+  }
+
+  /**
+   * The clicked pixel: its square outlined (dark inside, light outside, so
+   * that it shows on any grey), with four ticks pointing at it from 6 to 16
+   * screen pixels away, so that it is found when the pixel is smaller than a
+   * screen pixel.
+   */
+  drawMark(ctx) {
+    if (!this.mark) return;
+    const [c, r] = this.mark;
+    const px = (1 / this.zoom) * (this.dpr || 1);
+    const [x, y] = [c + 0.5, r + 0.5];
+    const half = Math.max(0.5, 3 * px);
+    for (const [colour, width] of [["#fff", 4], ["#d6336c", 2]]) {
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = width * px;
+      ctx.beginPath();
+      ctx.rect(x - half, y - half, 2 * half, 2 * half);
+      for (const [dx, dy] of [[1, 0], [-1, 0], [0, 1], [0, -1]]) {
+        ctx.moveTo(x + dx * (half + 6 * px), y + dy * (half + 6 * px));
+        ctx.lineTo(x + dx * (half + 16 * px), y + dy * (half + 16 * px));
+      }
+      ctx.stroke();
     }
   }
 

@@ -160,11 +160,13 @@ const handlers = {
   },
   // the live threshold: the map once (forstnerMaps), then points for any
   // threshold from the kept map (forstnerPoints), without recomputing it
-  forstnerMaps({ size }, transfer) {
+  forstnerMaps({ size, sigmaN }, transfer) {
     dropForstner();
     forstnerKept = lab.forstner_maps(need("a"), size);
     forstnerMapRuns++;
-    return { layers: layersOut(forstnerKept.layers(), transfer), size, mapRuns: forstnerMapRuns };
+    // the threshold chosen for this photo (w among the strongest 0.1 %: ops::auto_threshold)
+    const auto = sigmaN > 0 ? forstnerKept.auto_threshold(sigmaN) : null;
+    return { layers: layersOut(forstnerKept.layers(), transfer), size, mapRuns: forstnerMapRuns, auto };
   },
   forstnerPoints({ sigmaN, thresholdPx, qMin }) {
     if (!forstnerKept) throw new Error("threshold_px: no Förstner map is kept (press Run first)");
