@@ -39,3 +39,29 @@ test("the k×k mean kernel, and the residual arrows' nice scale", () => {
   assert.equal(r.barMm, 0.1);
   assert.equal(r.barPx, 40);
 });
+
+test("the lab's link: its state's entries in a fixed order, samples by name, the start sample, the engine's words", async () => {
+  const { stateEntries, sampleOf, startSample, engineWords } = await import("../../www/lab/lab.js");
+  const { filterLink, customFilterLink, edgeLink } = await import("../../www/lab/explain.js");
+  assert.deepEqual(stateEntries({ sample: "chessboard", family: "filters", controls: [["kernel", "mean"], ["border", "replicate"]], run: true, layer: "mean", mode: "over", opacity: "0.7", pick: [320, 240], view: { zoom: 3.14159, c: 320.4, r: 239.6 } }), [
+    ["sample", "chessboard"], ["family", "filters"], ["kernel", "mean"], ["border", "replicate"], ["run", "1"], ["layer", "mean"], ["c", "320"], ["r", "240"], ["zoom", "3.142"], ["vc", "320"], ["vr", "240"],
+  ]);
+  // the student's photo: named "yours" (its bytes never go into a link); a view left fitted and defaults are left out
+  assert.deepEqual(stateEntries({ sample: null, photo: true, family: "edges", controls: [], run: false, layer: null, mode: "beside", opacity: "0.4", pick: null, view: null }), [
+    ["photo", "yours"], ["family", "edges"], ["mode", "beside"], ["opacity", "0.4"],
+  ]);
+  assert.equal(sampleOf("chessboard").id, "left01.jpg");
+  assert.equal(sampleOf("camera.png").key, "cameraman");
+  assert.equal(sampleOf("<script>"), null);
+  assert.deepEqual(["filters", "correlation", "fiducials"].map(startSample), ["left01.jpg", "aero1.jpg", "frame"]);
+  assert.equal(engineWords("simd128", 1), "fast (SIMD), 1 thread");
+  assert.equal(engineWords("scalar", 4), "standard (no SIMD), 4 threads for filters and edges");
+  // explain links select the window's centre: the lab's pixel
+  const q = (l) => new URLSearchParams(l.hash.split("?")[1]);
+  const f = filterLink("gaussian-5", Array(49).fill(1), 7);
+  assert.deepEqual([q(f).get("select_c"), q(f).get("select_r"), f.key], ["4", "4", "selected"]);
+  const cf = customFilterLink([[1, 1, 1, 1, 1]], 5, Array(21).fill(1), 7);
+  assert.deepEqual([q(cf).get("select_c"), q(cf).get("select_r")], ["4", "2"]);
+  const e = edgeLink("sobel", Array(25).fill(1), "direction");
+  assert.deepEqual([q(e).get("select_c"), q(e).get("select_r"), e.key, e.derive.keys], ["3", "3", "selected_gx", ["selected_gx", "selected_gy"]]);
+});

@@ -284,7 +284,7 @@ const interest = {
         }
       }
       lab.viewer.setShapes(shapes);
-      lab.say(`${p.length / 6} interest points found${used.op === "forstner" ? ` with T = ${used.thresholdPx} px` : ""}.`);
+      lab.say(`${p.length / 6} interest points found${used.op === "forstner" ? ` with T = ${fmt(used.thresholdPx, 3)} px` : ""}.`);
       document.body.dataset.points = String(p.length / 6);
     };
     // Förstner: the map once per window size (a new size cancels a running
