@@ -627,6 +627,7 @@ class Lab {
     if (!s) return;
     // a newer open (the student's choice while the start sample loads) wins
     const gen = ++this.openGen;
+    // (here, not when it arrives: the student may have chosen another meanwhile)
     this.sampleSelect.value = id;
     if (id === "frame") {
       const r = await this.run("frame", {}, "Generating the frame photo");
@@ -689,7 +690,6 @@ class Lab {
     this.clearResult();
     this.ran = false;
     this.picked = null;
-    if (sample) this.sampleSelect.value = sample.id;
     this.viewer.setImage(img);
     this.inspector.textContent = "Point at the image: column c, row r and grey value appear here.";
     const what = `${img.name}: ${img.width} × ${img.height} pixels, ${img.format}, ${img.colour === "colour" ? "colour (shown as grey)" : "grey"}, ${img.bits}-bit`;
