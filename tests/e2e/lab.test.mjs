@@ -437,10 +437,10 @@ test("a clicked pixel of each family opens its worked example with the same numb
     assert.equal(shown, inLab, `${family}/${layer}: the explained value is the layer's at (${c}, ${r})`);
     if (layer === "direction") {
       // edge-window has no direction result: the link opens the same window, and the lab says how the layer follows
-      assert.match(await page.textContent("#lab-explain"), /atan2\(gy, gx\) in degrees/);
+      assert.match(await page.textContent("#lab-explain"), /atan2\(Gy, Gx\) in degrees/);
       const { v: gx, href } = await followExplain(page);
       assert.match(href, /#\/edge-window.*operator=sobel/, href);
-      const gy = JSON.parse(await page.locator('.result-table tr[data-key="gy"] td.exact').getAttribute("data-value"))[1][1];
+      const gy = JSON.parse(await page.locator('.result-table tr[data-key="selected_gy"] td.exact').getAttribute("data-value"));
       const want = (Math.atan2(gy, gx) * 180) / Math.PI;
       assert.ok(Math.abs(want - shown) < 1e-9, `${href}: atan2 of the example's gy ${gy}, gx ${gx} is ${want}; the lab showed ${shown}`);
       continue;
