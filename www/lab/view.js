@@ -260,6 +260,7 @@ export class Viewer {
 
   /** Zooms so that one image pixel is `z` screen pixels, centred on (c, r). */
   zoomTo(z, c, r) {
+    z = Math.max(MIN_ZOOM, Math.min(MAX_ZOOM, z)); // (a link's zoom is any number)
     this.zoom = z;
     this.ox = this.canvas.width / 2 - (c + 0.5) * z;
     this.oy = this.canvas.height / 2 - (r + 0.5) * z;
