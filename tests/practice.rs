@@ -535,7 +535,7 @@ fn tolerance_edges_on_a_box() {
 }
 
 #[test]
-fn coarse_but_right_digits_get_half_a_point() {
+fn coarse_but_right_digits_are_imprecise_for_half_a_point() {
     // x_mm is graded to ± (0.001 mm + 0.1 %); one decimal is right as far as
     // it goes but too coarse. The first variant where one decimal is off by
     // more than the tolerance:
@@ -546,15 +546,169 @@ fn coarse_but_right_digits_get_half_a_point() {
     let text = format!("{x:.1}");
     let g = grade("pixel-to-photo", &code, &answers(&[("x_mm", &text)])).unwrap();
     let b = g.get("x_mm").unwrap();
+    // its own verdict, not a "correct" that then says "too coarse"
     assert_eq!(
-        (b.verdict, b.precision, b.points),
-        (practice::grade::Verdict::Correct, Some("coarse"), 0.5),
+        (b.verdict, b.value, b.precision, b.points),
+        (
+            practice::grade::Verdict::Imprecise,
+            Some("ok"),
+            Some("coarse"),
+            0.5
+        ),
         "{text} vs {x}"
     );
-    // One decimal but the wrong digit is wrong, not coarse.
+    // the digits it needs: the tolerance's first decimal place, counted from x's first digit
+    let allowed = 0.001 + 0.001 * x.abs();
+    let decimals = (-(2.0 * allowed).log10() - 1e-9).ceil() as i32;
+    let n = x.abs().log10().floor() as i32 + 1 + decimals;
+    assert!(
+        b.message
+            .starts_with(&format!("Right, but give at least {n} significant digits")),
+        "{}",
+        b.message
+    );
+    assert_eq!(
+        serde_json::to_value(b).unwrap()["verdict"],
+        serde_json::json!("imprecise")
+    );
+    // that many digits are correct
+    let enough = format!("{}", practice::round_sig(x, n));
+    let g = grade("pixel-to-photo", &code, &answers(&[("x_mm", &enough)])).unwrap();
+    assert_eq!(verdict(&g, "x_mm"), "correct", "{enough} vs {x}");
+    // One decimal but the wrong digit is wrong, not imprecise.
     let off = format!("{:.1}", x + 0.2);
     let g = grade("pixel-to-photo", &code, &answers(&[("x_mm", &off)])).unwrap();
     assert_eq!(verdict(&g, "x_mm"), "wrong");
+}
+
+/// The course notes print ncc-2d's means to one decimal (Ā = 58.5,
+/// B̄ = 59.1): a mean given to one decimal is correct, in every variant,
+/// and no box anywhere asks for more digits than the notes print for it.
+#[test]
+fn a_box_never_demands_more_digits_than_the_course_prints() {
+    let mut capped = 0;
+    for v in 0..40 {
+        let code = encode(v);
+        for key in ["mean_a", "mean_b"] {
+            let x = exact("ncc-2d", &code, key);
+            let one = format!("{:.1}", x).replace('.', ",");
+            let g = grade("ncc-2d", &code, &answers(&[(key, &one)])).unwrap();
+            let b = g.get(key).unwrap();
+            assert_eq!(
+                (b.verdict, b.precision, b.points),
+                (practice::grade::Verdict::Correct, Some("ok"), 1.0),
+                "ncc-2d {code} {key}: {one} for {x}: {b:?}"
+            );
+        }
+    }
+    // two decimals claimed are held to the tolerance (± 0.01): 0.05 off is wrong
+    let x = exact("ncc-2d", P2P, "mean_a");
+    let off = format!("{:.2}", x + 0.05);
+    let g = grade("ncc-2d", P2P, &answers(&[("mean_a", &off)])).unwrap();
+    assert_eq!(verdict(&g, "mean_a"), "wrong", "{off} for {x}");
+    for spec in specs() {
+        let Some(printed) = examples::solve(spec.id, &Record::new()).unwrap().textbook else {
+            continue;
+        };
+        for v in 0..5 {
+            let code = encode(v);
+            let p = variant(spec.id, Some(&code), 0).unwrap();
+            let s = examples::solve(spec.id, &p.inputs).unwrap();
+            for b in &p.boxes {
+                let (base, idx) = practice::split_key(&b.key);
+                let Some(t) = printed.get(base).and_then(|x| practice::pick(x, &idx)) else {
+                    continue;
+                };
+                let Some(half) = practice::printed_half_unit(t) else {
+                    continue;
+                };
+                // the exact value rounded to the decimals the course prints,
+                // where they keep three significant digits
+                let decimals = (-(2.0 * half).log10()).round() as usize;
+                let x = value_in(&s, &b.key).unwrap();
+                if x == 0.0
+                    || half > 0.5 * 10f64.powi(x.abs().log10().floor() as i32 - 2) * 1.000001
+                {
+                    continue;
+                }
+                let text = format!("{x:.decimals$}");
+                let g = grade(spec.id, &code, &answers(&[(&b.key, &text)])).unwrap();
+                let got = g.get(&b.key).unwrap();
+                assert_eq!(
+                    (got.verdict, got.points),
+                    (practice::grade::Verdict::Correct, 1.0),
+                    "{} {code} {}: printed {t}; {text} for {x}: {got:?}",
+                    spec.id,
+                    b.key
+                );
+                if b.printed_half.is_some() {
+                    capped += 1;
+                    assert!(
+                        b.tolerance_text.contains("as the course notes print it"),
+                        "{}",
+                        b.tolerance_text
+                    );
+                }
+            }
+        }
+    }
+    assert!(capped > 0, "some box asks for the printed digits only");
+}
+
+/// A named mistake only where it fits the box: a sign flip on ρ is about
+/// the deviations, not an axis; a negative mean is not a "sign flip"; a
+/// coordinate's sign flip points at the axis.
+#[test]
+fn a_sign_flip_is_named_only_where_it_fits() {
+    let code = P2P;
+    let rho = exact("ncc-2d", code, "rho");
+    let g = grade(
+        "ncc-2d",
+        code,
+        &answers(&[("rho", &format!("{:.4}", -rho))]),
+    )
+    .unwrap();
+    let b = g.get("rho").unwrap();
+    assert_eq!(b.mistake, Some("sign flipped"), "{b:?}");
+    assert!(!b.message.contains("axis"), "{}", b.message);
+    assert!(b.message.contains("mean"), "{}", b.message);
+    let mean = exact("ncc-2d", code, "mean_a");
+    let g = grade(
+        "ncc-2d",
+        code,
+        &answers(&[("mean_a", &format!("{:.2}", -mean))]),
+    )
+    .unwrap();
+    let b = g.get("mean_a").unwrap();
+    assert_eq!(
+        (b.verdict, b.mistake),
+        (practice::grade::Verdict::Wrong, None),
+        "{b:?}"
+    );
+    assert!(!b.message.contains("sign"), "{}", b.message);
+    // a coordinate: the axis
+    let (code, x) = (0..50)
+        .map(|v| (encode(v), exact("pixel-to-photo", &encode(v), "x_mm")))
+        .find(|(_, x)| x.abs() > 1.0)
+        .unwrap();
+    let g = grade(
+        "pixel-to-photo",
+        &code,
+        &answers(&[("x_mm", &format!("{:.4}", -x))]),
+    )
+    .unwrap();
+    let b = g.get("x_mm").unwrap();
+    assert_eq!(b.mistake, Some("sign flipped"), "{b:?}");
+    assert!(b.message.contains("axis"), "{}", b.message);
+    // a whole count is never a "decimal slip"
+    let best = exact("ncc-1d", P2P, "best");
+    let g = grade(
+        "ncc-1d",
+        P2P,
+        &answers(&[("best", &format!("{}", best * 10.0))]),
+    )
+    .unwrap();
+    assert_eq!(g.get("best").unwrap().mistake, None);
 }
 
 #[test]

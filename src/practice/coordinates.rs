@@ -96,15 +96,19 @@ fn boxes_pixel_to_photo(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("r0", "Centre row r₀", Some("px"), tol::PIXEL)
             .nudge("Half the height, in rows."),
         BoxDef::new("x_px", "x in pixels", Some("px"), tol::PIXEL)
-            .nudge("How many columns to the right of the centre is the point?"),
+            .nudge("How many columns to the right of the centre is the point?")
+            .axis(),
         BoxDef::new("y_px", "y in pixels", Some("px"), tol::PIXEL)
-            .nudge("Rows count downward, y counts upward: mind the sign."),
+            .nudge("Rows count downward, y counts upward: mind the sign.")
+            .axis(),
         BoxDef::new("pixel_size_mm", "Pixel size", Some("mm"), PIXEL_SIZE)
             .nudge("One inch is 25.4 mm, and it holds dpi pixels."),
         BoxDef::new("x_mm", "Image coordinate x", Some("mm"), tol::LENGTH)
-            .nudge("Pixels times the pixel size."),
+            .nudge("Pixels times the pixel size.")
+            .axis(),
         BoxDef::new("y_mm", "Image coordinate y", Some("mm"), tol::LENGTH)
-            .nudge("Pixels times the pixel size, with y's sign."),
+            .nudge("Pixels times the pixel size, with y's sign.")
+            .axis(),
     ]
 }
 
@@ -281,9 +285,11 @@ fn boxes_photo_to_pixel(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("pixel_size_mm", "Pixel size", Some("mm"), PIXEL_SIZE)
             .nudge("One inch is 25.4 mm, and it holds dpi pixels."),
         BoxDef::new("dc_px", "Column offset Δc", Some("px"), OFFSET)
-            .nudge("Millimetres divided by the pixel size give pixels."),
+            .nudge("Millimetres divided by the pixel size give pixels.")
+            .axis(),
         BoxDef::new("dr_px", "Row offset Δr", Some("px"), OFFSET)
-            .nudge("y counts up, rows count down: mind the sign."),
+            .nudge("y counts up, rows count down: mind the sign.")
+            .axis(),
         BoxDef::new("c", "Column c", Some("px"), OFFSET).nudge("Start at the centre column."),
         BoxDef::new("r", "Row r", Some("px"), OFFSET).nudge("Start at the centre row."),
     ]

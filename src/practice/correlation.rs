@@ -150,6 +150,9 @@ fn gen_ncc_1d(rng: &mut Rng) -> Record {
         .with("search", nums(&s))
 }
 
+/// The sign flip of ρ (and of Σ ΔA·ΔB, which gives ρ its sign).
+const RHO_FLIP: &str = "The size is right but the sign is not: take both deviations the same way round, each value minus its own mean.";
+
 fn boxes_ncc_1d(_: &Record) -> Vec<BoxDef> {
     let mut b = vec![
         BoxDef::new("mean_template", "Template mean Ā", None, tol::GREY)
@@ -158,7 +161,8 @@ fn boxes_ncc_1d(_: &Record) -> Vec<BoxDef> {
     for k in 1..=WINDOWS {
         b.push(
             BoxDef::new(&format!("rho[{k}]"), &format!("ρ at sub-window {k}"), None, tol::RHO)
-                .nudge("Subtract each mean, then: sum of products over the root of the product of the sums of squares."),
+                .nudge("Subtract each mean, then: sum of products over the root of the product of the sums of squares.")
+                .sign_flip(RHO_FLIP),
         );
     }
     b.push(
@@ -228,13 +232,15 @@ fn boxes_ncc_2d(_: &Record) -> Vec<BoxDef> {
             .nudge("Nine values: add them, divide by 9."),
         BoxDef::new("mean_b", "Mean of B", None, tol::GREY).nudge("The same for B."),
         BoxDef::new("sum_dadb", "Σ ΔA·ΔB", None, tol::SUM)
-            .nudge("Subtract the means, multiply the two deviations pixel by pixel, add."),
+            .nudge("Subtract the means, multiply the two deviations pixel by pixel, add.")
+            .sign_flip(RHO_FLIP),
         BoxDef::new("sum_da2", "Σ ΔA²", None, tol::SUM)
             .nudge("The squared deviations of A, added."),
         BoxDef::new("sum_db2", "Σ ΔB²", None, tol::SUM)
             .nudge("The squared deviations of B, added."),
         BoxDef::new("rho", "Correlation coefficient ρ", None, tol::RHO)
-            .nudge("Σ ΔA·ΔB over the root of Σ ΔA² · Σ ΔB²."),
+            .nudge("Σ ΔA·ΔB over the root of Σ ΔA² · Σ ΔB².")
+            .sign_flip(RHO_FLIP),
     ]
 }
 
@@ -341,14 +347,16 @@ fn boxes_surface(i: &Record) -> Vec<BoxDef> {
             "Subtract Ā from each template value, square, add. It is the same for every position.",
         ),
         BoxDef::new("rho[1,1]", "ρ at the top-left position", None, tol::RHO)
-            .nudge("The sub-window whose top-left pixel is the search array's top-left pixel."),
+            .nudge("The sub-window whose top-left pixel is the search array's top-left pixel.")
+            .sign_flip(RHO_FLIP),
         BoxDef::new(
             &format!("rho[{},{}]", r as usize - 1, c as usize - 1),
             "ρ at the best position",
             None,
             tol::RHO,
         )
-        .nudge("Compute ρ for every position; this is the largest."),
+        .nudge("Compute ρ for every position; this is the largest.")
+        .sign_flip(RHO_FLIP),
         BoxDef::new(
             "best_c",
             "Best match: centre column c",
@@ -550,9 +558,11 @@ fn boxes_sub_2d(_: &Record) -> Vec<BoxDef> {
     let fit = "Fit ρ = b₀ + b₁u + b₂v + b₃uv + b₄u² + b₅v² by least squares in the centred coordinates u = c − c̄, v = r − r̄ (each −1, 0 or 1): the normal equations nearly separate.";
     vec![
         BoxDef::new("local_coefficients[2]", "b₁ (u)", None, LOCAL)
-            .nudge("Σ u·ρ over Σ u²: the right column minus the left, over 6."),
+            .nudge("Σ u·ρ over Σ u²: the right column minus the left, over 6.")
+            .axis(),
         BoxDef::new("local_coefficients[3]", "b₂ (v)", None, LOCAL)
-            .nudge("Σ v·ρ over Σ v²: the bottom row minus the top, over 6."),
+            .nudge("Σ v·ρ over Σ v²: the bottom row minus the top, over 6.")
+            .axis(),
         BoxDef::new("local_coefficients[4]", "b₃ (uv)", None, LOCAL)
             .nudge("Σ uv·ρ over Σ u²v²: the four corners, over 4."),
         BoxDef::new("local_coefficients[5]", "b₄ (u²)", None, LOCAL).nudge(fit),

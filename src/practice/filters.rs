@@ -227,12 +227,17 @@ fn gen_edge(rng: &mut Rng) -> Record {
         .with("operator", if rng.coin() { "prewitt" } else { "sobel" })
 }
 
+/// The sign flip of a gradient: the kernel mirrored.
+const KERNEL_FLIP: &str = "The size is right but the sign is not: apply the kernel as written, its positive side where it is printed.";
+
 fn boxes_edge(_: &Record) -> Vec<BoxDef> {
     vec![
         BoxDef::new("gx[2,2]", "Gx at the centre", None, tol::GREY)
-            .nudge("The seed's x kernel: top row minus bottom row, applied as written."),
+            .nudge("The seed's x kernel: top row minus bottom row, applied as written.")
+            .sign_flip(KERNEL_FLIP),
         BoxDef::new("gy[2,2]", "Gy at the centre", None, tol::GREY)
-            .nudge("The y kernel: right column minus left column."),
+            .nudge("The y kernel: right column minus left column.")
+            .sign_flip(KERNEL_FLIP),
         BoxDef::new(
             "magnitude[2,2]",
             "Edge magnitude at the centre",

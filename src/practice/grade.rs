@@ -6,7 +6,8 @@
 
 use super::read::{check_unit, read, UnitCheck};
 use super::{
-    decode, encode, inputs_of, round_sig, spec, value_in, BoxDef, Mistake, Spec, Tolerance,
+    boxes_of, decimals_of, decode, digits_needed, encode, inputs_of, round_sig, spec, value_in,
+    BoxDef, Mistake, Spec, Tolerance,
 };
 use crate::error::{Error, Result};
 use crate::examples;
@@ -18,6 +19,9 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 #[serde(rename_all = "lowercase")]
 pub enum Verdict {
     Correct,
+    /// The right value to the digits typed, but fewer digits than the box
+    /// asks for: ½ point, "Right, but give at least N significant digits".
+    Imprecise,
     Consistent,
     Wrong,
     Unreadable,
@@ -42,7 +46,8 @@ pub struct BoxGrade {
     /// "ok" (the box's unit or one converted to it), "omitted" (none typed:
     /// the box's unit is taken), "wrong"; `None` for boxes without a unit.
     pub unit: Option<&'static str>,
-    /// 1 for correct or consistent, ½ for right but too coarse, else 0.
+    /// 1 for correct or consistent, ½ for imprecise (right but too coarse)
+    /// and for a right number in a wrong unit, else 0.
     pub points: f64,
 }
 
@@ -91,13 +96,26 @@ struct Answer {
     unit: Option<&'static str>,
 }
 
+/// Rounded to no fewer decimals than the course prints for the box, and
+/// right to the digits given (58.2 for 58.22 where the notes print 58.5).
+fn as_printed(b: &BoxDef, exact: f64, a: &Answer) -> bool {
+    b.printed_half.is_some_and(|h| {
+        a.half_ulp <= h * (1.0 + 1e-9) && (a.x - exact).abs() <= a.half_ulp * (1.0 + 1e-9)
+    })
+}
+
+/// The answer is right: within the tolerance, or as precise as the course prints it.
+fn right(b: &BoxDef, exact: f64, a: &Answer) -> bool {
+    b.tolerance.accepts(exact, a.x) || as_printed(b, exact, a)
+}
+
 /// Grades `answers` (`{ key: text }`) for variant `code` of example `id`.
 pub fn grade(id: &str, code: &str, answers: &Record) -> Result<Graded> {
     let spec = spec(id)?;
     let variant = decode(code)?;
     let inputs = inputs_of(&spec, variant);
     let solution = examples::solve(id, &inputs)?;
-    let boxes = (spec.boxes)(&inputs);
+    let boxes = boxes_of(&spec, &inputs, &solution);
     for (k, _) in answers.iter() {
         if !boxes.iter().any(|b| b.key == k) {
             let known: Vec<_> = boxes.iter().map(|b| b.key.as_str()).collect();
@@ -232,18 +250,36 @@ fn grade_box(ctx: &Ctx, k: usize, text: &str) -> (BoxGrade, Option<Answer>) {
         ok(&mut g, Verdict::Correct, "Correct.".into());
         return (g, Some(a));
     }
-    let coarse_limit = (10.0 * tol.allowed(exact)).max(0.005 * exact.abs());
-    if a.half_ulp > tol.allowed(exact)
+    if as_printed(b, exact, &a) {
+        let msg = format!(
+            "Correct to {}, as the course notes print it.",
+            b.printed_half.map(decimals_of).unwrap_or_default()
+        );
+        ok(&mut g, Verdict::Correct, msg);
+        return (g, Some(a));
+    }
+    // the digits demanded: the tolerance's, or the course's where it prints fewer
+    let demanded = tol.allowed(exact).max(b.printed_half.unwrap_or(0.0));
+    let coarse_limit = (10.0 * demanded).max(0.005 * exact.abs());
+    if a.half_ulp > demanded
         && a.half_ulp <= coarse_limit
         && (a.x - exact).abs() <= a.half_ulp * (1.0 + 1e-9)
     {
-        g.verdict = Verdict::Correct;
+        g.verdict = Verdict::Imprecise;
         g.value = Some("ok");
         g.precision = Some("coarse");
         g.points = 0.5;
         g.message = format!(
-            "Right to the digits you gave, but too coarse: the box asks for {} — give more digits.",
-            super::tolerance_text(tol, b.unit)
+            "Right, but give at least {}: this box asks for {}.",
+            digits_needed(exact, demanded),
+            match b.printed_half {
+                Some(half) => format!(
+                    "{}, or {} as the course notes print it",
+                    super::tolerance_text(tol, b.unit),
+                    decimals_of(half)
+                ),
+                None => super::tolerance_text(tol, b.unit),
+            }
         );
         return (g, Some(a));
     }
@@ -261,23 +297,18 @@ fn grade_box(ctx: &Ctx, k: usize, text: &str) -> (BoxGrade, Option<Answer>) {
             return (g, Some(a));
         }
     }
-    let generic = [
-        (
-            -exact,
-            "sign flipped",
-            "The size is right but the sign is not: check which way the axis points.",
-        ),
-        (
-            exact * 10.0,
-            "decimal slip",
-            "Off by a factor of 10: a unit or a decimal point slipped.",
-        ),
-        (
-            exact / 10.0,
-            "decimal slip",
-            "Off by a factor of 10: a unit or a decimal point slipped.",
-        ),
-    ];
+    // The generic slips, only where they fit the box: a sign flip where the
+    // box says what one means there, a factor of ten where the value is
+    // not a whole count.
+    const DECIMAL: &str = "Off by a factor of 10: a unit or a decimal point slipped.";
+    let mut generic = Vec::new();
+    if let Some(explain) = b.sign_flip {
+        generic.push((-exact, "sign flipped", explain));
+    }
+    if tol != tol::WHOLE {
+        generic.push((exact * 10.0, "decimal slip", DECIMAL));
+        generic.push((exact / 10.0, "decimal slip", DECIMAL));
+    }
     let named = ctx
         .mistakes
         .iter()
@@ -306,7 +337,7 @@ fn carried(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option<String> {
     for (j, a) in ctx.earlier.iter().enumerate() {
         if let Some(a) = a {
             given.set(&ctx.boxes[j].key, a.x);
-            if !ctx.boxes[j].tolerance.accepts(ctx.exact[j], a.x) {
+            if !right(&ctx.boxes[j], ctx.exact[j], a) {
                 off.push(j);
             }
         }
@@ -338,7 +369,7 @@ fn from_own_rounding(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option
     let mut given = Record::new();
     for (j, a) in ctx.earlier.iter().enumerate() {
         if let Some(a) = a {
-            if !ctx.boxes[j].tolerance.accepts(ctx.exact[j], a.x) {
+            if !right(&ctx.boxes[j], ctx.exact[j], a) {
                 return None;
             }
             given.set(&ctx.boxes[j].key, a.x);

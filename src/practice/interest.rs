@@ -70,7 +70,8 @@ fn boxes_forstner(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("n[1,1]", "N₁₁ = Σ gx²", None, sum)
             .nudge("gx = (g(c+1) − g(c−1)) / 2 at each interior pixel; square and add."),
         BoxDef::new("n[1,2]", "N₁₂ = Σ gx·gy", None, sum)
-            .nudge("gy = (g(r+1) − g(r−1)) / 2; multiply gx and gy pixel by pixel and add."),
+            .nudge("gy = (g(r+1) − g(r−1)) / 2; multiply gx and gy pixel by pixel and add.")
+            .sign_flip("The size is right but the sign is not: gx is the next column minus the previous one, gy the next row minus the previous one."),
         BoxDef::new("n[2,2]", "N₂₂ = Σ gy²", None, sum).nudge("Square gy and add."),
         BoxDef::new(
             "det_n",

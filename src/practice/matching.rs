@@ -20,7 +20,8 @@ pub fn specs() -> Vec<Spec> {
                     BoxDef::new("AtL[1]", "AᵀdL = Σ g·dL (iteration 1)", None, tol::SUM)
                         .nudge("dL is the template minus the search patch at the start position; multiply by g and add."),
                     BoxDef::new("first_dc", "First shift Δc", Some("px"), SHIFT)
-                        .nudge("Δc = AᵀdL / N."),
+                        .nudge("Δc = AᵀdL / N.")
+                        .axis(),
                     BoxDef::new("c_after_first", "Position after the first iteration", Some("px"), SHIFT)
                         .nudge("The start position plus the first shift."),
                     BoxDef::new("c", "Converged position c", Some("px"), SHIFT)
@@ -36,9 +37,11 @@ pub fn specs() -> Vec<Spec> {
             boxes: |_| {
                 vec![
                     BoxDef::new("first_dc", "First shift Δc", Some("px"), SHIFT)
-                        .nudge("Gradients gc, gr of the search window; the normal equations of Δc, Δr, Δa, Δb."),
+                        .nudge("Gradients gc, gr of the search window; the normal equations of Δc, Δr, Δa, Δb.")
+                        .axis(),
                     BoxDef::new("first_dr", "First shift Δr", Some("px"), SHIFT)
-                        .nudge("The second unknown of the same system."),
+                        .nudge("The second unknown of the same system.")
+                        .axis(),
                     BoxDef::new("c_after_first", "Column after the first iteration", Some("px"), SHIFT)
                         .nudge("The start column plus Δc."),
                     BoxDef::new("r_after_first", "Row after the first iteration", Some("px"), SHIFT)
@@ -62,9 +65,11 @@ pub fn specs() -> Vec<Spec> {
                     BoxDef::new("parameters[4]", "a₄ (converged)", None, AFFINE)
                         .nudge("The fourth parameter: s·sin θ when there is no shear."),
                     BoxDef::new("parameters[3]", "Shift a₃ (columns)", Some("px"), SHIFT)
-                        .nudge("The affine model's column shift after convergence."),
+                        .nudge("The affine model's column shift after convergence.")
+                        .axis(),
                     BoxDef::new("parameters[6]", "Shift a₆ (rows)", Some("px"), SHIFT)
-                        .nudge("The row shift after convergence."),
+                        .nudge("The row shift after convergence.")
+                        .axis(),
                     BoxDef::new("estimated_scale", "Scale s = √(a₁² + a₄²)", None, AFFINE)
                         .nudge("[a₁ a₂; a₄ a₅] = s·R(θ) without shear: the first column is s·(cos θ, sin θ)."),
                     BoxDef::new("estimated_rotation_deg", "Rotation θ = atan2(a₄, a₁)", Some("°"), Tolerance::abs(0.05))

@@ -153,7 +153,20 @@ pub struct BoxDef {
     pub tolerance: Tolerance,
     /// The first rung of the hint ladder: what to think about.
     pub nudge: String,
+    /// What a sign flip means in this box, when it is a mistake worth
+    /// naming there (a coordinate: "check which way the axis points");
+    /// `None` for values whose sign is never in doubt (a mean, a length).
+    pub sign_flip: Option<&'static str>,
+    /// Half a unit in the last decimal the course's own worked example
+    /// prints for this value, when that is coarser than the tolerance: an
+    /// answer rounded to those digits is as precise as the box demands
+    /// (set by [`boxes_of`]).
+    pub printed_half: Option<f64>,
 }
+
+/// The sign flip of a coordinate, an offset or a shift.
+pub const AXIS_FLIP: &str =
+    "The size is right but the sign is not: check which way the axis points.";
 
 impl BoxDef {
     pub fn new(key: &str, label: &str, unit: Option<&'static str>, tol: Tolerance) -> Self {
@@ -163,10 +176,21 @@ impl BoxDef {
             unit,
             tolerance: tol,
             nudge: String::new(),
+            sign_flip: None,
+            printed_half: None,
         }
     }
     pub fn nudge(mut self, text: &str) -> Self {
         self.nudge = text.to_string();
+        self
+    }
+    /// A coordinate, offset or shift: a sign flip is named, with the axis hint.
+    pub fn axis(self) -> Self {
+        self.sign_flip(AXIS_FLIP)
+    }
+    /// A sign flip is named in this box, with `explain`.
+    pub fn sign_flip(mut self, explain: &'static str) -> Self {
+        self.sign_flip = Some(explain);
         self
     }
 }
@@ -263,8 +287,13 @@ pub struct BoxInfo {
     pub label: String,
     pub unit: Option<&'static str>,
     pub tolerance: Tolerance,
-    /// The tolerance in words: "± 0.05 px", "± 0.1 %".
+    /// The tolerance in words: "± 0.05 px", "± 0.1 %"; with "(or 1
+    /// decimal, as the course notes print it)" where the course prints
+    /// fewer digits than the tolerance asks for.
     pub tolerance_text: String,
+    /// Half a unit in the course's last printed decimal, when an answer
+    /// rounded that far is accepted (see `tolerance_text`); else `None`.
+    pub printed_half: Option<f64>,
     /// The hint ladder: a nudge, the formula (LaTeX), the formula with this
     /// variant's numbers (LaTeX, the result left out), and the index of the
     /// worked step in `solve(id, inputs).steps`.
@@ -298,7 +327,7 @@ pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
     };
     let inputs = inputs_of(&spec, variant);
     let solution = examples::solve(id, &inputs)?;
-    let boxes = (spec.boxes)(&inputs)
+    let boxes = boxes_of(&spec, &inputs, &solution)
         .into_iter()
         .map(|b| box_info(&b, &solution))
         .collect();
@@ -308,6 +337,98 @@ pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
         inputs,
         boxes,
     })
+}
+
+/// The boxes of a variant as shown and graded: the spec's, each marked
+/// where its tolerance would demand more digits than the course's own
+/// worked example prints for that value (its `textbook` value for the
+/// seed), down to three significant digits. The tolerance still judges the value; only the digits demanded
+/// are capped: the notes print the mean Ā as 58.5, so 58.2 for a mean of
+/// 58.22 is correct, while 58.27 (two decimals claimed, 0.05 off) is not.
+pub fn boxes_of(spec: &Spec, inputs: &Record, solution: &Solution) -> Vec<BoxDef> {
+    let mut boxes = (spec.boxes)(inputs);
+    let Some(printed) = printed_values(spec.id) else {
+        return boxes;
+    };
+    for b in &mut boxes {
+        let (base, idx) = split_key(&b.key);
+        let Some(p) = printed.get(base).and_then(|v| pick(v, &idx)) else {
+            continue;
+        };
+        let (Some(half), Ok(x)) = (printed_half_unit(p), value_in(solution, &b.key)) else {
+            continue;
+        };
+        // ... as long as those decimals keep three significant digits: the
+        // notes' pixel size 0.028 mm (two) is the rounding their own note
+        // blames for a GSD 0.79 % off, not a precision to teach
+        if b.tolerance.allowed(x) < half && half <= sig3_half(x) * (1.0 + 1e-9) {
+            b.printed_half = Some(half);
+        }
+    }
+    boxes
+}
+
+/// The values the course's worked example prints for example `id` (the
+/// seed's `textbook`), solved once per example and kept: `grade` runs on
+/// every keystroke.
+fn printed_values(id: &'static str) -> Option<Record> {
+    use std::cell::RefCell;
+    use std::collections::HashMap;
+    thread_local! {
+        static PRINTED: RefCell<HashMap<&'static str, Option<Record>>> = RefCell::new(HashMap::new());
+    }
+    PRINTED.with(|cache| {
+        cache
+            .borrow_mut()
+            .entry(id)
+            .or_insert_with(|| {
+                examples::solve(id, &Record::new())
+                    .ok()
+                    .and_then(|s| s.textbook)
+            })
+            .clone()
+    })
+}
+
+/// Half a unit in the last decimal a printed value shows (58.5 → 0.05);
+/// `None` for a whole number, whose printed digits cannot be told.
+pub fn printed_half_unit(p: f64) -> Option<f64> {
+    if !p.is_finite() || p.fract() == 0.0 {
+        return None;
+    }
+    let text = format!("{}", p.abs());
+    let decimals = text.split_once('.').map_or(0, |(_, f)| f.len());
+    Some(0.5 * 10f64.powi(-(decimals as i32)))
+}
+
+/// Half a unit in the third significant digit of `x` (58.22 → 0.05).
+fn sig3_half(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return 0.0;
+    }
+    0.5 * 10f64.powi(x.abs().log10().floor() as i32 - 2)
+}
+
+/// The decimals that half-unit `half` stands for, in words (0.05 → "1 decimal").
+pub fn decimals_of(half: f64) -> String {
+    let d = (-(2.0 * half).log10()).round() as i32;
+    format!("{d} decimal{}", if d == 1 { "" } else { "s" })
+}
+
+/// The significant digits an answer near `exact` needs so that rounding
+/// it stays within `allowed`: "3 significant digits" (or "2 decimals" for
+/// an exact zero, where significant digits say nothing).
+pub fn digits_needed(exact: f64, allowed: f64) -> String {
+    if allowed <= 0.0 || !allowed.is_finite() {
+        return "all the digits".to_string();
+    }
+    let decimals = (-(2.0 * allowed).log10() - 1e-9).ceil().max(0.0) as i32;
+    if exact == 0.0 || !exact.is_finite() {
+        return format!("{decimals} decimals");
+    }
+    let lead = exact.abs().log10().floor() as i32;
+    let n = (lead + 1 + decimals).max(1);
+    format!("{n} significant digit{}", if n == 1 { "" } else { "s" })
 }
 
 fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
@@ -338,7 +459,15 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
         label: b.label.clone(),
         unit: b.unit,
         tolerance: b.tolerance,
-        tolerance_text: tolerance_text(b.tolerance, b.unit),
+        tolerance_text: match b.printed_half {
+            Some(half) => format!(
+                "{} (or {}, as the course notes print it)",
+                tolerance_text(b.tolerance, b.unit),
+                decimals_of(half)
+            ),
+            None => tolerance_text(b.tolerance, b.unit),
+        },
+        printed_half: b.printed_half,
         hints: Hints {
             nudge: b.nudge.clone(),
             formula,

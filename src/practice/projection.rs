@@ -116,6 +116,11 @@ fn gen_forward(rng: &mut Rng) -> Record {
         .with("ellipsoid", "wgs84")
 }
 
+/// The sign flip of a value east or west of the central meridian.
+const EAST_WEST: &str = "The size is right but the sign is not: east of the central meridian it is positive, west negative.";
+/// The sign flip of the meridian convergence.
+const CONVERGENCE_FLIP: &str = "The size is right but the sign is not: γ has the sign of Δλ·sin φ (east of the central meridian in the north, positive).";
+
 fn boxes_forward(_: &Record) -> Vec<BoxDef> {
     vec![
         BoxDef::new("zone", "Zone", None, WHOLE)
@@ -123,7 +128,8 @@ fn boxes_forward(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("central_meridian", "Central meridian λ₀", Some("°"), WHOLE)
             .nudge("The middle of the zone: 6·zone − 183°."),
         BoxDef::new("dlon", "Δλ = λ − λ₀", Some("°"), DEGREES)
-            .nudge("How far east (+) or west (−) of the central meridian the point is, in degrees."),
+            .nudge("How far east (+) or west (−) of the central meridian the point is, in degrees.")
+            .sign_flip(EAST_WEST),
         BoxDef::new("tau_prime", "τ′ = tan χ (conformal latitude)", None, RATIO)
             .nudge("τ = tan φ, σ = sinh(e·atanh(e·τ/√(1 + τ²))), τ′ = τ√(1 + σ²) − σ√(1 + τ²)."),
         BoxDef::new("xi_prime", "ξ′ (on the sphere)", None, RATIO)
@@ -141,7 +147,8 @@ fn boxes_forward(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("scale_factor", "Point scale factor k", None, SCALE)
             .nudge("k = k₀·k′·k″: the sphere's factor times the series' factor."),
         BoxDef::new("convergence", "Meridian convergence γ", Some("°"), CONVERGENCE)
-            .nudge("γ = γ′ + γ″: atan2(sin Δλ·τ′, cos Δλ·√(1 + τ′²)) plus the series' part atan2(q′, p′); in degrees."),
+            .nudge("γ = γ′ + γ″: atan2(sin Δλ·τ′, cos Δλ·√(1 + τ′²)) plus the series' part atan2(q′, p′); in degrees.")
+            .sign_flip(CONVERGENCE_FLIP),
     ]
 }
 
@@ -389,7 +396,8 @@ fn boxes_inverse(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("central_meridian", "Central meridian λ₀", Some("°"), WHOLE)
             .nudge("6·zone − 183°."),
         BoxDef::new("x", "x = E − 500 000 m", Some("m"), SUBTRACTION)
-            .nudge("Take off the false easting."),
+            .nudge("Take off the false easting.")
+            .sign_flip(EAST_WEST),
         BoxDef::new("y", "y (from the equator)", Some("m"), SUBTRACTION)
             .nudge("In the south take off the 10 000 000 m false northing; in the north y = N."),
         BoxDef::new("xi", "ξ = y / (k₀A)", None, RATIO)
@@ -402,9 +410,11 @@ fn boxes_inverse(_: &Record) -> Vec<BoxDef> {
         BoxDef::new("tau_prime", "τ′ = tan χ", None, RATIO)
             .nudge("τ′ = sin ξ′ / √(sinh² η′ + cos² ξ′)."),
         BoxDef::new("latitude", "Latitude φ", Some("°"), DEGREES)
-            .nudge("τ = tan φ from τ′ by Newton's method (two or three steps), then φ = atan τ."),
+            .nudge("τ = tan φ from τ′ by Newton's method (two or three steps), then φ = atan τ.")
+            .sign_flip("The size is right but the sign is not: north of the equator φ is positive, south negative."),
         BoxDef::new("dlon", "Δλ", Some("°"), DEGREES)
-            .nudge("Δλ = atan2(sinh η′, cos ξ′), in degrees."),
+            .nudge("Δλ = atan2(sinh η′, cos ξ′), in degrees.")
+            .sign_flip(EAST_WEST),
         BoxDef::new("longitude", "Longitude λ", Some("°"), DEGREES).nudge("λ = λ₀ + Δλ."),
         BoxDef::new("scale_factor", "Point scale factor k", None, SCALE).nudge(
             "k = k₀·(A/a)/√(p² + q²)·√(1 − e² + e²/(1 + τ²))·√(1 + τ²)·√(sinh² η′ + cos² ξ′).",
@@ -415,7 +425,8 @@ fn boxes_inverse(_: &Record) -> Vec<BoxDef> {
             Some("°"),
             CONVERGENCE,
         )
-        .nudge("γ = atan2(q, p) + atan2(sin ξ′·tanh η′, cos ξ′), in degrees."),
+        .nudge("γ = atan2(q, p) + atan2(sin ξ′·tanh η′, cos ξ′), in degrees.")
+        .sign_flip(CONVERGENCE_FLIP),
     ]
 }
 

@@ -87,13 +87,18 @@ fn fiducial_boxes(affine: bool) -> Vec<BoxDef> {
         .iter()
         .enumerate()
         .map(|(k, &(name, shift))| {
-            BoxDef::new(
+            let b = BoxDef::new(
                 &format!("parameters[{}]", k + 1),
                 &format!("Parameter {name}"),
                 if shift { Some("mm") } else { None },
                 if shift { SHIFT } else { SCALE },
             )
-            .nudge("Write two equations per fiducial with x′ = c and y′ = −r, then solve the normal equations N·X = Aᵀ·L.")
+            .nudge("Write two equations per fiducial with x′ = c and y′ = −r, then solve the normal equations N·X = Aᵀ·L.");
+            if shift {
+                b.axis()
+            } else {
+                b
+            }
         })
         .collect();
     b.push(

@@ -167,7 +167,7 @@ describe("a practice variant", () => {
         });
       assert.ok(coarse, `no coarse rounding of ${x}`);
       await answer(page, "gsd_cm", `${coarse} cm`);
-      assert.equal(await box(page, "gsd_cm").getAttribute("data-verdict"), "correct");
+      assert.equal(await box(page, "gsd_cm").getAttribute("data-verdict"), "imprecise");
       assert.deepEqual(await parts("gsd_cm"), [
         ["value", "ok", "Value: right"],
         ["precision", "bad", "Precision: too few digits"],
@@ -293,6 +293,87 @@ describe("a practice variant", () => {
   });
 });
 
+describe("verdicts", () => {
+  test("a mean to the course's one decimal is correct; too few digits has its own verdict and colour; a sign flip on ρ is not about an axis; each verdict is announced once", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      await visitPractice(page, "index.html", `#/ncc-2d?practice=${CODE}`);
+      const v = await variantOf(page, "ncc-2d", CODE);
+      // every live region's changes, counted per box, from here on
+      await page.evaluate(() => {
+        window.liveChanges = {};
+        for (const f of document.querySelectorAll(".answer-feedback")) {
+          const key = f.closest(".answer").dataset.key;
+          window.liveChanges[key] = 0;
+          new MutationObserver(() => window.liveChanges[key]++).observe(f, { childList: true, subtree: true, characterData: true });
+        }
+      });
+      const changes = (key) => page.evaluate((k) => window.liveChanges[k], key);
+      // the notes print Ā = 58.5: one decimal, with a decimal comma, is enough
+      const mean = v.result.mean_a.toFixed(1).replace(".", ",");
+      const input = box(page, "mean_a").locator("input");
+      await input.fill(mean);
+      await input.press("Enter"); // graded on Enter …
+      await input.press("Tab"); // … and again on leaving: said once
+      assert.equal(await box(page, "mean_a").getAttribute("data-verdict"), "correct");
+      const parts = await box(page, "mean_a").locator(".verdict-part").evaluateAll((xs) => xs.map((x) => [x.dataset.part, x.dataset.kind]));
+      assert.deepEqual(parts, [["value", "ok"], ["precision", "ok"]]);
+      assert.equal(await box(page, "mean_a").locator(".answer-tolerance").innerText(), "Tolerance ± 0.01 (or 1 decimal, as the course notes print it)");
+      assert.match(await feedback(page, "mean_a"), /^Correct to 1 decimal, as the course notes print it\.$/);
+      const said = await feedback(page, "mean_a");
+      assert.equal(said.match(/Correct/g)?.length, 1, said);
+      assert.equal(await changes("mean_a"), 1);
+      // another box answered: the first box's region is left alone
+      await answer(page, "mean_b", v.result.mean_b.toFixed(2));
+      assert.equal(await box(page, "mean_b").getAttribute("data-verdict"), "correct");
+      assert.equal(await changes("mean_a"), 1);
+      assert.equal(await changes("mean_b"), 1);
+      // ρ to two digits (the box asks ± 0.001): right, but too few digits
+      const rho = v.result.rho;
+      const two = rho.toPrecision(2);
+      assert.ok(Math.abs(Number(two) - rho) > 0.001, `${two} vs ${rho}`);
+      await answer(page, "rho", two);
+      const r = box(page, "rho");
+      assert.equal(await r.getAttribute("data-verdict"), "imprecise");
+      const text = await feedback(page, "rho");
+      assert.match(text, /^Too few digits\s*Right, but give at least 3 significant digits: this box asks for ± 0\.001\.$/);
+      assert.equal(await r.locator(".verdict").getAttribute("class"), "verdict verdict-imprecise");
+      assert.equal((await page.locator(".practice-score").innerText()).trim(), "Score: 2.5 of 6");
+      // its own colour: neither correct's green nor wrong's red
+      const colours = await page.evaluate(() => {
+        const css = getComputedStyle(document.documentElement);
+        const probe = (c) => {
+          const s = document.createElement("span");
+          s.style.color = `var(${c})`;
+          document.body.append(s);
+          const out = getComputedStyle(s).color;
+          s.remove();
+          return out;
+        };
+        return { ok: probe("--ok"), error: probe("--error"), badge: getComputedStyle(document.querySelector('.answer[data-key="rho"] .verdict')).color, border: getComputedStyle(document.querySelector('.answer[data-key="rho"]')).borderTopColor, partial: css.getPropertyValue("--partial").trim() };
+      });
+      assert.ok(colours.partial, "a --partial colour");
+      for (const c of [colours.badge, colours.border]) {
+        assert.notEqual(c, colours.ok);
+        assert.notEqual(c, colours.error);
+      }
+      // a sign flip on ρ: named, about the deviations, not an axis
+      await answer(page, "rho", (-rho).toFixed(4));
+      assert.equal(await r.getAttribute("data-mistake"), "sign flipped");
+      const flip = await feedback(page, "rho");
+      assert.doesNotMatch(flip, /axis/);
+      assert.match(flip, /mean/);
+      // a negative mean is just wrong: no "sign flipped"
+      await answer(page, "mean_b", (-v.result.mean_b).toFixed(2));
+      assert.equal(await box(page, "mean_b").getAttribute("data-verdict"), "wrong");
+      assert.equal(await box(page, "mean_b").getAttribute("data-mistake"), null);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+});
+
 describe("worksheets", () => {
   test("N variants with an answer key on separate pages, printable", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
@@ -317,6 +398,73 @@ describe("worksheets", () => {
       await page.reload();
       await page.waitForFunction(() => document.body.dataset.status === "worksheet", null, { timeout: WAIT });
       assert.deepEqual(await page.locator(".ws-exercise").evaluateAll((xs) => xs.map((x) => x.dataset.code)), codes);
+      noErrors(log);
+    } finally {
+      await context.close();
+    }
+  });
+
+  test("each exercise prints its full address and a QR code of it; the key can carry the worked steps", { timeout: TEST_TIMEOUT }, async () => {
+    const { context, page, log } = await open(env.browser);
+    try {
+      // a worked example's page never loads the QR encoder
+      await page.goto(`${env.url}index.html#/gsd`);
+      await page.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
+      assert.equal(await page.evaluate(() => performance.getEntriesByType("resource").some((e) => /uqr/.test(e.name))), false);
+      // the maker's option
+      await page.goto(`${env.url}index.html#/practice`);
+      await page.waitForFunction(() => document.body.dataset.status === "practice-overview", null, { timeout: WAIT });
+      await page.selectOption("#ws-example", "gsd");
+      await page.fill("#ws-n", "2");
+      await page.check("#ws-steps");
+      await page.getByRole("button", { name: "Make worksheet" }).click();
+      await page.waitForFunction(() => document.body.dataset.status === "worksheet", null, { timeout: WAIT });
+      assert.match(page.url(), /&worked=1$/);
+      const sheet = await page.locator(".ws-exercise").evaluateAll((xs) =>
+        xs.map((x) => ({ code: x.dataset.code, text: x.innerText, href: x.querySelector("a.ws-url")?.href, url: x.querySelector("a.ws-url")?.textContent, d: x.querySelector("svg.ws-qr path")?.getAttribute("d"), label: x.querySelector("svg.ws-qr")?.getAttribute("aria-label") })),
+      );
+      assert.equal(sheet.length, 2);
+      for (const x of sheet) {
+        const address = `${env.url}index.html#/gsd?practice=${x.code}`;
+        assert.equal(x.url, address);
+        assert.equal(x.href, address);
+        assert.doesNotMatch(x.text, /online: #\//);
+        assert.equal(x.label, `QR code of ${address}`);
+        // the QR code is the address's: the same modules as the encoder gives for it
+        const d = await page.evaluate(async (a) => {
+          const { encode } = await import("./vendor/uqr.js");
+          const { data } = encode(a, { ecc: "M", border: 2 });
+          let out = "";
+          data.forEach((row, y) => row.forEach((dark, xx) => { if (dark) out += `M${xx} ${y}h1v1h-1z`; }));
+          return out;
+        }, address);
+        assert.ok(d.length > 1000);
+        assert.equal(x.d, d);
+      }
+      // the key: the final values and each solution's worked steps, with the variant's numbers
+      const v = await variantOf(page, "gsd", sheet[0].code);
+      const steps = await page.evaluate(async ([i]) => {
+        const m = await import("./pkg/photogrammetry_playground.js");
+        await m.default();
+        return m.solve("gsd", i).steps.map((s) => s.title);
+      }, [v.inputs]);
+      const key = page.locator(".ws-key-item").first();
+      assert.deepEqual(await key.locator(".ws-step-title").allInnerTexts(), steps);
+      await key.locator(".ws-step .katex").first().waitFor({ timeout: WAIT });
+      assert.ok((await key.innerText()).includes(String(v.inputs.dpi)), "the substituted formulas carry the variant's dpi");
+      // on paper: the address and the QR code print, the screen buttons do not
+      await page.emulateMedia({ media: "print" });
+      assert.equal(await page.locator("svg.ws-qr").first().isVisible(), true);
+      assert.equal(await page.locator("a.ws-url").first().isVisible(), true);
+      assert.equal(await page.locator(".ws-steps-toggle").isVisible(), false);
+      const box = await page.locator("svg.ws-qr").first().boundingBox();
+      assert.ok(box.width >= 90 && Math.abs(box.width - box.height) < 1, `QR ${box.width}×${box.height} px`);
+      await page.emulateMedia({ media: "screen" });
+      // the key without steps: one click
+      await page.locator(".ws-steps-toggle").click();
+      await page.waitForFunction(() => document.querySelector(".worksheet")?.dataset.steps === "0", null, { timeout: WAIT });
+      assert.equal(await page.locator(".ws-step").count(), 0);
+      assert.doesNotMatch(page.url(), /worked=1/);
       noErrors(log);
     } finally {
       await context.close();

@@ -23,6 +23,7 @@ const RUNGS = ["A nudge", "The formula", "The formula with this variant's number
 /** What each verdict says in the badge. */
 const VERDICT_WORDS = {
   correct: "Correct",
+  imprecise: "Too few digits",
   consistent: "Consistent",
   wrong: "Not yet",
   unreadable: "Cannot read",
@@ -47,6 +48,22 @@ export function verdictParts(r, unit) {
 
 const PART_MARK = { ok: "✓", bad: "✗", info: "·" };
 
+/**
+ * A verdict as one sentence: the badge word, then the core's message without
+ * the word again ("Correct." is one "Correct", not "Correct Correct."), so a
+ * screen reader hears each verdict once. Returns [badge, rest].
+ */
+export function verdictSentence(verdict, message) {
+  const word = VERDICT_WORDS[verdict] ?? verdict;
+  const text = message ?? "";
+  if (!word) return ["", text];
+  if (text.toLowerCase().startsWith(word.toLowerCase())) {
+    const rest = text.slice(word.length);
+    return [word, rest === "." ? "" : rest];
+  }
+  return [word, text ? ` ${text}` : ""];
+}
+
 /** Adds the practice stylesheet once. */
 function ensureStyles() {
   if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
@@ -62,7 +79,7 @@ export async function showPractice({ root, core, entries, id, params, mode, setS
   const get = (k) => params.find(([key]) => key === k)?.[1] ?? null;
   const ctx = { root, core, entries, mode, setStatus, params };
   if (id === "practice") {
-    if (get("worksheet")) return showWorksheet(ctx, get("worksheet"), get("n"), get("codes"));
+    if (get("worksheet")) return showWorksheet(ctx, get("worksheet"), get("n"), get("codes"), get("worked"));
     return showOverview(ctx);
   }
   const entry = entries.find((e) => e.id === id);
@@ -192,7 +209,9 @@ function buildVariant(ctx, entry, variant, answers) {
       parts,
       el("div", { class: "hints" }, hintButton, hintBody),
     );
-    input.addEventListener("input", () => regrade(null));
+    // While typing only "read as" follows; the verdicts (live regions) wait
+    // for the box to be left, so a screen reader is not told each keystroke.
+    input.addEventListener("input", () => regrade(null, { verdicts: false }));
     input.addEventListener("change", () => {
       checked.add(b.key);
       regrade(b.key);
@@ -251,8 +270,13 @@ function buildVariant(ctx, entry, variant, answers) {
     return out;
   }
 
-  /** Grades every box; `changed` is the box just left (for the host page). */
-  function regrade(changed) {
+  /**
+   * Grades every box; `changed` is the box just left (for the host page).
+   * A box's feedback (an aria-live region) is rewritten only when its verdict
+   * or message changed: Enter and then Tab grade twice, and an unchanged
+   * region rewritten would be announced again.
+   */
+  function regrade(changed, { verdicts = true } = {}) {
     const t = texts();
     let g;
     try {
@@ -268,7 +292,11 @@ function buildVariant(ctx, entry, variant, answers) {
       const r = g.boxes[b.b.key];
       const text = b.input.value.trim();
       b.readAs.textContent = r.read && text ? `read as ${r.read}` : "";
+      if (!verdicts) continue;
       const show = checked.has(b.b.key) && r.verdict !== "empty";
+      const said = show ? JSON.stringify([r.verdict, r.message, r.value, r.precision, r.unit]) : "";
+      if (said === b.said) continue;
+      b.said = said;
       b.item.dataset.verdict = show ? r.verdict : "";
       b.feedback.replaceChildren();
       b.parts.replaceChildren();
@@ -276,13 +304,16 @@ function buildVariant(ctx, entry, variant, answers) {
         for (const [part, kind, text] of verdictParts(r, b.b.unit)) {
           b.parts.append(el("li", { class: `verdict-part part-${kind}`, "data-part": part, "data-kind": kind }, el("span", { class: "part-mark", "aria-hidden": "true" }, PART_MARK[kind]), " ", text));
         }
-        const parts = [el("span", { class: `verdict verdict-${r.verdict}` }, VERDICT_WORDS[r.verdict] ?? r.verdict), " ", r.message];
+        const [word, rest] = verdictSentence(r.verdict, r.message);
         if (r.mistake) b.item.dataset.mistake = r.mistake;
         else delete b.item.dataset.mistake;
-        b.feedback.append(...parts);
+        b.feedback.append(el("span", { class: `verdict verdict-${r.verdict}` }, word), rest);
+      } else {
+        delete b.item.dataset.mistake;
       }
     }
-    score.textContent = `Score: ${g.score} of ${g.out_of}`;
+    const scoreText = `Score: ${g.score} of ${g.out_of}`;
+    if (score.textContent !== scoreText) score.textContent = scoreText;
     if (changed && mode === "embed") {
       const r = g.boxes[changed];
       postAnswer({ example: id, code, box: changed, verdict: r.verdict, score: g.score, outOf: g.out_of });
