@@ -50,6 +50,10 @@ katex=node_modules/katex/dist
 cp "$katex/katex.min.js" "$katex/katex.min.css" "$DIST"/vendor/katex/
 mkdir -p "$DIST"/vendor/katex/fonts
 cp "$katex"/fonts/*.woff2 "$DIST"/vendor/katex/fonts/
+# The QR encoder of the printed worksheets (uqr, MIT, no dependencies), one ES module
+# bundled and minified by esbuild; practice/sheets.js imports it only when a sheet is made.
+npx --no-install esbuild node_modules/uqr/dist/index.mjs --bundle --format=esm --minify \
+  --legal-comments=none --log-level=warning --outfile="$DIST"/vendor/uqr.js
 sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "$DIST/pkg/${name}_bg.wasm" | wc -c)"; done)
 lab="lab $(gzip -9c "$DIST"/lab/pkg/photogrammetry_lab_bg.wasm | wc -c), lab SIMD $(gzip -9c "$DIST"/lab/pkg-simd/photogrammetry_lab_bg.wasm | wc -c)"
 # hashed names and the HTML with its import map; then each example's seed solution as the page

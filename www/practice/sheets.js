@@ -4,10 +4,59 @@
 
 import { el } from "../dom.js";
 import { messageOf } from "../core.js";
+import { renderFormula } from "../math.js";
 import { expectedValue, keyNumber, renderGivens } from "./common.js";
 import { allProgress } from "./store.js";
 
 const SITE_TITLE = "Photogrammetry Playground";
+/** The QR encoder (uqr, bundled by the build into vendor/): loaded only when a worksheet is made. */
+const QR_URL = "../vendor/uqr.js";
+const SVG_NS = "http://www.w3.org/2000/svg";
+
+/**
+ * The full address of a practice variant, for paper: the site's page (the
+ * main page, also when the sheet is made inside an embed) with the variant's
+ * hash: https://host/path/index.html#/gsd?practice=1K7Q2.
+ */
+export function practiceAddress(id, code, here = location.href) {
+  const url = new URL(here);
+  url.search = "";
+  url.hash = `#/${encodeURIComponent(id)}?practice=${encodeURIComponent(code)}`;
+  url.pathname = url.pathname.replace(/embed\.html$/, "index.html");
+  return url.href;
+}
+
+/** A QR code of `text` as an SVG element (dark modules as one path; a quiet zone of 2). */
+export function qrSvg(encode, text) {
+  const { data, size } = encode(text, { ecc: "M", border: 2 });
+  let d = "";
+  data.forEach((row, y) => row.forEach((dark, x) => {
+    if (dark) d += `M${x} ${y}h1v1h-1z`;
+  }));
+  const svg = document.createElementNS(SVG_NS, "svg");
+  svg.setAttribute("viewBox", `0 0 ${size} ${size}`);
+  svg.setAttribute("class", "ws-qr");
+  svg.setAttribute("role", "img");
+  svg.setAttribute("shape-rendering", "crispEdges");
+  svg.setAttribute("aria-label", `QR code of ${text}`);
+  const bg = document.createElementNS(SVG_NS, "rect");
+  for (const [k, v] of Object.entries({ width: size, height: size, fill: "#fff" })) bg.setAttribute(k, String(v));
+  const path = document.createElementNS(SVG_NS, "path");
+  path.setAttribute("d", d);
+  path.setAttribute("fill", "#000");
+  svg.append(bg, path);
+  return svg;
+}
+
+/** The QR encoder, or null when it cannot load (the sheet keeps its written addresses). */
+async function loadQr() {
+  try {
+    return (await import(QR_URL)).encode;
+  } catch (e) {
+    console.warn("The QR code library did not load; the worksheet prints the addresses only.", e);
+    return null;
+  }
+}
 /** Worksheet sizes offered and allowed. */
 const MAX_VARIANTS = 20;
 const DEFAULT_VARIANTS = 4;
@@ -69,10 +118,11 @@ export function showOverview({ root, core, entries, setStatus }) {
     select.append(group);
   }
   const count = el("input", { id: "ws-n", type: "number", min: "1", max: String(MAX_VARIANTS), value: String(DEFAULT_VARIANTS), class: "ws-count" });
+  const steps = el("input", { id: "ws-steps", type: "checkbox", class: "ws-steps" });
   const make = el("button", { type: "button", class: "button" }, "Make worksheet");
   make.addEventListener("click", () => {
     const n = Math.min(MAX_VARIANTS, Math.max(1, Math.round(Number(count.value) || DEFAULT_VARIANTS)));
-    location.hash = `#/practice?worksheet=${encodeURIComponent(select.value)}&n=${n}`;
+    location.hash = `#/practice?worksheet=${encodeURIComponent(select.value)}&n=${n}${steps.checked ? "&worked=1" : ""}`;
   });
   const maker = el(
     "section",
@@ -81,6 +131,7 @@ export function showOverview({ root, core, entries, setStatus }) {
     el("p", { class: "muted" }, "Fresh variants of one example or of a whole topic, to print, with the answer key on separate pages."),
     el("div", { class: "ws-row" }, el("label", { for: "ws-example" }, "Example"), select),
     el("div", { class: "ws-row" }, el("label", { for: "ws-n" }, "Variants"), count),
+    el("div", { class: "ws-row ws-check" }, steps, el("label", { for: "ws-steps" }, "Answer key with the worked steps")),
     make,
   );
   root.replaceChildren(
@@ -95,8 +146,12 @@ export function showOverview({ root, core, entries, setStatus }) {
   setStatus("practice-overview");
 }
 
-/** #/practice?worksheet=<id or topic:Name>&n=N[&codes=…]: the printable sheet. */
-export function showWorksheet({ root, core, entries, setStatus }, what, nText, codesText) {
+/**
+ * #/practice?worksheet=<id or topic:Name>&n=N[&codes=…][&worked=1]: the
+ * printable sheet; `worked=1` puts each solution's worked steps (formulas with
+ * the variant's numbers) into the answer key, not only the final values.
+ */
+export async function showWorksheet({ root, core, entries, setStatus }, what, nText, codesText, workedText = null) {
   const ready = practised(entries, core);
   const chosen = what.startsWith("topic:") ? ready.filter((e) => e.topic === what.slice(6)) : ready.filter((e) => e.id === what);
   if (!chosen.length) {
@@ -122,25 +177,35 @@ export function showWorksheet({ root, core, entries, setStatus }, what, nText, c
     }
   }
   const codes = items.map((x) => x.variant.code).join(",");
-  const hash = `#/practice?worksheet=${encodeURIComponent(what)}&n=${n}&codes=${codes}`;
+  const withSteps = workedText === "1";
+  const sheetHash = (steps) => `#/practice?worksheet=${encodeURIComponent(what)}&n=${n}&codes=${codes}${steps ? "&worked=1" : ""}`;
+  const hash = sheetHash(withSteps);
   if (location.hash !== hash) history.replaceState(history.state, "", hash);
   const title = what.startsWith("topic:") ? `Worksheet: ${what.slice(6)}` : `Worksheet: ${chosen[0].title}`;
   document.title = `${title} — ${SITE_TITLE}`;
 
-  const exercises = items.map(({ entry, variant }, i) =>
-    el(
+  const encode = await loadQr();
+  if (location.hash !== hash) return; // the reader moved on while the encoder loaded
+  const exercises = items.map(({ entry, variant }, i) => {
+    const address = practiceAddress(entry.id, variant.code);
+    return el(
       "section",
       { class: "ws-exercise", "data-code": variant.code },
+      el(
+        "div",
+        { class: "ws-online" },
+        el("p", { class: "ws-address" }, `Variant ${variant.code} — check your answers online: `, el("a", { href: address, class: "ws-url" }, address)),
+        encode ? qrSvg(encode, address) : null,
+      ),
       el("h3", {}, `Exercise ${i + 1}: ${entry.title}`),
-      el("p", { class: "muted" }, `Variant ${variant.code} — online: #/${entry.id}?practice=${variant.code}`),
       renderGivens(entry, variant.inputs),
       el(
         "ol",
         { class: "ws-boxes" },
         variant.boxes.map((b) => el("li", {}, el("span", { class: "ws-label" }, `${b.label}${b.unit ? ` (${b.unit})` : ""}`), el("span", { class: "ws-line", "aria-hidden": "true" }), el("span", { class: "ws-tol muted" }, b.tolerance_text))),
       ),
-    ),
-  );
+    );
+  });
   const keys = items.map(({ entry, variant }, i) => {
     let solution = null;
     try {
@@ -157,19 +222,39 @@ export function showWorksheet({ root, core, entries, setStatus }, what, nText, c
         { class: "ws-key-table" },
         el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(expectedValue(solution, b.key), b.tolerance)}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
       ),
+      withSteps ? workedSteps(solution) : null,
     );
   });
   const print = el("button", { type: "button", class: "button ws-print" }, "Print");
   print.addEventListener("click", () => window.print());
+  const toggle = el("a", { class: "button ws-steps-toggle", href: sheetHash(!withSteps) }, withSteps ? "Key: final values only" : "Key with the worked steps");
   root.replaceChildren(
     el(
       "article",
-      { class: "worksheet" },
-      el("div", { class: "crumbs ws-screen-only" }, el("a", { href: "#/practice" }, "← All practice"), " ", print),
+      { class: "worksheet", "data-steps": withSteps ? "1" : "0" },
+      el("div", { class: "crumbs ws-screen-only" }, el("a", { href: "#/practice" }, "← All practice"), " ", print, " ", toggle),
       el("header", { class: "ws-head" }, el("h2", {}, title), el("p", {}, "Name: ____________________   Date: __________"), el("p", { class: "muted" }, "Give each answer to the tolerance stated beside its line. Work each exercise in order; a later answer is marked against your own earlier ones.")),
       el("div", { class: "ws-exercises" }, exercises),
       el("section", { class: "ws-key" }, el("h2", {}, `Answer key — ${title.replace("Worksheet: ", "")}`), keys),
     ),
   );
   setStatus("worksheet");
+}
+
+/** A solution's worked steps for the answer key: title, text, the formula and the formula with the variant's numbers. */
+function workedSteps(solution) {
+  return el(
+    "ol",
+    { class: "ws-steps-list" },
+    solution.steps.map((step) =>
+      el(
+        "li",
+        { class: "ws-step" },
+        el("h4", { class: "ws-step-title" }, step.title),
+        step.text ? el("p", { class: "ws-step-text" }, step.text) : null,
+        step.formula ? renderFormula(step.formula, "formula") : null,
+        step.substituted ? renderFormula(step.substituted, "formula") : null,
+      ),
+    ),
+  );
 }
