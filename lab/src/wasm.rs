@@ -2,7 +2,9 @@
 //! [`crate::sample`] and [`crate::ops`]. Images stay in wasm memory as
 //! [`LabImage`]; result layers leave as `Float32Array`s (one copy each),
 //! which the worker posts to the page as transferables. Every error is a
-//! thrown JS `Error` whose message names the field or the file.
+//! thrown JS `Error` whose message names the field or the file; a string
+//! argument is taken as a `JsValue` and checked (`wasm::string_arg`), so that
+//! a wrong type is such an error, never a trap.
 
 use crate::decode;
 use crate::ops::{self, Layer, Point, Rect};
@@ -13,6 +15,7 @@ use photogrammetry_playground::filter;
 use photogrammetry_playground::matching::{Model, Status};
 use photogrammetry_playground::raster::Grid;
 use photogrammetry_playground::resample::Method;
+use photogrammetry_playground::wasm::string_arg;
 use wasm_bindgen::prelude::*;
 
 fn js_error(e: Error) -> JsError {
@@ -118,9 +121,10 @@ impl LabImage {
         r: usize,
         w: usize,
         h: usize,
-        border: &str,
+        border: JsValue,
     ) -> Result<Float64Array, JsError> {
-        let b = ops::border(border).map_err(js_error)?;
+        let b = ops::border(&string_arg("border", "naming a border rule", &border)?)
+            .map_err(js_error)?;
         filter::neighbourhood(&self.grid, c, r, w, h, b)
             .map(|v| Float64Array::from(v.as_slice()))
             .ok_or_else(|| JsError::new("window: part of it lies outside the image (border crop)"))
@@ -150,8 +154,9 @@ fn wrap(grid: Grid, format: &str, colour: &str, bits: u32, max_value: f64) -> La
 
 /// Decodes a PNG, JPEG or TIFF file to grey values (BT.601 luma).
 #[wasm_bindgen]
-pub fn decode_image(name: &str, bytes: &[u8]) -> Result<LabImage, JsError> {
-    let d = decode::decode(name, bytes).map_err(js_error)?;
+pub fn decode_image(name: JsValue, bytes: &[u8]) -> Result<LabImage, JsError> {
+    let name = string_arg("name", "naming the file", &name)?;
+    let d = decode::decode(&name, bytes).map_err(js_error)?;
     Ok(wrap(d.grid, d.format, d.colour, d.bits, d.max_value))
 }
 
@@ -215,12 +220,20 @@ pub fn scanned_frame_truth() -> Result<JsValue, JsError> {
 #[wasm_bindgen]
 pub fn run_filter(
     img: &LabImage,
-    kernel: &str,
-    border: &str,
-    custom: Option<String>,
+    kernel: JsValue,
+    border: JsValue,
+    custom: JsValue,
     divisor: Option<f64>,
 ) -> Result<JsValue, JsError> {
-    let b = ops::border(border).map_err(js_error)?;
+    let kernel = string_arg("kernel", "naming a kernel", &kernel)?;
+    let kernel = kernel.as_str();
+    let b =
+        ops::border(&string_arg("border", "naming a border rule", &border)?).map_err(js_error)?;
+    let custom = if custom.is_undefined() || custom.is_null() {
+        None
+    } else {
+        Some(string_arg("custom_kernel", "of the kernel's rows", &custom)?)
+    };
     let parsed = match (kernel, custom) {
         ("custom", Some(text)) => Some(ops::custom_kernel(&text, divisor).map_err(js_error)?),
         ("custom", None) => return Err(JsError::new("custom_kernel: is missing")),
@@ -239,8 +252,9 @@ pub fn run_filter(
 /// A custom kernel checked as [`run_filter`] reads it: `{ rows: [[…]…],
 /// divisor }`, or the error naming `custom_kernel` / `custom_divisor`.
 #[wasm_bindgen]
-pub fn check_custom_kernel(text: &str, divisor: Option<f64>) -> Result<JsValue, JsError> {
-    let (rows, d) = ops::custom_kernel(text, divisor).map_err(js_error)?;
+pub fn check_custom_kernel(text: JsValue, divisor: Option<f64>) -> Result<JsValue, JsError> {
+    let text = string_arg("custom_kernel", "of the kernel's rows", &text)?;
+    let (rows, d) = ops::custom_kernel(&text, divisor).map_err(js_error)?;
     let a = Array::new();
     for row in &rows {
         a.push(&Float64Array::from(row.as_slice()).into());
@@ -306,9 +320,11 @@ impl ForstnerMaps {
 
 /// Prewitt or Sobel: layers gx, gy, magnitude, direction.
 #[wasm_bindgen]
-pub fn run_edges(img: &LabImage, operator: &str, border: &str) -> Result<JsValue, JsError> {
-    let b = ops::border(border).map_err(js_error)?;
-    layers_js(&ops::edges(&img.grid, operator, b).map_err(js_error)?)
+pub fn run_edges(img: &LabImage, operator: JsValue, border: JsValue) -> Result<JsValue, JsError> {
+    let operator = string_arg("operator", "naming an edge operator", &operator)?;
+    let b =
+        ops::border(&string_arg("border", "naming a border rule", &border)?).map_err(js_error)?;
+    layers_js(&ops::edges(&img.grid, &operator, b).map_err(js_error)?)
 }
 
 /// Förstner: layers w, q; points `[c, r, λmax(Σuv), σmax, σmin, angle]…`.
@@ -354,9 +370,10 @@ pub fn run_correlation(
     template: &[f64],
     b: &LabImage,
     search: &[f64],
-    model: &str,
+    model: JsValue,
 ) -> Result<JsValue, JsError> {
-    let model = match model {
+    let model = string_arg("model", "naming a model", &model)?;
+    let model = match model.as_str() {
         "shift" => Model::Shift,
         "shift-radiometric" => Model::ShiftRadiometric,
         "affine" => Model::AffineRadiometric,
@@ -449,13 +466,14 @@ pub fn run_correlation(
 #[wasm_bindgen]
 pub fn run_resample(
     img: &LabImage,
-    kind: &str,
+    kind: JsValue,
     params: &[f64],
     width: usize,
     height: usize,
 ) -> Result<JsValue, JsError> {
+    let kind = string_arg("kind", "naming a resampling", &kind)?;
     let methods = [Method::Nearest, Method::Bilinear, Method::Bicubic];
-    let map = resample_map(img, kind, params, width, height)?;
+    let map = resample_map(img, &kind, params, width, height)?;
     let grids = ops::warp(&img.grid, width, height, &map, &methods);
     let names = ["nearest", "bilinear", "bicubic"];
     let ls: Vec<Layer> = grids
@@ -516,14 +534,15 @@ fn resample_map(
 #[wasm_bindgen]
 pub fn resample_position(
     img: &LabImage,
-    kind: &str,
+    kind: JsValue,
     params: &[f64],
     width: usize,
     height: usize,
     c: usize,
     r: usize,
 ) -> Result<Float64Array, JsError> {
-    let map = resample_map(img, kind, params, width, height)?;
+    let kind = string_arg("kind", "naming a resampling", &kind)?;
+    let map = resample_map(img, &kind, params, width, height)?;
     let (x, y) = map(c as f64, r as f64);
     Ok(Float64Array::from(&[x, y][..]))
 }
@@ -741,8 +760,9 @@ impl FastImage {
     }
 
     /// 3×3 mean → output 0.
-    pub fn mean3(&mut self, border: &str) -> Result<(), JsError> {
-        let b = ops::border(border).map_err(js_error)?;
+    pub fn mean3(&mut self, border: JsValue) -> Result<(), JsError> {
+        let b = ops::border(&string_arg("border", "naming a border rule", &border)?)
+            .map_err(js_error)?;
         let n = self.width * self.height;
         self.outputs(1, n);
         let img = Gray::new("image", &self.data, self.width, self.height).map_err(js_error)?;
@@ -750,8 +770,9 @@ impl FastImage {
     }
 
     /// Separable Gaussian, taps `exp(−i²/2σ²)` normalised, `i = −radius … radius` → output 0.
-    pub fn gaussian(&mut self, sigma: f64, radius: usize, border: &str) -> Result<(), JsError> {
-        let b = ops::border(border).map_err(js_error)?;
+    pub fn gaussian(&mut self, sigma: f64, radius: usize, border: JsValue) -> Result<(), JsError> {
+        let b = ops::border(&string_arg("border", "naming a border rule", &border)?)
+            .map_err(js_error)?;
         let taps: Vec<f32> = filter_fast::gaussian_taps(sigma, radius)
             .ok_or_else(|| JsError::new("sigma: must be a number greater than 0"))?
             .iter()
@@ -763,8 +784,9 @@ impl FastImage {
     }
 
     /// Sobel gx, gy, magnitude → outputs 0, 1, 2.
-    pub fn sobel(&mut self, border: &str) -> Result<(), JsError> {
-        let b = ops::border(border).map_err(js_error)?;
+    pub fn sobel(&mut self, border: JsValue) -> Result<(), JsError> {
+        let b = ops::border(&string_arg("border", "naming a border rule", &border)?)
+            .map_err(js_error)?;
         self.outputs(3, self.width * self.height);
         let img = Gray::new("image", &self.data, self.width, self.height).map_err(js_error)?;
         let [gx, gy, mag] = &mut self.f32_out;
@@ -828,12 +850,13 @@ impl FastImage {
     /// Affine warp, output → input map `[m00, m01, m02, m10, m11, m12]`,
     /// `method` nearest / bilinear / bicubic (kernel parameter `a`), fill 0,
     /// same size → output 0.
-    pub fn warp_affine(&mut self, m: &[f64], method: &str, a: f64) -> Result<(), JsError> {
+    pub fn warp_affine(&mut self, m: &[f64], method: JsValue, a: f64) -> Result<(), JsError> {
+        let method = string_arg("method", "naming an interpolation", &method)?;
         let [m00, m01, m02, m10, m11, m12] = m else {
             return Err(JsError::new("map: needs 6 numbers"));
         };
         let map = [[*m00, *m01, *m02], [*m10, *m11, *m12]];
-        let method = match method {
+        let method = match method.as_str() {
             "nearest" => Method::Nearest,
             "bilinear" => Method::Bilinear,
             "bicubic" => Method::Bicubic,
@@ -847,8 +870,9 @@ impl FastImage {
     }
 
     /// 3×3 median → the byte output.
-    pub fn median3(&mut self, border: &str) -> Result<(), JsError> {
-        let b = ops::border(border).map_err(js_error)?;
+    pub fn median3(&mut self, border: JsValue) -> Result<(), JsError> {
+        let b = ops::border(&string_arg("border", "naming a border rule", &border)?)
+            .map_err(js_error)?;
         let n = self.width * self.height;
         if self.u8_out.len() != n {
             self.u8_out = vec![0; n];

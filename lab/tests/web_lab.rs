@@ -36,7 +36,7 @@ const JPEG: &[u8] = include_bytes!("corpus/blocks.jpg");
 
 #[wasm_bindgen_test]
 fn decodes_known_pixels_across_the_boundary() {
-    let img = decode_image("grey8.png", GREY8).unwrap();
+    let img = decode_image("grey8.png".into(), GREY8).unwrap();
     assert_eq!((img.width(), img.height(), img.bits()), (4, 3, 8));
     assert_eq!(
         img.grey().to_vec(),
@@ -44,15 +44,15 @@ fn decodes_known_pixels_across_the_boundary() {
             .map(|i| (10 * (i % 4) + 40 * (i / 4)) as f64)
             .collect::<Vec<_>>()
     );
-    let img = decode_image("grey16.png", GREY16).unwrap();
+    let img = decode_image("grey16.png".into(), GREY16).unwrap();
     assert_eq!(img.value(3, 2), Some(43007.0));
     assert_eq!(img.max_value(), 65535.0);
-    let img = decode_image("grey16_strips.tif", TIFF16).unwrap();
+    let img = decode_image("grey16_strips.tif".into(), TIFF16).unwrap();
     assert_eq!(
         (img.format(), img.value(3, 2)),
         ("TIFF".to_string(), Some(43007.0))
     );
-    let img = decode_image("blocks.jpg", JPEG).unwrap();
+    let img = decode_image("blocks.jpg".into(), JPEG).unwrap();
     assert_eq!(
         (img.value(0, 0), img.value(15, 7)),
         (Some(50.0), Some(200.0))
@@ -113,27 +113,27 @@ fn bad_files_throw_errors_naming_the_file() {
             "is a GIF image, a format the lab does not read",
         ),
     ] {
-        let m = message(decode_image(name, bytes).err().expect(name));
+        let m = message(decode_image(name.into(), bytes).err().expect(name));
         assert!(
             m.starts_with(&format!("{name}: ")) && m.contains(says),
             "{m}"
         );
     }
     // and the module keeps working
-    assert!(decode_image("grey8.png", GREY8).is_ok());
+    assert!(decode_image("grey8.png".into(), GREY8).is_ok());
 }
 
 #[wasm_bindgen_test]
 fn one_operator_of_each_family_across_the_boundary() {
-    let img = decode_image("grey8.png", GREY8).unwrap();
+    let img = decode_image("grey8.png".into(), GREY8).unwrap();
     // filter: the 3×3 mean at (1, 1) of g = 10c + 40r is g(1, 1) = 50
-    let out = run_filter(&img, "mean", "crop", None, None).unwrap();
+    let out = run_filter(&img, "mean".into(), "crop".into(), JsValue::UNDEFINED, None).unwrap();
     let l = layer(&out, 0);
     assert_eq!(get(&l, "c0").as_f64(), Some(1.0));
     assert!((data(&l)[0] - 50.0).abs() < 1e-12);
     // edges: Sobel gx (top minus bottom, weights 1 2 1) of a ramp rising 40 a
     // row is 4·(−80) = −320; gy (right minus left) 4·20 = 80
-    let out = run_edges(&img, "sobel", "crop").unwrap();
+    let out = run_edges(&img, "sobel".into(), "crop".into()).unwrap();
     assert!((data(&layer(&out, 0))[0] + 320.0).abs() < 1e-12);
     assert!((data(&layer(&out, 1))[0] - 80.0).abs() < 1e-12);
     // interest: Moravec on a textured checkerboard (below)
@@ -142,11 +142,11 @@ fn one_operator_of_each_family_across_the_boundary() {
     // correlation: a template found in its own image with ρ = 1
     let t = [40.0, 490.0, 21.0, 21.0];
     let s = [30.0, 480.0, 41.0, 41.0];
-    let out = run_correlation(&frame, &t, &frame, &s, "shift").unwrap();
+    let out = run_correlation(&frame, &t, &frame, &s, "shift".into()).unwrap();
     let best = Float64Array::from(get(&out, "best")).to_vec();
     assert_eq!(best, vec![50.0, 500.0]);
     // resampling: scale 1, angle 0 reproduces the image by all three methods
-    let out = run_resample(&img, "rotate", &[0.0, 1.0], 4, 3).unwrap();
+    let out = run_resample(&img, "rotate".into(), &[0.0, 1.0], 4, 3).unwrap();
     assert_eq!(data(&layer(&out, 0)), img.grey().to_vec());
     // boundaries: the whole 4×3 image above −1 is one region of 12 pixels
     let out = run_boundary(&img, -1.0, 0, 0).unwrap();
@@ -163,10 +163,14 @@ fn one_operator_of_each_family_across_the_boundary() {
         assert!(d < 0.1, "mark {k}: {d} px");
     }
     // a bad parameter is an Error naming the field
-    let m = message(run_filter(&img, "blur", "crop", None, None).err().unwrap());
+    let m = message(
+        run_filter(&img, "blur".into(), "crop".into(), JsValue::UNDEFINED, None)
+            .err()
+            .unwrap(),
+    );
     assert!(m.starts_with("kernel: "), "{m}");
     let m = message(
-        run_correlation(&frame, &[0.0, 0.0, 4.0, 4.0], &frame, &s, "shift")
+        run_correlation(&frame, &[0.0, 0.0, 4.0, 4.0], &frame, &s, "shift".into())
             .err()
             .unwrap(),
     );
@@ -263,16 +267,23 @@ fn moravec_points_are_the_window_means_kept_by_the_rule() {
 
 #[wasm_bindgen_test]
 fn a_custom_kernel_and_a_kept_forstner_map_across_the_boundary() {
-    let img = decode_image("grey8.png", GREY8).unwrap();
+    let img = decode_image("grey8.png".into(), GREY8).unwrap();
     // [1 2 1] normalised (÷4) along a row of g = 10c + 40r: g itself inside
-    let out = run_filter(&img, "custom", "crop", Some("1, 2, 1".into()), None).unwrap();
+    let out = run_filter(&img, "custom".into(), "crop".into(), "1, 2, 1".into(), None).unwrap();
     let l = layer(&out, 0);
     assert_eq!(get(&l, "name").as_string().unwrap(), "custom");
     assert_eq!(data(&l)[0], 10.0);
     // the same kernel with divisor 1: four times that
-    let out = run_filter(&img, "custom", "crop", Some("1 2 1".into()), Some(1.0)).unwrap();
+    let out = run_filter(
+        &img,
+        "custom".into(),
+        "crop".into(),
+        "1 2 1".into(),
+        Some(1.0),
+    )
+    .unwrap();
     assert_eq!(data(&layer(&out, 0))[0], 40.0);
-    let checked = check_custom_kernel("1 2 1\n2 4 2\n1 2 1", None).unwrap();
+    let checked = check_custom_kernel("1 2 1\n2 4 2\n1 2 1".into(), None).unwrap();
     assert_eq!(get(&checked, "divisor").as_f64(), Some(16.0));
     for (text, d, says) in [
         ("1 2 x", None, "custom_kernel: row 1: \"x\" is not a number"),
@@ -282,16 +293,22 @@ fn a_custom_kernel_and_a_kept_forstner_map_across_the_boundary() {
         ("1 2 1", Some(0.0), "custom_divisor: must be"),
     ] {
         let m = message(
-            run_filter(&img, "custom", "crop", Some(text.into()), d)
+            run_filter(&img, "custom".into(), "crop".into(), text.into(), d)
                 .err()
                 .unwrap(),
         );
         assert!(m.starts_with(says), "{m}");
     }
     let m = message(
-        run_filter(&img, "custom", "crop", None, None)
-            .err()
-            .unwrap(),
+        run_filter(
+            &img,
+            "custom".into(),
+            "crop".into(),
+            JsValue::UNDEFINED,
+            None,
+        )
+        .err()
+        .unwrap(),
     );
     assert!(m.starts_with("custom_kernel: is missing"), "{m}");
     // Förstner: the kept map's points for a threshold equal a full run's
@@ -407,5 +424,5 @@ async fn after_a_trap_a_fresh_instance_of_the_module_works() {
     assert_eq!(get(&out, "c0").as_f64(), Some(1.0));
     assert!((get(&out, "mean").as_f64().unwrap() - 50.0).abs() < 1e-12);
     // and this test's own instance is untouched
-    assert!(decode_image("grey8.png", GREY8).is_ok());
+    assert!(decode_image("grey8.png".into(), GREY8).is_ok());
 }

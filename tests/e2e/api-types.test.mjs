@@ -155,6 +155,65 @@ describe("every export of every module, called with every kind of JS value", () 
   });
 });
 
+describe("the image lab's module (lab/pkg, run in its worker)", () => {
+  /**
+   * The lab's exports that take a string, with valid arguments and the name of
+   * each string position (the others take numbers, arrays or a LabImage, which
+   * the glue converts or checks itself): [call, arguments, { position: name }].
+   */
+  function stringCalls(lab) {
+    const img = lab.image_from_u8(8, 8, Uint8Array.from({ length: 64 }, (_, i) => (i * 37) % 256));
+    const fast = new lab.FastImage(8, 8, new Uint8Array(64));
+    const rect = (w) => Float64Array.of(0, 0, w, w);
+    return [
+      ["decode_image", (...a) => lab.decode_image(...a), ["x.png", new Uint8Array(0)], { 0: "name" }],
+      ["run_filter", (...a) => lab.run_filter(...a), [img, "mean", "crop", undefined, undefined], { 1: "kernel", 2: "border", 3: "custom_kernel" }],
+      ["check_custom_kernel", (...a) => lab.check_custom_kernel(...a), ["1 2 1", undefined], { 0: "custom_kernel" }],
+      ["run_edges", (...a) => lab.run_edges(...a), [img, "sobel", "crop"], { 1: "operator", 2: "border" }],
+      ["run_correlation", (...a) => lab.run_correlation(...a), [img, rect(3), img, rect(7), "shift"], { 4: "model" }],
+      ["run_resample", (...a) => lab.run_resample(...a), [img, "rotate", Float64Array.of(0, 1), 4, 3], { 1: "kind" }],
+      ["resample_position", (...a) => lab.resample_position(...a), [img, "rotate", Float64Array.of(0, 1), 4, 3, 1, 1], { 1: "kind" }],
+      ["LabImage.neighbourhood", (...a) => img.neighbourhood(...a), [4, 4, 3, 3, "crop"], { 4: "border" }],
+      ["FastImage.mean3", (...a) => fast.mean3(...a), ["reflect"], { 0: "border" }],
+      ["FastImage.gaussian", (...a) => fast.gaussian(...a), [1, 2, "reflect"], { 2: "border" }],
+      ["FastImage.sobel", (...a) => fast.sobel(...a), ["reflect"], { 0: "border" }],
+      ["FastImage.median3", (...a) => fast.median3(...a), ["reflect"], { 0: "border" }],
+      ["FastImage.warp_affine", (...a) => fast.warp_affine(...a), [Float64Array.of(1, 0, 0, 0, 1, 0), "bilinear", -0.5], { 1: "method" }],
+    ];
+  }
+
+  test("every string argument of the lab: an Error naming it, never a trap; the lab still filters", { timeout: TEST_TIMEOUT }, async () => {
+    const lab = await nodeModule("photogrammetry_lab", "lab/pkg");
+    const mean = () => {
+      const img = lab.image_from_u8(8, 8, Uint8Array.from({ length: 64 }, (_, i) => (i * 37) % 256));
+      return [...lab.run_filter(img, "mean", "crop", undefined, undefined)[0].data];
+    };
+    const before = mean();
+    const bad = [];
+    let calls = 0;
+    for (const [name, call, valid, strings] of stringCalls(lab)) {
+      for (const [i, param] of Object.entries(strings)) {
+        for (const [kind, value] of kinds()) {
+          const args = [...valid];
+          args[Number(i)] = value;
+          calls++;
+          try {
+            call(...args);
+          } catch (e) {
+            const what = `${name}(${param} = ${kind})`;
+            if (!(e instanceof Error) || e instanceof WebAssembly.RuntimeError) bad.push(`${what}: ${e?.constructor?.name}: ${e?.message ?? e}`);
+            // a string of the right type but no valid content is the operation's own error
+            else if (typeof value !== "string" && !new RegExp(`\\b${param}\\b`).test(e.message)) bad.push(`${what}: ${e.message.slice(0, 200)}`);
+          }
+        }
+      }
+    }
+    assert.ok(calls >= 16 * 15, `only ${calls} calls`);
+    assert.deepEqual(bad, [], `${bad.length} of ${calls} calls went wrong:\n${bad.slice(0, 30).join("\n")}`);
+    assert.deepEqual(mean(), before, "the mean filter after the storm");
+  });
+});
+
 describe("pkg/examples.js in a blank page", () => {
   let env;
   before(async () => {

@@ -24,10 +24,10 @@ export function built(file) {
 }
 let assets = null;
 
-/** A module of dist/pkg ("all", "coordinates" …), initialised in Node: its exports. */
-export async function nodeModule(name) {
-  const m = await import(pathToFileURL(path.resolve(DIST, built(`pkg/${name}.js`))).href);
-  m.initSync({ module: fs.readFileSync(path.resolve(DIST, built(`pkg/${name}_bg.wasm`))) });
+/** A wasm module of dist/pkg ("all", "coordinates" …) or another folder ("lab/pkg"), initialised in Node: its exports. */
+export async function nodeModule(name, dir = "pkg") {
+  const m = await import(pathToFileURL(path.resolve(DIST, built(`${dir}/${name}.js`))).href);
+  m.initSync({ module: fs.readFileSync(path.resolve(DIST, built(`${dir}/${name}_bg.wasm`))) });
   return m;
 }
 
