@@ -139,7 +139,11 @@ fn errors_are_js_errors_and_the_module_keeps_answering() {
 
 #[wasm_bindgen_test]
 fn parse_inputs_returns_typed_inputs_and_per_field_errors() {
-    let p = parse_inputs("gsd".into(), obj(r#"{"dpi": "1200", "flying_height_m": "abc"}"#)).unwrap();
+    let p = parse_inputs(
+        "gsd".into(),
+        obj(r#"{"dpi": "1200", "flying_height_m": "abc"}"#),
+    )
+    .unwrap();
     assert_eq!(num(&p, &["inputs", "dpi"]), 1200.0);
     assert_eq!(
         get(&get(&p, "errors"), "flying_height_m")
@@ -218,7 +222,11 @@ fn notes_answer_and_mode_fields_cross_as_plain_data() {
     assert!(get(&field("given"), "when").is_null());
 
     // a field that does not apply never blocks: chain-code from pixels with an empty code
-    let p = parse_inputs("chain-code".into(), obj(r#"{"given": "pixels", "code": ""}"#)).unwrap();
+    let p = parse_inputs(
+        "chain-code".into(),
+        obj(r#"{"given": "pixels", "code": ""}"#),
+    )
+    .unwrap();
     assert_eq!(
         Object::keys(get(&p, "errors").unchecked_ref::<Object>()).length(),
         0

@@ -85,7 +85,11 @@ fn example_18_and_the_descriptors_cross_the_boundary() {
 
 #[wasm_bindgen_test]
 fn broken_branching_and_single_pixel_paths_are_documented_answers() {
-    let s = solve("chain-code".into(), obj(r#"{"pixels": [[0,0],[1,0],[3,0]]}"#)).unwrap();
+    let s = solve(
+        "chain-code".into(),
+        obj(r#"{"pixels": [[0,0],[1,0],[3,0]]}"#),
+    )
+    .unwrap();
     assert!(at(&s, &["result", "code"]).is_null());
     let breaks: Array = at(&s, &["result", "breaks"]).dyn_into().unwrap();
     assert_eq!(breaks.length(), 1);

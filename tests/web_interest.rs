@@ -158,7 +158,11 @@ fn bad_windows_are_js_errors_and_the_module_keeps_answering() {
         "window_size: must be odd so that the window has a centre pixel (got 6)"
     );
     assert!(solve_err("forstner-image", obj(r#"{"c": 1}"#)).starts_with("c: must be between 3"));
-    let p = parse_inputs("forstner-window".into(), obj(r#"{"window": "1 2 3; 4 5 6; 7 8"}"#)).unwrap();
+    let p = parse_inputs(
+        "forstner-window".into(),
+        obj(r#"{"window": "1 2 3; 4 5 6; 7 8"}"#),
+    )
+    .unwrap();
     assert!(get(&get(&p, "errors"), "window")
         .as_string()
         .unwrap()

@@ -81,7 +81,11 @@ fn example_11_both_readings() {
 
 #[wasm_bindgen_test]
 fn every_end_status_arrives() {
-    let s = solve("lsm-1d".into(), obj(r#"{"search": [5,5,5,5,5,5,5,5,5,5,5,5]}"#)).unwrap();
+    let s = solve(
+        "lsm-1d".into(),
+        obj(r#"{"search": [5,5,5,5,5,5,5,5,5,5,5,5]}"#),
+    )
+    .unwrap();
     assert_eq!(text(&s, &["result", "status"]), "degenerate");
     assert!(get(&get(&s, "result"), "first_dc").is_null());
     let s = solve(

@@ -191,7 +191,11 @@ fn bad_points_are_js_errors_and_the_module_keeps_answering() {
         "points[1][1]: is infinite; give a finite number"
     );
     // parse_inputs reports the bad point text per field
-    let p = parse_inputs("transform-fit".into(), obj(r#"{"points": "1 2 3 4; 5 6 x 8"}"#)).unwrap();
+    let p = parse_inputs(
+        "transform-fit".into(),
+        obj(r#"{"points": "1 2 3 4; 5 6 x 8"}"#),
+    )
+    .unwrap();
     assert_eq!(
         get(&get(&p, "errors"), "points").as_string().as_deref(),
         Some("points: \"x\" is not a number")

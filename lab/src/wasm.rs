@@ -232,7 +232,11 @@ pub fn run_filter(
     let custom = if custom.is_undefined() || custom.is_null() {
         None
     } else {
-        Some(string_arg("custom_kernel", "of the kernel's rows", &custom)?)
+        Some(string_arg(
+            "custom_kernel",
+            "of the kernel's rows",
+            &custom,
+        )?)
     };
     let parsed = match (kernel, custom) {
         ("custom", Some(text)) => Some(ops::custom_kernel(&text, divisor).map_err(js_error)?),
