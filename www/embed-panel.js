@@ -95,8 +95,8 @@ function optionControls(state, onChange) {
     "select",
     { id: "embed-what" },
     el("option", { value: "example" }, "the worked example, these inputs"),
-    el("option", { value: "practice" }, "practice: own numbers for each student"),
-    el("option", { value: "variant" }, "practice: one variant for the whole class"),
+    el("option", { value: "practice" }, "practice: own numbers per student"),
+    el("option", { value: "variant" }, "practice: one variant for the class"),
   );
   what.value = state.practice ? (state.code ? "variant" : "practice") : "example";
   const code = el("input", { id: "embed-code", type: "text", class: "embed-code", autocomplete: "off", spellcheck: "false", maxlength: "5", placeholder: "1K7Q2", value: state.code ?? "", "aria-describedby": "embed-code-help" });
