@@ -232,11 +232,7 @@ pub fn run_filter(
     let custom = if custom.is_undefined() || custom.is_null() {
         None
     } else {
-        Some(string_arg(
-            "custom_kernel",
-            "of the kernel's rows",
-            &custom,
-        )?)
+        Some(kernel_text(&custom)?)
     };
     let parsed = match (kernel, custom) {
         ("custom", Some(text)) => Some(ops::custom_kernel(&text, divisor).map_err(js_error)?),
@@ -253,11 +249,20 @@ pub fn run_filter(
     layers_js(&[l])
 }
 
+/// A custom kernel's text, whole (`string_arg` shortens a long text, as
+/// suits a name; a 15 × 15 kernel's rows are longer than any name).
+fn kernel_text(v: &JsValue) -> Result<String, JsError> {
+    v.as_string().map_or_else(
+        || string_arg("custom_kernel", "of the kernel's rows", v),
+        Ok,
+    )
+}
+
 /// A custom kernel checked as [`run_filter`] reads it: `{ rows: [[…]…],
 /// divisor }`, or the error naming `custom_kernel` / `custom_divisor`.
 #[wasm_bindgen]
 pub fn check_custom_kernel(text: JsValue, divisor: Option<f64>) -> Result<JsValue, JsError> {
-    let text = string_arg("custom_kernel", "of the kernel's rows", &text)?;
+    let text = kernel_text(&text)?;
     let (rows, d) = ops::custom_kernel(&text, divisor).map_err(js_error)?;
     let a = Array::new();
     for row in &rows {
