@@ -69,28 +69,37 @@ pub fn js_kind(v: &JsValue) -> &'static str {
     }
 }
 
+/// Argument `what` of an export, which must be a string; `meaning` says
+/// what it is for ("naming an example"). Every string argument of the
+/// exports (and of the lab's) comes through here: wasm-bindgen's own `&str`
+/// would copy a non-string into wasm memory and trap.
+pub fn string_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
+    v.as_string().ok_or_else(|| {
+        JsError::new(&format!(
+            "{what}: must be a string {meaning}, got {}",
+            js_kind(v)
+        ))
+    })
+}
+
 /// Longer strings cannot be an id or a code: they reach the core cut short,
 /// so that its message quotes a few characters, not the whole text.
 const LONGEST_NAME: usize = 64;
 
-/// Argument `what` of an export, which must be a string; `meaning` says
-/// what it is for ("naming an example"). Every string argument of the
-/// exports comes through here: wasm-bindgen's own `&str` would copy a
-/// non-string into wasm memory and trap.
-pub fn string_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
-    match v.as_string() {
-        Some(s) if s.chars().count() > LONGEST_NAME => Ok(crate::practice::read::short(&s)),
-        Some(s) => Ok(s),
-        None => Err(JsError::new(&format!(
-            "{what}: must be a string {meaning}, got {}",
-            js_kind(v)
-        ))),
-    }
+/// A string argument that names something (an id, a code), cut short when
+/// it is too long to name anything.
+fn name_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
+    let s = string_arg(what, meaning, v)?;
+    Ok(if s.chars().count() > LONGEST_NAME {
+        crate::practice::read::short(&s)
+    } else {
+        s
+    })
 }
 
 /// The id argument of every export.
 fn id_arg(id: &JsValue) -> Result<String, JsError> {
-    string_arg("id", "naming an example", id)
+    name_arg("id", "naming an example", id)
 }
 
 /// Reads a JS object of inputs; `undefined`/`null` mean "all defaults".
@@ -157,7 +166,7 @@ pub fn practice(id: &JsValue, code: &JsValue) -> Result<JsValue, JsError> {
     let code = if code.is_undefined() || code.is_null() {
         None
     } else {
-        Some(string_arg("code", CODE_MEANING, code)?)
+        Some(name_arg("code", CODE_MEANING, code)?)
     };
     let fresh = (math_random() * f64::from(crate::practice::VARIANTS)) as u32;
     let p = crate::practice::practice(&id, code.as_deref(), fresh).map_err(js_error)?;
@@ -169,7 +178,7 @@ const CODE_MEANING: &str = "like \"1K7Q2\" (a practice variant's code)";
 /// `grade(id, code, answers)`: see [`export_all!`].
 pub fn grade(id: &JsValue, code: &JsValue, answers: JsValue) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
-    let code = string_arg("code", CODE_MEANING, code)?;
+    let code = name_arg("code", CODE_MEANING, code)?;
     let answers = record_from_js("answers", answers)?;
     let g = crate::practice::grade(&id, &code, &answers).map_err(js_error)?;
     to_js(&g)
