@@ -619,18 +619,13 @@ fn a_box_never_demands_more_digits_than_the_course_prints() {
                 let Some(t) = printed.get(base).and_then(|x| practice::pick(x, &idx)) else {
                     continue;
                 };
-                let Some(half) = practice::printed_half_unit(t) else {
+                // the exact value rounded to the significant digits the
+                // course prints for it
+                let x = value_in(&s, &b.key).unwrap();
+                let Some(half) = practice::printed_half_at(t, x) else {
                     continue;
                 };
-                // the exact value rounded to the decimals the course prints,
-                // where they keep three significant digits
-                let decimals = (-(2.0 * half).log10()).round() as usize;
-                let x = value_in(&s, &b.key).unwrap();
-                if x == 0.0
-                    || half > 0.5 * 10f64.powi(x.abs().log10().floor() as i32 - 2) * 1.000001
-                {
-                    continue;
-                }
+                let decimals = (-(2.0 * half).log10()).round().max(0.0) as usize;
                 let text = format!("{x:.decimals$}");
                 let g = grade(spec.id, &code, &answers(&[(&b.key, &text)])).unwrap();
                 let got = g.get(&b.key).unwrap();

@@ -342,9 +342,14 @@ pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
 /// The boxes of a variant as shown and graded: the spec's, each marked
 /// where its tolerance would demand more digits than the course's own
 /// worked example prints for that value (its `textbook` value for the
-/// seed), down to three significant digits. The tolerance still judges the value; only the digits demanded
-/// are capped: the notes print the mean Ā as 58.5, so 58.2 for a mean of
-/// 58.22 is correct, while 58.27 (two decimals claimed, 0.05 off) is not.
+/// seed). The digits are counted as significant digits, so that a variant of
+/// another size asks for as many as the seed's printed value shows: the
+/// notes print the mean Ā as 58.5 (three), so 58.2 for a mean of 58.22 is
+/// correct; they print the pixel size as 0.028 mm (two), so 0.028 for
+/// 0.02822 is correct too (their own note says what that rounding costs the
+/// GSD, whose box asks for its own digits). The tolerance still judges a
+/// value given with more digits: 58.27 (two decimals claimed, 0.05 off) is
+/// wrong.
 pub fn boxes_of(spec: &Spec, inputs: &Record, solution: &Solution) -> Vec<BoxDef> {
     let mut boxes = (spec.boxes)(inputs);
     let Some(printed) = printed_values(spec.id) else {
@@ -355,17 +360,38 @@ pub fn boxes_of(spec: &Spec, inputs: &Record, solution: &Solution) -> Vec<BoxDef
         let Some(p) = printed.get(base).and_then(|v| pick(v, &idx)) else {
             continue;
         };
-        let (Some(half), Ok(x)) = (printed_half_unit(p), value_in(solution, &b.key)) else {
+        let Ok(x) = value_in(solution, &b.key) else {
             continue;
         };
-        // ... as long as those decimals keep three significant digits: the
-        // notes' pixel size 0.028 mm (two) is the rounding their own note
-        // blames for a GSD 0.79 % off, not a precision to teach
-        if b.tolerance.allowed(x) < half && half <= sig3_half(x) * (1.0 + 1e-9) {
+        let Some(half) = printed_half_at(p, x) else {
+            continue;
+        };
+        if b.tolerance.allowed(x) < half {
             b.printed_half = Some(half);
         }
     }
     boxes
+}
+
+/// The significant digits a printed value shows (58.5 → 3, 0.028 → 2);
+/// `None` for a whole number, whose trailing zeros cannot be told.
+pub fn printed_significant_digits(p: f64) -> Option<i32> {
+    if !p.is_finite() || p == 0.0 || p.fract() == 0.0 {
+        return None;
+    }
+    let text = format!("{}", p.abs());
+    let digits: String = text.chars().filter(|c| c.is_ascii_digit()).collect();
+    Some(digits.trim_start_matches('0').len() as i32)
+}
+
+/// Half a unit in the last of those significant digits at the size of `x`
+/// (printed 58.5, x = 58.22 → 0.05; printed 0.028, x = 0.02822 → 0.0005).
+pub fn printed_half_at(p: f64, x: f64) -> Option<f64> {
+    let sig = printed_significant_digits(p)?;
+    if x == 0.0 || !x.is_finite() {
+        return None;
+    }
+    Some(0.5 * 10f64.powi(x.abs().log10().floor() as i32 - sig + 1))
 }
 
 /// The values the course's worked example prints for example `id` (the
@@ -390,29 +416,15 @@ fn printed_values(id: &'static str) -> Option<Record> {
     })
 }
 
-/// Half a unit in the last decimal a printed value shows (58.5 → 0.05);
-/// `None` for a whole number, whose printed digits cannot be told.
-pub fn printed_half_unit(p: f64) -> Option<f64> {
-    if !p.is_finite() || p.fract() == 0.0 {
-        return None;
-    }
-    let text = format!("{}", p.abs());
-    let decimals = text.split_once('.').map_or(0, |(_, f)| f.len());
-    Some(0.5 * 10f64.powi(-(decimals as i32)))
-}
-
-/// Half a unit in the third significant digit of `x` (58.22 → 0.05).
-fn sig3_half(x: f64) -> f64 {
-    if x == 0.0 || !x.is_finite() {
-        return 0.0;
-    }
-    0.5 * 10f64.powi(x.abs().log10().floor() as i32 - 2)
-}
-
-/// The decimals that half-unit `half` stands for, in words (0.05 → "1 decimal").
+/// The decimals that half-unit `half` stands for, in words (0.05 → "1
+/// decimal", 0.5 → "the nearest whole number", 5 → "the nearest 10").
 pub fn decimals_of(half: f64) -> String {
     let d = (-(2.0 * half).log10()).round() as i32;
-    format!("{d} decimal{}", if d == 1 { "" } else { "s" })
+    match d {
+        1.. => format!("{d} decimal{}", if d == 1 { "" } else { "s" }),
+        0 => "the nearest whole number".to_string(),
+        _ => format!("the nearest {}", 10f64.powi(-d)),
+    }
 }
 
 /// The significant digits an answer near `exact` needs so that rounding
