@@ -338,6 +338,8 @@ const interest = {
     };
     const retune = (ev) => {
       if (ev?.target === thr) {
+        // the student's T (moved, not yet let go) stays theirs: a new map keeps it
+        thrSet = true;
         autoT = null;
         delete thr.dataset.auto;
       }
