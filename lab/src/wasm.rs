@@ -249,13 +249,10 @@ pub fn run_filter(
     layers_js(&[l])
 }
 
-/// A custom kernel's text, whole (`string_arg` shortens a long text, as
-/// suits a name; a 15 × 15 kernel's rows are longer than any name).
+/// A custom kernel's text, whole (`string_arg` never shortens a text; only
+/// ids and codes are cut short, in the example modules).
 fn kernel_text(v: &JsValue) -> Result<String, JsError> {
-    v.as_string().map_or_else(
-        || string_arg("custom_kernel", "of the kernel's rows", v),
-        Ok,
-    )
+    string_arg("custom_kernel", "of the kernel's rows", v)
 }
 
 /// A custom kernel checked as [`run_filter`] reads it: `{ rows: [[…]…],
