@@ -200,14 +200,14 @@ test("the opacity slider blends the result over the photo; Sobel gx gets the div
   const mabs = Math.max(-lo, hi);
   assert.ok(lo < 0 && hi > 0, `gx from ${lo} to ${hi}`);
   assert.equal(await page.textContent("#lab-legend"),
-    `gx: −${fmt(mabs)}0+${fmt(mabs)} (values from ${fmt(lo)} to ${fmt(hi)}; blue negative, red positive)`);
+    `gx: −${fmt(mabs)}0+${fmt(mabs)} (values from ${fmt(lo)} to ${fmt(hi)}; blue negative, orange positive)`);
   // blue to white left of 0, white to red right of it
   assert.deepEqual(await page.$$eval("#lab-legend > span", (ss) => ss.map((s) => s.className || s.textContent)),
     ["lab-legend-name", "lab-legend-end", "lab-legend-bar negative", "lab-legend-end", "lab-legend-bar positive", "lab-legend-end", "muted"]);
   assert.equal(await page.textContent("#lab-legend .lab-legend-bar.negative + .lab-legend-end"), "0");
   // the magnitude is not signed: a grey legend from its smallest to its largest value
   await page.selectOption("#lab-layer", { label: "magnitude" });
-  assert.match(await page.textContent("#lab-legend"), /^magnitude: 0[\d.]+ \(values from 0 to [\d.]+\)$/);
+  assert.match(await page.textContent("#lab-legend"), /^magnitude: 0[\d.]+ \(values from 0 to [\d.]+; dark = low\)$/);
   assert.equal(await page.locator("#lab-legend .lab-legend-bar.grey").count(), 1);
   await page.selectOption("#lab-layer", { label: "gx" });
 

@@ -386,7 +386,7 @@ test("each operator family: the layer's values at chosen pixels equal the course
       const legend = await page.textContent("#lab-legend");
       if (got.signed) {
         const m = Math.max(Math.abs(got.min), Math.abs(got.max));
-        assert.ok(legend.includes(`−${Number(m.toPrecision(5))}`) && legend.includes("blue negative, red positive"), `${name}: ${legend}`);
+        assert.ok(legend.includes(`−${Number(m.toPrecision(5))}`) && legend.includes("blue negative, orange positive"), `${name}: ${legend}`);
       }
       for (const [i, [c, r]] of pixels.entries()) {
         const rgb = await canvasAt(page, c, r);

@@ -2,6 +2,7 @@
 // pixels: the canvas context is already scaled for the device pixel ratio.
 
 import { formatNumber } from "../format.js";
+import { GREY_WORDS } from "../colour-scales.js";
 
 export const FONT_FAMILY = 'system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif';
 export const FONT_SIZE = 13;
@@ -308,11 +309,11 @@ export function greyScaleOf(values, options = {}) {
 
 /** A scale's legend in words (the figure's accessible label gets it too). */
 export function greyLegendText(scale) {
-  return `${scale.name}: grey from dark (${scale.format(scale.lo)}) to light (${scale.format(scale.hi)}), dark = low`;
+  return `${scale.name}: grey from dark (${scale.format(scale.lo)}) to light (${scale.format(scale.hi)}), ${GREY_WORDS}`;
 }
 
 function legendParts(scale, label) {
-  return { head: label ? `${label}: ` : "", lo: scale.format(scale.lo), hi: scale.format(scale.hi), tail: "dark = low" };
+  return { head: label ? `${label}: ` : "", lo: scale.format(scale.lo), hi: scale.format(scale.hi), tail: GREY_WORDS };
 }
 
 /** The width a legend takes (greyLegend's options). */

@@ -9,6 +9,7 @@
 // keys move the selection.
 
 import { formatNumber } from "../format.js";
+import { SIGNED_NEGATIVE, SIGNED_POSITIVE, rgbText } from "../colour-scales.js";
 import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, greyLegend, greyScaleOf, line, text, textBlock, textWidth, wrapWords } from "./draw.js";
 
 /** Layout constants (CSS px). */
@@ -32,8 +33,8 @@ const DIGITS = 4;
 /** Strongest shade of a grid cell (alpha). */
 const MAX_ALPHA = 0.5;
 /** Diverging scale colours: below and above zero. */
-const NEGATIVE = "29, 95, 191";
-const POSITIVE = "217, 119, 6";
+const NEGATIVE = rgbText(SIGNED_NEGATIVE);
+const POSITIVE = rgbText(SIGNED_POSITIVE);
 
 export const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
 

@@ -4,6 +4,7 @@
 // Web Worker (worker.js) with the lab's own wasm module.
 
 import { el } from "../dom.js";
+import { GREY_WORDS, SIGNED_NEGATIVE, SIGNED_POSITIVE, SIGNED_WORDS, rgbText } from "../colour-scales.js";
 import { buildHash, parseHash } from "../url.js";
 import { LabClient } from "./client.js";
 import { Viewer, fmt } from "./view.js";
@@ -737,16 +738,18 @@ class Lab {
       this.legend.hidden = true;
       return;
     }
-    const bar = (kind) => el("span", { class: `lab-legend-bar ${kind}`, "aria-hidden": "true" });
+    const bar = (kind, from, to) => el("span", { class: `lab-legend-bar ${kind}`, "aria-hidden": "true", style: `background: linear-gradient(to right, ${from}, ${to})` });
     const end = (t) => el("span", { class: "lab-legend-end" }, t);
-    // signed: −m, blue to white, 0, white to red, +m (0 in the middle, where white is)
+    // signed: −m, blue to white, 0, white to orange, +m (0 in the middle, where white is);
+    // else black (low) to white (high): the colours of colour-scales.js, as the figures draw them
+    const rgb = (c) => `rgb(${rgbText(c)})`;
     const scaleParts = scale.signed
-      ? [end(`−${fmt(scale.hi)}`), bar("negative"), end("0"), bar("positive"), end(`+${fmt(scale.hi)}`)]
-      : [end(fmt(scale.lo)), bar("grey"), end(fmt(scale.hi))];
+      ? [end(`−${fmt(scale.hi)}`), bar("negative", rgb(SIGNED_NEGATIVE), "#fff"), end("0"), bar("positive", "#fff", rgb(SIGNED_POSITIVE)), end(`+${fmt(scale.hi)}`)]
+      : [end(fmt(scale.lo)), bar("grey", "#000", "#fff"), end(fmt(scale.hi))];
     this.legend.append(
       el("span", { class: "lab-legend-name" }, `${layer.name}: `),
       ...scaleParts,
-      el("span", { class: "muted" }, ` (values from ${fmt(scale.min)} to ${fmt(scale.max)}${scale.signed ? "; blue negative, red positive" : ""})`),
+      el("span", { class: "muted" }, ` (values from ${fmt(scale.min)} to ${fmt(scale.max)}; ${scale.signed ? SIGNED_WORDS : GREY_WORDS})`),
     );
     this.legend.hidden = false;
     document.body.dataset.layer = layer.name;

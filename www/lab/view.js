@@ -4,6 +4,8 @@
 // into the pixels when zoomed in far enough, and shapes drawn on top
 // (points with ellipses, boxes, outlines) in image coordinates.
 
+import { SIGNED_NEGATIVE, SIGNED_POSITIVE } from "../colour-scales.js";
+
 /** Pixels of screen per image pixel from which grey values are written in. */
 const LABEL_ZOOM = 28;
 const MIN_ZOOM = 0.05;
@@ -38,14 +40,12 @@ export function rangeOf(data) {
   return lo <= hi ? [lo, hi] : [0, 0];
 }
 
-/** The diverging scale: blue (−) through white (0) to red (+), t in [−1, 1]. */
+/** The diverging scale: blue (−) through white (0) to orange (+), t in [−1, 1] (colour-scales.js). */
 export function diverging(t) {
   const u = Math.max(-1, Math.min(1, t));
-  if (u < 0) {
-    const a = -u;
-    return [Math.round(255 - a * (255 - 33)), Math.round(255 - a * (255 - 102)), Math.round(255 - a * (255 - 172))];
-  }
-  return [Math.round(255 - u * (255 - 178)), Math.round(255 - u * (255 - 24)), Math.round(255 - u * (255 - 43))];
+  const end = u < 0 ? SIGNED_NEGATIVE : SIGNED_POSITIVE;
+  const a = Math.abs(u);
+  return end.map((e) => Math.round(255 - a * (255 - e)));
 }
 
 /** How a layer maps to colours: signed → symmetric diverging, else grey stretch. */
