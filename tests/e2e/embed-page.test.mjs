@@ -76,6 +76,11 @@ describe("the embed page's options", { timeout: TEST_TIMEOUT * 2 }, () => {
       assert.equal(await page.isVisible(".notes-section"), false);
       assert.equal(await page.isVisible(".result-section"), true);
       assert.equal(await page.isVisible(".steps-panel"), true);
+      // the parts left take the embed's whole width (a column of 0 px once wrote the result letter by letter)
+      for (const sel of [".result-section", ".steps-panel", ".figure-section"]) {
+        const w = await page.$eval(sel, (e) => e.getBoundingClientRect().width);
+        assert.ok(w > 900, `${sel}: ${w} px wide in a 1280 px embed`);
+      }
       await visit(page, env.url, "embed.html", "#/gsd?dpi=1200&show=figure,result");
       for (const [sel, shown] of [[".inputs", false], [".steps-panel", false], [".notes-section", false], [".tools-section", false], [".figure-section", true], [".result-section", true]]) {
         assert.equal(await page.isVisible(sel), shown, `${sel} ${shown ? "shown" : "hidden"}`);

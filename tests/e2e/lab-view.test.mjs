@@ -201,7 +201,7 @@ test("the opacity slider blends the result over the photo; Sobel gx gets the div
   assert.ok(lo < 0 && hi > 0, `gx from ${lo} to ${hi}`);
   assert.equal(await page.textContent("#lab-legend"),
     `gx: −${fmt(mabs)}0+${fmt(mabs)} (values from ${fmt(lo)} to ${fmt(hi)}; blue negative, orange positive)`);
-  // blue to white left of 0, white to red right of it
+  // blue to white left of 0, white to orange right of it
   assert.deepEqual(await page.$$eval("#lab-legend > span", (ss) => ss.map((s) => s.className || s.textContent)),
     ["lab-legend-name", "lab-legend-end", "lab-legend-bar negative", "lab-legend-end", "lab-legend-bar positive", "lab-legend-end", "muted"]);
   assert.equal(await page.textContent("#lab-legend .lab-legend-bar.negative + .lab-legend-end"), "0");
@@ -217,7 +217,7 @@ test("the opacity slider blends the result over the photo; Sobel gx gets the div
   const base = (c, r) => Math.round(((g(c, r) - glo) / (ghi - glo)) * 255);
   const colour = (v) => {
     const t = v / mabs;
-    const end = t < 0 ? [33, 102, 172] : [178, 24, 43];
+    const end = t < 0 ? [29, 95, 191] : [217, 119, 6]; // blue and orange, as the figures draw signed values
     return end.map((e) => Math.round(255 - Math.abs(t) * (255 - e)));
   };
   const setOpacity = (v) => page.$eval("#lab-opacity", (i, v) => {

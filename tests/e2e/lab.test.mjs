@@ -315,7 +315,7 @@ function colourOf(v, { signed, min, max }) {
     return [g, g, g];
   }
   const t = v / (Math.max(Math.abs(min), Math.abs(max)) || 1);
-  const end = t < 0 ? [33, 102, 172] : [178, 24, 43];
+  const end = t < 0 ? [29, 95, 191] : [217, 119, 6];
   const u = Math.min(1, Math.abs(t));
   return end.map((e) => Math.round(255 - u * (255 - e)));
 }
