@@ -63,6 +63,10 @@ export async function open(browser, options = {}) {
   // service workers blocked unless a test asks for them (`serviceWorkers: "allow"`):
   // no precache traffic in the request logs, no copy of an earlier build
   const context = await browser.newContext({ viewport: { width: 1280, height: 900 }, serviceWorkers: "block", ...options });
+  // the page's test-only hooks (www/test-hooks.js) on, for every page of this context
+  await context.addInitScript(() => {
+    globalThis.__playgroundTest = true;
+  });
   const page = await context.newPage();
   const log = { requests: [], pageErrors: [], consoleErrors: [], dialogs: [] };
   context.on("request", (r) => log.requests.push(r.url()));
