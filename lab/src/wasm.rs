@@ -9,7 +9,7 @@
 use crate::decode;
 use crate::ops::{self, Layer, Point, Rect};
 use crate::sample;
-use js_sys::{Array, Float32Array, Float64Array, Object, Reflect};
+use js_sys::{Array, Float64Array, Object, Reflect};
 use photogrammetry_playground::error::Error;
 use photogrammetry_playground::filter;
 use photogrammetry_playground::matching::{Model, Status};
@@ -696,12 +696,18 @@ fn fit_js(f: &photogrammetry_playground::transform::Fit) -> Result<JsValue, JsEr
 }
 
 /// Traps the wasm instance on purpose (a wasm `unreachable` instruction),
-/// so that the lab's recovery from a trapped worker can be tested end to
-/// end. Never called by the lab's own controls.
+/// so that the recovery from a trapped instance can be tested
+/// (`lab/tests/web_lab.rs`). Only in builds with the `test-hooks` feature
+/// (the tests' builds turn it on): the page's module has no such export.
+#[cfg(feature = "test-hooks")]
 #[wasm_bindgen]
 pub fn trap_for_tests() {
     core::arch::wasm32::unreachable()
 }
 
+// The fast 8-bit exports that `npm run bench -- ops` times: only in builds
+// with the `bench` feature (scripts/bench-ops/run.sh and the tests' builds).
+#[cfg(feature = "bench")]
 mod fast;
+#[cfg(feature = "bench")]
 pub use fast::FastImage;

@@ -426,3 +426,89 @@ async fn after_a_trap_a_fresh_instance_of_the_module_works() {
     // and this test's own instance is untouched
     assert!(decode_image("grey8.png".into(), GREY8).is_ok());
 }
+
+// ---------------------------------------------------------------- the bench's fast exports
+
+/// JS values of every kind (as tests/e2e/api-types.test.mjs passes them to the page's exports).
+fn every_kind() -> Vec<(&'static str, JsValue)> {
+    vec![
+        ("a number", JsValue::from_f64(5.0)),
+        ("NaN", JsValue::from_f64(f64::NAN)),
+        ("an object", js_sys::Object::new().into()),
+        (
+            "an array",
+            Array::of3(&1.into(), &2.into(), &3.into()).into(),
+        ),
+        ("null", JsValue::NULL),
+        ("undefined", JsValue::UNDEFINED),
+        ("a boolean", JsValue::TRUE),
+        (
+            "a function",
+            js_sys::Function::new_no_args("return 1").into(),
+        ),
+        ("a typed array", Float64Array::new_with_length(3).into()),
+        (
+            "a Uint8Array",
+            js_sys::Uint8Array::new_with_length(3).into(),
+        ),
+        (
+            "a very long string",
+            JsValue::from_str(&"x".repeat(1 << 20)),
+        ),
+        ("an empty string", JsValue::from_str("")),
+        ("a BigInt", js_sys::BigInt::from(10).into()),
+        ("a symbol", js_sys::Symbol::for_("s").into()),
+        ("a Map", js_sys::Map::new().into()),
+    ]
+}
+
+// The fast 8-bit exports (FastImage: the `bench` feature, in the bench's and
+// the tests' builds, never in the page's): a string argument of any other
+// kind or content is an Error naming it, never a trap, and the image still
+// filters after them.
+#[wasm_bindgen_test]
+fn the_fast_exports_name_every_wrong_string_argument() {
+    let bytes: Vec<u8> = (0..64).map(|i| ((i * 37) % 256) as u8).collect();
+    let mut fast = FastImage::new(8, 8, &bytes).unwrap();
+    fast.mean3("replicate".into()).unwrap();
+    let before = fast.out_f32(0).to_vec();
+    let identity = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+    let mut calls = 0;
+    for (kind, v) in every_kind() {
+        let results = [
+            ("mean3", "border", fast.mean3(v.clone())),
+            ("gaussian", "border", fast.gaussian(1.0, 2, v.clone())),
+            ("sobel", "border", fast.sobel(v.clone())),
+            ("median3", "border", fast.median3(v.clone())),
+            (
+                "warp_affine",
+                "method",
+                fast.warp_affine(&identity, v.clone(), -0.5),
+            ),
+        ];
+        for (name, param, r) in results {
+            calls += 1;
+            let m = message(
+                r.err()
+                    .unwrap_or_else(|| panic!("{name}({kind}) was taken")),
+            );
+            assert!(m.starts_with(&format!("{param}: ")), "{name}({kind}): {m}");
+            assert!(m.len() <= 600, "{name}({kind}): {} characters", m.len());
+        }
+    }
+    assert_eq!(calls, 15 * 5);
+    fast.mean3("replicate".into()).unwrap();
+    assert_eq!(fast.out_f32(0).to_vec(), before);
+    // the mean at (1, 1), row-major over the 8×8 image: its 3×3 neighbourhood's
+    let mean11 = (0..3)
+        .flat_map(|r| (0..3).map(move |c| r * 8 + c))
+        .map(|i| f64::from(bytes[i]))
+        .sum::<f64>()
+        / 9.0;
+    assert_eq!(before.len(), 64);
+    assert!(
+        (f64::from(before[9]) - mean11).abs() < 1e-4,
+        "{}",
+        before[9]
+    );
+}

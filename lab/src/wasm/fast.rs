@@ -8,6 +8,8 @@
 
 use super::*;
 
+use js_sys::Float32Array;
+
 use photogrammetry_playground::chain::fast as chain_fast;
 use photogrammetry_playground::correlation::fast as zncc_fast;
 use photogrammetry_playground::filter::fast as filter_fast;
