@@ -5,7 +5,8 @@
 #   .venv-bench/                    numpy for gen_images.py, opencv-python-headless
 #                                   for the optional native column
 #   data/                           the inputs, from ../shared/bench/gen_images.py
-# then builds the lab's wasm with +simd128 (profile `fast`) and runs bench.mjs.
+# then builds the lab's wasm with +simd128 (profile `fast`, feature `bench`:
+# FastImage) and runs bench.mjs.
 # Env: BENCH_SIZES (512,2048,4096), BENCH_BUDGET_S, BENCH_MIN_REPS,
 # BENCH_MAX_REPS, BENCH_WARMUP, BENCH_TASKS (comma list), BENCH_SIMD=0 for the
 # scalar build.
@@ -39,7 +40,8 @@ if [ $need = 1 ]; then
 fi
 simd=${BENCH_SIMD:-1}
 if [ "$simd" = 1 ]; then flags="-C target-feature=+simd128"; dir=target/bench-simd; else flags=""; dir=target/bench-scalar; fi
-echo "bench ops: cargo build -p photogrammetry-lab --profile fast --target wasm32-unknown-unknown (RUSTFLAGS='$flags')"
-RUSTFLAGS="$flags" cargo build -p photogrammetry-lab --profile fast --target wasm32-unknown-unknown --target-dir "$dir"
+# --features bench: the FastImage exports bench.mjs times (never in the page's build)
+echo "bench ops: cargo build -p photogrammetry-lab --features bench --profile fast --target wasm32-unknown-unknown (RUSTFLAGS='$flags')"
+RUSTFLAGS="$flags" cargo build -p photogrammetry-lab --features bench --profile fast --target wasm32-unknown-unknown --target-dir "$dir"
 wasm-bindgen --target web --no-typescript --out-dir "$dir/pkg" "$dir/wasm32-unknown-unknown/fast/photogrammetry_lab.wasm"
 BENCH_PKG="$dir/pkg" node scripts/bench-ops/bench.mjs "$@"
