@@ -8,7 +8,7 @@
 // history.replaceState. Nothing read from the URL is ever parsed as HTML.
 
 import { loadCore, messageOf } from "./core.js";
-import { keepFitted, loadMath } from "./math.js";
+import { keepFitted } from "./math.js";
 import { buildHash, parseHash } from "./url.js";
 import { el, keepTallest } from "./dom.js";
 import { buildForm } from "./form.js";
@@ -17,8 +17,8 @@ import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/
 import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
 import { mountShell } from "./shell.js";
+import { SITE_TITLE, siteTitle } from "./site.js";
 
-const SITE_TITLE = "Photogrammetry Playground";
 /** Longest URL key quoted back in the "ignored" notice. */
 const MAX_QUOTED_KEY = 40;
 /** How long "Link copied" stays. */
@@ -51,7 +51,7 @@ function entryById(id) {
 
 async function showHome(params = []) {
   destroyView();
-  document.title = SITE_TITLE;
+  document.title = siteTitle();
   if (mode === "embed") {
     root.replaceChildren(
       el("p", { class: "notice" }, "No example chosen. Use an address such as embed.html#/gsd?dpi=1200 to embed one example."),
@@ -69,7 +69,7 @@ async function showHome(params = []) {
 
 function showMessage(title, message) {
   destroyView();
-  document.title = `${title} — ${SITE_TITLE}`;
+  document.title = siteTitle(title);
   const parts = [el("h2", {}, title), el("p", {}, message)];
   if (mode === "full") parts.push(el("p", {}, el("a", { href: "#/" }, "← All examples")));
   root.replaceChildren(el("section", { class: "message" }, parts));
@@ -179,7 +179,7 @@ function buildView(entry) {
   v.stopFitting = keepFitted(stepsList);
   // the answer line keeps its tallest height: the panels below stay put as it changes
   v.stopKeeping = keepTallest(answerLine);
-  document.title = `${entry.title} — ${SITE_TITLE}`;
+  document.title = siteTitle(entry.title);
   view = v;
   // view options, embedding, exports (embed-page.js)
   embedPage.onView(v, {
@@ -616,7 +616,7 @@ async function main() {
     }
     return c;
   });
-  const [coreResult] = await Promise.allSettled([early, loadMath()]);
+  const [coreResult] = await Promise.allSettled([early]);
   if (coreResult.status !== "fulfilled") {
     root.replaceChildren(
       el(

@@ -18,11 +18,6 @@ export function configure({ id = null, host = null } = {}) {
   targetOrigin = host ?? "*";
 }
 
-/** The host's origin given in the link, or null. */
-export function hostOrigin() {
-  return targetOrigin === "*" ? null : targetOrigin;
-}
-
 /** Whether the page runs inside a frame (only then is anything posted). */
 export function isFramed() {
   return framed;

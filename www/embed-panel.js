@@ -8,8 +8,8 @@ import { el } from "./dom.js";
 import { NAMESPACE, VERSION } from "./embed-bridge.js";
 import { PARTS } from "./embed-options.js";
 import { buildHash } from "./url.js";
+import { siteTitle } from "./site.js";
 
-const SITE = "Photogrammetry Playground";
 const DEFAULT_HEIGHT = 900;
 const PREVIEW_ID = "embed-preview";
 /** A practice code as practice() writes it (a version digit and four Crockford letters). */
@@ -61,7 +61,7 @@ export function snippets({ base, id, title, texts, options, height = DEFAULT_HEI
   const script = `<script src="${attrText(embedJs)}" defer></script>\n<div data-playground="${attrText(query)}"${attrs.length ? ` ${attrs.join(" ")}` : ""}></div>`;
   const src = new URL(`embed.html${buildHash(id, [...own, ...params]).replace(/practice=(&|$)/, "practice$1")}`, base).href;
   const h = Math.round(height);
-  const frameTitle = options.practice ? `Practice: ${title} — ${SITE}` : `${title} — ${SITE}`;
+  const frameTitle = siteTitle(options.practice ? `Practice: ${title}` : title);
   const iframe = `<iframe src="${attrText(src)}" title="${attrText(frameTitle)}" loading="lazy" allow="clipboard-write" width="100%" height="${h}" style="width:100%;height:${h}px;border:0"></iframe>`;
   return { script, iframe, src, height: h };
 }

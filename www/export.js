@@ -3,9 +3,9 @@
 // builders (solutionJson, solutionCsv, solutionTex) plus the tools bar.
 
 import { el } from "./dom.js";
+import { SITE_TITLE as SITE } from "./site.js";
 
 const STATUS_MS = 4000;
-const SITE = "Photogrammetry Playground";
 
 /** A file name from an example id. */
 function fileName(id, ext) {

@@ -1,38 +1,19 @@
-// KaTeX rendering that fits any width, with a plain-text fallback (with
-// math-typeset.js, which holds steps 1–3 below and is loaded with KaTeX).
+// KaTeX rendering that fits any width: the page's one entry to formulas
+// (renderFormula, fitFormulas, keepFitted). A formula comes from a step's
+// parts (formula-plan.js plans its lines: one group per relation, breaks
+// only between the pieces the core gave); math-typeset.js makes the nodes
+// with KaTeX and fits them after layout (a matrix too wide in blocks of
+// columns, captioned with its name). A step without parts is one block.
 //
-// The one place where formulas are broken into lines (issue 13): a formula
-// never needs sideways scrolling, on a phone, at 1280 px or on paper.
-//   1. splitFormula: top-level groups (at \quad, \qquad and ",\ " between
-//      equations), each group a chain of pieces before its second, third…
-//      relation ("a = b", "= c", "= 35.6 cm").
-//   2. splitTerms: each piece into terms before a top-level binary + or −,
-//      and at list separators (\; and ",\ " inside brackets); a gathered
-//      block into its rows. The terms flow: as many on a line as fit, the
-//      next line indented, the result after the last "=" on its own piece.
-//   3. fitFormulas (after layout, and again when the width changes): a term
-//      still wider than its line is laid out again: an aligned block as one
-//      line per row, a matrix or table as blocks of columns ("columns 1–4 of
-//      8", a table keeping its first column); what still cannot fit (one
-//      huge atom) becomes a labelled, focusable scroll region.
-// katex.render builds the DOM itself and escapes its input; when it fails
-// on bad LaTeX the raw LaTeX is shown as text; when KaTeX did not load, the
-// plain-text form (plainTex) stays.
-
-// KaTeX is off the critical path (issue 19): the first numbers do not wait for
-// it, nor share the network with it. A formula asked for before KaTeX has
-// arrived is drawn at once as plain text (plainTex: the numbers readable, the
-// room taken) and marked .formula-pending; the first such formula schedules
-// KaTeX's load (script and stylesheet) for after the frame that paints those
-// numbers (scheduleMath: no request starts before the page's own first
-// solution, its solver-ready mark), and when both are in every pending formula
-// is typeset in place and fitted. <html data-math> says where that is: "loading" (from the
-// scheduling on), "ready" or "failed" (then the plain text stays). whenMath()
-// starts the load at once.
-//
-// What only typeset formulas need (the splitting rules, pieces and terms as
-// KaTeX boxes, fitting them after layout) is in math-typeset.js, loaded with
-// KaTeX; this module keeps the plain-text path and the API.
+// KaTeX is off the critical path (issue 19): the first numbers (answer line,
+// result table) do not wait for it, nor share the network with it. A formula
+// asked for before KaTeX has arrived takes its room, empty and aria-busy
+// (.formula-pending); the first such formula schedules KaTeX's load (script,
+// stylesheet and math-typeset.js) for after the frame that paints the
+// numbers (scheduleMath), and when they are in every pending formula is
+// typeset in place and fitted. <html data-math> says where that is:
+// "loading" (from the scheduling on), "ready" or "failed" (then each formula
+// shows its LaTeX text). math-typeset.js never imports this module.
 //
 // The minified UMD build (76 KB gzipped) rather than katex.mjs (146 KB
 // gzipped, not minified): loaded by a script element, it sets window.katex.
@@ -44,8 +25,8 @@ let katex = null;
 let typeset = null;
 let loadError = null;
 let loading = null;
-/** Formulas drawn before KaTeX arrived, typeset when it does (attached to the page or not). */
-const pending = new Set();
+/** Formulas drawn before KaTeX arrived, typeset when it does (attached to the page or not): element → source. */
+const pending = new Map();
 
 function loadOne(tag, attrs, what) {
   return new Promise((resolve, reject) => {
@@ -100,116 +81,72 @@ function scheduleMath() {
   setTimeout(go, MATH_FALLBACK_MS);
 }
 
-/**
- * Makes KaTeX available without holding anything up: resolves at once (the
- * formulas drawn meanwhile are typeset when it arrives). `whenMath()` waits.
- */
-export async function loadMath() {}
-
-/** Resolves when KaTeX has loaded (or failed), starting the load if needed. */
-export function whenMath() {
-  return startMath();
-}
-
 function typesetPending() {
-  const nodes = [...pending];
+  const list = [...pending];
   pending.clear();
-  for (const node of nodes) {
-    const fresh = renderFormula(node.dataset.tex, node.dataset.className);
-    node.className = fresh.className;
+  for (const [node, source] of list) {
+    node.classList.remove("formula-pending");
     node.removeAttribute("aria-busy");
-    delete node.dataset.className;
-    node.replaceChildren(...fresh.childNodes);
+    if (katex) typeset.typesetInto(node, source);
+    else rawInto(node, source.tex);
   }
   // fitted after every formula is in: one layout, not one per formula
-  if (katex) typeset.fitAll(nodes.filter((node) => node.isConnected), { reset: false });
+  if (katex) typeset.fitAll(list.map(([node]) => node).filter((node) => node.isConnected), { reset: false });
   document.documentElement.dataset.math = katex ? "ready" : "failed";
 }
 
-/** Greek letters and symbols plainTex writes as characters. */
-const PLAIN_SYMBOLS = {
-  cdot: "·", times: "×", approx: "≈", pm: "±", mp: "∓", le: "≤", leq: "≤", ge: "≥", geq: "≥", neq: "≠", ne: "≠",
-  circ: "°", degree: "°", infty: "∞", sum: "Σ", prod: "Π", partial: "∂", to: "→", rightarrow: "→", lvert: "|", rvert: "|",
-  alpha: "α", beta: "β", gamma: "γ", delta: "δ", epsilon: "ε", varepsilon: "ε", zeta: "ζ", eta: "η", theta: "θ",
-  kappa: "κ", lambda: "λ", mu: "μ", nu: "ν", xi: "ξ", pi: "π", rho: "ρ", sigma: "σ", tau: "τ", phi: "φ",
-  varphi: "φ", chi: "χ", psi: "ψ", omega: "ω", Gamma: "Γ", Delta: "Δ", Theta: "Θ", Lambda: "Λ", Sigma: "Σ",
-  Phi: "Φ", Psi: "Ψ", Omega: "Ω", ldots: "…", cdots: "⋯", dots: "…", vdots: "⋮", quad: "  ", qquad: "   ",
-};
-const SUPERSCRIPTS = { 0: "⁰", 1: "¹", 2: "²", 3: "³", 4: "⁴", 5: "⁵", 6: "⁶", 7: "⁷", 8: "⁸", 9: "⁹", "-": "⁻", "+": "⁺" };
-
-/** Combining marks for accents: \bar{A} → Ā (A + U+0304). */
-const ACCENTS = { bar: "\u0304", overline: "\u0305", hat: "\u0302", tilde: "\u0303", vec: "\u20d7" };
-const accented = (a, acc) => (/^[A-Za-z]$/.test(a) ? a + ACCENTS[acc] : `${a}${ACCENTS[acc]}`);
+/** A step's LaTeX string of each side (made by the core from the parts). */
+const SIDES = Object.freeze({ symbolic: "formula", substituted: "substituted" });
 
 /**
- * A formula as plain text, shown until KaTeX has arrived (and kept if it cannot load): every number as
- * written, \frac{a}{b} as (a)/(b), \sqrt{x} as √(x), Greek letters and
- * operators as characters, matrices as [a b; c d].
- * @param {string} tex
+ * The source of one formula of a step: its LaTeX string (the identity the
+ * page compares, and the text shown when KaTeX cannot load) and, when the
+ * step has them, its relations (step.parts).
+ * @param {{ formula?: string, substituted?: string, parts?: object[] }} step
+ * @param {"symbolic" | "substituted"} side
  */
-export function plainTex(tex) {
-  let s = String(tex);
-  const arg = String.raw`\{([^{}]*)\}`;
-  for (let k = 0; k < 8; k++) {
-    const before = s;
-    s = s
-      .replace(new RegExp(String.raw`\\[dt]?frac\s*${arg}\s*${arg}`, "g"), (m, a, b) => `${/^[\w.]+$/.test(a) ? a : `(${a})`}/${/^[\w.]+$/.test(b) ? b : `(${b})`}`)
-      .replace(new RegExp(String.raw`\\sqrt\s*(?:\[([^\]]*)\])?\s*${arg}`, "g"), (m, n, a) => `${n ? SUPERSCRIPTS[n] ?? n : ""}√(${a})`)
-      .replace(new RegExp(String.raw`\\(bar|overline|hat|tilde|vec)\s*${arg}`, "g"), (m, acc, a) => accented(a, acc))
-      .replace(/\\(bar|hat|tilde|vec)\s+([A-Za-z])/g, (m, acc, a) => accented(a, acc))
-      .replace(new RegExp(String.raw`\\(?:text|mathrm|mathbf|mathit|operatorname|boldsymbol|mathsf|textbf|textit)\s*${arg}`, "g"), "$1")
-      .replace(new RegExp(String.raw`\^${arg}`, "g"), (m, a) => ([...a].every((c) => SUPERSCRIPTS[c]) ? [...a].map((c) => SUPERSCRIPTS[c]).join("") : `^(${a})`))
-      .replace(new RegExp(String.raw`_${arg}`, "g"), (m, a) => (a.length > 1 ? `_(${a})` : `_${a}`));
-    if (s === before) break;
-  }
-  return s
-    .replace(/\\begin\{[a-z]*matrix\}([\s\S]*?)\\end\{[a-z]*matrix\}/g, (m, body) => `[${body.replace(/\s*&\s*/g, " ").replace(/\s*\\\\\s*/g, "; ").trim()}]`)
-    .replace(/\\(begin|end)\{[A-Za-z*]+\}(\{[^{}]*\})?/g, " ")
-    .replace(/\^([0-9])/g, (m, d) => SUPERSCRIPTS[d])
-    .replace(/\\\\/g, "; ")
-    .replace(/&/g, " ")
-    .replace(/\\(left|right|big|Big|bigl|bigr|Bigl|Bigr|displaystyle|small|footnotesize|scriptsize|hline)\b/g, "")
-    .replace(/\\([A-Za-z]+)/g, (m, name) => PLAIN_SYMBOLS[name] ?? name)
-    .replace(/\\[,;:! ]/g, " ")
-    .replace(/\\([{}%$#_])/g, "$1")
-    .replace(/[{}]/g, "")
-    .replace(/\s+/g, " ")
-    .trim();
+export function formulaSource(step, side) {
+  const tex = String(step?.[SIDES[side]] ?? "");
+  const relations = Array.isArray(step?.parts) && step.parts.length ? step.parts : null;
+  return { tex, relations, side };
+}
+
+/** A formula that is only a LaTeX string (a practice hint the core writes whole): one block. */
+export function texSource(tex) {
+  return { tex: String(tex), relations: null, side: "substituted" };
 }
 
 /**
- * Renders `tex` into a new element and returns it, split (see splitFormula,
- * splitTerms) into pieces that sit on one line when there is room and wrap
- * when there is not. Call fitFormulas on an ancestor once it is in the page.
- * @param {string} tex
+ * The formula of `source` (formula-plan.js formulaSource: a step's side, its
+ * parts and its LaTeX string) in a new element: typeset now when KaTeX is in,
+ * else pending (typeset when it arrives), or its LaTeX text when KaTeX could
+ * not load. Call fitFormulas on an ancestor once it is in the page.
+ * @param {{ tex: string, relations: object[] | null, side: string }} source
  * @param {string} className
  */
-export function renderFormula(tex, className = "formula") {
+export function renderFormula(source, className = "formula") {
   const el = document.createElement("div");
   el.className = className;
-  if (katex) return typeset.typesetInto(el, String(tex));
+  if (katex) return typeset.typesetInto(el, source);
+  el.dataset.tex = source.tex;
   if (!loadError) {
-    // KaTeX is on its way: the numbers now, typeset when it is in
+    // KaTeX is on its way: the room now, the formula when it is in
     el.classList.add("formula-pending");
-    el.dataset.tex = String(tex);
-    el.dataset.className = className;
     el.setAttribute("aria-busy", "true");
-    const text = document.createElement("span");
-    text.className = "formula-plain";
-    text.textContent = plainTex(tex);
-    el.append(text);
-    pending.add(el);
+    pending.set(el, source);
     scheduleMath();
     return el;
   }
-  // KaTeX could not be loaded: the plain text stays (readable numbers, not LaTeX source)
-  el.classList.add("formula-raw");
-  el.dataset.tex = String(tex);
-  const text = document.createElement("span");
-  text.className = "formula-plain";
-  text.textContent = plainTex(tex);
-  el.append(text);
+  // KaTeX could not be loaded: the LaTeX text
+  rawInto(el, source.tex);
   return el;
+}
+
+function rawInto(el, tex) {
+  el.classList.add("formula-raw");
+  const code = document.createElement("code");
+  code.textContent = tex;
+  el.replaceChildren(code);
 }
 
 /**

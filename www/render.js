@@ -7,7 +7,8 @@
 // are drawn as matrices.
 
 import { el } from "./dom.js";
-import { fitFormulaNodes, fitFormulas, renderFormula } from "./math.js";
+import { fitFormulaNodes, fitFormulas, formulaSource, renderFormula } from "./math.js";
+import { isMatrix, stepValue } from "./values.js";
 import { agreesWithPrinted, formatDecimals, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
 
 /** Note kinds with their own badge style; any other kind gets the neutral one. */
@@ -45,8 +46,8 @@ export const WORDS = Object.freeze({
 function stepItem(step, k) {
   const item = el("li", { class: "step", id: `step-${k + 1}` }, el("h4", { class: "step-title" }, step.title ?? ""));
   if (step.text) item.append(el("p", { class: "step-text" }, step.text));
-  if (step.formula) item.append(renderFormula(step.formula, "formula formula-symbolic"));
-  if (step.substituted) item.append(renderFormula(step.substituted, "formula formula-substituted"));
+  if (step.formula) item.append(renderFormula(formulaSource(step, "symbolic"), "formula formula-symbolic"));
+  if (step.substituted) item.append(renderFormula(formulaSource(step, "substituted"), "formula formula-substituted"));
   return item;
 }
 
@@ -61,12 +62,16 @@ export function renderSteps(solution) {
 /** The steps each list of updateSteps shows, by list. */
 const shownSteps = new WeakMap();
 
-/** What a step's item holds, in order: [class, text or TeX] of its children. */
+/**
+ * What a step's item holds, in order: [class, text or TeX, formula source] of
+ * its children (a formula is the same when its LaTeX, made by the core from
+ * its parts, is).
+ */
 function stepParts(step) {
   const parts = [["step-title", step.title ?? ""]];
   if (step.text) parts.push(["step-text", step.text]);
-  if (step.formula) parts.push(["formula formula-symbolic", String(step.formula)]);
-  if (step.substituted) parts.push(["formula formula-substituted", String(step.substituted)]);
+  if (step.formula) parts.push(["formula formula-symbolic", String(step.formula), formulaSource(step, "symbolic")]);
+  if (step.substituted) parts.push(["formula formula-substituted", String(step.substituted), formulaSource(step, "substituted")]);
   return parts;
 }
 
@@ -106,11 +111,11 @@ export function updateSteps(container, solution) {
       rebuilt.push(next);
       return parts;
     }
-    parts.forEach(([cls, content], i) => {
+    parts.forEach(([cls, content, source], i) => {
       if (content === old[i][1]) return;
       const child = item.children[i];
-      if (cls.startsWith("formula")) {
-        const node = renderFormula(content, cls);
+      if (source) {
+        const node = renderFormula(source, cls);
         child.replaceWith(node);
         fresh.push(node);
       } else {
@@ -131,9 +136,6 @@ export function labelOf(solution, key) {
   return { label: l?.label || key, unit: l?.unit || null };
 }
 
-function isMatrix(value) {
-  return Array.isArray(value) && value.length > 0 && value.every(Array.isArray);
-}
 
 /** A matrix larger than this (rows or columns) is shown in a scroll box of its own. */
 const MATRIX_MAX_COLS = 8;
@@ -168,14 +170,6 @@ function zipMap(a, b, f) {
   return f(a, b);
 }
 
-/** The last step value named `key` (for textbook keys that are intermediates). */
-function stepValue(solution, key) {
-  let found;
-  for (const step of solution.steps ?? []) {
-    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
-  }
-  return found;
-}
 
 /** The notes as numbered items: [{ n, note, kind }]. */
 function numberedNotes(solution) {

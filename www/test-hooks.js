@@ -12,8 +12,3 @@ export const testing = globalThis.__playgroundTest === true;
 export function testHook(name, value) {
   if (testing) document.body.dataset[name] = String(value);
 }
-
-/** Removes <body data-NAME> under the tests. */
-export function clearTestHook(name) {
-  if (testing) delete document.body.dataset[name];
-}

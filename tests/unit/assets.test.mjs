@@ -1,12 +1,10 @@
-// The build's assets step (scripts/assets.mjs) on a small made-up site, and
-// the plain-text formulas shown before KaTeX arrives (www/math.js).
+// The build's assets step (scripts/assets.mjs) on a small made-up site.
 import { describe, it } from "node:test";
 import assert from "node:assert/strict";
 import crypto from "node:crypto";
 import fs from "node:fs";
 import path from "node:path";
 import { contentHash, dataBlock, fontFaces, hashAssets, headersFile, jsRefs, minifyAll, minifyCss, readDataBlock } from "../../scripts/assets.mjs";
-import { plainTex } from "../../www/math.js";
 import { site } from "./site.mjs";
 
 const read = (dir, name) => fs.readFileSync(path.join(dir, name), "utf8");
@@ -168,16 +166,5 @@ describe("assets.mjs: the page's data block, and cache rules by folder", () => {
     assert.doesNotMatch(text, /^\/prerender\/(gsd|embed)/m);
     assert.match(text, /^\/pkg\/\*\n {2}Cache-Control: public, max-age=31536000, immutable$/m);
     assert.match(text, /^\/b\.js\n {2}Cache-Control: no-cache$/m);
-  });
-});
-
-describe("plainTex: a formula readable before KaTeX arrives", () => {
-  it("keeps every number and writes fractions, products, roots and Greek letters as text", () => {
-    assert.equal(plainTex(String.raw`\frac{1}{m} = \frac{f}{H}`), "1/m = f/H");
-    assert.equal(plainTex(String.raw`\bar A = 529/9, \bar{B} = 59.11`), "A\u0304 = 529/9, B\u0304 = 59.11");
-    assert.equal(plainTex(String.raw`\text{GSD} = p \cdot m = 356.4912\ \text{mm}`), "GSD = p · m = 356.4912 mm");
-    assert.equal(plainTex(String.raw`\rho = \frac{1149.222}{\sqrt{843.5556 \times 2604.889}}`), "ρ = 1149.222/(√(843.5556 × 2604.889))");
-    assert.equal(plainTex(String.raw`\sigma^{2} + x_{i}`), "σ² + x_i");
-    assert.equal(plainTex(String.raw`A = \begin{bmatrix} 1 & 2 \\ 3 & 4 \end{bmatrix}`), "A = [1 2; 3 4]");
   });
 });

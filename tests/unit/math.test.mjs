@@ -1,103 +1,155 @@
-// Where formulas may break (www/math.js), in Node: the splitting is pure
-// string work; the page lays the pieces out and fits them to the width.
+// A formula's layout planned from a step's parts (www/formula-plan.js), in
+// Node: the tests feed relations (data, as the core sends them), never LaTeX
+// to be taken apart, and check the groups, lines and terms, and the blocks
+// and captions of a matrix too wide for its line.
 import { describe, it } from "node:test";
 import assert from "node:assert/strict";
-import { blockCaption, findGrid, gridBlocks, gridContext, gridNames, splitFormula, splitTerms } from "../../www/math-typeset.js"; // loaded with KaTeX (www/math.js)
+import fs from "node:fs";
+import { blockCaption, gridBlocks, gridTermTex, gridTex, planFormula, shortGrid, tableRowLines } from "../../www/formula-plan.js";
+import { formulaSource } from "../../www/math.js";
 
-describe("splitFormula: groups and relation chains", () => {
-  it("the left-hand side stays with the first relation; the result is a piece of its own", () => {
-    assert.deepEqual(splitFormula(String.raw`\text{GSD} = p \cdot m = 356\ \text{mm} = 35.6\ \text{cm}`), [
-      [String.raw`\text{GSD} = p \cdot m`, String.raw`= 356\ \text{mm}`, String.raw`= 35.6\ \text{cm}`],
-    ]);
+const t = (tex) => ({ tex });
+const grid = (env, rows, name = null) => ({ grid: { env, rows, name } });
+/** The terms' LaTeX of a plan: groups → items → terms (a grid as its lead and rows). */
+const texts = (plan) => plan.groups.map((g) => g.items.map((item) => item.terms.map((x) => (x.grid ? `${x.lead}|${x.grid.rows.length}x${x.grid.rows[0].length}` : x.tex))));
+
+const GSD = {
+  key: "gsd_cm",
+  lhs: [t(String.raw`\text{GSD}`)],
+  op: "=",
+  symbolic: [[t(String.raw`p \cdot m`)]],
+  substituted: [[t(String.raw`0.028 \times 9047`)]],
+  result: [[t(String.raw`255\,\text{mm}`)], [t(String.raw`25.5\,\text{cm}`)]],
+};
+
+describe("planFormula: one group per relation, breaks only between the core's pieces", () => {
+  it("the left-hand side stays with its first relation; each further side starts an item", () => {
+    const step = { formula: "x", substituted: "y", parts: [GSD] };
+    assert.deepEqual(texts(planFormula(formulaSource(step, "symbolic"))), [[[String.raw`\text{GSD} = p \cdot m`]]]);
+    const sub = planFormula(formulaSource(step, "substituted"));
+    assert.deepEqual(texts(sub), [[[String.raw`\text{GSD} = 0.028 \times 9047`], [String.raw`= 255\,\text{mm}`], [String.raw`= 25.5\,\text{cm}`]]]);
+    assert.deepEqual(
+      sub.groups[0].items.map((i) => i.cont),
+      [false, true, true],
+    );
+    assert.equal(sub.groups[0].key, "gsd_cm");
+    // too wide, the left-hand side and its first relation may part
+    assert.deepEqual(sub.groups[0].items[0].terms[0].apart, [String.raw`\text{GSD}`, String.raw`= 0.028 \times 9047`]);
   });
-  it("\\quad and ',\\ ' between equations start groups; a comma inside parentheses does not", () => {
-    const g = splitFormula(String.raw`a_1 = b_1 - b_3,\ a_2 = b_2,\quad P = (1,\ 2)`);
-    assert.equal(g.length, 3);
-    assert.deepEqual(g[2], [String.raw`P = (1,\ 2)`]);
+
+  it("the terms of a long sum are terms of one line; another relation sign is kept", () => {
+    const r = { key: null, lhs: [t("Z")], op: String.raw`\approx`, symbolic: [[t("a_0"), t("+ a_1 x"), t("- a_2 y")]], substituted: [], result: [] };
+    assert.deepEqual(texts(planFormula(formulaSource({ parts: [r] }, "symbolic"))), [[[String.raw`Z \approx a_0`, "+ a_1 x", "- a_2 y"]]]);
   });
-  it("unbalanced braces leave the formula whole", () => {
-    assert.deepEqual(splitFormula("x = {a"), [["x = {a"]]);
+
+  it("two relations are two groups; a relation with nothing on a side is left out of it", () => {
+    const a = { key: "a", lhs: [t("a")], op: "=", symbolic: [[t("b + c")]], substituted: [[t("1 + 2")]], result: [[t("3")]] };
+    const b = { key: "b", lhs: [t("d")], op: "<", symbolic: [], substituted: [], result: [[t("4")]] };
+    const sym = planFormula(formulaSource({ parts: [a, b] }, "symbolic"));
+    assert.deepEqual(texts(sym), [[["a = b + c"]]]);
+    const sub = planFormula(formulaSource({ parts: [a, b] }, "substituted"));
+    assert.deepEqual(texts(sub), [[["a = 1 + 2"], ["= 3"]], [["d < 4"]]]);
+    assert.deepEqual(
+      sub.groups.map((g) => g.key),
+      ["a", "b"],
+    );
+  });
+
+  it("a bare expression (no left-hand side) and practice's question (the result as ?)", () => {
+    const r = { key: "k", lhs: [], op: "=", symbolic: [[t("x + y")]], substituted: [[t("1 + 2")]], result: [[t("3")]] };
+    assert.deepEqual(texts(planFormula(formulaSource({ parts: [r] }, "symbolic"))), [[["x + y"]]]);
+    assert.deepEqual(texts(planFormula({ tex: "", relations: [GSD], side: "question" })), [[[String.raw`\text{GSD} = 0.028 \times 9047`], [String.raw`= \;?`]]]);
+  });
+
+  it("a matrix is a term of its own, named by its grid or by the left-hand side it equals", () => {
+    const n = { key: "N", lhs: [t("N")], op: "=", symbolic: [[t(String.raw`A^\mathsf{T} A`)]], substituted: [[grid("bmatrix", [["1", "2"], ["3", "4"]])]], result: [] };
+    const plan = planFormula(formulaSource({ parts: [n] }, "substituted"));
+    assert.deepEqual(texts(plan), [[["N =|2x2"]]]);
+    assert.equal(plan.groups[0].items[0].terms[0].name, "N");
+    // "A X = L + V": the matrices keep their own names, the equation flows on after them
+    const axl = {
+      key: null,
+      lhs: [grid("bmatrix", [["1", "0"], ["0", "1"]], "A"), grid("bmatrix", [["a"], ["b"]], "X")],
+      op: "=",
+      symbolic: [],
+      substituted: [[grid("bmatrix", [["5"], ["6"]], "L"), t("+ V")]],
+      result: [],
+    };
+    const p2 = planFormula(formulaSource({ parts: [axl] }, "substituted"));
+    assert.deepEqual(texts(p2), [[["|2x2", "|2x1", "=|2x1", "+ V"]]]);
+    assert.deepEqual(
+      p2.groups[0].items[0].terms.map((x) => x.name ?? null),
+      ["A", "X", "L", null],
+    );
+  });
+
+  it("a step without parts is one block, unsplit", () => {
+    const step = { formula: String.raw`a = b,\quad c = d`, substituted: "", parts: [] };
+    assert.deepEqual(planFormula(formulaSource(step, "symbolic")), { whole: String.raw`a = b,\quad c = d` });
   });
 });
 
-describe("splitTerms: sums, lists and rows", () => {
-  it("a written-out sum breaks before each binary + or −, not inside parentheses, not at a sign", () => {
-    const { lines } = splitTerms("= (48 - 58.7)(52 - 59.1) + (50 - 58.7)(37 - 59.1) - 3 = 1149.2");
-    assert.deepEqual(lines, [["= (48 - 58.7)(52 - 59.1)", "+ (50 - 58.7)(37 - 59.1)", "- 3", "= 1149.2"]]);
-    assert.deepEqual(splitTerms("-113.002 + v_{1}").lines, [["-113.002", "+ v_{1}"]]);
-    assert.deepEqual(splitTerms("= -0.5").lines, [["= -0.5"]]);
-  });
-  it("the items of a bracketed list and \\; sequences", () => {
-    assert.deepEqual(splitTerms(String.raw`V = [-0.01,\ 0.03,\ -0.02]`).lines, [[String.raw`V = [-0.01,`, "0.03,", "-0.02]"]]);
-    assert.deepEqual(splitTerms(String.raw`d = 7\;0\;(-1)`).lines, [["d = 7", "0", "(-1)"]]);
-  });
-  it("a gathered block gives one line per row; a second relation in a row may break", () => {
-    const { lines } = splitTerms(String.raw`\begin{gathered}\sigma_a = 0.0099 \sqrt{0.1} = 0.003 \\ \Delta(1) = (1,0),\ \Delta(2) = (1,-1)\end{gathered}`);
-    assert.deepEqual(lines, [[String.raw`\sigma_a = 0.0099 \sqrt{0.1}`, "= 0.003"], [String.raw`\Delta(1) = (1,0),`, String.raw`\Delta(2) = (1,-1)`]]);
-  });
-  it("a long product breaks before each × or ·", () => {
-    assert.deepEqual(splitTerms(String.raw`= 0.9996 \times 6\,367\,449.1 \times 0.0254`).lines, [["= 0.9996", String.raw`\times 6\,367\,449.1`, String.raw`\times 0.0254`]]);
-  });
-  it("factors set apart by a thin space break; digit groups do not", () => {
-    assert.deepEqual(splitTerms(String.raw`= \sqrt{a}\,\sqrt{b} \times 6\,367`).lines, [[String.raw`= \sqrt{a}`, String.raw`\sqrt{b}`, String.raw`\times 6\,367`]]);
-  });
-  it("nothing breaks inside a fraction or a root", () => {
-    assert.deepEqual(splitTerms(String.raw`\rho = \frac{a + b}{\sqrt{c + d}}`).lines, [[String.raw`\rho = \frac{a + b}{\sqrt{c + d}}`]]);
-  });
-});
-
-describe("grids: matrices and tables in blocks of columns", () => {
-  const matrix = String.raw`N = \begin{bmatrix} 1 & 2 & 3 \\ 4 & 5 & 6 \end{bmatrix},`;
-  it("findGrid keeps what stands before and after", () => {
-    const g = findGrid(matrix);
-    assert.equal(g.before, "N = ");
-    assert.equal(g.after, ",");
-    assert.equal(g.env, "bmatrix");
-  });
-  it("a matrix in blocks of two columns: every number kept once", () => {
-    const blocks = gridBlocks(findGrid(matrix), 2);
+describe("grids: blocks of columns with captions, long ones shortened", () => {
+  const a = { env: "bmatrix", rows: [["1", "2", "3", "4", "5"], ["6", "7", "8", "9", "10"]], name: "A" };
+  it("a matrix in blocks of at most `per` columns, every cell once", () => {
+    const blocks = gridBlocks(a, 2);
     assert.deepEqual(
       blocks.map((b) => [b.from, b.to, b.of]),
       [
-        [1, 2, 3],
-        [3, 3, 3],
+        [1, 2, 5],
+        [3, 4, 5],
+        [5, 5, 5],
       ],
     );
-    assert.match(blocks[0].tex, /1 & 2 \\\\ 4 & 5/);
-    assert.match(blocks[1].tex, /3 \\\\ 6/);
+    assert.deepEqual(blocks[1].rows, [["3", "4"], ["8", "9"]]);
+    assert.deepEqual(
+      blocks.map((b) => blockCaption("A", b)),
+      ["A, columns 1–2 of 5", "A, columns 3–4 of 5", "A, column 5 of 5"],
+    );
+    assert.equal(blockCaption(null, blocks[0]), "columns 1–2 of 5");
   });
-  it("a table keeps its first column and its rules in every block", () => {
-    const table = String.raw`\begin{array}{c|rr|rr} k & a & b & c & d \\ \hline 1 & 10 & 20 & 30 & 40 \end{array}`;
-    const blocks = gridBlocks(findGrid(table), 2);
-    assert.equal(blocks.length, 2);
-    assert.match(blocks[1].tex, /^\\begin\{array\}\{c\|rr\} k & c & d \\\\ \\hline 1 & 30 & 40/);
+  it("a table keeps its first column in every block", () => {
+    const table = { env: "array", rows: [["", "x", "y", "z"], ["p", "1", "2", "3"]], name: null };
+    const blocks = gridBlocks(table, 2);
+    assert.deepEqual(
+      blocks.map((b) => b.rows),
+      [
+        [["", "x", "y"], ["p", "1", "2"]],
+        [["", "z"], ["p", "3"]],
+      ],
+    );
+    assert.deepEqual(
+      blocks.map((b) => [b.from, b.to, b.of]),
+      [
+        [2, 3, 4],
+        [4, 4, 4],
+      ],
+    );
+    assert.deepEqual(tableRowLines(table), [["p{:}", "x = 1,", "y = 2,", "z = 3"]]);
+  });
+  it("the matrix's LaTeX is put together from its cells (never read back)", () => {
+    assert.equal(gridTex(a, [["1"], ["6"]]), String.raw`\begin{bmatrix} 1 \\ 6 \end{bmatrix}`);
+    assert.equal(gridTex({ env: "array", rows: [["a", "b"]] }), String.raw`\begin{array}{rr} a & b \end{array}`);
+    assert.equal(gridTermTex({ grid: a, lead: "N =" }, [["1"]]), String.raw`N = \begin{bmatrix} 1 \end{bmatrix}`);
+  });
+  it("more than 12 rows: the first 8 and a row of dots, with the count", () => {
+    const tall = { env: "bmatrix", rows: Array.from({ length: 20 }, (_, i) => [String(i), "0"]) };
+    const short = shortGrid(tall);
+    assert.equal(short.count, 20);
+    assert.equal(short.rows.length, 9);
+    assert.deepEqual(short.rows[8], [String.raw`\vdots`, String.raw`\vdots`]);
+    assert.equal(shortGrid(a), null);
   });
 });
 
-describe("a split matrix keeps its name and its equation (issue 29)", () => {
-  const substituted = String.raw`\begin{bmatrix} 48.15 & 2699.98 & 1 & 0 \\ -2699.98 & 48.15 & 0 & 1 \end{bmatrix}\,\begin{bmatrix} a \\ b \\ c \\ d \end{bmatrix} = \begin{bmatrix} -113.002 \\ 0.008 \end{bmatrix} + V`;
-  it("gridNames reads the matrices' names from the symbolic formula with the same operators", () => {
-    assert.deepEqual(gridNames(String.raw`A\,X = L + V`, substituted), ["A", "X", "L"]);
-    // another shape: no names
-    assert.deepEqual(gridNames(String.raw`A\,X = L`, substituted), [null, null, null]);
-    assert.deepEqual(gridNames(String.raw`N = A^\mathsf{T} A`, String.raw`N = \begin{bmatrix} 1 & 2 \end{bmatrix}`), [null]);
-  });
-  it("N = […], the name before the matrix and punctuation after stay on its first and last blocks", () => {
-    const c = gridContext(findGrid(String.raw`\small N = \begin{bmatrix} 1 & 2 & 3 \end{bmatrix},`));
-    assert.deepEqual(c, { size: String.raw`\small `, lead: String.raw`\small N = `, trail: ",", name: "N", rest: null });
-  });
-  it("A X: the blocks are A alone, and the product is written again after the whole matrix", () => {
-    const term = String.raw`\begin{bmatrix} 1 & 2 \end{bmatrix}\,\begin{bmatrix} a \\ b \end{bmatrix}`;
-    const c = gridContext(findGrid(term), "A");
-    assert.equal(c.lead, "");
-    assert.equal(c.trail, "");
-    assert.equal(c.rest, String.raw`A\,\begin{bmatrix} a \\ b \end{bmatrix}`);
-    // without a name, a word stands for the matrix
-    assert.match(gridContext(findGrid(term), null).rest, /^\\left\[\\,\\text\{matrix above\}/);
-  });
-  it("each block's caption names the matrix", () => {
-    assert.equal(blockCaption("A", { from: 1, to: 3, of: 4 }), "A, columns 1–3 of 4");
-    assert.equal(blockCaption(String.raw`A^\mathsf{T}`, { from: 4, to: 4, of: 4 }), "Aᵀ, column 4 of 4");
-    assert.equal(blockCaption(null, { from: 2, to: 3, of: 5 }), "columns 2–3 of 5");
+describe("no LaTeX reader in www/", () => {
+  it("the formula modules take no LaTeX apart (no \\begin / \\frac / \\\\ patterns matched against formulas)", () => {
+    for (const file of ["www/formula-plan.js", "www/math-typeset.js", "www/math.js"]) {
+      const code = fs.readFileSync(new URL(`../../${file}`, import.meta.url), "utf8");
+      // a regular expression literal or RegExp that looks for LaTeX commands or environments
+      assert.doesNotMatch(code, /\/[^/\n]*\\\\(begin|end|frac|sqrt|left|right|text|quad|approx)[^/\n]*\/[gimsuy]*[.)]/, file);
+      assert.doesNotMatch(code, /new RegExp\([^)]*\\\\/, file);
+      assert.doesNotMatch(code, /\b(splitFormula|splitTerms|findGrid|plainTex|skeleton|gridNames)\b/, file);
+    }
   });
 });

@@ -15,8 +15,8 @@
 // toggles the pixel. Preset buttons load the seed's edges and a circle, a rectangle and
 // an L-shape.
 
-import { formatNumber } from "../format.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, dot, finite, line, text, textWidth } from "./draw.js";
+import { stepValue } from "../values.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, dot, finite, fmt, line, text, textWidth } from "./draw.js";
 
 /** Layout (CSS px) and the smallest grid shown (cells). */
 const LAYOUT = Object.freeze({ margin: 12, axis: 24, maxCell: 44, minCols: 13, minRows: 9, infoGap: 10, labelMinCell: 15, axisLabelMinPx: 18 });
@@ -66,21 +66,12 @@ const SHAPES = Object.freeze({
   lShape: () => filled((c, r) => (c >= 3 && c <= 5 && r >= 1 && r <= 8) || (c >= 3 && c <= 11 && r >= 6 && r <= 8)),
 });
 
-const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
 const isPixel = (p) => Array.isArray(p) && p.length >= 2 && Number.isFinite(p[0]) && Number.isFinite(p[1]);
 const pixelList = (v) => (Array.isArray(v) ? v.filter(isPixel) : []);
 const pixelsText = (ps) => ps.map((p) => `${p[0]} ${p[1]}`).join("\n");
 const same = (a, b) => a && b && a[0] === b[0] && a[1] === b[1];
 const digits = (v) => (Array.isArray(v) ? v.join(" ") : "—");
 
-/** The last step value named `key`. */
-function stepValue(solution, key) {
-  let found;
-  for (const step of solution.steps ?? []) {
-    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
-  }
-  return found;
-}
 
 /** How the edge was given: "pixels", "code" or "region" (boundary-shape: always region). */
 function modeOf(solution) {
@@ -156,11 +147,11 @@ function infoLines(solution, m) {
   }
   if (typeof res.length === "number") {
     const counts = typeof res.horizontal === "number" ? ` (n_h = ${res.horizontal}, n_v = ${res.vertical}, n_d = ${res.diagonal})` : "";
-    lines.push({ text: `Length L = ${fmt(res.length)} px${counts}` });
+    lines.push({ text: `Length L = ${fmt(res.length, DIGITS)} px${counts}` });
   }
   if (typeof res.diameter === "number") {
-    lines.push({ text: `Diameter D = ${fmt(res.diameter)} px (major axis, orange)   minor axis m = ${fmt(res.minor_axis_length)} px (purple)`, color: COLORS.ink });
-    lines.push({ text: `Eccentricity E = D / m = ${res.eccentricity == null ? "no value (m = 0)" : fmt(res.eccentricity)}   basic rectangle: dashed`, color: COLORS.ink });
+    lines.push({ text: `Diameter D = ${fmt(res.diameter, DIGITS)} px (major axis, orange)   minor axis m = ${fmt(res.minor_axis_length, DIGITS)} px (purple)`, color: COLORS.ink });
+    lines.push({ text: `Eccentricity E = D / m = ${res.eccentricity == null ? "no value (m = 0)" : fmt(res.eccentricity, DIGITS)}   basic rectangle: dashed`, color: COLORS.ink });
   }
   for (const b of m.breaks.slice(0, 3)) {
     if (b.length >= 5) lines.push({ text: `Break: pixel ${b[0]} (${b[1]}, ${b[2]}) → pixel ${b[0] + 1} (${b[3]}, ${b[4]}) are not neighbours${m.four ? " (4-connectivity)" : ""}`, color: INK.broken });
@@ -204,7 +195,8 @@ function infoBlock(width, solution, m) {
   return wrap(infoLines(solution, m), width - 2 * LAYOUT.margin);
 }
 
-function drawGrid(ctx, L) {
+/** The pixel lattice of the chain figures: cell lines and the column/row numbers (no values: drawGrid draws grids of numbers). */
+function drawLattice(ctx, L) {
   const { left, top, cell, cols, rows } = L;
   ctx.save();
   for (let i = 0; i <= cols; i++) line(ctx, left + i * cell, top, left + i * cell, top + rows * cell, { color: COLORS.grid });
@@ -413,7 +405,7 @@ function figureHeight(width, solution) {
 function drawFigure(ctx, width, height, solution) {
   const m = model(solution);
   const L = layout(width, m);
-  drawGrid(ctx, L);
+  drawLattice(ctx, L);
   if (m.mode === "region") {
     fillCells(ctx, L, m.raw, INK.region);
     ctx.save();
@@ -465,8 +457,8 @@ function describe(solution) {
   );
   if (m.code) parts.push(`Chain code ${m.code.length ? digits(m.code) : "empty"}; differential code ${Array.isArray(res.differential) && res.differential.length ? digits(res.differential) : "empty"}.`);
   else parts.push("No chain code: the path breaks.");
-  if (typeof res.length === "number") parts.push(`Length ${fmt(res.length)} px.`);
-  if (typeof res.diameter === "number") parts.push(`Diameter ${fmt(res.diameter)} px, minor axis ${fmt(res.minor_axis_length)} px, eccentricity ${res.eccentricity == null ? "no value" : fmt(res.eccentricity)}.`);
+  if (typeof res.length === "number") parts.push(`Length ${fmt(res.length, DIGITS)} px.`);
+  if (typeof res.diameter === "number") parts.push(`Diameter ${fmt(res.diameter, DIGITS)} px, minor axis ${fmt(res.minor_axis_length, DIGITS)} px, eccentricity ${res.eccentricity == null ? "no value" : fmt(res.eccentricity, DIGITS)}.`);
   for (const b of m.breaks.slice(0, 3)) parts.push(`Break between pixel ${b[0]} (${b[1]}, ${b[2]}) and pixel ${b[0] + 1} (${b[3]}, ${b[4]}).`);
   for (const b of m.branches.slice(0, 3)) parts.push(`Branch: pixel ${b[0]} (${b[2]}, ${b[3]}) repeats pixel ${b[1]}.`);
   return parts.join(" ");

@@ -11,7 +11,7 @@
 //   subpixel-2d: the fitted quadric as contours over the 3×3 ρ, with its peak.
 
 import { formatNumber } from "../format.js";
-import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, greyLegend, greyScale, line, text, textBlock, blockSize } from "./draw.js";
+import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LABEL_PAD, LINE_HEIGHT, Labels, dot, finite, fmt, greyLegend, greyScale, line, text, textBlock, blockSize } from "./draw.js";
 
 /** Digits shown for ρ, means and sums in the figures. */
 const RHO_DIGITS = 4;
@@ -32,7 +32,8 @@ const TITLE = { weight: "bold", size: FONT_SIZE };
 const THRESHOLD = 0.7;
 
 const isNum = (v) => typeof v === "number" && Number.isFinite(v);
-const fmt = (v, d = VALUE_DIGITS) => (isNum(v) ? formatNumber(v, d) : "no value");
+/** What a figure writes for a missing number. */
+const NONE = "no value";
 const list = (v) => (Array.isArray(v) ? v : []);
 const matrix = (v) => list(v).filter(Array.isArray);
 
@@ -182,14 +183,14 @@ function layout1d(width, d) {
 function lines1d(d, k) {
   const n = d.template.length;
   const window = d.search.slice(k, k + n);
-  const shown = window.length > 12 ? `[${window.slice(0, 10).map((v) => fmt(v)).join(", ")}, …]` : `[${window.map((v) => fmt(v)).join(", ")}]`;
+  const shown = window.length > 12 ? `[${window.slice(0, 10).map((v) => fmt(v, VALUE_DIGITS, NONE)).join(", ")}, …]` : `[${window.map((v) => fmt(v, VALUE_DIGITS, NONE)).join(", ")}]`;
   return [
     { text: `Position ${k + 1}${k === d.best ? " (best)" : ""}: B${k + 1} = ${shown}`, weight: "bold", color: COLORS.point },
-    { text: `Ā = ${fmt(d.meanA)}, B̄ = ${fmt(d.means[k])}` },
-    { text: `Σ(A−Ā)(B−B̄) = ${fmt(d.sumDadb[k])}, Σ(A−Ā)² = ${fmt(d.sumDa2)}, Σ(B−B̄)² = ${fmt(d.sumDb2[k])}` },
+    { text: `Ā = ${fmt(d.meanA, VALUE_DIGITS, NONE)}, B̄ = ${fmt(d.means[k], VALUE_DIGITS, NONE)}` },
+    { text: `Σ(A−Ā)(B−B̄) = ${fmt(d.sumDadb[k], VALUE_DIGITS, NONE)}, Σ(A−Ā)² = ${fmt(d.sumDa2, VALUE_DIGITS, NONE)}, Σ(B−B̄)² = ${fmt(d.sumDb2[k], VALUE_DIGITS, NONE)}` },
     {
       text: isNum(d.rho[k])
-        ? `ρ${k + 1} = ${fmt(d.sumDadb[k])} / √(${fmt(d.sumDa2)} × ${fmt(d.sumDb2[k])}) = ${fmt(d.rho[k], RHO_DIGITS)}`
+        ? `ρ${k + 1} = ${fmt(d.sumDadb[k], VALUE_DIGITS, NONE)} / √(${fmt(d.sumDa2, VALUE_DIGITS, NONE)} × ${fmt(d.sumDb2[k], VALUE_DIGITS, NONE)}) = ${fmt(d.rho[k], RHO_DIGITS, NONE)}`
         : `ρ${k + 1}: no value (a window without variance: 0/0)`,
       weight: "bold",
     },
@@ -303,7 +304,7 @@ function describe1d(solution, state) {
   const d = oneD(solution);
   if (!d.rho.length) return "No positions.";
   const k = selected1d(d, state);
-  const best = d.best === null ? "No position has a correlation coefficient." : `The best match is position ${d.best + 1} with ρ = ${fmt(d.rho[d.best], RHO_DIGITS)}.`;
+  const best = d.best === null ? "No position has a correlation coefficient." : `The best match is position ${d.best + 1} with ρ = ${fmt(d.rho[d.best], RHO_DIGITS, NONE)}.`;
   const all = d.rho.map((r, i) => `${i + 1}: ${isNum(r) ? formatNumber(r, 2) : "no value"}`).join(", ");
   return `The template of ${d.template.length} values slides along the search array of ${d.search.length}; bars show ρ at each of ${d.rho.length} positions (${all}). ${best} Selected: ${lines1d(d, k).map((l) => l.text).join("; ")}.`;
 }
@@ -348,8 +349,8 @@ function draw2d(ctx, width, height, solution, state) {
   const L = layout2d(width, d);
   const [loA, hiA] = range(d.a.flat());
   const [loB, hiB] = range(d.b.flat());
-  text(ctx, `A (Ā = ${fmt(d.ma)})`, L.xa, L.y - 10, TITLE);
-  text(ctx, `B (B̄ = ${fmt(d.mb)})`, L.xb, L.y - 10, TITLE);
+  text(ctx, `A (Ā = ${fmt(d.ma, VALUE_DIGITS, NONE)})`, L.xa, L.y - 10, TITLE);
+  text(ctx, `B (B̄ = ${fmt(d.mb, VALUE_DIGITS, NONE)})`, L.xb, L.y - 10, TITLE);
   const shadeA = grey(loA, hiA, "A");
   const shadeB = grey(loB, hiB, "B");
   cells(ctx, d.a, L.xa, L.y, L.cell, shadeA, 5);
@@ -417,10 +418,10 @@ function draw2d(ctx, width, height, solution, state) {
     [1, 0.55],
   ]);
   labels.draw();
-  const lines = [{ text: isNum(d.rho) ? `ρ = ${fmt(d.res.sum_dadb)} / √(${fmt(d.res.sum_da2)} × ${fmt(d.res.sum_db2)}) = ${fmt(d.rho, RHO_DIGITS)}` : "ρ: no value (an array without variance: 0/0)", weight: "bold" }];
+  const lines = [{ text: isNum(d.rho) ? `ρ = ${fmt(d.res.sum_dadb, VALUE_DIGITS, NONE)} / √(${fmt(d.res.sum_da2, VALUE_DIGITS, NONE)} × ${fmt(d.res.sum_db2, VALUE_DIGITS, NONE)}) = ${fmt(d.rho, RHO_DIGITS, NONE)}` : "ρ: no value (an array without variance: 0/0)", weight: "bold" }];
   if (sel !== null) {
     const [x, y] = pts[sel];
-    lines.push({ text: `Selected (row ${Math.floor(sel / L.cols) + 1}, column ${(sel % L.cols) + 1}): (${fmt(x, 5)}) × (${fmt(y, 5)}) = ${fmt(x * y, 5)}`, color: COLORS.point });
+    lines.push({ text: `Selected (row ${Math.floor(sel / L.cols) + 1}, column ${(sel % L.cols) + 1}): (${fmt(x, 5, NONE)}) × (${fmt(y, 5, NONE)}) = ${fmt(x * y, 5, NONE)}`, color: COLORS.point });
   }
   textBlock(ctx, lines, MARGIN, L.plotTop + L.plotSize + 10, { size: FONT_SIZE_SMALL });
 }
@@ -452,7 +453,7 @@ const ncc2d = {
   },
   describe: (solution) => {
     const d = twoD(solution);
-    return `Arrays A and B of ${d.a.length}×${d.a[0]?.length ?? 0} grey values, shaded, with means ${fmt(d.ma)} and ${fmt(d.mb)}, and a scatter of their deviations. ρ = ${fmt(d.rho, RHO_DIGITS)}.`;
+    return `Arrays A and B of ${d.a.length}×${d.a[0]?.length ?? 0} grey values, shaded, with means ${fmt(d.ma, VALUE_DIGITS, NONE)} and ${fmt(d.mb, VALUE_DIGITS, NONE)}, and a scatter of their deviations. ρ = ${fmt(d.rho, RHO_DIGITS, NONE)}.`;
   },
   draw: draw2d,
   select: select2d,
@@ -515,9 +516,9 @@ function linesSurface(d, r, c) {
   const rhoV = d.rho[r]?.[c];
   return [
     { text: `Position ${pos}${isBest ? " (best)" : ""}: rows ${r + 1}–${r + d.template.length}, columns ${c + 1}–${c + (d.template[0]?.length ?? 0)} of S`, weight: "bold", color: COLORS.point },
-    { text: `T̄ = ${fmt(d.meanT)}, B̄ = ${fmt(d.meanB[r]?.[c])}` },
-    { text: `Σ(T−T̄)(B−B̄) = ${fmt(d.sumDadb[r]?.[c])}, Σ(T−T̄)² = ${fmt(d.sumDa2)}, Σ(B−B̄)² = ${fmt(d.sumDb2[r]?.[c])}` },
-    { text: isNum(rhoV) ? `ρ = ${fmt(rhoV, RHO_DIGITS)}` : "ρ: no value (a window without variance: 0/0)", weight: "bold" },
+    { text: `T̄ = ${fmt(d.meanT, VALUE_DIGITS, NONE)}, B̄ = ${fmt(d.meanB[r]?.[c], VALUE_DIGITS, NONE)}` },
+    { text: `Σ(T−T̄)(B−B̄) = ${fmt(d.sumDadb[r]?.[c], VALUE_DIGITS, NONE)}, Σ(T−T̄)² = ${fmt(d.sumDa2, VALUE_DIGITS, NONE)}, Σ(B−B̄)² = ${fmt(d.sumDb2[r]?.[c], VALUE_DIGITS, NONE)}` },
+    { text: isNum(rhoV) ? `ρ = ${fmt(rhoV, RHO_DIGITS, NONE)}` : "ρ: no value (a window without variance: 0/0)", weight: "bold" },
   ];
 }
 
@@ -557,7 +558,7 @@ function drawSurface(ctx, width, height, solution, state) {
   }
   if (d.h) outline(ctx, L.xh + c * L.heat - 1, L.y2 + r * L.heat - 1, L.heat + 2, L.heat + 2, COLORS.point, 2.5);
   if (d.best) {
-    const best = `Best: position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC)}, r = ${fmt(d.bestR)}`;
+    const best = `Best: position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC, VALUE_DIGITS, NONE)}, r = ${fmt(d.bestR, VALUE_DIGITS, NONE)}`;
     text(ctx, best, MARGIN, L.y3 + 6, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL });
   }
 }
@@ -591,7 +592,7 @@ const nccSurface = {
   },
   describe: (solution, state) => {
     const d = surf(solution);
-    const best = d.best ? `The maximum ρ = ${fmt(d.rho[d.best[0]][d.best[1]], RHO_DIGITS)} is at position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC)}, r = ${fmt(d.bestR)}.` : "No position has a ρ.";
+    const best = d.best ? `The maximum ρ = ${fmt(d.rho[d.best[0]][d.best[1]], RHO_DIGITS, NONE)} is at position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC, VALUE_DIGITS, NONE)}, r = ${fmt(d.bestR, VALUE_DIGITS, NONE)}.` : "No position has a ρ.";
     const [r, c] = selectedSurface(d, state);
     return `A ${d.template.length}×${d.template[0]?.length ?? 0} template over a ${d.search.length}×${d.search[0]?.length ?? 0} search array; the correlation surface has ${d.h}×${d.w} positions. ${best} Selected: ${d.h ? linesSurface(d, r, c).map((l) => l.text).join("; ") : "none"}.`;
   },
@@ -698,8 +699,8 @@ const subpixel1d = {
   height: (width) => Math.min(360, Math.max(240, width * 0.62)),
   describe: (solution) => {
     const d = parabolaData(solution);
-    const pts = d.x.map((c, i) => `(${fmt(c)}, ${fmt(d.y[i], RHO_DIGITS)})`).join(", ");
-    const peak = isNum(d.cMax) ? `its maximum is at c = ${fmt(d.cMax)}, ρ = ${fmt(d.rhoMax, RHO_DIGITS)}` : "it has no maximum";
+    const pts = d.x.map((c, i) => `(${fmt(c, VALUE_DIGITS, NONE)}, ${fmt(d.y[i], RHO_DIGITS, NONE)})`).join(", ");
+    const peak = isNum(d.cMax) ? `its maximum is at c = ${fmt(d.cMax, VALUE_DIGITS, NONE)}, ρ = ${fmt(d.rhoMax, RHO_DIGITS, NONE)}` : "it has no maximum";
     return `A parabola through the points ${pts}; ${peak}.`;
   },
   draw: drawParabola,
@@ -837,11 +838,11 @@ function drawQuadric(ctx, width, height, solution) {
   const lines = [];
   if (d.printed && isNum(d.printed[0])) {
     cross(d.printed[0], d.printed[1], COLORS.muted, 5);
-    lines.push({ text: `grey +: peak from the printed ρ (${fmt(d.printed[0])}, ${fmt(d.printed[1])})`, color: COLORS.muted });
+    lines.push({ text: `grey +: peak from the printed ρ (${fmt(d.printed[0], VALUE_DIGITS, NONE)}, ${fmt(d.printed[1], VALUE_DIGITS, NONE)})`, color: COLORS.muted });
   }
   if (isNum(d.cMax) && isNum(d.rMax)) {
     cross(d.cMax, d.rMax, COLORS.point);
-    lines.unshift({ text: `peak (purple +): c = ${fmt(d.cMax)}, r = ${fmt(d.rMax)}`, weight: "bold", color: COLORS.point });
+    lines.unshift({ text: `peak (purple +): c = ${fmt(d.cMax, VALUE_DIGITS, NONE)}, r = ${fmt(d.rMax, VALUE_DIGITS, NONE)}`, weight: "bold", color: COLORS.point });
   } else {
     const what = d.extremum === "saddle" ? "a saddle" : d.extremum === "minimum" ? "a minimum" : "no single stationary point";
     lines.unshift({ text: `Not concave: the surface has ${what}, no peak`, weight: "bold", color: COLORS.point });
@@ -855,8 +856,8 @@ const subpixel2d = {
   height: (width) => Math.min(520, width * 0.82 + 60),
   describe: (solution) => {
     const d = quadricData(solution);
-    const peak = isNum(d.cMax) ? `The maximum is at c = ${fmt(d.cMax)}, r = ${fmt(d.rMax)}.` : `The fitted surface is not concave (${d.extremum}); there is no peak.`;
-    return `Contours of the quadratic surface fitted to the 3×3 correlation coefficients at columns ${d.c.map((v) => fmt(v)).join(", ")} and rows ${d.r.map((v) => fmt(v)).join(", ")}. ${peak}`;
+    const peak = isNum(d.cMax) ? `The maximum is at c = ${fmt(d.cMax, VALUE_DIGITS, NONE)}, r = ${fmt(d.rMax, VALUE_DIGITS, NONE)}.` : `The fitted surface is not concave (${d.extremum}); there is no peak.`;
+    return `Contours of the quadratic surface fitted to the 3×3 correlation coefficients at columns ${d.c.map((v) => fmt(v, VALUE_DIGITS, NONE)).join(", ")} and rows ${d.r.map((v) => fmt(v, VALUE_DIGITS, NONE)).join(", ")}. ${peak}`;
   },
   draw: drawQuadric,
 };

@@ -8,145 +8,8 @@
 // Clicking a pixel of the window (or of an output grid) selects it; the arrow
 // keys move the selection.
 
-import { formatNumber } from "../format.js";
-import { SIGNED_NEGATIVE, SIGNED_POSITIVE, rgbText } from "../colour-scales.js";
-import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, greyLegend, greyScaleOf, line, text, textBlock, textWidth, wrapWords } from "./draw.js";
-
-/** Layout constants (CSS px). */
-export const GRID = Object.freeze({
-  margin: 14,
-  gap: 22, // between panels
-  title: 22, // room for a panel title above a grid
-  axis: 16, // room for the column/row numbers
-  maxCell: 54,
-  minCell: 14,
-  numbersFrom: 20, // below this cell size the numbers are left out
-  weightFrom: 40, // below this the kernel weights in the window's cells are left out
-  sumGap: 12,
-  legendLine: GREY_LEGEND.height + 4, // below the sum, one line for each colour legend
-  maxHeight: 900, // the figure registry's largest canvas height
-  comfortable: 44, // the first arrangement (fewest rows) whose cells are this large is taken,
-  readable: 34, // else the first with cells this large, else one panel per row
-});
-/** Significant digits in the grids. */
-const DIGITS = 4;
-/** Strongest shade of a grid cell (alpha). */
-const MAX_ALPHA = 0.5;
-/** Diverging scale colours: below and above zero. */
-const NEGATIVE = rgbText(SIGNED_NEGATIVE);
-const POSITIVE = rgbText(SIGNED_POSITIVE);
-
-export const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
-
-/** The last step value named `key`. */
-export function stepValue(solution, key) {
-  let found;
-  for (const step of solution.steps ?? []) {
-    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
-  }
-  return found;
-}
-
-export function isMatrix(m) {
-  return Array.isArray(m) && m.length > 0 && Array.isArray(m[0]) && m[0].length > 0 && m.every((r) => Array.isArray(r) && r.length === m[0].length);
-}
-
-/** Whether a matrix has a negative value (it is then shaded on the diverging scale). */
-const signedMatrix = (m) => m.flat().some((v) => Number.isFinite(v) && v < 0);
-
-/**
- * A shading function for a matrix: diverging (blue < 0 < orange) when it has
- * a negative value, else the shared grey scale (draw.js: dark = low, as in an
- * image; `scale` records the cells for its legend), named `name`.
- */
-export function shader(m, name = "grey value") {
-  const flat = m.flat().filter(Number.isFinite);
-  if (signedMatrix(m)) {
-    const max = Math.max(...flat.map(Math.abs)) || 1;
-    return { signed: true, fill: (v) => `rgba(${v < 0 ? NEGATIVE : POSITIVE}, ${(MAX_ALPHA * Math.abs(v)) / max})` };
-  }
-  const scale = greyScaleOf(flat, { name, format: (v) => fmt(v) });
-  return { signed: false, fill: scale.fill, ink: scale.ink, scale };
-}
-
-/** No shading: the kernel's weights are not grey values. */
-const PLAIN = Object.freeze({ signed: false, fill: () => COLORS.background });
-
-/**
- * A grid of numbers with its top-left at (x0, y0): shaded cells, thin lines,
- * optional column/row numbers (`first` = the number of the first column/row,
- * null for none). Returns its geometry.
- */
-export function drawGrid(ctx, m, x0, y0, cell, { title = null, first = null, shade = shader(m), digits = cell >= GRID.comfortable ? DIGITS : DIGITS - 1, muted = null, valueDy = 0 } = {}) {
-  const rows = m.length;
-  const cols = m[0].length;
-  const texts = []; // the boxes of the numbers written (for label placement)
-  if (title) texts.push(text(ctx, title, x0, y0 - GRID.title / 2 - GRID.axis, { weight: "bold", size: FONT_SIZE }));
-  for (let r = 0; r < rows; r++) {
-    for (let c = 0; c < cols; c++) {
-      const v = m[r][c];
-      ctx.fillStyle = Number.isFinite(v) ? shade.fill(v) : COLORS.background;
-      ctx.fillRect(x0 + c * cell, y0 + r * cell, cell, cell);
-      shade.scale?.note(v, x0 + c * cell, y0 + r * cell, cell, cell);
-      if (cell >= GRID.numbersFrom && Number.isFinite(v)) {
-        const size = cell < 30 ? 9.5 : cell < 40 ? FONT_SIZE_SMALL : FONT_SIZE;
-        texts.push(
-          text(ctx, fmt(v, digits), x0 + (c + 0.5) * cell, y0 + (r + 0.5 + valueDy) * cell, {
-            align: "center",
-            size,
-            color: muted && muted(c, r) ? COLORS.muted : shade.ink ? shade.ink(v) : COLORS.ink,
-          }),
-        );
-      }
-    }
-  }
-  for (let i = 0; i <= rows; i++) line(ctx, x0, y0 + i * cell, x0 + cols * cell, y0 + i * cell, { color: COLORS.grid });
-  for (let i = 0; i <= cols; i++) line(ctx, x0 + i * cell, y0, x0 + i * cell, y0 + rows * cell, { color: COLORS.grid });
-  if (first) {
-    const step = Math.max(1, Math.ceil(28 / cell));
-    for (let c = 0; c < cols; c += step) {
-      texts.push(text(ctx, String(first.c + c), x0 + (c + 0.5) * cell, y0 - GRID.axis / 2, { align: "center", size: 10, color: COLORS.muted }));
-    }
-    for (let r = 0; r < rows; r += step) {
-      texts.push(text(ctx, String(first.r + r), x0 - 4, y0 + (r + 0.5) * cell, { align: "right", size: 10, color: COLORS.muted }));
-    }
-  }
-  return { x0, y0, cell, rows, cols, w: cols * cell, h: rows * cell, texts };
-}
-
-/** Outlines cells [c, c+w) × [r, r+h) of a grid. */
-export function outline(ctx, g, c, r, w, h, { color = COLORS.highlight, width = 2.5, dash = null, fill = null } = {}) {
-  ctx.save();
-  if (fill) {
-    ctx.fillStyle = fill;
-    ctx.fillRect(g.x0 + c * g.cell, g.y0 + r * g.cell, w * g.cell, h * g.cell);
-  }
-  ctx.strokeStyle = color;
-  ctx.lineWidth = width;
-  ctx.setLineDash(dash ? [...dash] : []);
-  ctx.strokeRect(g.x0 + c * g.cell, g.y0 + r * g.cell, w * g.cell, h * g.cell);
-  ctx.restore();
-}
-
-/** The cell of grid `g` under (x, y), or null. */
-export function cellAt(g, x, y) {
-  if (!g) return null;
-  const c = Math.floor((x - g.x0) / g.cell);
-  const r = Math.floor((y - g.y0) / g.cell);
-  return c >= 0 && r >= 0 && c < g.cols && r < g.rows ? { c, r } : null;
-}
-
-/** The colour legend of the diverging scale; (x, y) its left end, vertically centred. */
-function legend(ctx, x, y) {
-  const sw = 12;
-  ctx.fillStyle = `rgba(${NEGATIVE}, ${MAX_ALPHA})`;
-  ctx.fillRect(x, y - sw / 2, sw, sw);
-  let b = text(ctx, "below 0", x + sw + 4, y, { size: FONT_SIZE_SMALL, color: COLORS.muted });
-  const x2 = b.x + b.w + 12;
-  ctx.fillStyle = `rgba(${POSITIVE}, ${MAX_ALPHA})`;
-  ctx.fillRect(x2, y - sw / 2, sw, sw);
-  text(ctx, "above 0", x2 + sw + 4, y, { size: FONT_SIZE_SMALL, color: COLORS.muted });
-}
+import { isMatrix, stepValue } from "../values.js";
+import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, GRID, LINE_HEIGHT, PLAIN_SHADE, cellAt, drawGrid, fmt, greyLegend, outline, shader, signedLegend, signedMatrix, text, textBlock, textWidth, wrapWords } from "./draw.js";
 
 // ---------------------------------------------------------------------------
 // What the figures read from a solution
@@ -359,7 +222,7 @@ function drawFigure(ctx, width, d) {
       }
     } else if (p.kind === "kernel") {
       // weights, not grey values: shaded only on the diverging scale when some are negative
-      const shade = signedMatrix(p.mat) ? shader(p.mat) : PLAIN;
+      const shade = signedMatrix(p.mat) ? shader(p.mat) : PLAIN_SHADE;
       drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width), shade });
       signed = signed || shade.signed;
     } else if (p.kind === "median") {
@@ -386,7 +249,7 @@ function drawFigure(ctx, width, d) {
     greyLegend(ctx, GRID.margin, ly, scale, { maxWidth: width - 2 * GRID.margin });
     ly += GRID.legendLine;
   }
-  if (signed) legend(ctx, GRID.margin, ly + GREY_LEGEND.height / 2);
+  if (signed) signedLegend(ctx, GRID.margin, ly + GREY_LEGEND.height / 2);
   return { L, geo };
 }
 

@@ -6,16 +6,14 @@
 //     (magnified), the candidates and the interest points; then the window
 //     and N as above.
 
-import { formatNumber } from "../format.js";
-import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, Labels, arrow, dot, finite, greyLegend, greyScale, greyScaleOf, line, text, textBlock, textWidth } from "./draw.js";
+import { isMatrix, stepValue } from "../values.js";
+import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, Labels, arrow, dot, finite, fmt, greyLegend, greyScale, greyScaleOf, line, text, textBlock, textWidth } from "./draw.js";
 
 /** Layout constants (CSS px). */
 const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26, greyLegend: GREY_LEGEND.height + 8 });
 const ELLIPSE = Object.freeze({ height: 290, panelMin: 200, clip: 2.6, margin: 14 });
 const MORAVEC = Object.freeze({ maxCell: 46, panelGap: 14, textLines: 6, minPanel: 200, compactPanel: 150, maxShown: 4, overviewMin: 26, overviewMax: 48, key: 20 });
 const IMAGE = Object.freeze({ margin: 14, maxSide: 620, tRadiusCells: 1, clip: 3 });
-/** Digits in figure labels. */
-const DIGITS = 4;
 /** The four Moravec directions, in the order of the core's `diffs`. */
 const DIRECTIONS = Object.freeze([
   { name: "row", glyph: "→", from: [-1, 0], to: [1, 0], key: "pixelSystem" },
@@ -24,20 +22,8 @@ const DIRECTIONS = Object.freeze([
   { name: "other diagonal", glyph: "↙", from: [1, -1], to: [-1, 1], key: "point" },
 ]);
 
-const fmt = (v, d = DIGITS) => (typeof v === "number" && Number.isFinite(v) ? formatNumber(v, d) : "—");
 
-/** The last step value named `key`. */
-function stepValue(solution, key) {
-  let found;
-  for (const step of solution.steps ?? []) {
-    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
-  }
-  return found;
-}
 
-function isMatrix(m) {
-  return Array.isArray(m) && m.length > 0 && m.every((r) => Array.isArray(r) && r.length === m[0].length);
-}
 
 /** The shared grey scale (draw.js: dark = low, as in an image) over a window's values. */
 const windowScale = (win) => greyScaleOf(win, { name: "Window", format: (v) => fmt(v, 5) });

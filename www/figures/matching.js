@@ -8,7 +8,7 @@
 //     parameters against the iteration number.
 
 import { formatNumber } from "../format.js";
-import { COLORS, FONT_SIZE_SMALL, GREY_LEGEND, dot, finite, greyLegend, greyScaleOf, line, text, textWidth, wrapWords } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, GREY_LEGEND, dot, drawGrid, finite, greyLegend, greyScaleOf, line, text, textWidth, wrapWords } from "./draw.js";
 
 const PAD = Object.freeze({ left: 44, right: 16, top: 34, bottom: 38 });
 const DOT = 4;
@@ -175,38 +175,6 @@ function gridNotes(w, { template, diff }) {
   return [...wrapWords("dL = template − (a·Gₛ + b); grey scales stretched per grid", max, FONT_SIZE_SMALL), ...wrapWords(`dL: orange positive, blue negative, up to ±${f(dmax)}; rms ${f(rms)}`, max, FONT_SIZE_SMALL)];
 }
 
-/**
- * A matrix as a grid of cells `cell` CSS px wide, coloured by `rgb(v)`: one
- * image pixel a cell, drawn enlarged without smoothing (one drawImage, not a
- * fillRect per cell); the numbers in the cells where they fit.
- */
-function drawGrid(ctx, m, x, y, cell, rgb, digits, scale = null) {
-  const rows = m.length;
-  const cols = Math.max(0, ...m.map((row) => row.length));
-  if (!rows || !cols) return;
-  const image = new ImageData(cols, rows);
-  m.forEach((row, j) =>
-    row.forEach((v, i) => {
-      const [r, g, b] = rgb(v);
-      image.data.set([r, g, b, 255], 4 * (j * cols + i));
-      scale?.note(v, x + i * cell, y + j * cell, cell, cell);
-    }),
-  );
-  const pixels = document.createElement("canvas");
-  pixels.width = cols;
-  pixels.height = rows;
-  pixels.getContext("2d").putImageData(image, 0, 0);
-  ctx.save();
-  ctx.imageSmoothingEnabled = false;
-  ctx.drawImage(pixels, x, y, cols * cell, rows * cell);
-  ctx.restore();
-  if (cell >= CELL_TEXT_MIN) {
-    m.forEach((row, j) => row.forEach((v, i) => text(ctx, formatNumber(v, digits), x + (i + 0.5) * cell, y + (j + 0.5) * cell, { size: FONT_SIZE_SMALL, align: "center", halo: true })));
-  }
-  ctx.strokeStyle = COLORS.frameStroke;
-  ctx.strokeRect(x + 0.5, y + 0.5, (m[0]?.length ?? 0) * cell - 1, m.length * cell - 1);
-}
-
 function gridsDraw(ctx, w, h, solution, state) {
   const { template, patch, diff, k, n } = gridsData(solution, state);
   const rows = template.length;
@@ -223,14 +191,18 @@ function gridsDraw(ctx, w, h, solution, state) {
   text(ctx, `iteration ${k + 1} of ${n} — ${statusWords(solution)} after ${n}`, left, 12, { weight: "bold" });
   const titles = ["template", "resampled Gₛ", "difference dL"];
   const grids = [
-    [template, tScale.rgb, 4, tScale],
-    [patch, pScale.rgb, 4, pScale],
-    [diff, (v) => divergingRgb(v, dmax), 3, null],
+    [template, tScale, 4],
+    [patch, pScale, 4],
+    [diff, { fill: (v) => `rgb(${divergingRgb(v, dmax).join(", ")})` }, 3],
   ];
-  grids.forEach(([m, color, digits, scale], g) => {
+  grids.forEach(([m, shade, digits], g) => {
     const x = left + g * (gw + GRID_GAP);
     text(ctx, titles[g], x, top - 10, { size: FONT_SIZE_SMALL, color: COLORS.muted });
-    if (m.length) drawGrid(ctx, m, x, top, cell, color, digits, scale);
+    if (!m.length || !m[0]?.length) return;
+    // one pixel a cell, no lines between them; the numbers where they fit; a frame round the grid
+    drawGrid(ctx, m, x, top, cell, { shade: { fill: shade.fill, ink: shade.ink, scale: shade.note ? shade : null }, digits, numbersFrom: CELL_TEXT_MIN, lines: false });
+    ctx.strokeStyle = COLORS.frameStroke;
+    ctx.strokeRect(x + 0.5, top + 0.5, m[0].length * cell - 1, m.length * cell - 1);
   });
   let legendY = top + rows * cell + 6;
   for (const scale of patch.length ? [tScale, pScale] : [tScale]) {

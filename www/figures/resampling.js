@@ -4,8 +4,8 @@
 //     of the bilinear interpolation with their weights, I1 and I2 on the two
 //     rows, and the sixteen pixels of the cubic convolution when they exist.
 
-import { COLORS, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, dot, line, text, textBlock, textWidth } from "./draw.js";
-import { GRID, drawGrid, fmt, isMatrix, outline, stepValue } from "./filters.js";
+import { isMatrix, stepValue } from "../values.js";
+import { COLORS, FONT_SIZE_SMALL, GRID, LINE_HEIGHT, Labels, dot, drawGrid, fmt, line, outline, text, textBlock, textWidth } from "./draw.js";
 
 const R = Object.freeze({
   maxCell: 84,

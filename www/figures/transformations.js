@@ -7,6 +7,7 @@
 //      in either canvas (or the arrow keys) highlights it in both.
 
 import { formatNumber } from "../format.js";
+import { stepValue } from "../values.js";
 import { COLORS, FONT_SIZE_SMALL, Labels, arrow, dot, finite, line, text, textWidth } from "./draw.js";
 
 const PLOT = Object.freeze({
@@ -34,14 +35,6 @@ const TABLE = Object.freeze({
   maxRows: 24, // rows shown at most (the selected point's rows are always shown)
 });
 
-/** The last step value named `key`. */
-function stepValue(solution, key) {
-  let found;
-  for (const step of solution.steps ?? []) {
-    if (step.values && Object.hasOwn(step.values, key)) found = step.values[key];
-  }
-  return found;
-}
 
 function pairs(value) {
   return Array.isArray(value) ? value.filter((p) => Array.isArray(p) && p.length >= 2).map((p) => [finite(p[0]), finite(p[1])]) : [];

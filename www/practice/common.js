@@ -40,6 +40,12 @@ export function renderGivens(entry, inputs) {
   return list;
 }
 
+// The core reads a box's key path itself (src/practice/mod.rs split_key, pick,
+// value_in); practice() does not yet say a box's expected value, so the
+// answer key reads it here, from the solution, in the same way. When a box
+// carries `expected` (asked of the core: BoxInfo.expected) it is used instead
+// and these two go.
+
 /** Splits a box key: "n[1,2]" -> ["n", [1, 2]] (1-based). */
 export function splitKey(key) {
   const m = /^([^[]+)\[([\d,\s]+)\]$/.exec(key);

@@ -4,11 +4,11 @@
 
 import { el } from "../dom.js";
 import { messageOf } from "../core.js";
-import { renderFormula } from "../math.js";
+import { formulaSource, renderFormula } from "../math.js";
 import { expectedValue, keyNumber, renderGivens } from "./common.js";
 import { allProgress } from "./store.js";
+import { siteTitle } from "../site.js";
 
-const SITE_TITLE = "Photogrammetry Playground";
 /** The QR encoder (uqr, bundled by the build into vendor/): loaded only when a worksheet is made. */
 const QR_URL = "../vendor/uqr.js";
 const SVG_NS = "http://www.w3.org/2000/svg";
@@ -76,7 +76,7 @@ function practised(entries, core) {
 
 /** #/practice: progress per topic and the worksheet maker. */
 export function showOverview({ root, core, entries, setStatus }) {
-  document.title = `Practice — ${SITE_TITLE}`;
+  document.title = siteTitle("Practice");
   const ready = practised(entries, core);
   const progress = allProgress();
   const topics = [...new Set(ready.map((e) => e.topic))];
@@ -182,7 +182,7 @@ export async function showWorksheet({ root, core, entries, setStatus }, what, nT
   const hash = sheetHash(withSteps);
   if (location.hash !== hash) history.replaceState(history.state, "", hash);
   const title = what.startsWith("topic:") ? `Worksheet: ${what.slice(6)}` : `Worksheet: ${chosen[0].title}`;
-  document.title = `${title} — ${SITE_TITLE}`;
+  document.title = siteTitle(title);
 
   const encode = await loadQr();
   if (location.hash !== hash) return; // the reader moved on while the encoder loaded
@@ -220,7 +220,7 @@ export async function showWorksheet({ root, core, entries, setStatus }, what, nT
       el(
         "table",
         { class: "ws-key-table" },
-        el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(expectedValue(solution, b.key), b.tolerance)}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
+        el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(typeof b.expected === "number" ? b.expected : expectedValue(solution, b.key), b.tolerance)}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
       ),
       withSteps ? workedSteps(solution) : null,
     );
@@ -252,8 +252,8 @@ function workedSteps(solution) {
         { class: "ws-step" },
         el("h4", { class: "ws-step-title" }, step.title),
         step.text ? el("p", { class: "ws-step-text" }, step.text) : null,
-        step.formula ? renderFormula(step.formula, "formula") : null,
-        step.substituted ? renderFormula(step.substituted, "formula") : null,
+        step.formula ? renderFormula(formulaSource(step, "symbolic"), "formula") : null,
+        step.substituted ? renderFormula(formulaSource(step, "substituted"), "formula") : null,
       ),
     ),
   );

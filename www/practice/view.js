@@ -10,13 +10,13 @@
 
 import { el } from "../dom.js";
 import { messageOf } from "../core.js";
-import { renderFormula } from "../math.js";
+import { formulaSource, renderFormula, texSource } from "../math.js";
 import { renderGivens } from "./common.js";
 import { postAnswer } from "./events.js";
 import { loadProgress, saveProgress } from "./store.js";
 import { showOverview, showWorksheet } from "./sheets.js";
+import { siteTitle } from "../site.js";
 
-const SITE_TITLE = "Photogrammetry Playground";
 const STYLESHEET = "./practice/practice.css";
 /** The rungs of a box's hint ladder. */
 const RUNGS = ["A nudge", "The formula", "The formula with this variant's numbers", "The worked step"];
@@ -102,7 +102,7 @@ export async function showPractice({ root, core, entries, id, params, mode, setS
 }
 
 function message(ctx, title, text, id = null) {
-  document.title = `${title} — ${SITE_TITLE}`;
+  document.title = siteTitle(title);
   const back = id ? el("a", { href: `#/${encodeURIComponent(id)}` }, "← The worked example") : el("a", { href: "#/practice" }, "← All practice");
   ctx.root.replaceChildren(el("section", { class: "message" }, el("h2", {}, title), el("p", {}, text), el("p", {}, back)));
   ctx.setStatus("message");
@@ -117,7 +117,7 @@ function buildVariant(ctx, entry, variant, answers) {
   const hintsShown = {};
   const checked = new Set(Object.keys(answers).filter((k) => answers[k]));
 
-  document.title = `Practice: ${entry.title} — ${SITE_TITLE}`;
+  document.title = siteTitle(`Practice: ${entry.title}`);
   const score = el("p", { class: "practice-score", role: "status" });
   const revealed = el("p", { class: "practice-revealed muted" });
   const saveNote = el("p", { class: "muted practice-save", hidden: true }, "Your answers cannot be kept in this browser (storage is off); they stay until you leave the page.");
@@ -238,15 +238,15 @@ function buildVariant(ctx, entry, variant, answers) {
     const rung = RUNGS[n - 1];
     const part = el("div", { class: "hint", "data-rung": String(n) }, el("p", { class: "hint-rung" }, `${n}. ${rung}`));
     if (n === 1) part.append(el("p", {}, h.nudge || "Look at what the givens say about this value."));
-    if (n === 2) part.append(h.formula ? renderFormula(h.formula, "formula") : el("p", {}, "This value is read off the worked step."));
-    if (n === 3) part.append(h.numbers ? renderFormula(h.numbers, "formula") : el("p", {}, "The step below has the numbers."));
+    if (n === 2) part.append(h.formula ? renderFormula(texSource(h.formula), "formula") : el("p", {}, "This value is read off the worked step."));
+    if (n === 3) part.append(h.numbers ? renderFormula(texSource(h.numbers), "formula") : el("p", {}, "The step below has the numbers."));
     if (n === 4) {
       try {
         const step = worked().steps[h.step];
         part.append(el("h4", { class: "hint-step-title" }, step.title));
         if (step.text) part.append(el("p", {}, step.text));
-        if (step.formula) part.append(renderFormula(step.formula, "formula"));
-        if (step.substituted) part.append(renderFormula(step.substituted, "formula"));
+        if (step.formula) part.append(renderFormula(formulaSource(step, "symbolic"), "formula"));
+        if (step.substituted) part.append(renderFormula(formulaSource(step, "substituted"), "formula"));
       } catch (e) {
         part.append(el("p", {}, `The worked step could not be shown: ${messageOf(e)}`));
       }
