@@ -1,32 +1,12 @@
-// The lab's pure helpers in Node: the custom kernel's parser (the same rules
-// and messages as lab/src/ops.rs's custom_kernel), the k×k mean kernel, and
-// the fiducial residual arrows' scale.
+// The lab's pure helpers in Node: the k×k mean kernel, the fiducial residual
+// arrows' scale, the link's state, and the explain links (their example found
+// in the catalog by family and reading). (A custom kernel is checked by the
+// lab's wasm module in its worker: tests/e2e/lab-interact.test.mjs.)
 
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { parseKernel, meanKernel, MAX_KERNEL } from "../../www/lab/families.js";
-import { niceFloor, residualArrows } from "../../www/lab/families2.js";
-
-test("a custom kernel is parsed with the Rust side's rules and messages", () => {
-  assert.deepEqual(parseKernel("1, 2, 1; 2 4 2\n 1 2 1 "), { rows: [[1, 2, 1], [2, 4, 2], [1, 2, 1]], divisor: 16, width: 3, height: 3, normalised: true });
-  assert.equal(parseKernel("-1 0 1", "2").divisor, 2);
-  assert.equal(parseKernel("1e1 -.5 +3").rows[0][1], -0.5);
-  const big = Array.from({ length: MAX_KERNEL + 2 }, () => "1 ".repeat(MAX_KERNEL + 2)).join("\n");
-  for (const [text, d, field, says] of [
-    ["1 2 x", "", "custom_kernel", 'row 1: "x" is not a number'],
-    ["1 2 0x10", "", "custom_kernel", 'row 1: "0x10" is not a number'],
-    ["1 2 1\n2 4", "", "custom_kernel", "row 2 has 2 numbers but row 1 has 3; every row needs the same number"],
-    ["1 1\n1 1", "", "custom_kernel", "is 2×2 (rows × columns); a kernel needs an odd number of rows and of columns, so that it has a centre pixel"],
-    [big, "", "custom_kernel", "is 17×17 (rows × columns); at most 15×15 is allowed"],
-    [" \n ", "", "custom_kernel", "is empty; type rows of numbers, e.g. 1 2 1 / 2 4 2 / 1 2 1 on three lines"],
-    ["0 0 0", "", "custom_kernel", "all weights are 0: the result would be 0 everywhere"],
-    ["-1 0 1", "", "custom_divisor", "the weights sum to 0, so the kernel cannot be normalised; give a divisor (1 applies it as written)"],
-    ["1 2 1", "0", "custom_divisor", "must be a finite number other than 0"],
-    ["1 2 1", "abc", "custom_divisor", "must be a finite number other than 0"],
-  ]) {
-    assert.deepEqual(parseKernel(text, d), { field, error: says }, text);
-  }
-});
+import { meanKernel } from "../../www/lab/families/filters.js";
+import { niceFloor, residualArrows } from "../../www/lab/families/fiducials.js";
 
 test("the k×k mean kernel, and the residual arrows' nice scale", () => {
   assert.deepEqual(meanKernel(3), { rows: [[1, 1, 1], [1, 1, 1], [1, 1, 1]], divisor: 9, width: 3, height: 3 });
@@ -42,7 +22,7 @@ test("the k×k mean kernel, and the residual arrows' nice scale", () => {
 
 test("the lab's link: its state's entries in a fixed order, samples by name, the start sample, the engine's words", async () => {
   const { stateEntries, sampleOf, startSample, engineWords } = await import("../../www/lab/lab.js");
-  const { filterLink, customFilterLink, edgeLink } = await import("../../www/lab/explain.js");
+  const { filterLink, customFilterLink, edgeLink, useCatalog, exampleFor } = await import("../../www/lab/explain.js");
   assert.deepEqual(stateEntries({ sample: "chessboard", family: "filters", controls: [["kernel", "mean"], ["border", "replicate"]], run: true, layer: "mean", mode: "over", opacity: "0.7", pick: [320, 240], view: { zoom: 3.14159, c: 320.4, r: 239.6 } }), [
     ["sample", "chessboard"], ["family", "filters"], ["kernel", "mean"], ["border", "replicate"], ["run", "1"], ["layer", "mean"], ["c", "320"], ["r", "240"], ["zoom", "3.142"], ["vc", "320"], ["vr", "240"],
   ]);
@@ -56,6 +36,13 @@ test("the lab's link: its state's entries in a fixed order, samples by name, the
   assert.deepEqual(["filters", "correlation", "fiducials"].map(startSample), ["left01.jpg", "aero1.jpg", "frame"]);
   assert.equal(engineWords("simd128", 1), "fast (SIMD), 1 thread");
   assert.equal(engineWords("scalar", 4), "standard (no SIMD), 4 threads for filters and edges");
+  // the example a link opens is the catalog's: the entry whose lab family and readings name it
+  useCatalog([]);
+  assert.equal(filterLink("mean", Array(25).fill(1), 5), null);
+  useCatalog([{ id: "ex-f", lab: "filters", explains: ["window"] }, { id: "ex-e", lab: "edges", explains: ["window"] }, { id: "gsd" }]);
+  assert.deepEqual([exampleFor("filters", "window"), exampleFor("edges", "window"), exampleFor("filters", "rho")], ["ex-f", "ex-e", null]);
+  assert.match(filterLink("mean", Array(25).fill(1), 5).hash, /^#\/ex-f\?/);
+  assert.equal(edgeLink("sobel", Array(25).fill(1), "gx").id, "ex-e");
   // explain links select the window's centre: the lab's pixel
   const q = (l) => new URLSearchParams(l.hash.split("?")[1]);
   const f = filterLink("gaussian-5", Array(49).fill(1), 7);

@@ -1,9 +1,32 @@
 // "Explain this pixel": the worked example, as a normal shareable URL, whose
 // inputs are the window of numbers the lab used at one output pixel, and
 // where in that example's result the same number is (`key`, `index`).
-// Pure functions: rows of numbers in, a hash out (through url.js).
+// Rows of numbers in, a link out ({ id, hash, key, index }, through url.js).
+// Which example explains what is the catalog's word, not this file's: each
+// catalog entry names its lab family (`lab`) and the lab readings it
+// `explains`; a link is null when the catalog names no example for it.
 
 import { buildHash, MAX_URL_VALUE_LENGTH } from "../url.js";
+
+/** "family reading" → the id of the example that explains it (from useCatalog). */
+let explainers = new Map();
+
+/** Takes the catalog's entries (core.js loadCatalog()): the examples the lab links to, by family and reading. */
+export function useCatalog(entries) {
+  explainers = new Map();
+  for (const e of entries) for (const reading of e.explains ?? []) explainers.set(`${e.lab} ${reading}`, e.id);
+}
+
+/** The id of the worked example that explains `reading` of lab family `family`, or null. */
+export function exampleFor(family, reading) {
+  return explainers.get(`${family} ${reading}`) ?? null;
+}
+
+/** A link to the example explaining `family`'s `reading`, with `entries` as its inputs: { id, hash, key, index } or null. */
+function linkTo(family, reading, entries, key) {
+  const id = exampleFor(family, reading);
+  return id ? { id, hash: buildHash(id, entries), key, index: null } : null;
+}
 
 /** Rows of numbers as the matrix text the forms read ("1,2,3;4,5,6"). */
 export function matrixText(rows) {
@@ -37,11 +60,7 @@ export function centreSelection(w, h) {
  * (its answer line) and the centre of its 3×3 `output` are the lab's value.
  */
 export function filterLink(kernel, window, side) {
-  return {
-    hash: buildHash("filter-window", [["window", matrixText(toRows(window, side))], ["kernel", kernel], ...centreSelection(side, side)]),
-    key: "selected",
-    index: null,
-  };
+  return linkTo("filters", "window", [["window", matrixText(toRows(window, side))], ["kernel", kernel], ...centreSelection(side, side)], "selected");
 }
 
 /**
@@ -51,17 +70,13 @@ export function filterLink(kernel, window, side) {
  */
 export function customFilterLink(rows, divisor, window, w) {
   const h = window.length / w;
-  return {
-    hash: buildHash("filter-window", [
-      ["window", matrixText(toRows(window, w))],
-      ["kernel", "custom"],
-      ["custom_kernel", matrixText(rows)],
-      ["custom_divisor", String(divisor)],
-      ...centreSelection(w, h),
-    ]),
-    key: "selected",
-    index: null,
-  };
+  return linkTo("filters", "window", [
+    ["window", matrixText(toRows(window, w))],
+    ["kernel", "custom"],
+    ["custom_kernel", matrixText(rows)],
+    ["custom_divisor", String(divisor)],
+    ...centreSelection(w, h),
+  ], "selected");
 }
 
 /**
@@ -74,12 +89,8 @@ export function customFilterLink(rows, divisor, window, w) {
  */
 export function edgeLink(operator, window, layerName) {
   const dir = layerName === "direction";
-  return {
-    hash: buildHash("edge-window", [["window", matrixText(toRows(window, 5))], ["operator", operator], ...centreSelection(5, 5)]),
-    key: dir ? "selected_gx" : `selected_${layerName}`,
-    index: null,
-    ...(dir ? { derive: { keys: ["selected_gx", "selected_gy"], words: "Gx and Gy at the selected pixel", formula: "atan2(Gy, Gx) in degrees" } } : {}),
-  };
+  const l = linkTo("edges", "window", [["window", matrixText(toRows(window, 5))], ["operator", operator], ...centreSelection(5, 5)], dir ? "selected_gx" : `selected_${layerName}`);
+  return l && dir ? { ...l, derive: { keys: ["selected_gx", "selected_gy"], words: "Gx and Gy at the selected pixel", formula: "atan2(Gy, Gx) in degrees" } } : l;
 }
 
 /** The lab's edge direction from gx and gy: atan2(gy, gx) in degrees (as `ops::edges`). */
@@ -89,47 +100,31 @@ export function direction(gx, gy) {
 
 /** forstner-window: the window whose anchor is the pixel. */
 export function forstnerLink(window, size, sigmaN, thresholdPx, layerName) {
-  return {
-    hash: buildHash("forstner-window", [
-      ["window", matrixText(toRows(window, size))],
-      ["sigma_n", String(sigmaN)],
-      ["threshold_px", String(thresholdPx)],
-    ]),
-    key: layerName === "q" ? "q" : "w",
-    index: null,
-  };
+  return linkTo("interest", "forstner", [
+    ["window", matrixText(toRows(window, size))],
+    ["sigma_n", String(sigmaN)],
+    ["threshold_px", String(thresholdPx)],
+  ], layerName === "q" ? "q" : "w");
 }
 
 /** moravec-window: the window whose anchor is the pixel; its `mean`. */
 export function moravecLink(window, size) {
-  return {
-    hash: buildHash("moravec-window", [["window", matrixText(toRows(window, size))]]),
-    key: "mean",
-    index: null,
-  };
+  return linkTo("interest", "moravec", [["window", matrixText(toRows(window, size))]], "mean");
 }
 
 /** ncc-2d: the template and the same-sized window of the search image at that position. */
 export function nccLink(template, window, w) {
-  return {
-    hash: buildHash("ncc-2d", [["a", matrixText(toRows(template, w))], ["b", matrixText(toRows(window, w))]]),
-    key: "rho",
-    index: null,
-  };
+  return linkTo("correlation", "rho", [["a", matrixText(toRows(template, w))], ["b", matrixText(toRows(window, w))]], "rho");
 }
 
 /** subpixel-2d: the 3×3 ρ round the best position, at the lab's (0-based) pixel positions. */
 export function subpixelLink(best, around) {
   const [c, r] = best;
-  return {
-    hash: buildHash("subpixel-2d", [
-      ["c", [c - 1, c, c + 1].join(",")],
-      ["r", [r - 1, r, r + 1].join(",")],
-      ["rho", matrixText(toRows(around, 3))],
-    ]),
-    key: "c_max",
-    index: null,
-  };
+  return linkTo("correlation", "subpixel", [
+    ["c", [c - 1, c, c + 1].join(",")],
+    ["r", [r - 1, r, r + 1].join(",")],
+    ["rho", matrixText(toRows(around, 3))],
+  ], "c_max");
 }
 
 /** The longest value a link carries (url.js reads at most MAX_URL_VALUE_LENGTH characters of one). */
@@ -153,7 +148,7 @@ export function lsmLink(template, tw, search, sw, start, model = "shift-radiomet
     ["a0", "1"],
     ["b0", "0"],
   ];
-  return fits(entries) ? { hash: buildHash("lsm-2d", entries), key: "c", index: null } : null;
+  return fits(entries) ? linkTo("correlation", "lsm", entries, "c") : null;
 }
 
 /**
@@ -169,31 +164,23 @@ export function lsmAffineLink(template, tw, search, sw, start) {
     ["c0", String(start[0] + 1)],
     ["r0", String(start[1] + 1)],
   ];
-  return fits(entries) ? { hash: buildHash("lsm-affine", entries), key: "parameters", index: null } : null;
+  return fits(entries) ? linkTo("correlation", "affine-lsm", entries, "parameters") : null;
 }
 
 /** resample: the 4×4 patch round (x, y), its first pixel, the position. */
 export function resampleLink(patch, firstC, firstR, x, y, method) {
-  return {
-    hash: buildHash("resample", [
-      ["patch", matrixText(toRows(patch, 4))],
-      ["first_c", String(firstC)],
-      ["first_r", String(firstR)],
-      ["c", String(x)],
-      ["r", String(y)],
-    ]),
-    key: method,
-    index: null,
-  };
+  return linkTo("resampling", "window", [
+    ["patch", matrixText(toRows(patch, 4))],
+    ["first_c", String(firstC)],
+    ["first_r", String(firstR)],
+    ["c", String(x)],
+    ["r", String(y)],
+  ], method);
 }
 
 /** chain-code: the traced boundary as [c, r] rows. */
 export function chainLink(pixels) {
   const rows = [];
   for (let i = 0; i < pixels.length; i += 2) rows.push([pixels[i], pixels[i + 1]]);
-  return {
-    hash: buildHash("chain-code", [["pixels", matrixText(rows)]]),
-    key: "code",
-    index: null,
-  };
+  return linkTo("boundaries", "code", [["pixels", matrixText(rows)]], "code");
 }

@@ -6,12 +6,21 @@
 import { el } from "../dom.js";
 import { GREY_WORDS, SIGNED_NEGATIVE, SIGNED_POSITIVE, SIGNED_WORDS, rgbText } from "../colour-scales.js";
 import { buildHash, parseHash } from "../url.js";
+import { loadCatalog } from "../core.js";
 import { LabClient } from "./client.js";
+import { useCatalog } from "./explain.js";
 import { Viewer, fmt } from "./view.js";
-import { FAMILIES as BASIC } from "./families.js";
-import { MORE_FAMILIES } from "./families2.js";
+import { testHook, testing } from "../test-hooks.js";
+import filters from "./families/filters.js";
+import edges from "./families/edges.js";
+import interest from "./families/interest.js";
+import correlation from "./families/correlation.js";
+import resampling from "./families/resampling.js";
+import boundaries from "./families/boundaries.js";
+import fiducials from "./families/fiducials.js";
 
-const FAMILIES = [...BASIC, ...MORE_FAMILIES];
+/** The operator families (www/lab/families/<family>.js), in the menu's order. */
+const FAMILIES = [filters, edges, interest, correlation, resampling, boundaries, fiducials];
 
 /**
  * Bundled samples (www/lab/samples/SOURCE.md says where each comes from);
@@ -229,8 +238,24 @@ export function truthForTests() {
   return Object.fromEntries(Object.entries(t).map(([k, v]) => [k, typeof v === "number" ? v : Array.from(v)]));
 }
 
-/** Test hook: makes the worker's wasm trap (the lab must recover). */
+/** Test hook: resolves when no request runs and none follows (Lab.settle). */
+export function settledForTests() {
+  return current?.settle();
+}
+
+/**
+ * Test hook: resolves with the next progress message of a running request
+ * ({ progress, rows, of }), in the task that receives it: whatever the test
+ * does then (a new slider value, Cancel) happens while that request is still
+ * running as far as the page knows, however fast the machine.
+ */
+export function progressForTests() {
+  return new Promise((resolve) => (current.progressWaiters ??= []).push(resolve));
+}
+
+/** Test hook: makes the worker's wasm trap (the lab must recover); only under the tests (test-hooks.js). */
 export function trapForTests() {
+  if (!testing) throw new Error("trapForTests: only under the end-to-end tests");
   return current?.run("trap", {}, "Trapping");
 }
 
@@ -269,7 +294,7 @@ class Lab {
     this.restored = this.restore().catch((e) => this.showError(`The lab's link could not be restored: ${e.message}`)).finally(() => {
       this.restoring = false;
       this.saveState();
-      document.body.dataset.labRestored = "1";
+      testHook("labRestored", "1");
     });
   }
 
@@ -309,7 +334,7 @@ class Lab {
     };
     const hash = buildHash("lab", stateEntries(st));
     if (location.hash !== hash) history.replaceState(history.state, "", hash);
-    document.body.dataset.labState = hash;
+    testHook("labState", hash);
   }
 
   /** Resolves when no request runs (and none followed within a tick: a live result may ask for the next). */
@@ -328,6 +353,8 @@ class Lab {
 
   /** The state of the link, restored: the photo, the family and its controls, the run, the layer, the pixel, the view. */
   async restore() {
+    // the examples the lab links to, by family and reading (explain.js)
+    useCatalog(await loadCatalog());
     const p = this.params;
     const family = this.familySelect.value;
     const named = p.has("sample") ? sampleOf(p.get("sample")) : null;
@@ -383,7 +410,7 @@ class Lab {
     if (this.notice.dataset.tap) this.say("");
     this.picked = [c, r];
     this.viewer.setMark(PICK_FAMILIES.has(this.familySelect.value) ? [c, r] : null);
-    document.body.dataset.picked = `${c},${r}`;
+    testHook("picked", `${c},${r}`);
     await this.family?.pick?.(c, r, pos);
     this.saveState();
   }
@@ -577,10 +604,11 @@ class Lab {
     // several requests may overlap (a live slider's new run starts while the
     // cancelled one winds down): idle only when the last one ends
     this.active = (this.active ?? 0) + 1;
-    document.body.dataset.lab = "busy";
+    testHook("lab", "busy");
     try {
       const result = await this.client.call(type, args, transfer, (p) => {
         done = p;
+        for (const w of (this.progressWaiters ?? []).splice(0)) w(p);
       });
       return result;
     } catch (e) {
@@ -598,7 +626,7 @@ class Lab {
         this.cancelledByUser = false;
         this.progress.hidden = true;
         this.progress.replaceChildren();
-        document.body.dataset.lab = "idle";
+        testHook("lab", "idle");
       }
     }
   }
@@ -700,7 +728,7 @@ class Lab {
         ", licence ",
         sample.licence === "Apache-2.0" ? el("a", { href: here("LICENSE-Apache-2.0.txt"), id: "lab-sample-licence", title: "The Apache License 2.0, full text" }, sample.licence) : sample.licence)
       : "");
-    document.body.dataset.image = img.name;
+    testHook("image", img.name);
     this.family?.imageChanged?.();
     this.saveState();
   }
@@ -752,7 +780,7 @@ class Lab {
       el("span", { class: "muted" }, ` (values from ${fmt(scale.min)} to ${fmt(scale.max)}; ${scale.signed ? SIGNED_WORDS : GREY_WORDS})`),
     );
     this.legend.hidden = false;
-    document.body.dataset.layer = layer.name;
+    testHook("layer", layer.name);
     this.saveState();
   }
 

@@ -16,6 +16,8 @@
 //
 //   live.request({ type, args, label, cancel, apply })
 
+import { testHook } from "../test-hooks.js";
+
 export class Live {
   constructor(lab, name) {
     this.lab = lab;
@@ -45,7 +47,7 @@ export class Live {
         return Promise.resolve();
       }
       this.cancels++;
-      document.body.dataset[`${this.name}Cancels`] = String(this.cancels);
+      testHook(`${this.name}Cancels`, String(this.cancels));
       this.lab.say(`${this.running.label}: stopped for the newer setting (the last result stays on screen until the new one is ready).`);
       this.running = null;
       this.lab.client.cancel();
@@ -56,10 +58,10 @@ export class Live {
 
   async start(req) {
     this.running = req;
-    document.body.dataset[`${this.name}Live`] = "busy";
+    testHook(`${this.name}Live`, "busy");
     const r = await this.lab.run(req.type, req.args, req.label, [], { quietCancel: true });
     if (this.running === req) this.running = null;
-    if (this.lab.client.lastRestartMs !== undefined) document.body.dataset.restartMs = this.lab.client.lastRestartMs.toFixed(0);
+    if (this.lab.client.lastRestartMs !== undefined) testHook("restartMs", this.lab.client.lastRestartMs.toFixed(0));
     if (r && req.gen > this.shown) {
       this.shown = req.gen;
       req.apply(r);
@@ -69,7 +71,7 @@ export class Live {
       this.queued = null;
       if (q.gen > this.shown) return this.start(q);
     }
-    if (!this.running) document.body.dataset[`${this.name}Live`] = "idle";
+    if (!this.running) testHook(`${this.name}Live`, "idle");
     return undefined;
   }
 }

@@ -27,6 +27,10 @@ const ready = (simd ? import("./pkg-simd/photogrammetry_lab.js").then(init).then
   .then((m) => {
     lab = m;
   });
+/** A wasm module whose one export, `trap`, executes `unreachable`. */
+const UNREACHABLE = new Uint8Array([
+  0, 97, 115, 109, 1, 0, 0, 0, 1, 4, 1, 96, 0, 0, 3, 2, 1, 0, 7, 8, 1, 4, 116, 114, 97, 112, 0, 0, 10, 5, 1, 3, 0, 0, 11,
+]);
 /** The images by slot: "a" (the open photo), "b" (the second photo of a pair). */
 const images = {};
 
@@ -217,8 +221,16 @@ const handlers = {
     put(slot, lab.image_from_u8(width, height, new Uint8Array(bytes)));
     return { width, height };
   },
+  /**
+   * The tests' trap (lab.js trapForTests): a wasm `unreachable` executed in
+   * this worker, a WebAssembly.RuntimeError as a trap of the lab's module
+   * throws, so that the page's recovery (a fresh worker, the photo put back)
+   * runs as after a real one. The lab's module has no trapping export (its
+   * trap_for_tests is in the tests' builds only: lab/tests/web_lab.rs traps
+   * an instance of it and shows a fresh one working).
+   */
   trap() {
-    lab.trap_for_tests();
+    new WebAssembly.Instance(new WebAssembly.Module(UNREACHABLE)).exports.trap();
   },
   /** Which build runs: "simd128" or "scalar", and whether the browser has SIMD. */
   engine() {
