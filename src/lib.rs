@@ -23,6 +23,9 @@
 //! - [`transform`]: 2-D transformations estimated from point pairs by least squares.
 //! - [`projection`]: ellipsoids, the transverse Mercator (Krüger series and
 //!   Snyder's classical one), UTM zones and bands, degrees-minutes-seconds.
+//! - [`read`]: the one reader of numbers a person types (inputs and
+//!   practice answers): units, fractions, ×10^.
+//! - [`rng`]: the one pseudo-random generator (SplitMix64).
 //! - [`examples`]: the catalog of worked examples, their input fields and the
 //!   solvers that turn core results into steps.
 //! - [`practice`]: practice mode: variant codes and generators, answer
@@ -44,7 +47,9 @@ pub mod matching;
 pub mod practice;
 pub mod projection;
 pub mod raster;
+pub mod read;
 pub mod resample;
+pub mod rng;
 pub mod solution;
 pub mod transform;
 #[cfg(target_arch = "wasm32")]

@@ -56,6 +56,7 @@ use crate::error::{Error, Result};
 use crate::lsq::{self, Adjustment};
 use crate::raster::Grid;
 use crate::resample;
+use crate::rng::Rng;
 
 /// Convergence: largest movement of a patch pixel by one iteration's
 /// increments (px).
@@ -659,29 +660,6 @@ pub fn affine_from(
     }
 }
 
-/// SplitMix64: a tiny deterministic generator (same numbers natively and in
-/// the browser).
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in (0, 1], never 0.
-    fn unit(&mut self) -> f64 {
-        ((self.next() >> 11) as f64 + 1.0) / (1u64 << 53) as f64
-    }
-    /// Standard normal (Box–Muller).
-    fn normal(&mut self) -> f64 {
-        let (u1, u2) = (self.unit(), self.unit());
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-    }
-}
-
 /// Builds the pair: a `size × size` template (`size` odd) and a search
 /// window just large enough for the patch and its border at the start
 /// (identity) and at `truth`, plus two pixels.
@@ -698,7 +676,7 @@ pub fn synthetic_pair(size: usize, truth: &Params, noise: f64, seed: u64) -> Res
     if truth.a.iter().any(|x| !x.is_finite()) {
         return Err(Error::input("parameters", "must be finite"));
     }
-    let mut rng = SplitMix(seed ^ 0x5EED_0003);
+    let mut rng = Rng::new(seed ^ 0x5EED_0003);
     let waves: Vec<(f64, f64, f64, f64)> = (0..6)
         .map(|_| {
             let wavelength = 7.0 + 9.0 * rng.unit();
@@ -760,7 +738,7 @@ fn rng_normal_at(seed: u64, image: u64, i: usize, j: usize) -> f64 {
         .wrapping_add(image << 48)
         .wrapping_add((j as u64) << 24)
         .wrapping_add(i as u64);
-    SplitMix(key).normal()
+    Rng::new(key).normal()
 }
 
 #[cfg(test)]

@@ -255,16 +255,240 @@ impl NoteKeys<'_> {
     }
 }
 
+/// One piece of a formula: LaTeX, or a matrix given by its cells so that
+/// the page can show a long one in blocks without reading LaTeX back.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(untagged)]
+pub enum Piece {
+    Tex { tex: String },
+    Grid { grid: Grid },
+}
+
+/// A matrix of a formula: its environment (`bmatrix`, `pmatrix`, `vmatrix`,
+/// `array`), its rows of cell LaTeX and, when it has one, its name (the
+/// page captions blocks of a long matrix "rows 1–8 of A").
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Grid {
+    pub env: &'static str,
+    pub rows: Vec<Vec<String>>,
+    pub name: Option<String>,
+}
+
+impl Piece {
+    /// The piece as LaTeX.
+    pub fn latex(&self) -> String {
+        match self {
+            Piece::Tex { tex } => tex.clone(),
+            Piece::Grid { grid } => {
+                let body = grid
+                    .rows
+                    .iter()
+                    .map(|r| r.join(" & "))
+                    .collect::<Vec<_>>()
+                    .join(r" \\ ");
+                let cols = grid.rows.iter().map(Vec::len).max().unwrap_or(0);
+                let spec = if grid.env == "array" {
+                    format!("{{{}}}", "r".repeat(cols.max(1)))
+                } else {
+                    String::new()
+                };
+                format!(r"\begin{{{0}}}{spec}{body}\end{{{0}}}", grid.env)
+            }
+        }
+    }
+}
+
+/// One side of a relation: pieces the page may break a line between (the
+/// terms of a long sum are separate pieces; a short form is one piece).
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
+#[serde(transparent)]
+pub struct Form(pub Vec<Piece>);
+
+impl Form {
+    /// A form of several pieces (`["a_0", "+ a_1 x", "+ a_2 y"]`) the page
+    /// may break between.
+    pub fn terms<S: Into<String>>(terms: impl IntoIterator<Item = S>) -> Self {
+        Form(
+            terms
+                .into_iter()
+                .map(|t| Piece::Tex { tex: t.into() })
+                .collect(),
+        )
+    }
+    /// A matrix of numbers (cells formatted with [`num`]) in `env`, named
+    /// `name` for captions ("" for none).
+    pub fn grid(env: &'static str, rows: &[Vec<f64>], name: &str) -> Self {
+        Form::grid_tex(
+            env,
+            rows.iter()
+                .map(|r| r.iter().map(|&x| num(x)).collect())
+                .collect(),
+            name,
+        )
+    }
+    /// A matrix of LaTeX cells.
+    pub fn grid_tex(env: &'static str, rows: Vec<Vec<String>>, name: &str) -> Self {
+        Form(vec![Piece::Grid {
+            grid: Grid {
+                env,
+                rows,
+                name: (!name.is_empty()).then(|| name.to_string()),
+            },
+        }])
+    }
+    /// Appends the pieces of `other` (a product of matrices, a matrix
+    /// with a factor before it).
+    pub fn then(mut self, other: impl Into<Form>) -> Self {
+        self.0.extend(other.into().0);
+        self
+    }
+    /// The form as LaTeX (pieces joined by a space).
+    pub fn latex(&self) -> String {
+        self.0
+            .iter()
+            .map(Piece::latex)
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+impl From<&str> for Form {
+    fn from(t: &str) -> Self {
+        Form(vec![Piece::Tex { tex: t.to_string() }])
+    }
+}
+impl From<String> for Form {
+    fn from(tex: String) -> Self {
+        Form(vec![Piece::Tex { tex }])
+    }
+}
+impl From<&String> for Form {
+    fn from(t: &String) -> Self {
+        Form::from(t.as_str())
+    }
+}
+
+/// One equation (or other relation) of a step: `lhs op symbolic… `, and
+/// with the numbers put in `lhs op substituted… op result…`.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Relation {
+    /// The result or step value this relation computes, if it is one (what
+    /// practice's hints point at).
+    pub key: Option<String>,
+    pub lhs: Form,
+    /// The relation sign as LaTeX: `=`, `\approx`, `<`, `\Rightarrow` ….
+    pub op: String,
+    /// Right-hand sides with symbols, left to right.
+    pub symbolic: Vec<Form>,
+    /// Right-hand sides with the numbers put in.
+    pub substituted: Vec<Form>,
+    /// What it comes to, with its unit (later forms: the same value in
+    /// another unit or rounding).
+    pub result: Vec<Form>,
+}
+
+impl Relation {
+    /// A relation `lhs = …` (add sides with [`sym`](Self::sym),
+    /// [`subst`](Self::subst), [`result`](Self::result)).
+    pub fn new(lhs: impl Into<Form>) -> Self {
+        Relation {
+            key: None,
+            lhs: lhs.into(),
+            op: "=".to_string(),
+            symbolic: Vec::new(),
+            substituted: Vec::new(),
+            result: Vec::new(),
+        }
+    }
+    /// The key of the value it computes.
+    pub fn key(mut self, key: &str) -> Self {
+        self.key = Some(key.to_string());
+        self
+    }
+    /// Another relation sign than `=`.
+    pub fn op(mut self, op: &str) -> Self {
+        self.op = op.to_string();
+        self
+    }
+    /// A right-hand side with symbols.
+    pub fn sym(mut self, f: impl Into<Form>) -> Self {
+        self.symbolic.push(f.into());
+        self
+    }
+    /// A right-hand side with the numbers put in.
+    pub fn subst(mut self, f: impl Into<Form>) -> Self {
+        self.substituted.push(f.into());
+        self
+    }
+    /// What it comes to, as LaTeX (a unit included: [`with_unit`]).
+    pub fn result(mut self, f: impl Into<Form>) -> Self {
+        self.result.push(f.into());
+        self
+    }
+    /// What it comes to: a number ([`num`]) and its unit ("" for none).
+    pub fn value(self, x: f64, unit: &str) -> Self {
+        self.result(with_unit(&num(x), unit))
+    }
+    fn chain(&self, sides: &[&[Form]]) -> String {
+        let mut out = self.lhs.latex();
+        for f in sides.iter().flat_map(|s| s.iter()) {
+            if out.is_empty() {
+                out = f.latex();
+            } else {
+                out = format!("{out} {} {}", self.op, f.latex());
+            }
+        }
+        out
+    }
+    /// `lhs op symbolic…` as LaTeX ("" when it has no symbolic side).
+    pub fn symbolic_latex(&self) -> String {
+        if self.symbolic.is_empty() {
+            return String::new();
+        }
+        self.chain(&[&self.symbolic])
+    }
+    /// `lhs op substituted… op result…` as LaTeX.
+    pub fn substituted_latex(&self) -> String {
+        self.chain(&[&self.substituted, &self.result])
+    }
+    /// `lhs op substituted… op ?`: the numbers without what they come to
+    /// (practice's third hint); "" when nothing is substituted.
+    pub fn question_latex(&self) -> String {
+        if self.substituted.is_empty() {
+            return String::new();
+        }
+        format!(r"{} {} \;?", self.chain(&[&self.substituted]), self.op)
+    }
+}
+
+/// A number or LaTeX value with its unit: `255\,\text{mm}`.
+pub fn with_unit(value: &str, unit: &str) -> String {
+    if unit.is_empty() {
+        value.to_string()
+    } else {
+        format!(r"{value}\,\text{{{unit}}}")
+    }
+}
+
+/// The separator of the relations of one step in its LaTeX strings.
+const RELATIONS_APART: &str = r",\quad ";
+
 /// One step of a worked solution.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Step {
     pub title: String,
     /// Plain text explaining the step.
     pub text: String,
-    /// The formula in LaTeX, with symbols.
+    /// The formula in LaTeX, with symbols (made from `parts`).
     pub formula: String,
-    /// The same formula with the numbers put in (LaTeX).
+    /// The same formula with the numbers put in (LaTeX, made from `parts`).
     pub substituted: String,
+    /// The formula as data: its relations, from which `formula` and
+    /// `substituted` are made (the page lays them out from these).
+    pub parts: Vec<Relation>,
     /// The step's numbers, for figures and tables.
     pub values: Record,
 }
@@ -276,12 +500,31 @@ impl Step {
             text: text.to_string(),
             formula: String::new(),
             substituted: String::new(),
+            parts: Vec::new(),
             values: Record::new(),
         }
     }
+    /// The formula as two LaTeX strings (being replaced by
+    /// [`relation`](Self::relation): a step built this way has no parts).
     pub fn formula(mut self, symbolic: &str, substituted: String) -> Self {
         self.formula = symbolic.to_string();
         self.substituted = substituted;
+        self
+    }
+    /// Adds a relation; `formula` and `substituted` are made again from
+    /// all the relations (the one place LaTeX of a step is put together).
+    pub fn relation(mut self, r: Relation) -> Self {
+        self.parts.push(r);
+        let join = |f: fn(&Relation) -> String| {
+            self.parts
+                .iter()
+                .map(f)
+                .filter(|t| !t.is_empty())
+                .collect::<Vec<_>>()
+                .join(RELATIONS_APART)
+        };
+        self.formula = join(Relation::symbolic_latex);
+        self.substituted = join(Relation::substituted_latex);
         self
     }
     pub fn value(mut self, key: &str, v: impl Into<Value>) -> Self {
@@ -496,6 +739,38 @@ mod tests {
             exact_minus_printed_share(8.19, 8.255, "mm"),
             "exact − printed = −0.065 mm = −0.79 % of the printed value"
         );
+    }
+
+    #[test]
+    fn a_step_s_latex_is_made_from_its_relations() {
+        let step = Step::new("GSD", "")
+            .relation(
+                Relation::new("GSD")
+                    .key("gsd_cm")
+                    .sym(r"\frac{p H}{c}")
+                    .subst(r"\frac{0.028 \cdot 1000}{152}")
+                    .value(0.18421, "mm")
+                    .result(with_unit("0.018421", "cm")),
+            )
+            .relation(
+                Relation::new("k")
+                    .op(r"\approx")
+                    .subst("2 + 2")
+                    .value(4.0, ""),
+            );
+        assert_eq!(step.formula, r"GSD = \frac{p H}{c}");
+        assert_eq!(
+            step.substituted,
+            r"GSD = \frac{0.028 \cdot 1000}{152} = 0.18421\,\text{mm} = 0.018421\,\text{cm},\quad k \approx 2 + 2 \approx 4"
+        );
+        assert_eq!(
+            step.parts[0].question_latex(),
+            r"GSD = \frac{0.028 \cdot 1000}{152} = \;?"
+        );
+        let m = Form::grid("bmatrix", &[vec![1.0, -2.5], vec![0.0, 3.0]], "A");
+        assert_eq!(m.latex(), r"\begin{bmatrix}1 & -2.5 \\ 0 & 3\end{bmatrix}");
+        let json = serde_json::to_string(&step.parts[0]).unwrap();
+        assert!(json.contains(r#""lhs":[{"tex":"GSD"}]"#), "{json}");
     }
 
     #[test]

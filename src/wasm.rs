@@ -4,7 +4,7 @@
 //! The page loads one small wasm module per topic (the crates under `web/`)
 //! and practice mode one more; each is a three-line crate that invokes a
 //! macro of this file, so the exports are written once, here:
-//! - [`export_examples!`]`(coordinates::entries, …)`: `catalog`, `solve`
+//! - [`export_examples!`]`(examples::coordinates::TOPIC, …)`: `catalog`, `solve`
 //!   and `parse_inputs` over those entries only (link-time optimisation
 //!   drops every other topic);
 //! - [`export_all!`]`()`: the same over the whole catalog, plus `practice`
@@ -19,7 +19,7 @@
 //! The functions below are what the macros call; they are not exports.
 
 use crate::error::Error;
-use crate::examples::{self, Entry};
+use crate::examples::{self, Topic};
 use crate::solution::{Record, Value};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -91,7 +91,7 @@ const LONGEST_NAME: usize = 64;
 fn name_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
     let s = string_arg(what, meaning, v)?;
     Ok(if s.chars().count() > LONGEST_NAME {
-        crate::practice::read::short(&s)
+        crate::read::short(&s)
     } else {
         s
     })
@@ -123,33 +123,29 @@ fn record_from_js(what: &str, v: JsValue) -> Result<Record, JsError> {
     }
 }
 
-/// `catalog()` of a topic module: its entries only.
-pub fn catalog_of(entries: Vec<Entry>) -> Result<JsValue, JsError> {
-    to_js(&examples::catalog_of(entries))
+/// `catalog()` of a topic module: its examples only.
+pub fn catalog_of(topics: &[Topic]) -> Result<JsValue, JsError> {
+    to_js(&examples::catalog_of(topics))
 }
 
 /// `catalog()` of the whole catalog (with `practice` and `module`).
 pub fn catalog_all() -> Result<JsValue, JsError> {
-    to_js(&examples::catalog())
+    to_js(&crate::practice::catalog())
 }
 
-/// `solve(id, inputs)` among `entries`.
-pub fn solve_in(entries: Vec<Entry>, id: &JsValue, inputs: JsValue) -> Result<JsValue, JsError> {
+/// `solve(id, inputs)` among `topics`.
+pub fn solve_in(topics: &[Topic], id: &JsValue, inputs: JsValue) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
     let inputs = record_from_js("inputs", inputs)?;
-    let solution = examples::solve_in(entries, &id, &inputs).map_err(js_error)?;
+    let solution = examples::solve_in(topics, &id, &inputs).map_err(js_error)?;
     to_js(&solution)
 }
 
-/// `parse_inputs(id, texts)` among `entries`.
-pub fn parse_inputs_in(
-    entries: Vec<Entry>,
-    id: &JsValue,
-    texts: JsValue,
-) -> Result<JsValue, JsError> {
+/// `parse_inputs(id, texts)` among `topics`.
+pub fn parse_inputs_in(topics: &[Topic], id: &JsValue, texts: JsValue) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
     let texts = record_from_js("texts", texts)?;
-    let parsed = examples::parse_inputs_in(entries, &id, &texts).map_err(js_error)?;
+    let parsed = examples::parse_inputs_in(topics, &id, &texts).map_err(js_error)?;
     to_js(&parsed)
 }
 
@@ -185,22 +181,18 @@ pub fn grade(id: &JsValue, code: &JsValue, answers: JsValue) -> Result<JsValue, 
 }
 
 /// The exports of a topic module: `catalog`, `solve` and `parse_inputs` over
-/// the given entry lists (`examples::<topic>::entries`), nothing else.
+/// the given topics (`examples::<topic>::TOPIC`), nothing else.
 /// The invoking crate depends on `wasm-bindgen` (the attribute names it).
 #[macro_export]
 macro_rules! export_examples {
-    ($($entries:path),+ $(,)?) => {
-        fn entries() -> ::std::vec::Vec<$crate::examples::Entry> {
-            let mut all = ::std::vec::Vec::new();
-            $(all.extend($entries());)+
-            all
-        }
+    ($($topic:path),+ $(,)?) => {
+        const TOPICS: &[$crate::examples::Topic] = &[$($topic),+];
 
         /// This module's worked examples: `[{ id, title, topic, source,
         /// document, summary, status, inputs }]`.
         #[::wasm_bindgen::prelude::wasm_bindgen]
         pub fn catalog() -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::catalog_of(entries())
+            $crate::wasm::catalog_of(TOPICS)
         }
 
         /// Solves example `id` with typed `inputs`; throws an `Error` naming
@@ -210,7 +202,7 @@ macro_rules! export_examples {
             id: ::wasm_bindgen::JsValue,
             inputs: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::solve_in(entries(), &id, inputs)
+            $crate::wasm::solve_in(TOPICS, &id, inputs)
         }
 
         /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
@@ -219,7 +211,7 @@ macro_rules! export_examples {
             id: ::wasm_bindgen::JsValue,
             texts: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::parse_inputs_in(entries(), &id, texts)
+            $crate::wasm::parse_inputs_in(TOPICS, &id, texts)
         }
     };
 }
@@ -245,7 +237,7 @@ macro_rules! export_all {
             id: ::wasm_bindgen::JsValue,
             inputs: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::solve_in($crate::examples::entries(), &id, inputs)
+            $crate::wasm::solve_in(&$crate::examples::TOPICS, &id, inputs)
         }
 
         /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
@@ -254,7 +246,7 @@ macro_rules! export_all {
             id: ::wasm_bindgen::JsValue,
             texts: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::parse_inputs_in($crate::examples::entries(), &id, texts)
+            $crate::wasm::parse_inputs_in(&$crate::examples::TOPICS, &id, texts)
         }
 
         /// A practice variant of example `id`: `{ id, code, inputs, boxes }`;

@@ -25,8 +25,7 @@ fn printed_roundtrip(fields: &[Field], inputs: &Record) -> Record {
 }
 
 fn fields_of(id: &str) -> Vec<Field> {
-    (examples::entries()
-        .into_iter()
+    (examples::all()
         .find(|e| e.id == id)
         .expect("spec id in catalog")
         .fields)()
@@ -362,15 +361,29 @@ fn margin(xs: &[f64]) -> f64 {
 }
 
 /// The whole audit of one example, or a sample of `SEEDS` when asked for.
-macro_rules! audit_tests {
-    ($($name:ident => $id:literal),* $(,)?) => {$(
-        #[test]
-        fn $name() {
-            let spec = specs().into_iter().find(|s| s.id == $id).expect("spec");
-            let (stride, solve_stride) = strides($id);
-            audit(&spec, SEEDS, stride, solve_stride);
+/// The audit of every example with practice (the descriptors' list, by
+/// iteration), on as many threads as the machine has: `AUDIT_ONLY=<id>`
+/// audits one.
+#[test]
+fn audit_every_example() {
+    let only = std::env::var("AUDIT_ONLY").ok().filter(|o| !o.is_empty());
+    let todo: Vec<Spec> = specs()
+        .into_iter()
+        .filter(|s| only.as_deref().is_none_or(|o| o == s.id))
+        .collect();
+    assert!(!todo.is_empty(), "no example to audit");
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(spec) = todo.get(k) else { break };
+                let (stride, solve_stride) = strides(spec.id);
+                audit(spec, SEEDS, stride, solve_stride);
+            });
         }
-    )*};
+    });
 }
 
 /// How often the debug-build audit solves a variant (`solve_stride`) and
@@ -402,41 +415,12 @@ fn full_audit_every_seed() {
     }
 }
 
-audit_tests! {
-    audit_pixel_to_photo => "pixel-to-photo",
-    audit_gsd => "gsd",
-    audit_photo_to_pixel => "photo-to-pixel",
-    audit_ncc_1d => "ncc-1d",
-    audit_ncc_2d => "ncc-2d",
-    audit_ncc_surface => "ncc-surface",
-    audit_subpixel_1d => "subpixel-1d",
-    audit_subpixel_2d => "subpixel-2d",
-    audit_fiducial_similarity => "fiducial-similarity",
-    audit_fiducial_affine => "fiducial-affine",
-    audit_transform_fit => "transform-fit",
-    audit_lsm_1d => "lsm-1d",
-    audit_lsm_2d => "lsm-2d",
-    audit_lsm_affine => "lsm-affine",
-    audit_resample => "resample",
-    audit_filter_window => "filter-window",
-    audit_edge_window => "edge-window",
-    audit_forstner_window => "forstner-window",
-    audit_moravec_window => "moravec-window",
-    audit_forstner_image => "forstner-image",
-    audit_chain_code => "chain-code",
-    audit_boundary_length => "boundary-length",
-    audit_boundary_shape => "boundary-shape",
-    audit_utm => "utm",
-    audit_utm_inverse => "utm-inverse",
-    audit_utm_facts => "utm-facts",
-}
-
 #[test]
 fn every_ready_example_has_practice() {
     let have: Vec<_> = specs().iter().map(|s| s.id).collect();
     let missing: Vec<_> = examples::catalog()
         .into_iter()
-        .filter(|e| e.status == "ready" && !have.contains(&e.id))
+        .filter(|e| !have.contains(&e.id))
         .map(|e| e.id)
         .collect();
     assert_eq!(missing, Vec::<&str>::new());
@@ -444,12 +428,9 @@ fn every_ready_example_has_practice() {
         .iter()
         .all(|id| have.contains(id)));
     // the catalog says which examples have practice, so the page links only to those
-    for e in examples::catalog() {
-        assert_eq!(e.practice, Some(have.contains(&e.id)), "{}", e.id);
+    for e in practice::catalog() {
+        assert_eq!(e.practice, have.contains(&e.id), "{}", e.id);
     }
-    assert!(examples::catalog()
-        .iter()
-        .any(|e| e.id == "utm-facts" && e.practice == Some(true)));
 }
 
 /// Answers from `(key, text)` pairs.

@@ -6,7 +6,7 @@
 
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
 // The exports as the page's topic module pkg/chains.js (web/chains/) has them.
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::chains::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::chains::TOPIC);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

@@ -9,7 +9,7 @@ use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 
 photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::coordinates::entries
+    photogrammetry_playground::examples::coordinates::TOPIC
 );
 
 wasm_bindgen_test_configure!(run_in_browser);

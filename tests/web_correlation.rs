@@ -7,7 +7,7 @@
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
 // The exports as the page's topic module pkg/correlation.js (web/correlation/) has them.
 photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::correlation::entries
+    photogrammetry_playground::examples::correlation::TOPIC
 );
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;

@@ -7,8 +7,8 @@ use js_sys::{Array, Error as JsErr, Reflect, JSON};
 // The exports of a topic module (web/filters/, web/resampling/), here over
 // two topics' entries at once.
 photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::filters::entries,
-    photogrammetry_playground::examples::resampling::entries
+    photogrammetry_playground::examples::filters::TOPIC,
+    photogrammetry_playground::examples::resampling::TOPIC
 );
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;

@@ -6,7 +6,7 @@
 
 use js_sys::{Array, Error as JsErr, Object, Reflect, JSON};
 // The exports as the page's topic module pkg/interest.js (web/interest/) has them.
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::interest::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::interest::TOPIC);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

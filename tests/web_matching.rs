@@ -5,7 +5,7 @@
 
 use js_sys::{Array, Error as JsErr, Reflect, JSON};
 // The exports as the page's topic module pkg/matching.js (web/matching/) has them.
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::matching::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::matching::TOPIC);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

@@ -6,9 +6,7 @@
 
 use js_sys::{Array, Error as JsErr, Object, Reflect, JSON};
 // The exports as the page's topic module pkg/projection.js (web/projection/) has them.
-photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::projection::entries
-);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::projection::TOPIC);
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::*;
 

@@ -5,7 +5,7 @@
 //! regions whose outer boundary is traced.
 
 use super::fields::{Field, Kind, MAX_DIM, MAX_LEN};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::chain::{self, Boundary, Connectivity, Path, Pixel};
 use crate::error::{Error, Result};
 use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step, Value};
@@ -19,7 +19,7 @@ use boundary_shape::*;
 use chain_code::*;
 use edge::*;
 
-const TOPIC: &str = "Chain codes and boundaries";
+const TITLE: &str = "Chain codes and boundaries";
 /// How far from the origin a pixel may lie.
 const MAX_COORD: f64 = 100_000.0;
 /// How many pixels or digits a formula shows before "…".
@@ -105,37 +105,52 @@ const BLOB: [Pixel; 55] = [
     [7, 7],
 ];
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "chain-code",
             title: "Freeman chain code",
-            topic: TOPIC,
             source: "Worked examples, Example 17 and the exercise",
             summary: "The chain code and differential chain code of a digital edge or closed boundary, from its pixels, from a code, or traced around drawn regions.",
             fields: chain_code_fields,
-            solve: Some(chain_code),
+            solve: chain_code,
+            answer: &["code", "differential"],
+            labels: &[],
+            lab: Some(Lab { family: "boundaries", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "boundary-length",
             title: "Boundary length",
-            topic: TOPIC,
             source: "Worked examples, Example 18",
             summary: "The length of a digital edge: pixels minus one when 4-connected; axial steps 1 and diagonal steps √2 when 8-connected.",
             fields: boundary_length_fields,
-            solve: Some(boundary_length),
+            solve: boundary_length,
+            answer: &["length"],
+            labels: &[],
+            lab: Some(Lab { family: "boundaries", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "boundary-shape",
             title: "Boundary descriptors",
-            topic: TOPIC,
             source: "Worked examples, boundary descriptors",
             summary: "Diameter, major and minor axis, basic rectangle and eccentricity of the outer boundary of a drawn region.",
             fields: boundary_shape_fields,
-            solve: Some(boundary_shape),
+            solve: boundary_shape,
+            answer: &["diameter", "minor_axis_length", "eccentricity"],
+            labels: &[],
+            lab: Some(Lab { family: "boundaries", explains: &[] }),
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/chains/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "chains",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 // ---------------------------------------------------------------- fields
 

@@ -2,14 +2,14 @@
 //! distance, step by step, with the seed's printed values and why they differ.
 
 use super::fields::{is_seed, Field, Inputs};
-use super::Entry;
+use super::{Example, Topic};
 use crate::coords::{self, Frame};
 use crate::error::Result;
 use crate::solution::{
     exact_minus_printed, exact_minus_printed_share, num, tex, NoteKind, Record, Solution, Step,
 };
 
-const TOPIC: &str = "Coordinates";
+const TITLE: &str = "Coordinates";
 /// The largest scan resolution accepted (dpi).
 const MAX_DPI: f64 = 100_000.0;
 /// The largest image side accepted (pixels).
@@ -17,37 +17,52 @@ const MAX_SIDE: f64 = 1_000_000.0;
 /// How far outside the image a point may lie (pixels or mm).
 const MAX_COORD: f64 = 10_000_000.0;
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "pixel-to-photo",
             title: "Pixel to image coordinates",
-            topic: TOPIC,
             source: "Worked examples, Example 1",
             summary: "From a pixel's column and row to its image coordinates in mm, relative to the image centre.",
             fields: pixel_to_photo_fields,
-            solve: Some(pixel_to_photo),
+            solve: pixel_to_photo,
+            answer: &["x_mm", "y_mm"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        Entry {
+        Example {
             id: "gsd",
             title: "Ground sample distance",
-            topic: TOPIC,
             source: "Worked examples, Example 2",
             summary: "The ground size of one scanned pixel, from the scan resolution, focal length and flying height.",
             fields: gsd_fields,
-            solve: Some(gsd),
+            solve: gsd,
+            answer: &["gsd_cm"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        Entry {
+        Example {
             id: "photo-to-pixel",
             title: "Image to pixel coordinates",
-            topic: TOPIC,
             source: "Worked examples, Example 3",
             summary: "From image coordinates in mm to the pixel's column and row.",
             fields: photo_to_pixel_fields,
-            solve: Some(photo_to_pixel),
+            solve: photo_to_pixel,
+            answer: &["c", "r"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/coordinates/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "coordinates",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 fn dpi(default: f64) -> Field {
     Field::number("dpi", "Scan resolution", default)

@@ -5,7 +5,7 @@
 //! values and why they differ.
 
 use super::fields::{is_seed, Field, Kind, MAX_LEN};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::correlation::{
     self, correlate_1d, correlate_2d, parabola_peak, quadric_peak, Extremum, Flat, Ncc, Parabola,
     Quadric,
@@ -27,7 +27,7 @@ use ncc_surface::*;
 use subpixel_1d::*;
 use subpixel_2d::*;
 
-const TOPIC: &str = "Correlation";
+const TITLE: &str = "Correlation";
 /// Sub-windows shown with their full computation (the rest are in the
 /// "all positions" table and the result).
 const MAX_DETAILED: usize = 12;
@@ -65,55 +65,76 @@ const RHO_FROM: &[(&str, &str)] = &[
     ("exact", "Exact ρ, computed from the example's arrays"),
 ];
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "ncc-1d",
             title: "1-D correlation matching",
-            topic: TOPIC,
             source: "Worked examples, Example 5",
             summary: "The normalized correlation coefficient of a template with every sub-window of a 1-D search array, and the best match.",
             fields: ncc_1d_fields,
-            solve: Some(ncc_1d),
+            solve: ncc_1d,
+            answer: &["best", "best_c"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        Entry {
+        Example {
             id: "ncc-2d",
             title: "2-D correlation coefficient",
-            topic: TOPIC,
             source: "Worked examples, Example 6",
             summary: "The normalized correlation coefficient of two equal-size arrays, with their means and the three sums.",
             fields: ncc_2d_fields,
-            solve: Some(ncc_2d),
+            solve: ncc_2d,
+            answer: &["rho"],
+            labels: &[],
+            lab: Some(Lab { family: "correlation", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "ncc-surface",
             title: "Correlation surface",
-            topic: TOPIC,
             source: "Worked examples, Example 7",
             summary: "The correlation coefficient of a 2-D template at every position of a search array, and the best position with its centre pixel.",
             fields: ncc_surface_fields,
-            solve: Some(ncc_surface),
+            solve: ncc_surface,
+            answer: &["best_position", "best_c", "best_r"],
+            labels: &[],
+            lab: Some(Lab { family: "correlation", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "subpixel-1d",
             title: "Subpixel peak in 1-D",
-            topic: TOPIC,
             source: "Worked examples, Example 8",
             summary: "A parabola through the best correlation coefficient and its two neighbours, and the location of its maximum.",
             fields: subpixel_1d_fields,
-            solve: Some(subpixel_1d),
+            solve: subpixel_1d,
+            answer: &["c_max"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        Entry {
+        Example {
             id: "subpixel-2d",
             title: "Subpixel peak in 2-D",
-            topic: TOPIC,
             source: "Worked examples, Example 9",
             summary: "A six-term quadratic surface fitted by least squares to the 3×3 correlation coefficients around the best one, and the location of its maximum.",
             fields: subpixel_2d_fields,
-            solve: Some(subpixel_2d),
+            solve: subpixel_2d,
+            answer: &["c_max", "r_max"],
+            labels: &[],
+            lab: Some(Lab { family: "correlation", explains: &[] }),
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/correlation/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "correlation",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 // ---------------------------------------------------------------- fields
 

@@ -4,7 +4,7 @@
 //! `solve` (typed values) and `parse_inputs` (texts) alike.
 
 use crate::error::{Error, Result};
-use crate::practice::read::{self, short};
+use crate::read::{self, short};
 use crate::solution::{fmt_sig, Record, Value};
 use serde::Serialize;
 
@@ -451,7 +451,7 @@ impl Field {
 
     /// Parses the text a user typed (or a URL carried) and checks it.
     /// Numbers are read by the one number reader of the playground
-    /// ([`crate::practice::read`], the practice boxes' rules: a decimal
+    /// ([`crate::read`], the practice boxes' rules: a decimal
     /// point or comma, `1.5e3`, `1.5×10^3`, fractions, and the field's unit
     /// or one of its dimension after a number); lists by its
     /// [`read::read_rows`], whose rule for a decimal comma in a list is

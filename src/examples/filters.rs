@@ -5,7 +5,7 @@
 //! seeds' printed values stand beside the exact ones, every slip explained.
 
 use super::fields::{Field, Inputs, Kind};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::error::{Error, Result};
 use crate::filter::{self, Filtered, Gradient, Kernel, PixelSum};
 use crate::raster::{Border, Grid};
@@ -16,7 +16,7 @@ mod filter_window;
 use edge_window::*;
 use filter_window::*;
 
-const TOPIC: &str = "Filters and edges";
+const TITLE: &str = "Filters and edges";
 
 /// The largest custom kernel side (a kernel is applied at every pixel).
 const MAX_KERNEL: usize = 15;
@@ -80,28 +80,40 @@ const BORDERS: &[(&str, &str)] = &[
     ("zero", "Zero outside"),
 ];
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "filter-window",
             title: "Filtering a window",
-            topic: TOPIC,
             source: "Worked examples, Examples 15–16; Lecture 7: Image processing",
             summary: "A window of grey values under a smoothing, sharpening or Laplacian kernel (or the median), each output pixel's sum written out.",
             fields: filter_fields,
-            solve: Some(filter_window),
+            solve: filter_window,
+            answer: &["selected", "output"],
+            labels: &[],
+            lab: Some(Lab { family: "filters", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "edge-window",
             title: "Prewitt and Sobel edges",
-            topic: TOPIC,
             source: "Worked examples, Example 15",
             summary: "The responses to the Prewitt or Sobel kernels in both directions and the edge magnitude √(Gx² + Gy²).",
             fields: edge_fields,
-            solve: Some(edge_window),
+            solve: edge_window,
+            answer: &["selected_gx", "selected_gy", "selected_magnitude"],
+            labels: &[],
+            lab: Some(Lab { family: "edges", explains: &[] }),
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/filters/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "filters",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 // ---------------------------------------------------------------------------
 // Field builders and input readers shared with the resampling examples (kept

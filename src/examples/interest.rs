@@ -5,7 +5,7 @@
 //! window can be moved and the whole image is thresholded and suppressed.
 
 use super::fields::{is_seed, Field, Inputs, Kind};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::error::{Error, Result};
 use crate::interest::{self, Case, Forstner, Measures, Precision};
 use crate::raster::Grid;
@@ -16,44 +16,59 @@ mod moravec_window;
 use forstner_image::*;
 use moravec_window::*;
 
-const TOPIC: &str = "Interest operators";
+const TITLE: &str = "Interest operators";
 /// Side of the generated test pattern (pixels).
 pub const PATTERN_SIZE: usize = 64;
 /// Seed of the test pattern's noise generator (fixed: the pattern is the
 /// same on every run and every machine).
 pub const PATTERN_SEED: u64 = 7;
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "forstner-window",
             title: "Förstner operator",
-            topic: TOPIC,
             source: "Worked examples, Example 13; Lecture 21: Image matching",
             summary: "Gradients by central differences, the matrix N, its inverse, weight w, roundness q, and Lecture 21's precision test with the error ellipse.",
             fields: forstner_fields,
-            solve: Some(forstner_window),
+            solve: forstner_window,
+            answer: &["w", "q", "accepted"],
+            labels: &[],
+            lab: Some(Lab { family: "interest", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "moravec-window",
             title: "Moravec operator",
-            topic: TOPIC,
             source: "Worked examples, Example 14",
             summary: "Four directional differences at each interior pixel, squared and summed, averaged over the window.",
             fields: moravec_fields,
-            solve: Some(moravec_window),
+            solve: moravec_window,
+            answer: &["sums", "mean"],
+            labels: &[],
+            lab: Some(Lab { family: "interest", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "forstner-image",
             title: "Förstner operator on a test pattern",
-            topic: TOPIC,
             source: "Lecture 21: Image matching; Worked examples, Example 13",
             summary: "Move a window over a generated 64×64 pattern (corners, edges, a flat area, noise): N, w, q and the error ellipse there, and the interest points of the whole image after thresholding and suppression.",
             fields: image_fields,
-            solve: Some(forstner_image),
+            solve: forstner_image,
+            answer: &["w", "q", "points"],
+            labels: &[],
+            lab: Some(Lab { family: "interest", explains: &[] }),
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/interest/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "interest",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 fn rows(m: &[[f64; 4]]) -> Value {
     Value::matrix(&m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())

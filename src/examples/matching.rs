@@ -4,7 +4,7 @@
 //! run ended.
 
 use super::fields::{Field, Inputs, Kind};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::error::{Error, Result};
 use crate::matching::{
     self, Gradients, Iteration, Matching, Model, Param, Params, Settings, Status,
@@ -21,7 +21,7 @@ use lsm_1d::*;
 use lsm_2d::*;
 use lsm_affine::*;
 
-const TOPIC: &str = "Least-squares matching";
+const TITLE: &str = "Least-squares matching";
 /// Largest 1-D template or search window.
 const MAX_1D: usize = 512;
 /// Largest side of a 2-D template or search window.
@@ -62,37 +62,52 @@ const EX11_PRINTED_GRADIENTS: [[f64; 2]; 9] = [
     [-8.5, -6.5],
 ];
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "lsm-1d",
             title: "1-D least-squares matching",
-            topic: TOPIC,
             source: "Worked examples, Example 10",
             summary: "Refines the best correlation position of Example 5 to a subpixel shift (and optionally a gain and offset) by iterated least squares.",
             fields: lsm_1d_fields,
-            solve: Some(lsm_1d),
+            solve: lsm_1d,
+            answer: &["c"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        Entry {
+        Example {
             id: "lsm-2d",
             title: "2-D least-squares matching",
-            topic: TOPIC,
             source: "Worked examples, Example 11",
             summary: "Refines the best correlation position of Example 7 to a subpixel shift with a gain and offset by iterated least squares.",
             fields: lsm_2d_fields,
-            solve: Some(lsm_2d),
+            solve: lsm_2d,
+            answer: &["c", "r"],
+            labels: &[],
+            lab: Some(Lab { family: "correlation", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "lsm-affine",
             title: "Affine + radiometric least-squares matching",
-            topic: TOPIC,
             source: "Lecture 21: Image matching",
             summary: "A generated patch pair with a known shift, rotation, scale, shear, gain and offset, recovered by eight-parameter least-squares matching.",
             fields: lsm_affine_fields,
-            solve: Some(lsm_affine),
+            solve: lsm_affine,
+            answer: &["parameters", "sigma0"],
+            labels: &[],
+            lab: Some(Lab { family: "correlation", explains: &[] }),
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/matching/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "matching",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 // ---------------------------------------------------------------- fields
 

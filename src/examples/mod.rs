@@ -1,18 +1,17 @@
 //! The worked-example catalog: every entry of `shared/CATALOG.md`, the
 //! registry behind `catalog()`, `solve()` and `parse_inputs()`.
 //!
-//! Each topic file (`coordinates.rs`, …) lists its entries with their input
-//! fields and a solver that calls the core modules and turns their results
-//! into a [`Solution`]. Entries not built yet are listed in [`coming`].
-//!
-//! To add an example: write `fn fields() -> Vec<Field>` and
-//! `fn solve(inputs: &Record) -> Result<Solution>` in its topic file, list it
-//! in that file's `entries()`, and remove it from [`coming`].
+//! Each example is one [`Example`] value: id, title, source, fields, solver,
+//! answer keys, result labels, its place in the lab and its practice mode.
+//! Each topic file (`coordinates.rs`, …) lists its examples in its
+//! `TOPIC`; [`TOPICS`] lists the topics. Everything else (the catalog,
+//! the module map, `catalog.json`, practice's list) is derived from these.
 
 pub mod answers;
 pub mod chains;
 pub mod coordinates;
 pub mod correlation;
+pub mod drill;
 pub mod fields;
 pub mod filters;
 pub mod interest;
@@ -25,112 +24,117 @@ pub mod transformations;
 
 use crate::error::{Error, Result};
 use crate::solution::{Record, Solution, Value};
+use drill::Drill;
 use fields::{Field, FieldInfo};
 use serde::Serialize;
 
-/// The topics in the order the page shows them.
-pub const TOPICS: [&str; 9] = [
-    "Coordinates",
-    "Transformations",
-    "Correlation",
-    "Least-squares matching",
-    "Resampling",
-    "Filters and edges",
-    "Interest operators",
-    "Chain codes and boundaries",
-    "Map projection",
+/// The topics in the order the page shows them: the one hand-kept list of
+/// topics (each topic file keeps the one list of its examples).
+pub const TOPICS: [Topic; 9] = [
+    coordinates::TOPIC,
+    transformations::TOPIC,
+    correlation::TOPIC,
+    matching::TOPIC,
+    resampling::TOPIC,
+    filters::TOPIC,
+    interest::TOPIC,
+    chains::TOPIC,
+    projection::TOPIC,
 ];
 
 /// A solver: validated inputs (defaults filled in) to a solution.
 pub type Solver = fn(&Record) -> Result<Solution>;
 
-/// A topic file's list of entries (`coordinates::entries`, …).
-pub type Entries = fn() -> Vec<Entry>;
+/// A topic: its page module (`web/<module>/`, `pkg/<module>.js`), its
+/// title, and its examples in page order.
+#[derive(Clone, Copy)]
+pub struct Topic {
+    pub module: &'static str,
+    pub title: &'static str,
+    pub examples: &'static [Example],
+}
 
-/// One catalog entry.
-pub struct Entry {
+/// Where an example meets the image lab: the lab family it opens in, and
+/// the lab's readings it explains (the lab links a clicked pixel's reading
+/// to this example).
+#[derive(Clone, Copy)]
+pub struct Lab {
+    pub family: &'static str,
+    pub explains: &'static [&'static str],
+}
+
+/// Everything about one worked example, declared in one value: what the
+/// catalog, the solver, the answer line, the result tables, the lab and
+/// practice mode need. Every list the page or the tests keep of examples
+/// is derived from these.
+#[derive(Clone, Copy)]
+pub struct Example {
     pub id: &'static str,
     pub title: &'static str,
-    pub topic: &'static str,
     pub source: &'static str,
     pub summary: &'static str,
     /// The input fields with the seed's defaults.
     pub fields: fn() -> Vec<Field>,
-    /// `None` while the example is not built yet.
-    pub solve: Option<Solver>,
+    pub solve: Solver,
+    /// The one to three result keys of the answer line at the top of the
+    /// page ("GSD = 35.65 cm; the course notes print 35.37 cm").
+    pub answer: &'static [&'static str],
+    /// What result keys mean: `(key, label, unit)` ("" for no unit); the
+    /// ones present in a solution are put into its `labels`.
+    pub labels: &'static [(&'static str, &'static str, &'static str)],
+    pub lab: Option<Lab>,
+    /// Practice mode: how variants are drawn and answers checked.
+    pub practice: Option<Drill>,
 }
 
-impl Entry {
-    /// An entry that is listed but not built yet.
-    #[allow(dead_code)] // none is coming at the moment
-    const fn coming(
-        id: &'static str,
-        title: &'static str,
-        topic: &'static str,
-        source: &'static str,
-    ) -> Self {
-        Entry {
-            id,
-            title,
-            topic,
-            source,
-            summary: "",
-            fields: Vec::new,
-            solve: None,
+impl Example {
+    /// Solves with `inputs` (a missing field takes the seed's default),
+    /// checking them first: what [`solve`] does once it has found the
+    /// example, and what practice calls for a variant.
+    pub fn run(&self, inputs: &Record) -> Result<Solution> {
+        let used = fields::validate(&(self.fields)(), inputs)?;
+        let mut solution = (self.solve)(&used)?;
+        solution.label_present(self.labels);
+        if solution.answer.is_empty() {
+            solution.answer = self
+                .answer
+                .iter()
+                .filter(|k| solution.result.get(k).is_some())
+                .map(|k| k.to_string())
+                .collect();
         }
+        solution.checked()
     }
 }
 
-/// Entries of the catalog that are not built yet.
-fn coming() -> Vec<Entry> {
-    Vec::new()
-}
-
-/// The page's wasm modules of worked examples: one per topic, each its own
-/// small crate under `web/<name>/` that exports only these entries (see
-/// `export_examples!` in `src/wasm.rs`), so that an example's page loads
-/// only its topic's code. `catalog.json` names each entry's module.
-///
-/// A topic module must never call [`entries`], [`catalog`], [`solve`] or
-/// [`parse_inputs`]: those reach every topic and would link them all in.
-pub const MODULES: [(&str, Entries); 9] = [
-    ("coordinates", coordinates::entries),
-    ("transformations", transformations::entries),
-    ("correlation", correlation::entries),
-    ("matching", matching::entries),
-    ("resampling", resampling::entries),
-    ("filters", filters::entries),
-    ("interest", interest::entries),
-    ("chains", chains::entries),
-    ("projection", projection::entries),
-];
-
-/// The module (a name of [`MODULES`]) that solves example `id`.
-pub fn module_of(id: &str) -> Option<&'static str> {
-    MODULES
-        .iter()
-        .find(|(_, entries)| entries().iter().any(|e| e.id == id))
-        .map(|(name, _)| *name)
-}
-
-/// Every entry, grouped by topic in [`TOPICS`] order.
-pub fn entries() -> Vec<Entry> {
-    let mut all: Vec<Entry> = MODULES.iter().flat_map(|(_, entries)| entries()).collect();
-    all.extend(coming());
-    all.sort_by_key(|e| {
-        TOPICS
+/// Every example of `topics` with its topic, in page order.
+pub fn of(topics: &[Topic]) -> impl Iterator<Item = (&'static Topic, &'static Example)> + '_ {
+    topics.iter().flat_map(|t| {
+        // a topic of TOPICS or of a topic module's own list: both 'static
+        let t: &'static Topic = TOPICS
             .iter()
-            .position(|t| *t == e.topic)
-            .unwrap_or(TOPICS.len())
-    });
-    all
+            .find(|x| x.module == t.module)
+            .unwrap_or(&TOPICS[0]);
+        t.examples.iter().map(move |e| (t, e))
+    })
 }
 
-fn find(entries: Vec<Entry>, id: &str) -> Result<Entry> {
-    entries
-        .into_iter()
+/// Every example, in page order.
+pub fn all() -> impl Iterator<Item = &'static Example> {
+    TOPICS.iter().flat_map(|t| t.examples.iter())
+}
+
+/// The example `id` among `topics`.
+pub fn find(topics: &[Topic], id: &str) -> Result<&'static Example> {
+    of(topics)
+        .map(|(_, e)| e)
         .find(|e| e.id == id)
         .ok_or_else(|| Error::UnknownExample { id: id.to_string() })
+}
+
+/// The module (a [`Topic::module`]) that solves example `id`.
+pub fn module_of(id: &str) -> Option<&'static str> {
+    of(&TOPICS).find(|(_, e)| e.id == id).map(|(t, _)| t.module)
 }
 
 /// The JSON shape of a catalog entry.
@@ -144,76 +148,58 @@ pub struct EntryInfo {
     pub document: String,
     pub summary: &'static str,
     pub status: &'static str,
-    /// Whether practice mode has a generator for this example (in the whole
-    /// catalog; a topic module's own catalog leaves it out, as it leaves
-    /// practice out).
+    /// Whether practice mode has a generator for this example.
+    pub practice: bool,
+    /// The wasm module that solves it (a [`Topic::module`]).
+    pub module: &'static str,
+    /// The image lab's family it opens in, if any.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub practice: Option<bool>,
-    /// The wasm module that solves it (a name of [`MODULES`]; in the whole
-    /// catalog only).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub module: Option<&'static str>,
+    pub lab: Option<&'static str>,
+    /// The lab's readings it explains.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    pub explains: &'static [&'static str],
     pub inputs: Vec<FieldInfo>,
 }
 
 impl EntryInfo {
-    fn new(e: &Entry) -> Self {
+    fn new(t: &Topic, e: &Example) -> Self {
         EntryInfo {
             id: e.id,
             title: e.title,
-            topic: e.topic,
+            topic: t.title,
             source: e.source,
             document: answers::document(e.source),
             summary: e.summary,
-            status: if e.solve.is_some() { "ready" } else { "coming" },
-            practice: None,
-            module: None,
+            status: "ready",
+            practice: e.practice.is_some(),
+            module: t.module,
+            lab: e.lab.map(|l| l.family),
+            explains: e.lab.map_or(&[], |l| l.explains),
             inputs: (e.fields)().iter().map(FieldInfo::from).collect(),
         }
     }
 }
 
-/// The catalog: every entry with its status, practice, module and input
-/// fields (what the build writes to `catalog.json`).
+/// The catalog: every example with its topic, practice, module, lab and
+/// input fields (what the build writes to `catalog.json`).
 pub fn catalog() -> Vec<EntryInfo> {
-    entries()
-        .iter()
-        .map(|e| EntryInfo {
-            practice: Some(crate::practice::has(e.id)),
-            module: module_of(e.id),
-            ..EntryInfo::new(e)
-        })
-        .collect()
+    catalog_of(&TOPICS)
 }
 
-/// The catalog of `entries` only (a topic module's own): without
-/// `practice` and `module`, which would reach every topic.
-pub fn catalog_of(entries: Vec<Entry>) -> Vec<EntryInfo> {
-    entries.iter().map(EntryInfo::new).collect()
+/// The catalog of `topics` only (a topic module's own).
+pub fn catalog_of(topics: &[Topic]) -> Vec<EntryInfo> {
+    of(topics).map(|(t, e)| EntryInfo::new(t, e)).collect()
 }
 
 /// Solves example `id` with `inputs` (a missing field takes the seed's
 /// default). Inputs are checked before any arithmetic.
 pub fn solve(id: &str, inputs: &Record) -> Result<Solution> {
-    solve_in(entries(), id, inputs)
+    solve_in(&TOPICS, id, inputs)
 }
 
-/// [`solve`] among `entries` only (a topic module's).
-pub fn solve_in(entries: Vec<Entry>, id: &str, inputs: &Record) -> Result<Solution> {
-    let entry = find(entries, id)?;
-    let solver = entry
-        .solve
-        .ok_or_else(|| Error::NotBuilt { id: id.to_string() })?;
-    let used = fields::validate(&(entry.fields)(), inputs)?;
-    let mut solution = solver(&used)?;
-    if solution.answer.is_empty() {
-        solution.answer = answers::keys(id)
-            .iter()
-            .filter(|k| solution.result.get(k).is_some())
-            .map(|k| k.to_string())
-            .collect();
-    }
-    solution.checked()
+/// [`solve`] among `topics` only (a topic module's).
+pub fn solve_in(topics: &[Topic], id: &str, inputs: &Record) -> Result<Solution> {
+    find(topics, id)?.run(inputs)
 }
 
 /// Texts parsed into typed inputs, and a message for each field that failed.
@@ -226,12 +212,12 @@ pub struct Parsed {
 /// Parses the texts of a form or URL (`{key: text}`) into typed inputs with
 /// the same checks as [`solve`]; every failing field gets its own message.
 pub fn parse_inputs(id: &str, texts: &Record) -> Result<Parsed> {
-    parse_inputs_in(entries(), id, texts)
+    parse_inputs_in(&TOPICS, id, texts)
 }
 
 /// [`parse_inputs`] among `entries` only (a topic module's).
-pub fn parse_inputs_in(entries: Vec<Entry>, id: &str, texts: &Record) -> Result<Parsed> {
-    let entry = find(entries, id)?;
+pub fn parse_inputs_in(topics: &[Topic], id: &str, texts: &Record) -> Result<Parsed> {
+    let entry = find(topics, id)?;
     let fields = (entry.fields)();
     let mut out = Parsed {
         inputs: Record::new(),

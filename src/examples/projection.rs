@@ -5,14 +5,14 @@
 
 use super::fields::{is_seed, Field, Inputs};
 use super::projection_figure::figure_step;
-use super::Entry;
+use super::{Example, Topic};
 use crate::error::{Error, Result};
 use crate::projection::krueger::Series;
 use crate::projection::utm::{self, Hemisphere, ZoneRule, K0};
 use crate::projection::{dms, snyder, Ellipsoid};
 use crate::solution::{fmt_sig, NoteKind, Record, Solution, Step, Value};
 
-pub(super) const TOPIC: &str = "Map projection";
+const TITLE: &str = "Map projection";
 
 /// The ellipsoid choices (`ELLIPSOIDS` in `projection/mod.rs`, same order).
 pub(super) const ELLIPSOID_OPTIONS: &[(&str, &str)] = &[
@@ -59,29 +59,41 @@ const DEFAULT_LON: f64 = 100.5;
 const DEFAULT_E: f64 = 662_176.290;
 const DEFAULT_N: f64 = 1_520_582.494;
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "utm",
             title: "Latitude and longitude to UTM",
-            topic: TOPIC,
             source: "Lecture 7: Image processing, UTM",
             summary: "A point's zone, band, easting and northing, scale factor and meridian convergence, step by step through the Krüger series, with the classical series beside it.",
             fields: utm_fields,
-            solve: Some(solve_utm),
+            solve: solve_utm,
+            answer: &["zone", "easting", "northing"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        Entry {
+        Example {
             id: "utm-inverse",
             title: "UTM to latitude and longitude",
-            topic: TOPIC,
             source: "Lecture 7: Image processing, UTM",
             summary: "From zone, hemisphere, easting and northing back to latitude and longitude, step by step.",
             fields: inverse_fields,
-            solve: Some(solve_inverse),
+            solve: solve_inverse,
+            answer: &["latitude", "longitude"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-        super::projection_facts::entry(),
-    ]
-}
+        super::projection_facts::EXAMPLE,
+];
+
+/// The topic: its module (`web/projection/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "projection",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 pub(super) fn ellipsoid_field() -> Field {
     Field::choice("ellipsoid", "Ellipsoid", ELLIPSOID_OPTIONS, "wgs84")

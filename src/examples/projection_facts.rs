@@ -5,10 +5,8 @@
 //! ones and a note for every difference.
 
 use super::fields::{is_seed, Field, Inputs};
-use super::projection::{
-    ellipsoid, ellipsoid_field, fixed, label_results, latitude_field, plain, TOPIC,
-};
-use super::Entry;
+use super::projection::{ellipsoid, ellipsoid_field, fixed, label_results, latitude_field, plain};
+use super::Example;
 use crate::error::{Error, Result};
 use crate::projection::krueger;
 use crate::projection::utm::{self, K0};
@@ -22,17 +20,19 @@ const PAKISTAN: (f64, f64) = (60.87, 77.84);
 /// The seed's "1.0000 at a distance of 90 kilometers".
 const SEED_K1_KM: f64 = 90.0;
 
-pub fn entry() -> Entry {
-    Entry {
-        id: "utm-facts",
-        title: "Lecture 7's UTM facts, checked",
-        topic: TOPIC,
-        source: "Lecture 7: Image processing, UTM",
-        summary: "Where the scale factor is 1, how wide a zone is at a latitude, the distortion at its edge, the latitude limits and the zones of Thailand and Pakistan: the lecture's numbers beside the exact ones.",
-        fields,
-        solve: Some(solve),
-    }
-}
+/// Lecture 7's UTM facts.
+pub const EXAMPLE: Example = Example {
+    id: "utm-facts",
+    title: "Lecture 7's UTM facts, checked",
+    source: "Lecture 7: Image processing, UTM",
+    summary: "Where the scale factor is 1, how wide a zone is at a latitude, the distortion at its edge, the latitude limits and the zones of Thailand and Pakistan: the lecture's numbers beside the exact ones.",
+    fields,
+    solve,
+    answer: &["k1_distance_km", "latitude_max", "edge_distortion_ppm"],
+    labels: &[],
+    lab: None,
+    practice: None,
+};
 
 fn fields() -> Vec<Field> {
     vec![

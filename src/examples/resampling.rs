@@ -5,13 +5,13 @@
 
 use super::fields::{Field, Inputs};
 use super::filters::{bmatrix, matrix_field, rows};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::error::{Error, Result};
 use crate::raster::Grid;
 use crate::resample::{self, SEED_A};
 use crate::solution::{exact_minus_printed, num, tex, NoteKind, Record, Solution, Step, Value};
 
-const TOPIC: &str = "Resampling";
+const TITLE: &str = "Resampling";
 /// The largest pixel position accepted for the patch's first pixel.
 const MAX_POS: f64 = 1_000_000.0;
 
@@ -31,17 +31,26 @@ pub const EXAMPLE_12B: [[f64; 4]; 4] = [
     [53.0, 46.0, 52.0, 48.0],
 ];
 
-pub fn entries() -> Vec<Entry> {
-    vec![Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[Example {
         id: "resample",
         title: "Resampling: nearest, bilinear, bicubic",
-        topic: TOPIC,
         source: "Worked examples, Example 12; Lecture 7: Image processing",
         summary: "The grey value at a fractional pixel position: nearest neighbour, bilinear interpolation along the rows then between them, and Lecture 7's cubic convolution.",
         fields,
-        solve: Some(solve),
-    }]
-}
+        solve,
+        answer: &["nearest", "bilinear", "bicubic"],
+        labels: &[],
+        lab: Some(Lab { family: "resampling", explains: &[] }),
+        practice: None,
+    }];
+
+/// The topic: its module (`web/resampling/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "resampling",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 fn fields() -> Vec<Field> {
     vec![

@@ -5,7 +5,7 @@
 //! they differ.
 
 use super::fields::{is_seed, Field, Inputs};
-use super::Entry;
+use super::{Example, Lab, Topic};
 use crate::error::{Error, Result};
 use crate::lsq::ILL_CONDITIONED;
 use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
@@ -16,7 +16,7 @@ mod transform_fit;
 use example4::*;
 use transform_fit::*;
 
-const TOPIC: &str = "Transformations";
+const TITLE: &str = "Transformations";
 /// The most control points a point list may hold.
 pub const MAX_POINTS: usize = 1000;
 /// Matrices with more rows than this are shown shortened in the LaTeX.
@@ -71,37 +71,52 @@ const POINT_SETS: &[(&str, &str)] = &[
     ),
 ];
 
-pub fn entries() -> Vec<Entry> {
-    vec![
-        Entry {
+/// The examples of this topic, in page order.
+pub const EXAMPLES: &[Example] = &[
+        Example {
             id: "fiducial-similarity",
             title: "Fiducials: similarity transformation",
-            topic: TOPIC,
             source: "Worked examples, Example 4(a)",
             summary: "Pixel to photo coordinates through the four fiducials: a similarity transformation (scale, rotation, shift) by least squares.",
             fields: fiducial_fields,
-            solve: Some(fiducial_similarity),
+            solve: fiducial_similarity,
+            answer: &["parameters", "sigma0"],
+            labels: &[],
+            lab: Some(Lab { family: "fiducials", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "fiducial-affine",
             title: "Fiducials: affine transformation",
-            topic: TOPIC,
             source: "Worked examples, Example 4(b)",
             summary: "Pixel to photo coordinates through the four fiducials: an affine transformation (two scales, shear, rotation, shift) by least squares.",
             fields: fiducial_fields,
-            solve: Some(fiducial_affine),
+            solve: fiducial_affine,
+            answer: &["parameters", "sigma0"],
+            labels: &[],
+            lab: Some(Lab { family: "fiducials", explains: &[] }),
+            practice: None,
         },
-        Entry {
+        Example {
             id: "transform-fit",
             title: "2-D transformations by least squares",
-            topic: TOPIC,
             source: "Lecture 7: Image processing, Table 9.5.1",
             summary: "Any model of the transform table — Helmert, affine, pseudo-affine, projective, second-order conformal, polynomials — fitted to your control points.",
             fields: transform_fit_fields,
-            solve: Some(transform_fit),
+            solve: transform_fit,
+            answer: &["parameters", "sigma0"],
+            labels: &[],
+            lab: None,
+            practice: None,
         },
-    ]
-}
+];
+
+/// The topic: its module (`web/transformations/`) and title.
+pub const TOPIC: Topic = Topic {
+    module: "transformations",
+    title: TITLE,
+    examples: EXAMPLES,
+};
 
 fn rows_of(points: &[[f64; 4]]) -> Vec<Vec<f64>> {
     points.iter().map(|p| p.to_vec()).collect()

@@ -7,7 +7,7 @@
 use super::read::{check_unit, read, UnitCheck};
 use super::{
     boxes_of, decimals_of, decode, digits_needed, encode, inputs_of, round_sig, spec, value_in,
-    BoxDef, Mistake, Spec, Tolerance,
+    BoxDef, Mistake, Spec,
 };
 use crate::error::{Error, Result};
 use crate::examples;
@@ -419,29 +419,4 @@ fn rounded_as_shown(ctx: &Ctx, chain: super::Chain, k: usize, x: f64) -> Option<
 }
 
 /// Tolerances the topic files share.
-pub mod tol {
-    use super::Tolerance;
-    /// Lengths and coordinates derived from a pixel size: 0.1 %.
-    pub const LENGTH: Tolerance = Tolerance {
-        atol: 0.001,
-        rtol: 0.001,
-    };
-    /// Pixel positions and counts to a hundredth of a pixel.
-    pub const PIXEL: Tolerance = Tolerance::abs(0.01);
-    /// Whole numbers.
-    pub const WHOLE: Tolerance = Tolerance::abs(0.0);
-    /// Grey values (means, filtered values).
-    pub const GREY: Tolerance = Tolerance::abs(0.01);
-    /// Sums of products and squares.
-    pub const SUM: Tolerance = Tolerance {
-        atol: 0.05,
-        rtol: 0.0005,
-    };
-    /// Correlation coefficients.
-    pub const RHO: Tolerance = Tolerance::abs(0.001);
-    /// Fitted parameters.
-    pub const PARAM: Tolerance = Tolerance {
-        atol: 0.001,
-        rtol: 0.001,
-    };
-}
+pub use crate::examples::drill::tol;

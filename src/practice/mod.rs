@@ -20,13 +20,12 @@ pub mod grade;
 pub mod interest;
 pub mod matching;
 pub mod projection;
-pub mod read;
 pub mod resampling;
 pub mod transformations;
 
 use crate::error::{Error, Result};
 use crate::examples;
-use crate::solution::{Record, Solution, Value};
+use crate::solution::{Record, Solution};
 use serde::Serialize;
 
 pub use grade::{grade, Graded};
@@ -40,40 +39,12 @@ const CODE_DIGITS: usize = 4;
 /// How many different variants one example has.
 pub const VARIANTS: u32 = 1 << (5 * CODE_DIGITS);
 
-/// A small deterministic PRNG (SplitMix64): the same seed, the same draws,
-/// on every platform.
-pub struct Rng(u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Self {
-        Rng(seed)
-    }
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// A whole number in `lo..=hi`.
-    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        let span = (hi - lo).max(0) as u64 + 1;
-        lo + (self.next_u64() % span) as i64
-    }
-    /// `int` as an `f64`.
-    pub fn num(&mut self, lo: i64, hi: i64) -> f64 {
-        self.int(lo, hi) as f64
-    }
-    /// One of `xs` (the first when `xs` is empty is impossible: callers
-    /// pass constant, non-empty tables).
-    pub fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
-        xs[(self.next_u64() % xs.len().max(1) as u64) as usize]
-    }
-    /// True with probability one half.
-    pub fn coin(&mut self) -> bool {
-        self.next_u64() & 1 == 1
-    }
-}
+pub use crate::examples::drill::{
+    mat, nums, or_given, pick, round_sig, split_key, tol, value_in, BoxDef, Chain, Mistake, Spec,
+    Tolerance, AXIS_FLIP,
+};
+pub use crate::read;
+pub use crate::rng::Rng;
 
 /// Encodes a variant number as a code (`1K7Q2`).
 pub fn encode(variant: u32) -> String {
@@ -119,125 +90,21 @@ pub fn decode(code: &str) -> Result<u32> {
     Ok(v)
 }
 
-/// The tolerance of a box: `|x − x*| ≤ atol + rtol·|x*|`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Tolerance {
-    pub atol: f64,
-    pub rtol: f64,
-}
-
-impl Tolerance {
-    pub const fn abs(atol: f64) -> Self {
-        Tolerance { atol, rtol: 0.0 }
-    }
-    pub const fn rel(rtol: f64) -> Self {
-        Tolerance { atol: 0.0, rtol }
-    }
-    /// The allowed deviation around `expected`.
-    pub fn allowed(self, expected: f64) -> f64 {
-        self.atol + self.rtol * expected.abs()
-    }
-    pub fn accepts(self, expected: f64, x: f64) -> bool {
-        (x - expected).abs() <= self.allowed(expected) * (1.0 + 1e-9) + 1e-12
-    }
-}
-
-/// One answer box of an example.
-#[derive(Debug, Clone)]
-pub struct BoxDef {
-    /// A result key, or a path into one: `rho[3]` (1-based element),
-    /// `n[1,2]` (row 1, column 2). Also a key of a step's values.
-    pub key: String,
-    pub label: String,
-    pub unit: Option<&'static str>,
-    pub tolerance: Tolerance,
-    /// The first rung of the hint ladder: what to think about.
-    pub nudge: String,
-    /// What a sign flip means in this box, when it is a mistake worth
-    /// naming there (a coordinate: "check which way the axis points");
-    /// `None` for values whose sign is never in doubt (a mean, a length).
-    pub sign_flip: Option<&'static str>,
-    /// Half a unit in the last decimal the course's own worked example
-    /// prints for this value, when that is coarser than the tolerance: an
-    /// answer rounded to those digits is as precise as the box demands
-    /// (set by [`boxes_of`]).
-    pub printed_half: Option<f64>,
-}
-
-/// The sign flip of a coordinate, an offset or a shift.
-pub const AXIS_FLIP: &str =
-    "The size is right but the sign is not: check which way the axis points.";
-
-impl BoxDef {
-    pub fn new(key: &str, label: &str, unit: Option<&'static str>, tol: Tolerance) -> Self {
-        BoxDef {
-            key: key.to_string(),
-            label: label.to_string(),
-            unit,
-            tolerance: tol,
-            nudge: String::new(),
-            sign_flip: None,
-            printed_half: None,
-        }
-    }
-    pub fn nudge(mut self, text: &str) -> Self {
-        self.nudge = text.to_string();
-        self
-    }
-    /// A coordinate, offset or shift: a sign flip is named, with the axis hint.
-    pub fn axis(self) -> Self {
-        self.sign_flip(AXIS_FLIP)
-    }
-    /// A sign flip is named in this box, with `explain`.
-    pub fn sign_flip(mut self, explain: &'static str) -> Self {
-        self.sign_flip = Some(explain);
-        self
-    }
-}
-
-/// A mistake students make, with the value it gives in box `key`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Mistake {
-    pub key: String,
-    /// Short name shown in the feedback ("y not flipped").
-    pub name: &'static str,
-    /// One sentence on what went wrong.
-    pub explain: &'static str,
-    pub value: f64,
-}
-
-impl Mistake {
-    pub fn new(key: &str, name: &'static str, explain: &'static str, value: f64) -> Self {
-        Mistake {
-            key: key.to_string(),
-            name,
-            explain,
-            value,
-        }
-    }
-}
-
-/// The box values a student's earlier answers imply: `given` holds the
-/// answers (by box key) to use instead of the exact values.
-pub type Chain = fn(&Record, &Record) -> Result<Record>;
-
-/// How one example is practised.
-pub struct Spec {
-    pub id: &'static str,
-    /// Draws the inputs (constructively: every draw is a good variant).
-    pub generate: fn(&mut Rng) -> Record,
-    /// The answer boxes for these inputs, in the order a student fills them.
-    pub boxes: fn(&Record) -> Vec<BoxDef>,
-    /// Later boxes from earlier ones; `None` when the boxes do not build
-    /// on each other in a way worth carrying forward.
-    pub chain: Option<Chain>,
-    /// The known mistakes and the values they give.
-    pub mistakes: fn(&Record) -> Result<Vec<Mistake>>,
-}
-
-/// Every example that has practice, in catalog order.
+/// Every example that has practice, in catalog order: the drills of the
+/// descriptors, then the topic files' lists not yet moved into them.
 pub fn specs() -> Vec<Spec> {
-    let mut all = coordinates::specs();
+    let mut all: Vec<Spec> = examples::all()
+        .filter_map(|e| {
+            e.practice.map(|d| Spec {
+                id: e.id,
+                generate: d.generate,
+                boxes: d.boxes,
+                chain: d.chain,
+                mistakes: d.mistakes,
+            })
+        })
+        .collect();
+    all.extend(coordinates::specs());
     all.extend(transformations::specs());
     all.extend(correlation::specs());
     all.extend(matching::specs());
@@ -249,9 +116,19 @@ pub fn specs() -> Vec<Spec> {
     all
 }
 
-/// Whether example `id` has practice variants (for the catalog; no lookup of the catalog itself).
+/// Whether example `id` has practice variants.
 pub fn has(id: &str) -> bool {
     specs().iter().any(|s| s.id == id)
+}
+
+/// The catalog with each entry's practice flag joined from [`specs`] (the
+/// lists not yet in the descriptors included).
+pub fn catalog() -> Vec<examples::EntryInfo> {
+    let mut all = examples::catalog();
+    for e in &mut all {
+        e.practice |= has(e.id);
+    }
+    all
 }
 
 pub fn spec(id: &str) -> Result<Spec> {
@@ -443,18 +320,45 @@ pub fn digits_needed(exact: f64, allowed: f64) -> String {
     format!("{n} significant digit{}", if n == 1 { "" } else { "s" })
 }
 
-fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
-    let step = step_of(&b.key, s);
+/// The second and third hints of box `key`: the formula, and the formula
+/// with this variant's numbers but not what they come to. Read from the
+/// steps' parts: the relation that computes the box's value (its `key`),
+/// else the first relation of the box's step with numbers put in.
+fn hints_of(key: &str, s: &Solution, step: usize) -> (String, String) {
+    let (base, _) = split_key(key);
+    let keyed = s
+        .steps
+        .iter()
+        .flat_map(|st| st.parts.iter())
+        .find(|r| r.key.as_deref() == Some(base));
+    let in_step = || {
+        s.steps
+            .get(step)
+            .and_then(|st| st.parts.iter().find(|r| !r.substituted.is_empty()))
+    };
+    match keyed.or_else(in_step) {
+        Some(r) => {
+            let formula = r.symbolic_latex();
+            let formula = if formula.is_empty() {
+                s.steps.get(step).map(|st| st.formula.clone()).unwrap_or_default()
+            } else {
+                formula
+            };
+            (formula, r.question_latex())
+        }
+        None => legacy_hints(s, step, key),
+    }
+}
+
+/// The hints of a step built before its formula was data (no parts): read
+/// out of its LaTeX. Goes when every step has parts.
+fn legacy_hints(s: &Solution, step: usize, key: &str) -> (String, String) {
     let formula = s
         .steps
         .get(step)
         .map(|st| st.formula.clone())
         .unwrap_or_default();
-    // The numbers of the step, or of the step before when the step only
-    // states the result (a solution vector): never the answer itself.
-    let answer = value_in(s, &b.key).ok().map(crate::solution::num);
-    // The answer as printed, or its first five significant digits (a step
-    // may print it to more digits than `num` does: UTM's ξ, η).
+    let answer = value_in(s, key).ok().map(crate::solution::num);
     let gives_away = |t: &str| {
         answer.as_ref().is_some_and(|a| {
             a.len() >= 4 && (t.contains(a.as_str()) || t.contains(leading_digits(a, 5)))
@@ -466,6 +370,12 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
         .map(|st| without_result(&st.substituted))
         .find(|t| !t.is_empty() && !gives_away(t))
         .unwrap_or_default();
+    (formula, numbers)
+}
+
+fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
+    let step = step_of(&b.key, s);
+    let (formula, numbers) = hints_of(&b.key, s, step);
     BoxInfo {
         key: b.key.clone(),
         label: b.label.clone(),
@@ -570,21 +480,6 @@ fn without_result(tex: &str) -> String {
     }
 }
 
-/// The base name and 1-based indices of a box key (`n[1,2]` → `n`, [1, 2]).
-pub fn split_key(key: &str) -> (&str, Vec<usize>) {
-    match key.split_once('[') {
-        Some((base, rest)) => {
-            let idx = rest
-                .trim_end_matches(']')
-                .split(',')
-                .filter_map(|p| p.trim().parse().ok())
-                .collect();
-            (base, idx)
-        }
-        None => (key, Vec::new()),
-    }
-}
-
 /// The step that shows box `key`: the first whose values carry its base
 /// name, else the last step.
 fn step_of(key: &str, s: &Solution) -> usize {
@@ -595,52 +490,10 @@ fn step_of(key: &str, s: &Solution) -> usize {
         .unwrap_or(s.steps.len().saturating_sub(1))
 }
 
-/// The value of box `key` in a solution (its result, else a step's values).
-pub fn value_in(s: &Solution, key: &str) -> Result<f64> {
-    let (base, idx) = split_key(key);
-    let v = s
-        .result
-        .get(base)
-        .or_else(|| s.steps.iter().find_map(|st| st.values.get(base)))
-        .ok_or_else(|| Error::Internal(format!("practice box {key} is not in {}", s.id)))?;
-    pick(v, &idx).ok_or_else(|| Error::Internal(format!("practice box {key} is not a number")))
-}
-
-/// The number at 1-based `idx` inside a value (booleans count 1/0).
-pub fn pick(v: &Value, idx: &[usize]) -> Option<f64> {
-    match (v, idx.split_first()) {
-        (Value::Number(x), None) => Some(*x),
-        (Value::Bool(b), None) => Some(if *b { 1.0 } else { 0.0 }),
-        (Value::List(xs), Some((&i, rest))) => pick(xs.get(i.checked_sub(1)?)?, rest),
-        _ => None,
-    }
-}
-
-/// Rounds to `sig` significant digits.
-pub fn round_sig(x: f64, sig: i32) -> f64 {
-    if x == 0.0 || !x.is_finite() {
-        return x;
-    }
-    let p = 10f64.powi(sig - 1 - x.abs().log10().floor() as i32);
-    (x * p).round() / p
-}
-
-/// Shorthands for the topic files.
-pub(crate) fn nums(xs: &[f64]) -> Value {
-    Value::numbers(xs)
-}
-pub(crate) fn mat(rows: &[Vec<f64>]) -> Value {
-    Value::matrix(rows)
-}
-
-/// The value of `key` in `given`, else `exact`: what a chain computes on.
-pub(crate) fn or_given(given: &Record, key: &str, exact: f64) -> f64 {
-    given.number(key).unwrap_or(exact)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::solution::Value;
 
     #[test]
     fn codes_round_trip_and_read_forgivingly() {

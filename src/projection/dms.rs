@@ -3,9 +3,9 @@
 //! `55:30:12.5 S`, `W 6 15`). A hemisphere letter (N, S, E, W, either case)
 //! may stand first or last instead of a sign; S and W make the angle
 //! negative. Each number is read by the one number reader
-//! ([`crate::practice::read`]): a decimal point or comma (`55,5`).
+//! ([`crate::read`]): a decimal point or comma (`55,5`).
 
-use crate::practice::read::{read_value, short};
+use crate::read::{read_value, short};
 
 /// Reads an angle in degrees; `pos`/`neg` are the hemisphere letters the
 /// field allows (`'N'`/`'S'` for a latitude, `'E'`/`'W'` for a longitude).

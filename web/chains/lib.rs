@@ -1,3 +1,3 @@
 //! The Chain codes and boundaries examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::chains::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::chains::TOPIC);

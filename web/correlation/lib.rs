@@ -1,5 +1,5 @@
 //! The Correlation examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
 photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::correlation::entries
+    photogrammetry_playground::examples::correlation::TOPIC
 );

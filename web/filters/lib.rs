@@ -1,3 +1,3 @@
 //! The Filters and edges examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::filters::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::filters::TOPIC);

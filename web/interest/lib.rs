@@ -1,3 +1,3 @@
 //! The Interest operators examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::interest::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::interest::TOPIC);

@@ -1,3 +1,3 @@
 //! The Least-squares matching examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
-photogrammetry_playground::export_examples!(photogrammetry_playground::examples::matching::entries);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::matching::TOPIC);

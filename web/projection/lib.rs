@@ -1,5 +1,3 @@
 //! The Map projection examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
-photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::projection::entries
-);
+photogrammetry_playground::export_examples!(photogrammetry_playground::examples::projection::TOPIC);

@@ -1,5 +1,5 @@
 //! The Transformations examples' wasm module: `catalog`, `solve`, `parse_inputs`.
 #![cfg(target_arch = "wasm32")]
 photogrammetry_playground::export_examples!(
-    photogrammetry_playground::examples::transformations::entries
+    photogrammetry_playground::examples::transformations::TOPIC
 );
