@@ -340,7 +340,10 @@ fn hints_of(key: &str, s: &Solution, step: usize) -> (String, String) {
         Some(r) => {
             let formula = r.symbolic_latex();
             let formula = if formula.is_empty() {
-                s.steps.get(step).map(|st| st.formula.clone()).unwrap_or_default()
+                s.steps
+                    .get(step)
+                    .map(|st| st.formula.clone())
+                    .unwrap_or_default()
             } else {
                 formula
             };
