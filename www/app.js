@@ -130,7 +130,8 @@ function buildView(entry) {
   // practice mode (www/practice/): fresh numbers for this example
   if (entry.practice !== false) actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
   // the same operator on a whole photo, in the image lab
-  if (mode === "full" && LAB_FAMILY[id]) actions.append(el("a", { class: "button lab-try", href: `#/lab?family=${LAB_FAMILY[id]}` }, "Try it on a photo"));
+  const family = mode === "full" ? labFamily(entry) : null;
+  if (family) actions.append(el("a", { class: "button lab-try", href: `#/lab?family=${encodeURIComponent(family)}` }, "Try it on a photo"));
   if (mode === "embed") {
     const open = el("a", { class: "open-full", target: "_blank", rel: "noopener", href: "index.html" }, `Open in ${SITE_TITLE} ↗`);
     v.openLink = open;
@@ -502,8 +503,15 @@ function quoteKey(key) {
 
 let labModule = null;
 
-/** The lab's operator family of each example that has its operator on whole images. */
-const LAB_FAMILY = Object.freeze({
+/**
+ * The lab family an example opens in: the catalog's `lab` (from the core's
+ * descriptors). LAB_FAMILY_BEFORE only serves a catalog written before the
+ * core said it (to be removed once every build's catalog has `lab`).
+ */
+function labFamily(entry) {
+  return entry.lab ?? LAB_FAMILY_BEFORE[entry.id] ?? null;
+}
+const LAB_FAMILY_BEFORE = Object.freeze({
   "filter-window": "filters",
   "edge-window": "edges",
   "forstner-window": "interest",
@@ -574,9 +582,9 @@ async function route({ focus = false } = {}) {
     return;
   }
   if (!(view && view.id === id)) {
-    if (figuresPending(entry.topic) || !core.loaded(id)) setStatus("loading");
+    if (figuresPending(entry.module) || !core.loaded(id)) setStatus("loading");
     // the example's own wasm module and its figures, in parallel
-    await Promise.all([core.load(id), loadFigures(entry.topic)]);
+    await Promise.all([core.load(id), loadFigures(entry.module)]);
     if (location.hash !== hash) return; // the reader moved on; that hashchange routes
   }
   const v = view && view.id === id ? view : buildView(entry);
@@ -611,8 +619,8 @@ async function main() {
     const { id, params } = parseHash(location.hash);
     if (!params.some(([key]) => key === "practice")) {
       c.load(id).catch(() => {}); // route() reports errors
-      const topic = c.catalog().find((e) => e.id === id)?.topic;
-      if (topic) loadFigures(topic);
+      const module = c.catalog().find((e) => e.id === id)?.module;
+      if (module) loadFigures(module);
     }
     return c;
   });

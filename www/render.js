@@ -202,7 +202,6 @@ function diffCell(solution, key, exact, printed) {
     // a sign slip or another convention: not a difference to report as a number
     const kind = explaining[0].kind;
     td.append(el("span", { class: `verdict verdict-${kind}` }, kind === "erratum" ? "erratum" : "other convention"), " — see ", ...explaining.flatMap((x, i) => (i ? [", ", noteLink(x)] : [noteLink(x)])));
-    td.dataset.verdict = kind;
     return td;
   }
   const diff = zipMap(exact, printed, (e, p) => formatDifference(e, p));
@@ -220,7 +219,6 @@ function diffCell(solution, key, exact, printed) {
   );
   const others = notesAbout(solution, key);
   if (!agrees && others.length) td.append(" — see ", ...others.flatMap((x, i) => (i ? [", ", noteLink(x)] : [noteLink(x)])));
-  td.dataset.verdict = agrees ? "agrees" : "differs";
   return td;
 }
 

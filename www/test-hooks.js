@@ -12,3 +12,10 @@ export const testing = globalThis.__playgroundTest === true;
 export function testHook(name, value) {
   if (testing) document.body.dataset[name] = String(value);
 }
+
+/** Sets (or, with null, removes) an element's data-NAME under the tests; nothing otherwise. */
+export function testData(node, name, value) {
+  if (!testing || !node?.dataset) return;
+  if (value === null || value === undefined) delete node.dataset[name];
+  else node.dataset[name] = String(value);
+}

@@ -163,40 +163,26 @@ export async function waitForExact(page, key, expected, tol = 1e-3) {
   );
 }
 
-/** The ids of every example of shared/CATALOG.md (read from it when it is beside the repo). */
-export const CATALOG_IDS = [
-  "pixel-to-photo",
-  "gsd",
-  "photo-to-pixel",
-  "fiducial-similarity",
-  "fiducial-affine",
-  "transform-fit",
-  "ncc-1d",
-  "ncc-2d",
-  "ncc-surface",
-  "subpixel-1d",
-  "subpixel-2d",
-  "lsm-1d",
-  "lsm-2d",
-  "lsm-affine",
-  "resample",
-  "filter-window",
-  "edge-window",
-  "forstner-window",
-  "moravec-window",
-  "chain-code",
-  "boundary-length",
-  "boundary-shape",
-  "utm",
-  "utm-inverse",
-];
-
 /**
- * Entries beyond CATALOG.md, each documented in docs/API.md
- * (forstner-image: the Förstner operator on a generated test pattern;
- * utm-facts: seed 004's UTM facts, checked).
+ * The built catalog (dist's catalog.json, by its hashed name in assets.json):
+ * every example's entry, in catalog order (topics in page order). [] when
+ * the site is not built (start() says so).
  */
-export const EXTRA_IDS = ["forstner-image", "utm-facts"];
+export function builtCatalog() {
+  for (const name of [() => built("catalog.json"), () => "catalog.json"]) {
+    try {
+      const data = JSON.parse(fs.readFileSync(path.join(DIST, name()), "utf8"));
+      const entries = Array.isArray(data) ? data : data.entries;
+      if (Array.isArray(entries)) return entries;
+    } catch {
+      // not built, or by another name: the next way
+    }
+  }
+  return [];
+}
+
+/** The ids of every example, from the built catalog (the core's descriptors: no list kept here). */
+export const CATALOG_IDS = Object.freeze(builtCatalog().map((e) => e.id));
 
 /** The ids in ../shared/CATALOG.md (first column of its tables), or null when absent. */
 export function catalogMdIds() {

@@ -3,6 +3,7 @@
 
 import { formatNumber } from "../format.js";
 import { GREY_WORDS, SIGNED_NEGATIVE, SIGNED_POSITIVE, rgbText } from "../colour-scales.js";
+import { testData } from "../test-hooks.js";
 
 export const FONT_FAMILY = 'system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif';
 export const FONT_SIZE = 13;
@@ -241,7 +242,7 @@ export function finite(value, fallback = 0) {
 // pattern's absolute 0…255 uses levels [0, 255]. Every scale drawn gets a
 // legend (greyLegend): a small ramp between its low and high values, and
 // "dark = low". The scales are recorded on the canvas (`canvas.greyScales`,
-// and as JSON in its `data-grey-scales`: { name, lo, hi, text, legend: box,
+// and, under the tests (test-hooks.js), as JSON in its `data-grey-scales`: { name, lo, hi, text, legend: box,
 // low, high: the lowest and highest valued cells drawn, {x, y, w, h, v} })
 // for the tests and for the figure's accessible label (index.js).
 
@@ -369,7 +370,7 @@ function recordGreyScale(canvas, scale, legend) {
   if (!canvas) return;
   const entry = { name: scale.name, lo: scale.lo, hi: scale.hi, text: greyLegendText(scale), legend, low: scale.low, high: scale.high };
   canvas.greyScales = [...(canvas.greyScales ?? []), entry];
-  if (canvas.dataset) canvas.dataset.greyScales = JSON.stringify(canvas.greyScales);
+  testData(canvas, "greyScales", JSON.stringify(canvas.greyScales));
 }
 
 // ---------------------------------------------------------------------------
@@ -386,7 +387,7 @@ function recordGreyScale(canvas, scale, legend) {
 // some labels (`place()`), register more marks and add more labels: marks
 // registered later do not move labels already placed.
 // The boxes placed are recorded on the canvas (`canvas.labelBoxes`, and as
-// JSON in its `data-label-boxes`: { text, x, y, w, h, hits }, hits = how many
+// JSON in its `data-label-boxes` under the tests (test-hooks.js): { text, x, y, w, h, hits }, hits = how many
 // registered marks the label covers) so tests can check that none overlap.
 
 /** Unit offsets of the compass spots ("C" = centred on the anchor). */
@@ -436,16 +437,14 @@ export function clearLabelBoxes(canvas) {
   if (!canvas) return;
   canvas.labelBoxes = [];
   canvas.greyScales = [];
-  if (canvas.dataset) {
-    delete canvas.dataset.labelBoxes;
-    delete canvas.dataset.greyScales;
-  }
+  testData(canvas, "labelBoxes", null);
+  testData(canvas, "greyScales", null);
 }
 
 function recordLabelBoxes(canvas, boxes) {
   if (!canvas || !boxes.length) return;
   canvas.labelBoxes = [...(canvas.labelBoxes ?? []), ...boxes];
-  if (canvas.dataset) canvas.dataset.labelBoxes = JSON.stringify(canvas.labelBoxes);
+  testData(canvas, "labelBoxes", JSON.stringify(canvas.labelBoxes));
 }
 
 export class Labels {

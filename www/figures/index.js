@@ -4,7 +4,7 @@
 // example id to a figure spec, or to an array of specs (one canvas each):
 //
 //   export const figures = {
-//     "gsd": {
+//     "<example id>": {
 //       caption: "Side view of the camera …",          // shown under the canvas
 //       height(width, solution) { return 300; },       // CSS px for a CSS width
 //       describe(solution) { return "…"; },             // the canvas's aria-label
@@ -12,7 +12,8 @@
 //     },
 //   };
 //
-// and its module is listed by topic in MODULES below.
+// and is named after its topic's module (the catalog's `module`: figures/<module>.js,
+// listed in MODULES below).
 //
 // Optional: `slider(solution)` returns { label, min, max, value } (integers)
 // or null; the panel then gets a labelled range input (keyboard-usable), and
@@ -62,55 +63,59 @@
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { COLORS, clearLabelBoxes, font, FONT_SIZE, pageTheme, usePalette } from "./draw.js";
+import { testData } from "../test-hooks.js";
 
 /** While the page prints, figures are drawn on the light paper whatever the theme. */
 let printing = false;
 
 /**
- * The figure module of each topic (the catalog's `topic`), loaded when an
- * example of that topic is first shown, so a page shows its first example
- * without fetching every topic's drawing code.
+ * The figure module of each topic, by the topic's wasm module name (the
+ * catalog's `module`: figures/<module>.js), loaded when an example of that
+ * topic is first shown, so a page shows its first example without fetching
+ * every topic's drawing code. The import paths are literal: the bundler
+ * splits code at each, and names the chunks.
  */
 const MODULES = Object.freeze({
-  Coordinates: () => import("./coordinates.js"),
-  Transformations: () => import("./transformations.js"),
-  Correlation: () => import("./correlation.js"),
-  "Least-squares matching": () => import("./matching.js"),
-  Resampling: () => import("./resampling.js"),
-  "Filters and edges": () => import("./filters.js"),
-  "Interest operators": () => import("./interest.js"),
-  "Chain codes and boundaries": () => import("./chains.js"),
-  "Map projection": () => import("./projection.js"),
+  coordinates: () => import("./coordinates.js"),
+  transformations: () => import("./transformations.js"),
+  correlation: () => import("./correlation.js"),
+  matching: () => import("./matching.js"),
+  resampling: () => import("./resampling.js"),
+  filters: () => import("./filters.js"),
+  interest: () => import("./interest.js"),
+  chains: () => import("./chains.js"),
+  projection: () => import("./projection.js"),
 });
 
 /** id → spec or [spec…], filled as topic modules load. */
 const REGISTRY = {};
 const loading = new Map();
 
-/** Whether a topic's figures still have to be fetched (the page then shows "loading"). */
-export function figuresPending(topic) {
-  return Object.hasOwn(MODULES, topic) && !loading.has(topic);
+/** Whether a module's figures still have to be fetched (the page then shows "loading"). */
+export function figuresPending(module) {
+  return Object.hasOwn(MODULES, module) && !loading.has(module);
 }
 
 /**
- * Loads the figures of `topic` (once); resolves when its examples' figures
- * are registered. A module that fails to load leaves those examples without
- * a figure (the error is logged) and is tried again next time.
+ * Loads the figures of the topic whose wasm module is `module` (the
+ * catalog's `module`, once); resolves when its examples' figures are
+ * registered. A module that fails to load leaves those examples without a
+ * figure (the error is logged) and is tried again next time.
  */
-export function loadFigures(topic) {
-  if (!Object.hasOwn(MODULES, topic)) return Promise.resolve();
-  if (!loading.has(topic)) {
-    const promise = MODULES[topic]()
-      .then((module) => {
-        Object.assign(REGISTRY, module.figures);
+export function loadFigures(module) {
+  if (!Object.hasOwn(MODULES, module)) return Promise.resolve();
+  if (!loading.has(module)) {
+    const promise = MODULES[module]()
+      .then((loaded) => {
+        Object.assign(REGISTRY, loaded.figures);
       })
       .catch((e) => {
-        loading.delete(topic);
-        console.warn(`the figures of "${topic}" could not be loaded`, e);
+        loading.delete(module);
+        console.warn(`the figures of "${module}" could not be loaded`, e);
       });
-    loading.set(topic, promise);
+    loading.set(module, promise);
   }
-  return loading.get(topic);
+  return loading.get(module);
 }
 
 /** Heights are kept within these bounds (CSS px). */
@@ -150,7 +155,7 @@ function paint(panel, solution, shared = { selected: null }) {
   const ctx = canvas.getContext("2d");
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   // the page's theme: a dark paper in the dark theme (image greys keep dark = low)
-  canvas.dataset.theme = usePalette(printing ? "light" : pageTheme());
+  testData(canvas, "theme", usePalette(printing ? "light" : pageTheme()));
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
   const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null };

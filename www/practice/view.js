@@ -16,6 +16,7 @@ import { postAnswer } from "./events.js";
 import { loadProgress, saveProgress } from "./store.js";
 import { showOverview, showWorksheet } from "./sheets.js";
 import { siteTitle } from "../site.js";
+import { testData } from "../test-hooks.js";
 
 const STYLESHEET = "./practice/practice.css";
 /** The rungs of a box's hint ladder. */
@@ -305,11 +306,10 @@ function buildVariant(ctx, entry, variant, answers) {
           b.parts.append(el("li", { class: `verdict-part part-${kind}`, "data-part": part, "data-kind": kind }, el("span", { class: "part-mark", "aria-hidden": "true" }, PART_MARK[kind]), " ", text));
         }
         const [word, rest] = verdictSentence(r.verdict, r.message);
-        if (r.mistake) b.item.dataset.mistake = r.mistake;
-        else delete b.item.dataset.mistake;
+        testData(b.item, "mistake", r.mistake || null);
         b.feedback.append(el("span", { class: `verdict verdict-${r.verdict}` }, word), rest);
       } else {
-        delete b.item.dataset.mistake;
+        testData(b.item, "mistake", null);
       }
     }
     const scoreText = `Score: ${g.score} of ${g.out_of}`;
