@@ -513,6 +513,51 @@ impl Field {
             Value::Null | Value::Object(_) => String::new(),
         }
     }
+
+    /// A matrix field of any size up to [`MAX_DIM`] × [`MAX_DIM`] with the
+    /// seed's rows (fix its size with [`shape`](Self::shape)).
+    pub fn matrix(key: &'static str, label: &'static str, default: &[Vec<f64>]) -> Self {
+        Field {
+            kind: Kind::Matrix {
+                rows: None,
+                cols: None,
+            },
+            default: Value::matrix(default),
+            ..Field::number(key, label, 0.0)
+        }
+    }
+
+    /// Fixes the size of a matrix field to `rows` × `cols`.
+    pub fn shape(mut self, rows: usize, cols: usize) -> Self {
+        if let Kind::Matrix { rows: r, cols: c } = &mut self.kind {
+            *r = Some(rows);
+            *c = Some(cols);
+        }
+        self
+    }
+
+    /// A list-of-numbers field of `min_len` to `max_len` elements.
+    pub fn vector(
+        key: &'static str,
+        label: &'static str,
+        (min_len, max_len): (usize, usize),
+        default: &[f64],
+    ) -> Self {
+        Field {
+            kind: Kind::Vector { min_len, max_len },
+            default: Value::numbers(default),
+            ..Field::number(key, label, 0.0)
+        }
+    }
+
+    /// A true/false field.
+    pub fn flag(key: &'static str, label: &'static str, default: bool) -> Self {
+        Field {
+            kind: Kind::Flag,
+            default: Value::Bool(default),
+            ..Field::number(key, label, 0.0)
+        }
+    }
 }
 
 fn check_len(key: &str, n: usize, min: usize, max: usize, what: &str) -> Result<()> {
@@ -669,6 +714,29 @@ impl Inputs<'_> {
                 })
                 .collect(),
             _ => Err(bad()),
+        }
+    }
+
+    /// The numbers of a validated vector field.
+    pub fn list(&self, key: &str) -> Result<Vec<f64>> {
+        let bad = || {
+            Error::Internal(format!(
+                "validated input \"{key}\" is not a list of numbers"
+            ))
+        };
+        match self.0.get(key) {
+            Some(Value::List(xs)) => xs.iter().map(|x| x.as_f64().ok_or_else(bad)).collect(),
+            _ => Err(bad()),
+        }
+    }
+
+    /// The value of a validated flag field.
+    pub fn flag(&self, key: &str) -> Result<bool> {
+        match self.0.get(key) {
+            Some(Value::Bool(b)) => Ok(*b),
+            _ => Err(Error::Internal(format!(
+                "validated input \"{key}\" is not a flag"
+            ))),
         }
     }
 }
