@@ -129,6 +129,17 @@ export async function stepsHtml(page) {
   return page.evaluate(() => document.querySelector(".steps-body").innerHTML);
 }
 
+/**
+ * Waits until nothing more can happen on its own: no request in flight (the
+ * network idle), the fonts in, and a frame drawn after them (what a late
+ * script, image error handler, font or layout change would have shown is
+ * there by then). For "nothing happened" checks, instead of a fixed sleep.
+ */
+export async function quiet(page) {
+  await page.waitForLoadState("networkidle");
+  await page.evaluate(() => document.fonts.ready.then(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)))));
+}
+
 /** Loads `file#hash` and waits for the page to settle. */
 export async function visit(page, base, file, hash = "") {
   await page.goto(`${base}${file}${hash}`);

@@ -3,7 +3,7 @@
 // field, and URL text that never becomes markup.
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
-import { TEST_TIMEOUT, cellText, exact, open, parseShown, settled, start, visit, waitForExact } from "./harness.mjs";
+import { TEST_TIMEOUT, cellText, exact, open, parseShown, quiet, settled, start, visit, waitForExact } from "./harness.mjs";
 
 const GSD_SEED = "#/gsd?dpi=900&focal_length_mm=152&flying_height_m=1920";
 // 25.4/900 mm × 1920 m / 152 mm, in cm; and at 1200 dpi
@@ -231,7 +231,8 @@ describe("bad inputs", () => {
       await visit(page, env.url, "embed.html", `#/pixel-to-photo?c=${e}&${e}=${e}&${alerting}=${alerting}`);
       assert.equal(await page.locator("img").count(), 0);
 
-      await page.waitForTimeout(200);
+      // a payload that ran (a script, an image's onerror after its request failed) would have by now
+      await quiet(page);
       assert.equal(await page.evaluate(() => window.__pwned), undefined);
       assert.deepEqual(log.dialogs, []);
       assert.deepEqual(log.pageErrors, []);
