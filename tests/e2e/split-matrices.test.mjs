@@ -4,7 +4,8 @@
 // around the matrix ("A X = L + V": X, "= L + V") comes after the whole
 // matrix, never glued to its last block; an equation around a small matrix
 // ("[a1 a2; a4 a5] = […]") wraps at its relation instead of splitting the
-// matrix; nothing is cut.
+// matrix; nothing is cut. The layout comes from the steps' parts (grids as
+// rows of cells, named by the core): www/formula-plan.js.
 
 import assert from "node:assert/strict";
 import { after, before, describe, test } from "node:test";
@@ -23,7 +24,8 @@ async function splits(page) {
       const next = terms[terms.indexOf(lastTerm) + 1] ?? null;
       return {
         formula: node.closest(".formula").dataset.tex.slice(0, 80),
-        captions: own.map((b) => b.querySelector(".formula-block-caption").textContent),
+        // the caption as plain text (data-caption: its matrix name typeset, with MathML, in the caption itself)
+        captions: own.map((b) => b.querySelector(".formula-block-caption").dataset.caption),
         firstTex: own[0].querySelector(".formula-term").dataset.tex,
         lastTex: lastTerm.dataset.tex,
         lastBottom: last.getBoundingClientRect().bottom,
@@ -76,7 +78,7 @@ describe("split matrices keep their names and their equations (390 px)", { timeo
           const terms = [...f.querySelectorAll(".formula-term")];
           const a = terms.filter((t) => /2699\.98/.test(t.dataset.tex) && !t.dataset.tex.trim().startsWith("="));
           const eq = terms.find((t) => t.dataset.tex.trim().startsWith("="));
-          return { aBottom: Math.max(...a.map((t) => t.getBoundingClientRect().bottom)), eqTop: eq.getBoundingClientRect().top, eq: eq.dataset.tex.slice(0, 30), captions: [...f.querySelectorAll(".formula-block-caption")].map((c) => c.textContent) };
+          return { aBottom: Math.max(...a.map((t) => t.getBoundingClientRect().bottom)), eqTop: eq.getBoundingClientRect().top, eq: eq.dataset.tex.slice(0, 30), captions: [...f.querySelectorAll(".formula-block-caption")].map((c) => c.dataset.caption) };
         });
         assert.ok(order.eqTop >= order.aBottom - 2, `${id}: "${order.eq}" (top ${order.eqTop}) is beside A (bottom ${order.aBottom})`);
         if (id === "fiducial-affine") assert.deepEqual(order.captions.map((c) => c.split(",")[0]), order.captions.map(() => "A"), `A (8×6) in named blocks: ${order.captions}`);
