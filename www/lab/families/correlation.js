@@ -40,7 +40,7 @@ const correlation = {
         bImage = lab.image;
         return "same";
       }
-      const bytes = await (await fetch(new URL(`./samples/${pairName}`, import.meta.url))).arrayBuffer();
+      const bytes = await (await fetch(new URL(`../samples/${pairName}`, import.meta.url))).arrayBuffer();
       const r = await lab.run("load", { slot: "b", name: pairName, bytes }, `Decoding ${pairName}`, [bytes]);
       if (!r) return null;
       bImage = { ...r, name: pairName };
