@@ -49,9 +49,9 @@ export function slug(heading) {
     .trim()
     .toLowerCase()
     .replace(/<[^>]+>/g, "")
-    .replace(/[`*_~]/g, "")
+    .replace(/[`*~]/g, "")
     .replace(/\[([^\]]*)\]\([^)]*\)/g, "$1")
-    .replace(/[^\p{L}\p{N}\s-]/gu, "")
+    .replace(/[^\p{L}\p{N}\s_-]/gu, "")
     .replace(/\s/g, "-");
 }
 
@@ -92,12 +92,12 @@ export function brokenLinks(files = markdownFiles()) {
 
 describe("rules: the docs' links resolve", () => {
   it("reads links and anchors as GitHub does (small cases)", () => {
-    const md = "# The JS API\n## `solve(id)` → Solution\nSee [a](docs/a.md#x) and ![p](img/p.png \"t\").\n`[not](a link)`\n```\n[nor](this)\n```\n[ref]: ./b.md\n<img src=\"c.png\" alt=\"\">";
+    const md = "# The JS API\n## `solve(id)` → Solution\nSee [a](docs/a.md#x) and ![p](img/p.png \"t\").\n`[not](a link)`\n```\n[nor](this)\n```\n[ref]: ./b.md\n<img src=\"c.png\" alt=\"\">\n## The lab (`scripts/bench_lab.mjs`)";
     assert.deepEqual(
       linksOf(md).map((l) => `${l.line} ${l.target}`),
       ["3 docs/a.md#x", "3 img/p.png", "8 ./b.md", "9 c.png"],
     );
-    assert.deepEqual([...anchorsOf(md)], ["the-js-api", "solveid--solution"]);
+    assert.deepEqual([...anchorsOf(md)], ["the-js-api", "solveid--solution", "the-lab-scriptsbench_labmjs"]);
   });
 
   it("README.md and docs/*.md link only to files and headings that exist", () => {
