@@ -12,7 +12,7 @@
 // counted.
 import { describe, it } from "node:test";
 import assert from "node:assert/strict";
-import { exampleIds, idSpread, literalsOfJs, spreadTable } from "./rules-lib.mjs";
+import { exampleIds, idSpread, literalsOfJs, literalsOfRust, spreadTable } from "./rules-lib.mjs";
 
 export { idSpread, spreadTable };
 
@@ -34,6 +34,15 @@ describe("rules: one place per example id", () => {
   it("the measurement counts literals, not comments or longer strings", () => {
     assert.deepEqual(literalsOfJs(`// "gsd"\nconst a = "gsd", b = '#/gsd', c = \`gsd\`, d = \`\${x}gsd\`; /* 'gsd' */ const r = /"x"/;`), ["gsd", "#/gsd", "gsd"]);
     assert.deepEqual(literalsOfJs(`const f = { gsd: 1, "lsm-2d": 2 }; x ? a : b;`), ["lsm-2d", "gsd"]);
+    const rust = [
+      '/// "gsd" in a doc comment',
+      'const ID: &str = "gsd"; // "utm"',
+      "fn f<'a>(c: char) -> bool { c == '\"' || r#\"raw \"q\"\"#.is_empty() }",
+      '#[cfg(test)]',
+      'mod tests { const T: &str = "ncc-1d"; }',
+      'const LAST: &str = "lsm-2d";',
+    ].join("\n");
+    assert.deepEqual(literalsOfRust(rust), ["gsd", 'raw "q"', "lsm-2d"]);
   });
 
   it(`every example id is a literal in at most ${MAX_FILES_PER_ID} source files outside tests/`, () => {

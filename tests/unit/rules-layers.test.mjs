@@ -19,6 +19,7 @@ import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
 import { lexRust, read, ROOT, sourceFiles, withoutTestItems } from "./rules-lib.mjs";
+import { site } from "./site.mjs";
 
 /** The layers of the core crate, lowest first. */
 export const LAYERS = ["core", "examples", "practice", "wasm"];
@@ -57,10 +58,14 @@ export function cycles(graph) {
   return out.sort((a, b) => a[0].localeCompare(b[0]));
 }
 
-/** The page's import graph: file → Map(imported file → kinds), paths from the repository root. */
-export async function jsImportGraph() {
+/**
+ * The page's import graph: file → Map(imported file → kinds), paths from
+ * `base` (the repository root; a test's folder). Imports of files that do not
+ * exist (pkg/*.js, made by the build), of vendor/ and outside `dir` are left out.
+ */
+export async function jsImportGraph(base = ROOT, dir = "www") {
   const esbuild = await import("esbuild");
-  const entryPoints = sourceFiles(["www"], [".js"]).map((f) => path.join(ROOT, f));
+  const entryPoints = (base === ROOT ? sourceFiles([dir], [".js"]) : fs.readdirSync(path.join(base, dir), { recursive: true }).filter((f) => f.endsWith(".js")).map((f) => path.join(dir, f))).map((f) => path.join(base, f));
   const external = {
     name: "external-missing",
     setup(build) {
@@ -70,7 +75,7 @@ export async function jsImportGraph() {
         if (!/^\.{0,2}\//.test(args.path)) return { path: args.path, external: true };
         const target = path.resolve(args.resolveDir, args.path);
         if (!fs.existsSync(target)) return { path: args.path, external: true };
-        if (!target.startsWith(path.join(ROOT, "www") + path.sep) || target.includes(`${path.sep}vendor${path.sep}`)) return { path: args.path, external: true };
+        if (!target.startsWith(path.join(base, dir) + path.sep) || target.includes(`${path.sep}vendor${path.sep}`)) return { path: args.path, external: true };
         return undefined;
       });
     },
@@ -82,7 +87,8 @@ export async function jsImportGraph() {
     metafile: true,
     format: "esm",
     splitting: true,
-    outdir: path.join(ROOT, "target", "rules-layers"),
+    outdir: path.join(base, "target", "rules-layers"),
+    absWorkingDir: base,
     logLevel: "silent",
     plugins: [external],
     loader: { ".css": "empty", ".html": "empty", ".json": "json" },
@@ -220,6 +226,30 @@ describe("rules: layers point one way", () => {
     assert.deepEqual(modulePath("src/examples/chains/edge.rs"), ["examples", "chains", "edge"]);
     assert.equal(layerOf("examples::chains"), "examples");
     assert.equal(layerOf("projection::krueger"), "core");
+    const edges = [
+      { from: "coords", to: "examples::fields", file: "src/coords.rs", line: 3 },
+      { from: "examples::projection", to: "examples::projection_facts", file: "src/examples/projection.rs", line: 8 },
+      { from: "examples::projection_facts::geometry", to: "examples::projection", file: "src/examples/projection_facts/geometry.rs", line: 2 },
+      { from: "examples::chains::edge", to: "examples::chains", file: "src/examples/chains/edge.rs", line: 1 },
+      { from: "practice", to: "examples", file: "src/practice/mod.rs", line: 5 },
+    ];
+    assert.deepEqual(layerViolations({ edges }), ["src/coords.rs:3 coords (core) mentions examples::fields (examples)"]);
+    const modules = ["", "coords", "examples", "examples::fields", "examples::projection", "examples::projection_facts", "examples::projection_facts::geometry", "examples::chains", "examples::chains::edge", "practice"];
+    // a child using its parent (super::) is not a cycle; two siblings using each other are
+    assert.deepEqual(siblingCycles({ modules, edges }), [
+      "examples::projection ↔ examples::projection_facts: examples::projection → examples::projection_facts (src/examples/projection.rs:8); examples::projection_facts → examples::projection (src/examples/projection_facts/geometry.rs:2)",
+    ]);
+  });
+
+  it("finds a cycle of imports in a small site, static or dynamic", async () => {
+    const dir = site({
+      "www/a.js": 'import { b } from "./b.js";\nexport const a = 1;',
+      "www/b.js": 'export const b = 2;\nexport function later() { return import("./c.js"); }',
+      "www/c.js": 'export * from "./a.js";\nimport "./pkg/made-by-the-build.js";',
+      "www/d.js": 'import { a } from "./a.js";',
+    });
+    const graph = await jsImportGraph(dir, "www");
+    assert.deepEqual(jsCycles(graph), ["www/a.js ↔ www/b.js ↔ www/c.js: www/a.js → www/b.js (import-statement); www/b.js → www/c.js (dynamic-import); www/c.js → www/a.js (import-statement)"]);
   });
 
   it("the page's modules import each other without a cycle", async () => {

@@ -295,11 +295,7 @@ export function exampleIds() {
 /** The string literals (their whole text) of one source file, outside comments and test items. */
 export function literalsOf(file) {
   const text = read(file);
-  if (file.endsWith(".rs")) {
-    const { strings, bare } = lexRust(text);
-    const live = withoutTestItems(bare);
-    return strings.filter((s) => live[s.start - 1] === '"').map((s) => s.value);
-  }
+  if (file.endsWith(".rs")) return literalsOfRust(text);
   if (file.endsWith(".html")) {
     const out = [];
     const noComments = text.replace(/<!--[\s\S]*?-->/g, (c) => c.replace(/[^\n]/g, " "));
@@ -311,6 +307,13 @@ export function literalsOf(file) {
     return out;
   }
   return literalsOfJs(text);
+}
+
+/** The string literals of Rust `text`, outside comments and #[cfg(test)] items. */
+export function literalsOfRust(text) {
+  const { strings, bare } = lexRust(text);
+  const live = withoutTestItems(bare);
+  return strings.filter((s) => live[s.start - 1] === '"').map((s) => s.value);
 }
 
 /**
