@@ -6,19 +6,20 @@
 
 import { formatNumber } from "../format.js";
 import {
-  COLORS,
-  DASH,
-  DOTS,
-  FONT_SIZE,
-  FONT_SIZE_SMALL,
-  LINE_HEIGHT,
   arrow,
   blockSize,
+  COLORS,
+  DASH,
   dot,
+  DOTS,
   finite,
+  FONT_SIZE,
+  FONT_SIZE_SMALL,
   inside,
   line,
+  LINE_HEIGHT,
   overlaps,
+  ring,
   text,
   textBlock,
   textWidth,
@@ -52,6 +53,17 @@ const MM_TICK_DIGITS = 4;
 const LABEL_STEPS = [0, 14, 28];
 /** Space kept between a label and the canvas edge. */
 const LABEL_ROOM = 6;
+
+/** A marked span (a pixel on the image plane, its footprint on the ground): a highlighted bar 10 px high centred on (cx, y). */
+function markedSpan(ctx, cx, y, half) {
+  ctx.save();
+  ctx.fillStyle = COLORS.highlightFill;
+  ctx.strokeStyle = COLORS.highlight;
+  ctx.lineWidth = 1.5;
+  ctx.fillRect(cx - half, y - 5, 2 * half, 10);
+  ctx.strokeRect(cx - half, y - 5, 2 * half, 10);
+  ctx.restore();
+}
 
 /** The numbers a frame figure needs, from either example's solution. */
 function frameData(solution, id) {
@@ -231,13 +243,7 @@ function drawFrame(ctx, width, height, solution, id) {
   line(ctx, xp, yp, xc, yp, { color: COLORS.imageSystem, dash: DOTS, width: 1.8 });
 
   // the centre
-  ctx.save();
-  ctx.strokeStyle = COLORS.imageSystem;
-  ctx.lineWidth = 1.5;
-  ctx.beginPath();
-  ctx.arc(xc, yc, FRAME.centreRadius, 0, 2 * Math.PI);
-  ctx.stroke();
-  ctx.restore();
+  ring(ctx, xc, yc, FRAME.centreRadius, COLORS.imageSystem);
   dot(ctx, xc, yc, 1.8, COLORS.imageSystem);
 
   dot(ctx, xp, yp, FRAME.pointRadius, COLORS.point);
@@ -352,13 +358,7 @@ function drawGsd(ctx, width, height, solution) {
   // image plane with one pixel
   line(ctx, cx - planeHalf, yImage, cx + planeHalf, yImage, { color: COLORS.ink, width: 2 });
   text(ctx, "image plane", cx + planeHalf, yImage + 6, { color: COLORS.muted, size: FONT_SIZE_SMALL, align: "right", baseline: "top" });
-  ctx.save();
-  ctx.fillStyle = COLORS.highlightFill;
-  ctx.strokeStyle = COLORS.highlight;
-  ctx.lineWidth = 1.5;
-  ctx.fillRect(cx - halfP, yImage - 5, 2 * halfP, 10);
-  ctx.strokeRect(cx - halfP, yImage - 5, 2 * halfP, 10);
-  ctx.restore();
+  markedSpan(ctx, cx, yImage, halfP);
   text(ctx, labels.p, cx, yImage - 12, { color: COLORS.ink, align: "center", baseline: "bottom", weight: "bold", halo: true });
 
   // rays through the pixel's edges, crossing at O
@@ -392,13 +392,7 @@ function drawGsd(ctx, width, height, solution) {
     ctx.stroke();
   }
   ctx.restore();
-  ctx.save();
-  ctx.fillStyle = COLORS.highlightFill;
-  ctx.strokeStyle = COLORS.highlight;
-  ctx.lineWidth = 1.5;
-  ctx.fillRect(cx - halfF, yGround - 5, 2 * halfF, 10);
-  ctx.strokeRect(cx - halfF, yGround - 5, 2 * halfF, 10);
-  ctx.restore();
+  markedSpan(ctx, cx, yGround, halfF);
   text(ctx, "ground", dimX + 8, yGround - 4, { color: COLORS.ground, size: FONT_SIZE_SMALL, baseline: "bottom", halo: true }); // right of the H dimension arrow
   const gsdY = yGround + GSD.hatch + 6;
   text(ctx, labels.gsd, cx, gsdY, { color: COLORS.ink, weight: "bold", align: "center", baseline: "top", halo: true });

@@ -127,6 +127,17 @@ export function arrow(ctx, x0, y0, x1, y1, { color = COLORS.ink, width = 1.5, si
   ctx.restore();
 }
 
+/** A circle's outline (a ring round a point). */
+export function ring(ctx, x, y, r, color, width = 1.5) {
+  ctx.save();
+  ctx.strokeStyle = color;
+  ctx.lineWidth = width;
+  ctx.beginPath();
+  ctx.arc(x, y, r, 0, 2 * Math.PI);
+  ctx.stroke();
+  ctx.restore();
+}
+
 export function dot(ctx, x, y, r, color) {
   ctx.save();
   ctx.fillStyle = color;

@@ -8,7 +8,7 @@
 
 import { formatNumber } from "../format.js";
 import { stepValue } from "../values.js";
-import { COLORS, FONT_SIZE_SMALL, Labels, arrow, dot, finite, line, text, textWidth } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, Labels, arrow, dot, finite, line, ring, text, textWidth } from "./draw.js";
 
 const PLOT = Object.freeze({
   sideBySide: 560, // at least this wide: source and target panels side by side
@@ -189,13 +189,7 @@ function drawPanel(ctx, panel, title, pts, color, selected, labelled, labels) {
   pts.forEach(([a, b], i) => {
     const [px, py] = panel.plot.map(a, b);
     if (i === selected) {
-      ctx.save();
-      ctx.strokeStyle = COLORS.highlight;
-      ctx.lineWidth = 3;
-      ctx.beginPath();
-      ctx.arc(px, py, PLOT.ringRadius, 0, 2 * Math.PI);
-      ctx.stroke();
-      ctx.restore();
+      ring(ctx, px, py, PLOT.ringRadius, COLORS.highlight, 3);
     }
     dot(ctx, px, py, PLOT.pointRadius, color);
     labels.avoidDot(px, py, i === selected ? PLOT.ringRadius + 1.5 : PLOT.pointRadius, 1);
