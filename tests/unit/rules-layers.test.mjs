@@ -175,9 +175,10 @@ export function layerOf(module) {
 
 /** Mentions of a higher layer: ["src/x.rs:12 core → crate::examples (examples)", …]. */
 export function layerViolations({ edges }) {
-  return edges
+  const found = edges
     .filter((e) => e.to !== "" && LAYERS.indexOf(layerOf(e.to)) > LAYERS.indexOf(layerOf(e.from)))
     .map((e) => `${e.file}:${e.line} ${e.from || "crate"} (${layerOf(e.from)}) mentions ${e.to} (${layerOf(e.to)})`);
+  return [...new Set(found)];
 }
 
 /**
