@@ -450,8 +450,12 @@ impl Relation {
         }
         self.chain(&[&self.symbolic])
     }
-    /// `lhs op substituted… op result…` as LaTeX.
+    /// `lhs op substituted… op result…` as LaTeX ("" when it has neither:
+    /// a rule with symbols only has no numbers to show).
     pub fn substituted_latex(&self) -> String {
+        if self.substituted.is_empty() && self.result.is_empty() {
+            return String::new();
+        }
         self.chain(&[&self.substituted, &self.result])
     }
     /// `lhs op substituted… op ?`: the numbers without what they come to
