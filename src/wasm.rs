@@ -124,7 +124,7 @@ fn record_from_js(what: &str, v: JsValue) -> Result<Record, JsError> {
 }
 
 /// `catalog()` of a topic module: its examples only.
-pub fn catalog_of(topics: &[Topic]) -> Result<JsValue, JsError> {
+pub fn catalog_of(topics: &'static [Topic]) -> Result<JsValue, JsError> {
     to_js(&examples::catalog_of(topics))
 }
 
@@ -134,7 +134,11 @@ pub fn catalog_all() -> Result<JsValue, JsError> {
 }
 
 /// `solve(id, inputs)` among `topics`.
-pub fn solve_in(topics: &[Topic], id: &JsValue, inputs: JsValue) -> Result<JsValue, JsError> {
+pub fn solve_in(
+    topics: &'static [Topic],
+    id: &JsValue,
+    inputs: JsValue,
+) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
     let inputs = record_from_js("inputs", inputs)?;
     let solution = examples::solve_in(topics, &id, &inputs).map_err(js_error)?;
@@ -142,7 +146,11 @@ pub fn solve_in(topics: &[Topic], id: &JsValue, inputs: JsValue) -> Result<JsVal
 }
 
 /// `parse_inputs(id, texts)` among `topics`.
-pub fn parse_inputs_in(topics: &[Topic], id: &JsValue, texts: JsValue) -> Result<JsValue, JsError> {
+pub fn parse_inputs_in(
+    topics: &'static [Topic],
+    id: &JsValue,
+    texts: JsValue,
+) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
     let texts = record_from_js("texts", texts)?;
     let parsed = examples::parse_inputs_in(topics, &id, &texts).map_err(js_error)?;

@@ -107,16 +107,13 @@ impl Example {
     }
 }
 
-/// Every example of `topics` with its topic, in page order.
-pub fn of(topics: &[Topic]) -> impl Iterator<Item = (&'static Topic, &'static Example)> + '_ {
-    topics.iter().flat_map(|t| {
-        // a topic of TOPICS or of a topic module's own list: both 'static
-        let t: &'static Topic = TOPICS
-            .iter()
-            .find(|x| x.module == t.module)
-            .unwrap_or(&TOPICS[0]);
-        t.examples.iter().map(move |e| (t, e))
-    })
+/// Every example of `topics` with its topic, in page order. (`topics` is
+/// [`TOPICS`] or a topic module's own list: never look anything up in
+/// [`TOPICS`] here, or every topic is linked into every module.)
+pub fn of(topics: &'static [Topic]) -> impl Iterator<Item = (&'static Topic, &'static Example)> {
+    topics
+        .iter()
+        .flat_map(|t| t.examples.iter().map(move |e| (t, e)))
 }
 
 /// Every example, in page order.
@@ -125,7 +122,7 @@ pub fn all() -> impl Iterator<Item = &'static Example> {
 }
 
 /// The example `id` among `topics`.
-pub fn find(topics: &[Topic], id: &str) -> Result<&'static Example> {
+pub fn find(topics: &'static [Topic], id: &str) -> Result<&'static Example> {
     of(topics)
         .map(|(_, e)| e)
         .find(|e| e.id == id)
@@ -187,7 +184,7 @@ pub fn catalog() -> Vec<EntryInfo> {
 }
 
 /// The catalog of `topics` only (a topic module's own).
-pub fn catalog_of(topics: &[Topic]) -> Vec<EntryInfo> {
+pub fn catalog_of(topics: &'static [Topic]) -> Vec<EntryInfo> {
     of(topics).map(|(t, e)| EntryInfo::new(t, e)).collect()
 }
 
@@ -198,7 +195,7 @@ pub fn solve(id: &str, inputs: &Record) -> Result<Solution> {
 }
 
 /// [`solve`] among `topics` only (a topic module's).
-pub fn solve_in(topics: &[Topic], id: &str, inputs: &Record) -> Result<Solution> {
+pub fn solve_in(topics: &'static [Topic], id: &str, inputs: &Record) -> Result<Solution> {
     find(topics, id)?.run(inputs)
 }
 
@@ -216,7 +213,7 @@ pub fn parse_inputs(id: &str, texts: &Record) -> Result<Parsed> {
 }
 
 /// [`parse_inputs`] among `entries` only (a topic module's).
-pub fn parse_inputs_in(topics: &[Topic], id: &str, texts: &Record) -> Result<Parsed> {
+pub fn parse_inputs_in(topics: &'static [Topic], id: &str, texts: &Record) -> Result<Parsed> {
     let entry = find(topics, id)?;
     let fields = (entry.fields)();
     let mut out = Parsed {
