@@ -353,6 +353,12 @@ impl Form {
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
+    /// A column vector of numbers (a one-column `bmatrix`), named `name`
+    /// for captions ("" for none).
+    pub fn column(xs: &[f64], name: &str) -> Self {
+        let rows: Vec<Vec<f64>> = xs.iter().map(|&x| vec![x]).collect();
+        Form::grid("bmatrix", &rows, name)
+    }
 }
 
 impl From<&str> for Form {
