@@ -234,13 +234,22 @@ function buildVariant(ctx, entry, variant, answers) {
     return { b, input, readAs, feedback, parts, item };
   }
 
+  /**
+   * A hint's formula: laid out from the relation it comes from when the core
+   * sends it (hints.relation: the symbolic side, or the numbers with the
+   * result as ?), else the core's LaTeX as one block.
+   */
+  function hintSource(h, side, tex) {
+    return h.relation ? { tex, relations: [h.relation], side } : texSource(tex);
+  }
+
   function showHint(b, n, body) {
     const h = b.hints;
     const rung = RUNGS[n - 1];
     const part = el("div", { class: "hint", "data-rung": String(n) }, el("p", { class: "hint-rung" }, `${n}. ${rung}`));
     if (n === 1) part.append(el("p", {}, h.nudge || "Look at what the givens say about this value."));
-    if (n === 2) part.append(h.formula ? renderFormula(texSource(h.formula), "formula") : el("p", {}, "This value is read off the worked step."));
-    if (n === 3) part.append(h.numbers ? renderFormula(texSource(h.numbers), "formula") : el("p", {}, "The step below has the numbers."));
+    if (n === 2) part.append(h.formula ? renderFormula(hintSource(h, "symbolic", h.formula), "formula") : el("p", {}, "This value is read off the worked step."));
+    if (n === 3) part.append(h.numbers ? renderFormula(hintSource(h, "question", h.numbers), "formula") : el("p", {}, "The step below has the numbers."));
     if (n === 4) {
       try {
         const step = worked().steps[h.step];
