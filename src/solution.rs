@@ -537,6 +537,11 @@ impl Step {
         self.substituted = join(Relation::substituted_latex);
         self
     }
+    /// Adds several relations in order (a rule whose number of equations
+    /// depends on the inputs).
+    pub fn relations(self, rs: impl IntoIterator<Item = Relation>) -> Self {
+        rs.into_iter().fold(self, Step::relation)
+    }
     pub fn value(mut self, key: &str, v: impl Into<Value>) -> Self {
         self.values.set(key, v);
         self
