@@ -22,7 +22,9 @@ const arg = (name, dflt) => {
   return i >= 0 ? args[i + 1] : dflt;
 };
 const runs = Number(arg("--runs", 5));
-const example = arg("--example", "gsd");
+// the catalog's first example unless one is named
+const catalogFile = JSON.parse(fs.readFileSync("dist/assets.json", "utf8"))["catalog.json"] ?? "catalog.json";
+const example = arg("--example", JSON.parse(fs.readFileSync(`dist/${catalogFile}`, "utf8"))[0].id);
 
 const js = fs.readFileSync("dist/embed.js");
 console.log(`embed.js: ${js.length} bytes, ${zlib.gzipSync(js, { level: 9 }).length} bytes gzipped (aim: under 3 KB)`);

@@ -41,7 +41,6 @@ const AIM_KB = 150;
 const AIM_RATIO = 2;
 const AIM_THROTTLED_MS = 2500;
 const AIM_REDRAW_MS = 16;
-const QUICK = ["gsd", "ncc-2d"];
 
 const args = process.argv.slice(2);
 const arg = (name, dflt) => {
@@ -56,7 +55,8 @@ const throttledSet = arg("--throttled", "topics"); // topics: the heaviest examp
 const redraws = Math.max(1, Number(arg("--redraws", 15)));
 const doRedraw = !args.includes("--no-redraw");
 const jsonFile = arg("--json", null);
-const wanted = args.includes("--quick") ? QUICK : argsAll("--example");
+const quick = args.includes("--quick");
+const wanted = argsAll("--example");
 
 if (!fs.existsSync(path.join(DIST, "index.html"))) {
   console.error("bench-load: dist/index.html is missing; run `SKIP_SETUP=1 bash scripts/build.sh` first");
@@ -420,6 +420,9 @@ const t0 = Date.now();
 try {
   const all = await catalog();
   if (!all.length) throw new Error("the page's catalog lists no ready example");
+  // --quick: the catalog's first example and the first of its last topic
+  // (the lightest module and, since the topics grew in that order, a heavy one)
+  if (quick && !wanted.length) wanted.push(all[0].id, all.find((e) => e.topic === all.at(-1).topic).id);
   const unknown = wanted.filter((id) => !all.some((e) => e.id === id));
   if (unknown.length) throw new Error(`not in the page's catalog: ${unknown.join(", ")} (it has ${all.map((e) => e.id).join(", ")})`);
   examples = wanted.length ? wanted.map((id) => all.find((e) => e.id === id)) : all;
