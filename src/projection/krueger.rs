@@ -179,10 +179,10 @@ pub fn tau_from_tau_prime(taup: f64, e: f64) -> Result<(f64, usize)> {
     })
 }
 
-/// Sums the series at ζ = ξ + iη with coefficients `c`:
-/// `(Σ c_j sin 2jξ cosh 2jη, Σ c_j cos 2jξ sinh 2jη,
+/// Sums the series at ζ = ξ + iη with coefficients `c` (α forward, β
+/// inverse): `(Σ c_j sin 2jξ cosh 2jη, Σ c_j cos 2jξ sinh 2jη,
 ///   Σ 2j c_j cos 2jξ cosh 2jη, Σ 2j c_j sin 2jξ sinh 2jη)`.
-fn sums(c: &[f64; ORDER], xi: f64, eta: f64) -> (f64, f64, f64, f64) {
+pub fn sums(c: &[f64; ORDER], xi: f64, eta: f64) -> (f64, f64, f64, f64) {
     let mut out = (0.0, 0.0, 0.0, 0.0);
     for (j, &cj) in c.iter().enumerate() {
         let m = 2.0 * (j + 1) as f64;
@@ -194,6 +194,86 @@ fn sums(c: &[f64; ORDER], xi: f64, eta: f64) -> (f64, f64, f64, f64) {
         out.3 += m * cj * s * sh;
     }
     out
+}
+
+/// The Gauss–Schreiber transverse Mercator on the sphere (Karney 2011,
+/// eq. 10): `(ξ′, η′)` from τ′ = tan χ and the longitude difference
+/// `dlon` (radians): ξ′ = atan2(τ′, cos Δλ), η′ = asinh(sin Δλ/√(τ′² + cos² Δλ)).
+pub fn sphere_forward(taup: f64, dlon: f64) -> (f64, f64) {
+    let (sl, cl) = dlon.sin_cos();
+    (taup.atan2(cl), (sl / taup.hypot(cl)).asinh())
+}
+
+/// The sphere's part of the meridian convergence (radians):
+/// γ′ = atan2(τ′ sin Δλ, √(1 + τ′²) cos Δλ), `dlon` in radians.
+pub fn sphere_convergence(taup: f64, dlon: f64) -> f64 {
+    let (sl, cl) = dlon.sin_cos();
+    (sl * taup).atan2(cl * taup.hypot(1.0))
+}
+
+/// The sphere's part of the point scale: k′ = √(1 − e² sin² φ)·√(1 + τ²)
+/// / √(τ′² + cos² Δλ), φ and `dlon` in radians, τ = tan φ.
+pub fn sphere_scale(e2: f64, phi: f64, taup: f64, dlon: f64) -> f64 {
+    (1.0 - e2 * phi.sin().powi(2)).sqrt() * phi.tan().hypot(1.0) / taup.hypot(dlon.cos())
+}
+
+/// The series' part of the forward point scale: k″ = (A/a)·√(p′² + q′²).
+pub fn series_scale(s: &Series, a: f64, p: f64, q: f64) -> f64 {
+    s.rectifying_radius / a * p.hypot(q)
+}
+
+/// The inverse on the sphere: `(τ′, Δλ)` (Δλ in radians) from ξ′, η′:
+/// τ′ = sin ξ′/√(sinh² η′ + cos² ξ′), Δλ = atan2(sinh η′, cos ξ′)
+/// (τ′ infinite at a pole).
+pub fn sphere_inverse(xip: f64, etap: f64) -> (f64, f64) {
+    let sh = etap.sinh();
+    let c = xip.cos().max(0.0);
+    let r = sh.hypot(c);
+    let taup = if r == 0.0 {
+        f64::INFINITY.copysign(xip)
+    } else {
+        xip.sin() / r
+    };
+    (taup, sh.atan2(c))
+}
+
+/// The meridian convergence of the inverse (radians): atan2(q, p) +
+/// atan2(sin ξ′ tanh η′, cos ξ′).
+pub fn inverse_convergence(p: f64, q: f64, xip: f64, etap: f64) -> f64 {
+    q.atan2(p) + (xip.sin() * etap.tanh()).atan2(xip.cos().max(0.0))
+}
+
+/// The point scale of the inverse without k₀: (A/a)/√(p² + q²)·
+/// √(1 − e² + e²/(1 + τ²))·√(1 + τ²)·√(sinh² η′ + cos² ξ′).
+pub fn inverse_scale(s: &Series, a: f64, p: f64, q: f64, tau: f64, xip: f64, etap: f64) -> f64 {
+    let r = etap.sinh().hypot(xip.cos().max(0.0));
+    s.rectifying_radius / a / p.hypot(q)
+        * (1.0 - s.e2 + s.e2 / (1.0 + tau * tau)).sqrt()
+        * tau.hypot(1.0)
+        * r
+}
+
+/// The longitude difference (degrees, 0° to 30°) on the parallel at
+/// `lat_deg` where `what` of the forward projection, growing with Δλ,
+/// reaches `target` (bisection to the last bit): where k = 1, or where x
+/// is a given distance.
+pub fn along_parallel(
+    ell: &Ellipsoid,
+    k0: f64,
+    lat_deg: f64,
+    target: f64,
+    what: impl Fn(&Forward) -> f64,
+) -> Result<f64> {
+    let (mut lo, mut hi) = (0.0, 30.0);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if what(&forward(ell, k0, lat_deg, mid)?) < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(0.5 * (lo + hi))
 }
 
 /// Every intermediate of the forward projection.
@@ -253,18 +333,16 @@ pub fn forward(ell: &Ellipsoid, k0: f64, lat_deg: f64, dlon_deg: f64) -> Result<
     let tau = phi.tan();
     let sigma = (s.e * (s.e * phi.sin()).atanh()).sinh();
     let taup = tau_prime(tau, s.e);
-    let (sl, cl) = lam.sin_cos();
-    let xip = taup.atan2(cl);
-    let etap = (sl / taup.hypot(cl)).asinh();
+    let (xip, etap) = sphere_forward(taup, lam);
     let (a, b, p1, q1) = sums(&s.alpha, xip, etap);
     let xi = xip + a;
     let eta = etap + b;
     let p = 1.0 + p1;
     let q = q1;
-    let gamma_sphere = (sl * taup).atan2(cl * taup.hypot(1.0));
+    let gamma_sphere = sphere_convergence(taup, lam);
     let gamma_series = q.atan2(p);
-    let k_sphere = (1.0 - s.e2 * phi.sin().powi(2)).sqrt() * tau.hypot(1.0) / taup.hypot(cl);
-    let k_series = s.rectifying_radius / ell.a * p.hypot(q);
+    let k_sphere = sphere_scale(s.e2, phi, taup, lam);
+    let k_series = series_scale(&s, ell.a, p, q);
     Ok(Forward {
         tau,
         sigma,
@@ -334,29 +412,26 @@ pub fn inverse(ell: &Ellipsoid, k0: f64, x: f64, y: f64) -> Result<Inverse> {
     let etap = eta - b;
     let p = 1.0 - p1;
     let q = q1;
-    let sh = etap.sinh();
-    let c = xip.cos().max(0.0);
-    let r = sh.hypot(c);
-    let mut gamma = q.atan2(p);
-    let mut k = s.rectifying_radius / ell.a / p.hypot(q);
-    let (tau, iterations, lat_deg, dlon_deg, taup);
-    if r == 0.0 {
+    let (taup, dlon) = sphere_inverse(xip, etap);
+    let (tau, iterations, lat_deg, dlon_deg, gamma, k);
+    if taup.is_infinite() {
         // a pole
-        taup = f64::INFINITY;
         tau = f64::INFINITY;
         iterations = 0;
         lat_deg = 90.0_f64.copysign(xip);
         dlon_deg = 0.0;
-        k *= (1.0 - s.e2).sqrt() * (s.e * s.e.atanh()).exp();
+        gamma = q.atan2(p);
+        k = s.rectifying_radius / ell.a / p.hypot(q)
+            * (1.0 - s.e2).sqrt()
+            * (s.e * s.e.atanh()).exp();
     } else {
-        taup = xip.sin() / r;
         let (t, it) = tau_from_tau_prime(taup, s.e)?;
         tau = t;
         iterations = it;
         lat_deg = tau.atan().to_degrees();
-        dlon_deg = sh.atan2(c).to_degrees();
-        gamma += (xip.sin() * etap.tanh()).atan2(c);
-        k *= (1.0 - s.e2 + s.e2 / (1.0 + tau * tau)).sqrt() * tau.hypot(1.0) * r;
+        dlon_deg = dlon.to_degrees();
+        gamma = inverse_convergence(p, q, xip, etap);
+        k = inverse_scale(&s, ell.a, p, q, tau, xip, etap);
     }
     Ok(Inverse {
         xi,

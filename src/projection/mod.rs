@@ -110,6 +110,27 @@ impl Ellipsoid {
         let e2 = self.e2();
         e2 / (1.0 - e2)
     }
+    /// The prime-vertical radius of curvature at latitude `lat_deg`,
+    /// N = a/√(1 − e² sin² φ) (m).
+    pub fn prime_vertical_radius(&self, lat_deg: f64) -> f64 {
+        self.a / (1.0 - self.e2() * lat_deg.to_radians().sin().powi(2)).sqrt()
+    }
+    /// The meridian's radius of curvature at latitude `lat_deg`,
+    /// M = a(1 − e²)/(1 − e² sin² φ)^{3/2} (m).
+    pub fn meridian_radius(&self, lat_deg: f64) -> f64 {
+        let w2 = 1.0 - self.e2() * lat_deg.to_radians().sin().powi(2);
+        self.a * (1.0 - self.e2()) / w2.powf(1.5)
+    }
+    /// The radius of the parallel at latitude `lat_deg`, N cos φ (m): an
+    /// arc of Δλ radians along it is N cos φ·Δλ long.
+    pub fn parallel_radius(&self, lat_deg: f64) -> f64 {
+        self.prime_vertical_radius(lat_deg) * lat_deg.to_radians().cos()
+    }
+    /// The Gaussian mean radius at latitude `lat_deg`, R = √(MN) (m): the
+    /// sphere that fits the ellipsoid best there.
+    pub fn gaussian_radius(&self, lat_deg: f64) -> f64 {
+        (self.meridian_radius(lat_deg) * self.prime_vertical_radius(lat_deg)).sqrt()
+    }
 }
 
 #[cfg(test)]
@@ -123,6 +144,13 @@ mod tests {
         assert!((w.e2() - 0.006_694_379_990_141_317).abs() < 1e-17);
         assert!((w.n() - 0.001_679_220_386_383_705).abs() < 1e-17);
         assert!((w.ep2() - 0.006_739_496_742_276_435).abs() < 1e-17);
+        assert!((w.prime_vertical_radius(0.0) - w.a).abs() < 1e-9);
+        assert!((w.meridian_radius(0.0) - w.a * (1.0 - w.e2())).abs() < 1e-9);
+        // at the pole both radii are a²/b
+        let polar = w.a * w.a / w.b();
+        assert!((w.meridian_radius(90.0) - polar).abs() < 1e-6);
+        assert!((w.gaussian_radius(90.0) - polar).abs() < 1e-6);
+        assert!((w.parallel_radius(60.0) - w.prime_vertical_radius(60.0) / 2.0).abs() < 1e-6);
         let c = Ellipsoid::by_id("clarke-1866").unwrap();
         assert!((c.b() - CLARKE_1866_B).abs() < 1e-8);
         assert!(Ellipsoid::by_id("airy").is_none());

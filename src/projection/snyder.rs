@@ -41,8 +41,8 @@ pub struct Forward {
 pub fn forward(ell: &Ellipsoid, k0: f64, lat_deg: f64, dlon_deg: f64) -> Forward {
     let phi = lat_deg.to_radians();
     let ep2 = ell.ep2();
-    let (s, co) = phi.sin_cos();
-    let big_n = ell.a / (1.0 - ell.e2() * s * s).sqrt();
+    let co = phi.cos();
+    let big_n = ell.prime_vertical_radius(lat_deg);
     let t = phi.tan().powi(2);
     let c = ep2 * co * co;
     let a = dlon_deg.to_radians() * co;

@@ -307,6 +307,38 @@ pub fn inverse(
     })
 }
 
+/// The zones a band of longitudes [`west`, `east`] (degrees) touches, by
+/// the regular rule.
+pub fn zones_between(west: f64, east: f64) -> Vec<u8> {
+    let first = standard_zone(0.0, west).0;
+    let last = standard_zone(0.0, east).0;
+    (first..=last).collect()
+}
+
+/// The longitude difference (degrees) on the parallel at `lat` where the
+/// UTM point scale is 1 (k grows with |Δλ| along a parallel).
+pub fn k_one_dlon(ell: &Ellipsoid, lat: f64) -> Result<f64> {
+    krueger::along_parallel(ell, K0, lat, 1.0, |f| f.k)
+}
+
+/// The longitude difference (degrees) on the parallel at `lat` whose
+/// UTM x (east of the central meridian) is `x` metres.
+pub fn dlon_at_x(ell: &Ellipsoid, lat: f64, x: f64) -> Result<f64> {
+    krueger::along_parallel(ell, K0, lat, x, |f| f.x)
+}
+
+/// The UTM scale factor at `x` metres from the central meridian on a
+/// sphere of radius `r`: k ≈ k₀ cosh(x/(k₀r)) (the calculator's formula;
+/// with r the Gaussian radius √(MN) it is close to the ellipsoid's).
+pub fn sphere_scale_at(x: f64, r: f64) -> f64 {
+    K0 * (x / (K0 * r)).cosh()
+}
+
+/// Where k = 1 on a sphere of radius `r`: x = k₀r·acosh(1/k₀) (m).
+pub fn sphere_k_one_distance(r: f64) -> f64 {
+    K0 * r * (1.0 / K0).acosh()
+}
+
 /// A whole number of metres with thin spaces between thousands.
 pub fn group(x: f64) -> String {
     let s = format!("{}", x.abs().round() as u64);
@@ -346,5 +378,20 @@ mod tests {
         assert_eq!(band_letter(-1e-9), 'M');
         assert_eq!(group(10_000_000.0), "10 000 000");
         assert_eq!(lon_diff(-177.0, 177.0), 6.0);
+        assert_eq!(zones_between(60.87, 77.84), vec![41, 42, 43]);
+        assert_eq!(zones_between(97.34, 101.0), vec![47]);
+    }
+
+    #[test]
+    fn k_is_one_about_180_km_from_the_central_meridian() {
+        let w = Ellipsoid::by_id("wgs84").unwrap();
+        let d = k_one_dlon(&w, 0.0).unwrap();
+        let f = krueger::forward(&w, K0, 0.0, d).unwrap();
+        assert!((f.k - 1.0).abs() < 1e-14, "{}", f.k);
+        assert!((f.x - 180_000.0).abs() < 1_000.0, "{}", f.x);
+        assert!((dlon_at_x(&w, 0.0, f.x).unwrap() - d).abs() < 1e-12);
+        let sphere = sphere_k_one_distance(w.a);
+        assert!((sphere_scale_at(sphere, w.a) - 1.0).abs() < 1e-15);
+        assert!((sphere - f.x).abs() < 1_000.0, "{sphere}");
     }
 }
