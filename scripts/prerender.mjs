@@ -1,7 +1,7 @@
 // The top of every example's seed solution, as the page itself renders it,
 // saved at build time (issue 19: the numbers on screen before the page's JS
-// and wasm have run). Run by scripts/build.sh between the two stages of
-// scripts/assets.mjs, on the built site:
+// and wasm have run). Run by scripts/build.sh between the two steps of
+// scripts/site.mjs (build, finish), on the built site:
 //   node scripts/prerender.mjs [dist]
 //
 // For each ready example of the built catalog it opens index.html#/<id> and
@@ -35,7 +35,7 @@
 import fs from "node:fs";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
-import { DATA_BLOCK, dataBlock, readDataBlock } from "./assets.mjs";
+import { DATA_BLOCK, dataBlock, readDataBlock } from "./site.mjs";
 import { CHROMIUM, launchChromium } from "./chromium.mjs";
 import { startServer } from "./serve.mjs";
 import { THUMB as SHOWN } from "../www/catalog.js";
@@ -131,7 +131,7 @@ export async function prerender(dist) {
   const pages = PAGES.map((p) => {
     const html = fs.readFileSync(path.join(dist, p.file), "utf8");
     const data = readDataBlock(html);
-    if (!data) throw new Error(`prerender: ${p.file} has no catalog-data block (run scripts/assets.mjs first)`);
+    if (!data) throw new Error(`prerender: ${p.file} has no catalog-data block (run scripts/site.mjs build first)`);
     return { ...p, html, data, saved: [], pictured: [], dark: [] };
   });
   const ids = pages[0].data.entries.filter((e) => e.status === "ready").map((e) => e.id);

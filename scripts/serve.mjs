@@ -1,8 +1,8 @@
 // Serves a folder of static files on 127.0.0.1 with the right MIME types
 // (application/wasm for .wasm). No dependencies. As a static host should:
 // the build's .br / .gz copies when the request accepts them (Content-Encoding,
-// Vary: Accept-Encoding), and long-lived caching for content-hashed names
-// (dist/assets.json), no-cache for the HTML and the stable names.
+// Vary: Accept-Encoding), and long-lived caching for the content-hashed names
+// (dist/assets/, as dist/_headers says), no-cache for everything else.
 //   node scripts/serve.mjs [--dir dist] [--port 8080]   (PORT env also works)
 // Also importable: const { url, close } = await startServer({ dir, port: 0 }).
 // --isolate (or ISOLATE=1; startServer({ isolate: true })) adds the
@@ -46,20 +46,13 @@ function accepted(header) {
   return ok;
 }
 
-/** The content-hashed names of a build (the values of dist/assets.json), as paths from its root. */
-function hashedNames(root) {
-  try {
-    return new Set(Object.values(JSON.parse(fs.readFileSync(path.join(root, "assets.json"), "utf8"))).map((f) => `/${f}`));
-  } catch {
-    return new Set(); // an unhashed build: everything revalidated
-  }
-}
+/** The folder of content-hashed names (scripts/site.mjs ASSETS): cached for a year. */
+const HASHED = "/assets/";
 
 const ISOLATION = { "cross-origin-opener-policy": "same-origin", "cross-origin-embedder-policy": "require-corp" };
 
 export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1", isolate = false } = {}) {
   const root = path.resolve(dir);
-  const hashed = hashedNames(root);
   const server = http.createServer((req, res) => {
     let pathname;
     try {
@@ -77,7 +70,7 @@ export function startServer({ dir = "dist", port = 8080, host = "127.0.0.1", iso
     const type = TYPES[path.extname(file).toLowerCase()] || "application/octet-stream";
     const headers = {
       "content-type": type,
-      "cache-control": hashed.has(pathname) ? "public, max-age=31536000, immutable" : "no-cache",
+      "cache-control": pathname.startsWith(HASHED) ? "public, max-age=31536000, immutable" : "no-cache",
     };
     const wanted = accepted(req.headers["accept-encoding"]);
     const copies = ENCODINGS.filter(([name, ext]) => fs.existsSync(file + ext));

@@ -1,7 +1,8 @@
-// The built dist/ as a static host serves it (scripts/assets.mjs): .br and .gz
-// beside every compressible file, content-hashed names that match their
-// bytes, nothing referenced by a name that does not exist, and the server's
-// encodings and cache rules.
+// The built dist/ as a static host serves it (scripts/site.mjs, esbuild):
+// .br and .gz beside every compressible file, every module, chunk, wasm and
+// stylesheet under a content-hashed name in assets/ (the public entries keep
+// theirs and re-export their build), nothing referenced by a name that does
+// not exist, and the server's encodings and cache rules.
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
 import crypto from "node:crypto";
@@ -11,11 +12,13 @@ import path from "node:path";
 import zlib from "node:zlib";
 import { DIST } from "./harness.mjs";
 import { startServer } from "../../scripts/serve.mjs";
+import { ASSETS, STABLE_ENTRIES } from "../../scripts/site.mjs";
 
 const COMPRESSIBLE = /\.(m?js|wasm|css|json|html|svg|txt|map)$/;
-const HASHED = /\.([0-9a-f]{8})\.[A-Za-z0-9]+$/;
-/** Fixed public URLs: never hashed (scripts/assets.mjs STABLE). */
-const STABLE = ["index.html", "embed.html", "sw.js", "embed.js", "pkg/photogrammetry_playground.js", "pkg/examples.js", "lab/pkg/photogrammetry_lab.js", "version.json"];
+/** esbuild's content hash in a name: stem-XXXXXXXX.ext */
+const HASHED = /-[A-Z2-7]{8}\.[A-Za-z0-9]+$/;
+/** Fixed public URLs: never hashed (the pages, the worker, the host script, the JS API: docs/API.md). */
+const STABLE = ["index.html", "embed.html", "sw.js", "embed.js", "version.json", ...STABLE_ENTRIES];
 
 function walk(dir) {
   return fs.readdirSync(dir, { withFileTypes: true }).flatMap((d) => (d.isDirectory() ? walk(path.join(dir, d.name)) : [path.join(dir, d.name)]));
@@ -45,70 +48,58 @@ describe("the built dist/", () => {
     }
   });
 
-  test("hashed names match their content; the stable names are there unhashed; assets.json lists what exists", () => {
-    const hashed = served.filter((f) => HASHED.test(f));
+  test("every module, chunk, wasm and stylesheet is in assets/ under a hashed name; the stable names re-export their build", () => {
+    const hashed = served.filter((f) => f.startsWith(`${ASSETS}/`));
     assert.ok(hashed.length > 40, `${hashed.length} hashed files`);
+    for (const f of hashed) assert.match(f, HASHED);
+    // two different files never share a name, and one content is one file
+    const digests = new Map();
     for (const f of hashed) {
-      const digest = crypto.createHash("sha256").update(fs.readFileSync(path.join(DIST, f))).digest("hex").slice(0, 8);
-      assert.equal(HASHED.exec(f)[1], digest, f);
+      const d = crypto.createHash("sha256").update(fs.readFileSync(path.join(DIST, f))).digest("hex");
+      assert.ok(!digests.has(d), `${f} and ${digests.get(d)} are the same bytes`);
+      digests.set(d, f);
     }
     for (const f of STABLE) assert.ok(onDisk.has(f), f);
-    // a logical name left beside its hashed one is the same bytes (a module a stable
-    // entry loads by a computed name keeps a copy: scripts/assets.mjs)
-    const copy = (logical) => onDisk.has(logical) && assets[logical] && fs.readFileSync(path.join(DIST, logical)).equals(fs.readFileSync(path.join(DIST, assets[logical])));
-    for (const [logical, name] of Object.entries(assets)) {
-      assert.ok(onDisk.has(name), `${logical} → ${name}`);
-      if (!STABLE.includes(logical) && onDisk.has(logical)) assert.ok(copy(logical), `${logical} is left under its logical name`);
+    for (const f of STABLE_ENTRIES) {
+      const lines = read(f).trim().split("\n");
+      assert.ok(lines.length <= 2 && lines.every((l) => /^export (\*|\{ default \}) from "\.\.?\/[\w./-]+";$/.test(l)), `${f}: ${lines.join(" ")}`);
     }
-    // every JS, wasm and CSS file but the stable ones is hashed (KaTeX, the lab, practice, figures)
-    const unhashed = served.filter((f) => /\.(m?js|wasm|css)$/.test(f) && !HASHED.test(f) && !STABLE.includes(f) && !copy(f));
-    assert.deepEqual(unhashed, []);
+    for (const [logical, name] of Object.entries(assets)) assert.ok(onDisk.has(name) && name.startsWith(`${ASSETS}/`), `${logical} → ${name}`);
+    for (const f of ["app.js", "style.css", "pkg/all.js", "pkg/all_bg.wasm", "pkg/coordinates_bg.wasm", "lab/lab.js", "lab/worker.js", "catalog.json"]) assert.ok(assets[f], f);
+    // outside assets/: the stable names, the saved answers, the lab's photos and vendor/ (KaTeX and
+    // uqr as their authors built them: math.js and practice/sheets.js name them by a fixed URL)
+    const elsewhere = served.filter((f) => /\.(m?js|wasm|css)$/.test(f) && !f.startsWith(`${ASSETS}/`) && !STABLE.includes(f) && !f.startsWith("vendor/"));
+    assert.deepEqual(elsewhere, []);
     // fonts swap: text shows at once in a fallback font
     for (const f of served.filter((f) => f.endsWith(".css"))) {
       for (const face of read(f).match(/@font-face\s*\{[^}]*\}/g) ?? []) assert.match(face, /font-display:\s*swap/, `${f}: ${face.slice(0, 60)}`);
     }
   });
 
-  test("nothing refers to a file that does not exist (HTML, import map, JS literals, CSS url())", () => {
+  test("nothing refers to a file that does not exist (HTML, JS imports and literals, CSS url(), the service worker's list)", () => {
     const missing = [];
     // relative to the file's folder, or (a string a module hands to the document) to the site's root
-    const check = (from, ref, ok = (t) => onDisk.has(t)) => {
+    const check = (from, ref) => {
       const t = target(from, ref);
-      if (t !== null && !ok(t) && !ok(target("index.html", ref))) missing.push(`${from}: ${ref}`);
+      if (t !== null && !onDisk.has(t) && !onDisk.has(target("index.html", ref))) missing.push(`${from}: ${ref}`);
     };
-    const maps = new Map();
     for (const f of served.filter((f) => f.endsWith(".html"))) {
       const html = read(f);
       for (const m of html.matchAll(/\s(?:src|href)=["']([^"']+)["']/g)) check(f, m[1]);
       // a saved solution (scripts/prerender.mjs) is a fragment that goes into index.html: no head of its own
       if (f.startsWith("prerender/")) continue;
-      const json = /<script type="importmap">([^<]*)<\/script>/.exec(html);
-      assert.ok(json, `${f} has an import map`);
-      const { imports } = JSON.parse(json[1]);
-      for (const [logical, name] of Object.entries(imports)) {
-        check(f, name);
-        maps.set(target(f, logical), target(f, name));
-      }
-      // the CSP admits the import map and nothing else inline
+      assert.doesNotMatch(html, /type="importmap"/, `${f}: no import map (chunks name each other)`);
+      // the CSP admits the inline scripts and nothing else inline
       const csp = /script-src ([^;"]*)/.exec(html)[1];
-      for (const m of html.matchAll(/<script(?: type="importmap")?>([^<]*)<\/script>/g)) {
-        assert.ok(csp.includes(`'sha256-${crypto.createHash("sha256").update(m[1]).digest("base64")}'`), `${f}: inline script admitted by the CSP`);
-      }
+      const inline = [...html.matchAll(/<script>([^<]*)<\/script>/g)];
+      assert.ok(inline.length >= 1, `${f}: the small classic scripts are inlined`);
+      for (const m of inline) assert.ok(csp.includes(`'sha256-${crypto.createHash("sha256").update(m[1]).digest("base64")}'`), `${f}: inline script admitted by the CSP`);
     }
-    // workers and the stable entries run without the import map: their names must exist as written
-    const noMap = new Set(STABLE);
-    for (const f of served.filter((f) => /\.m?js$/.test(f))) {
-      for (const m of read(f).matchAll(/new\s+Worker\s*\(\s*new\s+URL\s*\(\s*["'`]([^"'`]+)["'`]/g)) noMap.add(target(f, m[1]));
-    }
-    for (const f of served.filter((f) => /\.m?js$/.test(f))) {
+    for (const f of served.filter((f) => /\.m?js$/.test(f) && !f.startsWith("vendor/"))) {
       const source = read(f);
-      // relative paths to a file of ours: "./x.js", "../x.css", 'x_bg.wasm' in new URL(…, import.meta.url)
-      const refs = [
-        // (not a key of the wasm's import object: { "./x_bg.js": import0 })
-        ...[...source.matchAll(/["'`]((?:\.{1,2}\/)[\w@~.\/-]+\.(?:m?js|wasm|css|json|woff2?|png|jpe?g|svg))["'`](?!\s*:)/g)].map((m) => m[1]),
-        ...[...source.matchAll(/new URL\(\s*["'`]([\w@~.\/-]+)["'`]\s*,\s*import\.meta\.url/g)].map((m) => m[1]),
-      ];
-      for (const ref of refs) check(f, ref, (t) => onDisk.has(t) || (!noMap.has(f) && maps.has(t) && onDisk.has(maps.get(t))));
+      // relative paths to a file of ours: import specifiers, the names esbuild wrote for emitted files
+      const refs = [...source.matchAll(/["'`]((?:\.{1,2}\/)[\w@~.\/-]+\.(?:m?js|wasm|css|json|woff2?|png|jpe?g|svg))["'`]/g)].map((m) => m[1]);
+      for (const ref of refs) check(f, ref);
     }
     for (const f of served.filter((f) => f.endsWith(".css"))) {
       for (const m of read(f).matchAll(/url\(\s*["']?([^"')\s]+)/g)) check(f, m[1]);
@@ -117,6 +108,16 @@ describe("the built dist/", () => {
     const build = JSON.parse(/^const BUILD = (.*);$/m.exec(read("sw.js"))[1]);
     for (const f of [...build.files, ...build.lazy]) if (f !== "./") check("sw.js", f);
     assert.deepEqual(missing, []);
+  });
+
+  test("the service worker caches the page and every topic at install, the lab and pkg/all when first used", () => {
+    const build = JSON.parse(/^const BUILD = (.*);$/m.exec(read("sw.js"))[1]);
+    for (const f of ["app.js", "style.css", "pkg/coordinates.js", "pkg/coordinates_bg.wasm", "figures/coordinates.js", "catalog.json"]) assert.ok(build.files.includes(assets[f]), f);
+    for (const f of ["pkg/all.js", "pkg/all_bg.wasm", "lab/lab.js", "lab/worker.js", "lab/pkg/photogrammetry_lab_bg.wasm"]) assert.ok(build.lazy.includes(assets[f]) && !build.files.includes(assets[f]), f);
+    assert.ok(build.lazy.some((f) => f.startsWith("prerender/")));
+    // every served file is in one list or the other (but the worker itself, the host's rules, the manifest and the version)
+    const listed = new Set([...build.files, ...build.lazy]);
+    assert.deepEqual(served.filter((f) => !listed.has(f) && !["sw.js", "_headers", "assets.json", "version.json"].includes(f)), []);
   });
 });
 
@@ -155,15 +156,14 @@ describe("scripts/serve.mjs as a static host", () => {
     }
   });
 
-  test("dist/_headers gives static hosts the same rules", () => {
+  test("dist/_headers gives static hosts the same rules, one per top-level file or folder", () => {
     const rules = read("_headers");
-    assert.match(rules, /^\/index\.html\n {2}Cache-Control: no-cache$/m);
-    assert.match(rules, /^\/sw\.js\n {2}Cache-Control: no-cache$/m);
-    // the saved solutions (HTML, not hashed): one rule for their folder
-    assert.match(rules, /^\/prerender\/\*\n {2}Cache-Control: no-cache$/m);
-    assert.doesNotMatch(rules, /^\/prerender\/[a-z]/m);
-    const app = assets["app.js"];
-    const covered = new RegExp(`^/(${app.replace(/\./g, "\\.")}|vendor/\\*)\\n {2}Cache-Control: public, max-age=31536000, immutable$`, "m");
-    assert.match(rules, covered);
+    assert.match(rules, /^\/assets\/\*\n {2}Cache-Control: public, max-age=31536000, immutable$/m);
+    for (const p of ["/", "/index.html", "/embed.html", "/sw.js", "/embed.js", "/pkg/*", "/prerender/*", "/vendor/*", "/lab/*"]) {
+      assert.match(rules, new RegExp(`^${p.replace(/[.*]/g, "\\$&")}\\n {2}Cache-Control: no-cache$`, "m"), p);
+    }
+    // no rule that matches assets/ too (a host applies every rule that matches: two Cache-Control values)
+    assert.doesNotMatch(rules, /^\/\*$/m);
+    assert.equal(rules.match(/^\//gm).length, fs.readdirSync(DIST).filter((f) => !/\.(gz|br)$/.test(f) && f !== "_headers").length + 1);
   });
 });

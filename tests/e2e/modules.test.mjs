@@ -18,12 +18,14 @@ import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
 import { DIST, TEST_TIMEOUT, built, exact, nodeModule, open, start, visit } from "./harness.mjs";
-import { readDataBlock } from "../../scripts/assets.mjs";
+import { readDataBlock } from "../../scripts/site.mjs";
 
-// the build names files by their content (scripts/assets.mjs): dist/assets.json maps
+// the build names files by their content (scripts/site.mjs): dist/assets.json maps
 // a logical name to the file (harness.mjs `built`), and `logical` turns a requested path back
-const logical = (p) => p.replace(/\.[0-9a-f]{8}(\.[A-Za-z0-9]+)$/, "$1");
-const WASM = /_bg(\.[0-9a-f]{8})?\.wasm$/;
+// (a shared chunk has no logical name: it keeps its own)
+const LOGICAL = new Map(Object.entries(JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"))).map(([l, b]) => [`/${b}`, `/${l}`]));
+const logical = (p) => LOGICAL.get(p) ?? p;
+const WASM = /_bg(-\w{8})?\.wasm$/;
 const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, built("catalog.json")), "utf8"));
 const MODULES = [...new Set(CATALOG.map((e) => e.module))];
 
@@ -52,8 +54,8 @@ describe("the catalog as data", () => {
       const html = fs.readFileSync(path.join(DIST, page), "utf8");
       const data = readDataBlock(html);
       assert.ok(data, `${page} has the catalog-data block`);
-      // the import map precedes every script: the preloaded figures resolve ../format.js through it
-      assert.equal(html.indexOf("<script"), html.indexOf('<script type="importmap">'), `${page}: the import map is the first script`);
+      // the data block precedes every script (preload-route.js reads it)
+      assert.equal(html.indexOf("<script"), html.indexOf('<script type="application/json" id="catalog-data">'), `${page}: the data block comes first`);
       assert.deepEqual(data.entries, CATALOG, page);
       assert.deepEqual(Object.keys(data.files).sort(), [...MODULES].sort(), page);
       for (const name of MODULES) {
@@ -153,28 +155,29 @@ describe("a cold load of each example", () => {
     }
   });
 
-  test("the page's modules come in one file (scripts/bundle.mjs); what the lab, practice and the figures import of them is that file", { timeout: TEST_TIMEOUT }, async () => {
+  test("before its first solution the page fetches its entry, the chunks the HTML preloads, the topic's module and figures: no other JS", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {
       assert.equal(await visit(page, env.url, "index.html", "#/gsd"), "ok");
-      const js = await page.evaluate(() => {
+      const { js, preloaded } = await page.evaluate(() => {
         const mark = performance.getEntriesByName("solver-ready")[0]; // the page's own first solution (app.js)
-        return performance
-          .getEntriesByType("resource")
-          .filter((r) => r.startTime < mark.startTime)
-          .map((r) => new URL(r.name).pathname)
-          .filter((p) => /\.js$/.test(p));
+        return {
+          js: performance
+            .getEntriesByType("resource")
+            .filter((r) => r.startTime < mark.startTime)
+            .map((r) => new URL(r.name).pathname)
+            .filter((p) => /\.js$/.test(p)),
+          preloaded: [...document.querySelectorAll('link[rel="modulepreload"]')].map((l) => new URL(l.href).pathname),
+        };
       });
-      // app.js (with the modules it imports, in it), the topic's module and figures: nothing else before the solution
-      assert.deepEqual(js.map(logical).sort(), ["/app.js", "/figures/coordinates.js", "/pkg/coordinates.js"], js.join(" "));
-      // one module record: import() of any of them (the page's import map applies) gives the bundle's namespace
-      const same = await page.evaluate(async () => {
-        const app = await import("./app.js");
-        const names = ["./core.js", "./math.js", "./dom.js", "./embed-bridge.js", "./figures/draw.js", "./format.js"];
-        return Object.fromEntries(await Promise.all(names.map(async (m) => [m, (await import(m)) === app])));
-      });
-      for (const [m, yes] of Object.entries(same)) assert.ok(yes, `${m} is the bundle on the page`);
-      // KaTeX's typesetting (math-typeset.js imports math.js) works on the page's one math.js
+      const own = js.filter((p) => !preloaded.includes(p)).map(logical).sort();
+      assert.deepEqual(own, ["/app.js", "/figures/coordinates.js", "/pkg/coordinates.js"], js.join(" "));
+      // the chunks app.js imports are all preloaded from the HTML, and every one was used
+      const html = fs.readFileSync(path.join(DIST, "index.html"), "utf8");
+      const chunks = [...html.matchAll(/<link rel="modulepreload" href="\.\/([^"]+)">/g)].map((m) => `/${m[1]}`);
+      for (const c of chunks) assert.ok(js.includes(c), `${c} preloaded but not used before the solution`);
+      for (const p of js) assert.match(p, /^\/assets\/[\w-]+-\w{8}\.js$/);
+      // KaTeX's typesetting (math-typeset.js, a chunk of its own) works on the page's one math.js
       await page.waitForFunction(() => document.documentElement.dataset.math === "ready", null, { timeout: 15_000 });
       assert.ok((await page.locator(".steps-body .katex").count()) > 0, "formulas typeset");
       assert.deepEqual(log.pageErrors, []);

@@ -19,13 +19,13 @@ import fs from "node:fs";
 import path from "node:path";
 import { DIST, TEST_TIMEOUT, open, settled, start } from "./harness.mjs";
 import { OPTION_KEYS } from "../../www/embed-options.js";
-import { readDataBlock } from "../../scripts/assets.mjs";
+import { readDataBlock } from "../../scripts/site.mjs";
 
 const ASSETS = JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
 const CATALOG = JSON.parse(fs.readFileSync(path.join(DIST, ASSETS["catalog.json"] ?? "catalog.json"), "utf8"));
 const READY = CATALOG.filter((e) => e.status === "ready").map((e) => e.id);
 const dataOf = (page) => readDataBlock(fs.readFileSync(path.join(DIST, page), "utf8"));
-const WASM = /_bg\.[0-9a-f]{8}\.wasm$/;
+const WASM = /_bg-\w{8}\.wasm$/;
 const PARTS = [".crumbs", ".example-head", ".answer-line"];
 
 let env;

@@ -1,170 +1,124 @@
-// The build's assets step (scripts/assets.mjs) on a small made-up site.
+// The build's esbuild step (scripts/site.mjs) on a small made-up site.
 import { describe, it } from "node:test";
 import assert from "node:assert/strict";
 import crypto from "node:crypto";
 import fs from "node:fs";
 import path from "node:path";
-import { contentHash, dataBlock, fontFaces, hashAssets, headersFile, jsRefs, minifyAll, minifyCss, readDataBlock } from "../../scripts/assets.mjs";
+import { pathToFileURL } from "node:url";
+import { buildSite, dataBlock, finishSite, readDataBlock } from "../../scripts/site.mjs";
 import { site } from "./site.mjs";
 
 const read = (dir, name) => fs.readFileSync(path.join(dir, name), "utf8");
 const CSP = `<meta http-equiv="Content-Security-Policy" content="default-src 'self'; script-src 'self'; style-src 'self'">`;
+const HASHED = /^assets\/[\w-]+-[A-Z2-7]{8}\.\w+$/;
 
-describe("assets.mjs: hashed names, references, the import map", () => {
-  const dir = site({
-    "head.partial.html": `${CSP}\n<link rel="stylesheet" href="./s.css">\n<!-- a comment for the source's readers -->\n<!-- modulepreload -->\n<script type="module" src="./app.js"></script>\n`,
+describe("site.mjs: esbuild's bundle of a small site", async () => {
+  const stage = site({
+    "head.partial.html": `${CSP}\n<!-- catalog-data -->\n<script src="./early.js"></script>\n<link rel="stylesheet" href="./s.css">\n<!-- a comment for the source's readers -->\n<!-- modulepreload -->\n<script type="module" src="./app.js"></script>\n`,
     "index.html": "<!doctype html>\n<head>\n  <!-- include: head.partial.html -->\n</head>\n<body></body>\n",
-    "app.js": 'import { b } from "./b.js";\nexport const a = b + import("./lazy.js");\n',
-    "b.js": 'export const b = new URL("./w.wasm", import.meta.url).href;\nexport const w = new Worker(new URL("./worker.js", import.meta.url), { type: "module" });\n',
-    "lazy.js": "export const z = 3;\n",
-    "worker.js": 'import { x } from "./lib.js";\npostMessage(x);\n',
-    "lib.js": "export const x = 1;\n",
-    "w.wasm": "\0asm-one",
-    "s.css": '@font-face{font-family:F;src:url(f.woff2) format("woff2"),url(f.ttf) format("truetype")}',
-    "f.woff2": "font bytes",
-    "samples/a.png": "named by no literal",
-    "pkg/photogrammetry_playground.js": "export default 1;\nconst u = new URL('w2.wasm', import.meta.url);\n",
-    "pkg/w2.wasm": "\0asm-two",
+    "early.js": "// a classic script, inlined\nvar early = document.getElementById('catalog-data');\n",
+    "app.js": 'import { shared } from "./shared.js";\nexport const topic = () => import("./pkg/t.js");\nexport const fig = () => import("./figures/t.js");\nexport const lab = () => import("./lab/lab.js");\nglobalThis.appResult = shared(21);\n',
+    "shared.js": "let calls = 0;\nexport function shared(x) { calls += 1; return 2 * x; }\nexport const count = () => calls;\n",
+    "pkg/t.js": "import { count } from '../shared.js';\nexport function wasmUrl() { return new URL('t_bg.wasm', import.meta.url); }\nexport const seen = () => count();\n",
+    "pkg/t_bg.wasm": "\0asm-one",
+    "figures/t.js": "export const figure = 1;\n",
+    // a public entry (STABLE_ENTRIES: docs/API.md)
+    "pkg/examples.js": "export { wasmUrl } from '../pkg/t.js';\nexport default 7;\n",
+    "lab/lab.js": 'export const worker = () => new Worker(new URL("./worker.js", import.meta.url), { type: "module" });\nexport const css = new URL("./lab.css", import.meta.url).href;\nexport const photo = (n) => new URL(`./samples/${n}`, import.meta.url).href;\n',
+    "lab/worker.js": 'import("./helper.js").then((m) => postMessage(m.x));\n',
+    "lab/helper.js": "export const x = 1;\n",
+    "lab/lab.css": ".lab  {  color : red ; }\n",
+    "lab/samples/a.png": "a photo",
+    "s.css": ".a  { color: blue }\n",
+    "catalog.json": JSON.stringify([{ id: "t1", module: "t", status: "ready" }]),
+    "sw.js": 'const BUILD = { version: "dev", files: [] }; // replaced\n',
+    "embed.js": "var  spaced = 1;\n",
+    "vendor/v.js": "var  keep = 1 ;  // as shipped\n",
   });
-  const { map } = hashAssets(dir);
-  const html = read(dir, "index.html");
+  const dist = site({});
+  await buildSite(stage, dist);
+  finishSite(stage, dist);
+  const assets = JSON.parse(read(dist, "assets.json"));
+  const html = read(dist, "index.html");
 
-  it("names every file by its content, and the name is the hash of the bytes on disk", () => {
-    for (const logical of ["app.js", "b.js", "lazy.js", "worker.js", "lib.js", "w.wasm", "s.css", "f.woff2", "pkg/w2.wasm"]) {
-      const hashed = map.get(logical);
-      assert.ok(hashed, logical);
-      assert.match(hashed, /\.[0-9a-f]{8}\.[a-z0-9]+$/);
-      assert.ok(!fs.existsSync(path.join(dir, logical)), `${logical} is gone`);
-      assert.equal(hashed.split(".").at(-2), contentHash(fs.readFileSync(path.join(dir, hashed))));
+  it("names every module, chunk and emitted file by its content under assets/, and lists them in assets.json", () => {
+    for (const logical of ["app.js", "pkg/t.js", "pkg/t_bg.wasm", "figures/t.js", "lab/lab.js", "lab/worker.js", "lab/lab.css", "s.css"]) {
+      assert.match(assets[logical] ?? "", HASHED, logical);
+      assert.ok(fs.existsSync(path.join(dist, assets[logical])), logical);
     }
+    assert.equal(read(dist, assets["pkg/t_bg.wasm"]), "\0asm-one");
+    assert.equal(read(dist, assets["lab/lab.css"]).trim(), ".lab{color:red}");
   });
-  it("keeps stable names and files that only a computed URL can name; the stable entry points at the hashed wasm", () => {
-    assert.ok(fs.existsSync(path.join(dir, "samples/a.png")));
-    assert.ok(!map.has("samples/a.png"));
-    assert.ok(!map.has("pkg/photogrammetry_playground.js"), "no page imports it: no hashed copy");
-    assert.match(read(dir, "pkg/photogrammetry_playground.js"), new RegExp(`new URL\\('${path.basename(map.get("pkg/w2.wasm")).replace(/\./g, "\\.")}'`));
+
+  it("runs: one instance of a shared module, new URL(…, import.meta.url) pointing at the hashed file, the public entry re-exporting its build", async () => {
+    const app = await import(pathToFileURL(path.join(dist, assets["app.js"])).href);
+    assert.equal(globalThis.appResult, 42);
+    const t = await app.topic();
+    assert.equal(t.seen(), 1, "pkg/t.js sees the count app.js's call made");
+    assert.equal(t.wasmUrl().href, pathToFileURL(path.join(dist, assets["pkg/t_bg.wasm"])).href);
+    const lab = await app.lab();
+    assert.equal(lab.css, pathToFileURL(path.join(dist, assets["lab/lab.css"])).href);
+    assert.equal(lab.photo("a.png"), pathToFileURL(path.join(dist, "lab/samples/a.png")).href);
+    assert.equal(read(dist, "lab/samples/a.png"), "a photo");
+    const entry = await import(pathToFileURL(path.join(dist, "pkg/examples.js")).href);
+    assert.equal(entry.default, 7);
+    assert.equal(entry.wasmUrl().href, t.wasmUrl().href);
+    assert.match(read(dist, "pkg/examples.js"), /^export \* from "\.\.\/assets\/examples-[A-Z2-7]{8}\.js";\nexport \{ default \} from/);
   });
-  it("rewrites literals where no import map applies: new URL, the worker and what the worker imports", () => {
-    const b = read(dir, map.get("b.js"));
-    assert.ok(b.includes(`new URL("./${map.get("w.wasm")}"`), b);
-    assert.ok(b.includes(`new URL("./${map.get("worker.js")}"`), b);
-    assert.ok(read(dir, map.get("worker.js")).includes(`from "./${map.get("lib.js")}"`));
-    // a page module keeps its logical specifiers: the import map maps them
-    const app = read(dir, map.get("app.js"));
-    assert.ok(app.includes('from "./b.js"') && app.includes('import("./lazy.js")'));
+
+  it("builds the worker with its own chunks, next to the page's", () => {
+    const worker = read(dist, assets["lab/worker.js"]);
+    const chunk = /import\("\.\/(helper-[A-Z2-7]{8}\.js)"\)/.exec(worker);
+    assert.ok(chunk, worker);
+    assert.ok(fs.existsSync(path.join(dist, "assets", chunk[1])));
   });
-  it("the HTML: the shared head included, import map admitted by the CSP, generated modulepreloads, hashed src/href", () => {
-    assert.ok(!fs.existsSync(path.join(dir, "head.partial.html")));
+
+  it("the HTML: the shared head included, hashed names, the classic script inlined and admitted by the CSP, the catalog data", () => {
     assert.ok(!html.includes("<!--"), "comments dropped");
-    const json = /<script type="importmap">(.*?)<\/script>/.exec(html)[1];
-    const { imports } = JSON.parse(json);
-    assert.equal(imports["./b.js"], `./${map.get("b.js")}`);
-    assert.equal(imports["./lazy.js"], `./${map.get("lazy.js")}`);
-    const digest = crypto.createHash("sha256").update(json).digest("base64");
+    assert.ok(!html.includes("importmap"));
+    assert.ok(html.includes(`<script type="module" src="./${assets["app.js"]}">`));
+    assert.ok(html.includes(`<link rel="stylesheet" href="./${assets["s.css"]}">`));
+    const inline = /<script>([^<]*)<\/script>/.exec(html)[1];
+    assert.ok(inline.includes("catalog-data") && !inline.includes("a classic script"), inline);
+    const digest = crypto.createHash("sha256").update(inline).digest("base64");
     assert.ok(html.includes(`script-src 'self' 'sha256-${digest}'`), html);
-    assert.ok(html.indexOf("importmap") < html.indexOf("modulepreload"), "the map comes before any module loads");
-    assert.ok(html.includes(`<link rel="modulepreload" href="./${map.get("b.js")}">`));
-    assert.ok(html.includes(`<script type="module" src="./${map.get("app.js")}">`));
-    assert.ok(html.includes(`href="./${map.get("s.css")}"`));
+    // the chunk app.js shares with the topic module is preloaded; the lazy ones are not
+    const preloads = [...html.matchAll(/<link rel="modulepreload" href="\.\/([^"]+)">/g)].map((m) => m[1]);
+    assert.equal(preloads.length, 1);
+    // (shared.js, with app.js: the chunk the topic module imports too)
+    assert.ok(read(dist, assets["pkg/t.js"]).includes(`"./${path.basename(preloads[0])}"`), preloads[0]);
+    const data = readDataBlock(html);
+    assert.deepEqual(data.entries, [{ id: "t1", module: "t", status: "ready" }]);
+    assert.deepEqual(data.files.t, [`./${assets["pkg/t.js"]}`, `./${assets["pkg/t_bg.wasm"]}`, `./${assets["figures/t.js"]}`]);
+    assert.ok(!fs.existsSync(path.join(dist, "head.partial.html")));
   });
-  it("CSS: fonts swap, url() hashed, sources the build does not ship dropped", () => {
-    const css = read(dir, map.get("s.css"));
-    assert.ok(css.includes("font-display:swap"));
-    assert.ok(css.includes(`url(${path.basename(map.get("f.woff2"))})`));
-    assert.ok(!css.includes(".ttf"));
+
+  it("classic scripts at fixed URLs, vendor/ as shipped; the worker's list; _headers by folder", () => {
+    assert.equal(read(dist, "embed.js").trim(), "var spaced=1;");
+    assert.equal(read(dist, "vendor/v.js"), "var  keep = 1 ;  // as shipped\n");
+    const build = JSON.parse(/^const BUILD = (.*);$/m.exec(read(dist, "sw.js"))[1]);
+    assert.match(build.version, /^[0-9a-f]{16}$/);
+    for (const f of ["index.html", assets["app.js"], assets["pkg/t_bg.wasm"], assets["figures/t.js"]]) assert.ok(build.files.includes(f), f);
+    for (const f of [assets["lab/lab.js"], assets["lab/worker.js"], assets["lab/lab.css"], "lab/samples/a.png"]) assert.ok(build.lazy.includes(f), f);
+    const rules = read(dist, "_headers");
+    assert.match(rules, /^\/assets\/\*\n {2}Cache-Control: public, max-age=31536000, immutable$/m);
+    assert.match(rules, /^\/index\.html\n {2}Cache-Control: no-cache$/m);
+    assert.match(rules, /^\/lab\/\*\n {2}Cache-Control: no-cache$/m);
+    assert.ok(fs.existsSync(path.join(dist, `${assets["app.js"]}.br`)) && fs.existsSync(path.join(dist, "index.html.gz")));
   });
-  it("a stable entry that imports by a computed name still finds its folder's modules under their own names", () => {
-    const loader = site({
-      "index.html": `<head>${CSP}<script type="module" src="./app.js"></script></head>`,
-      "app.js": 'import("./pkg/photogrammetry_playground.js");\n',
-      "pkg/photogrammetry_playground.js": "export const load = (topic) => import(`./${topic}.js`);\n",
-      "pkg/coordinates.js": "export const x = new URL('coordinates_bg.wasm', import.meta.url);\n",
-      "pkg/coordinates_bg.wasm": "\0asm",
-    });
-    const { map } = hashAssets(loader);
-    const hashed = map.get("pkg/coordinates.js");
-    assert.ok(hashed && fs.existsSync(path.join(loader, hashed)));
-    assert.equal(read(loader, "pkg/coordinates.js"), read(loader, hashed), "the logical copy is the hashed file's bytes");
-    assert.ok(read(loader, hashed).includes(path.basename(map.get("pkg/coordinates_bg.wasm"))));
-    // the page's own import map points at the hashed copies, the stable entry included
-    const { imports } = JSON.parse(/<script type="importmap">(.*?)<\/script>/.exec(read(loader, "index.html"))[1]);
-    assert.equal(imports["./pkg/coordinates.js"], `./${hashed}`);
-    assert.equal(imports["./pkg/photogrammetry_playground.js"], `./${map.get("pkg/photogrammetry_playground.js")}`);
-  });
-  it("fails loudly on a cycle of literal references", () => {
-    const cyclic = site({
-      "index.html": `<head>${CSP}<script type="module" src="./c1.js"></script></head>`,
-      "c1.js": 'export const u = new URL("./c2.js", import.meta.url);\n',
-      "c2.js": 'export const u = new URL("./c1.js", import.meta.url);\n',
-    });
-    assert.throws(() => hashAssets(cyclic), /cycle of literal references.*c1\.js.*c2\.js/);
+
+  it("fails with a clear message on a new URL to a file that does not exist", async () => {
+    const bad = site({ ...Object.fromEntries(["index.html", "head.partial.html", "s.css", "catalog.json", "sw.js", "embed.js", "early.js"].map((f) => [f, read(stage, f)])), "app.js": 'export const u = new URL("./missing.wasm", import.meta.url);\n' });
+    await assert.rejects(buildSite(bad, site({})), /missing\.wasm.*does not exist/s);
   });
 });
 
-describe("assets.mjs: finding references", () => {
-  it("tells import specifiers from other literals, and sees workers", () => {
-    const refs = jsRefs('import a from "./a.js";\nconst u = new URL("./b.wasm", import.meta.url);\nnew Worker(new URL("./w.js", import.meta.url));\nawait import("./c.js");\nconst s = "not a path.js here";');
-    assert.deepEqual(
-      refs.map((r) => [r.ref, r.kind, r.worker]),
-      [
-        ["./a.js", "import", false],
-        ["./b.wasm", "url", false],
-        ["./w.js", "url", true],
-        ["./c.js", "import", false],
-      ],
-    );
-  });
-  it("font-display: block becomes swap; a face without one gets it", () => {
-    const files = new Set(["x.woff2"]);
-    assert.equal(fontFaces("a.css", "@font-face{font-display:block;src:url(x.woff2)}", files), "@font-face{font-display:swap;src:url(x.woff2)}");
-    assert.equal(fontFaces("a.css", "@font-face{src:url(x.woff2)}", files), "@font-face{font-display:swap;src:url(x.woff2)}");
-  });
-});
-
-describe("step 0: minified JS and CSS", () => {
-  it("CSS loses comments and idle white space; strings, url() and descendant spaces stay", () => {
-    const css = `/* note */\n.a > .b ,\n.c :is(.d) {\n  content: "▸ ; , x" ;\n  background: url( "x y.png" ) ;\n  margin: 0 auto;\n}\n@media (min-width: 600px) { .e { color: red; } }\n`;
-    assert.equal(minifyCss(css), `.a>.b,.c :is(.d){content:"▸ ; , x";background:url( "x y.png" );margin:0 auto}@media (min-width:600px){.e{color:red}}`);
-  });
-  it("a module keeps its exports and imports, a classic script its globals; vendor/ and sw.js are left alone", async () => {
-    const source = {
-      "m.js": `import { helper } from "./h.js";\nconst longLocalName = helper(2);\nexport function twice(value) { return longLocalName * value; }\n`,
-      "classic.js": `var pageGlobal = 1;\nfunction setup(argument) { return argument + pageGlobal; }\n`,
-      "vendor/v.js": "var  keep = 1 ;  // as shipped\n",
-      "sw.js": "// PRECACHE-MARKER\nself.x = 1;\n",
-      "s.css": ".a { color: red; }\n",
-    };
-    const dir = site(source);
-    const [n, before, after] = await minifyAll(dir);
-    assert.equal(n, 3);
-    assert.ok(after < before, `${after} < ${before}`);
-    const m = read(dir, "m.js");
-    assert.match(m, /import\{helper as \w+\}from"\.\/h\.js"/);
-    assert.match(m, /export\{\w+ as twice\}|export function twice/);
-    assert.doesNotMatch(m, /longLocalName/);
-    assert.match(read(dir, "classic.js"), /var pageGlobal=1;function setup\(/);
-    assert.equal(read(dir, "vendor/v.js"), source["vendor/v.js"]);
-    assert.equal(read(dir, "sw.js"), source["sw.js"]);
-    assert.equal(read(dir, "s.css"), ".a{color:red}\n");
-  });
-});
-
-describe("assets.mjs: the page's data block, and cache rules by folder", () => {
+describe("site.mjs: the page's data block", () => {
   it("writes data that reads back the same, inside a page, and refuses what would end its element", () => {
     const data = { entries: [{ id: "gsd" }], prerendered: { folder: "./prerender/", ids: ["gsd"], options: ["theme"] } };
-    const page = `<head>${dataBlock(data)}<script type="importmap">{}</script></head>`;
+    const page = `<head>${dataBlock(data)}<script type="module"></script></head>`;
     assert.deepEqual(readDataBlock(page), data);
     assert.equal(readDataBlock("<head></head>"), null);
     assert.throws(() => dataBlock({ title: "</script><script>x()" }), /would end its script element/);
-  });
-
-  it("gives a folder with no hashed file one no-cache rule, and one with only hashed files one immutable rule", () => {
-    const dir = site({ "index.html": "", "prerender/gsd.html": "", "prerender/embed/gsd.html": "", "pkg/a.12345678.js": "", "b.js": "" });
-    headersFile(dir, new Map([["pkg/a.js", "pkg/a.12345678.js"]]));
-    const text = read(dir, "_headers");
-    assert.match(text, /^\/prerender\/\*\n {2}Cache-Control: no-cache$/m);
-    assert.doesNotMatch(text, /^\/prerender\/(gsd|embed)/m);
-    assert.match(text, /^\/pkg\/\*\n {2}Cache-Control: public, max-age=31536000, immutable$/m);
-    assert.match(text, /^\/b\.js\n {2}Cache-Control: no-cache$/m);
   });
 });

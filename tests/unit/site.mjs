@@ -1,5 +1,5 @@
 // A small made-up site in a temp folder for the build scripts' unit tests
-// (assets.test.mjs, bundle.test.mjs); removed when the test file ends.
+// (assets.test.mjs); removed when the test file ends.
 import { after } from "node:test";
 import fs from "node:fs";
 import os from "node:os";
