@@ -154,10 +154,10 @@ fn example_17_code_and_differential_code_as_printed() {
         );
     }
     let code_step = s.steps.iter().find(|t| t.title == "Chain code").unwrap();
-    assert!(code_step.substituted.contains(r"1\;8\;8\;8\;7\;1"));
+    assert!(code_step.substituted.contains(r"1 \;8 \;8 \;8 \;7 \;1"));
     let d = s.steps.iter().find(|t| t.title == "Differences").unwrap();
     assert!(
-        d.substituted.contains(r"7\;0\;0\;(-1)\;(-6)"),
+        d.substituted.contains(r"7 \;0 \;0 \;(-1) \;(-6)"),
         "{}",
         d.substituted
     );

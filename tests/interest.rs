@@ -266,7 +266,7 @@ fn example_14_moravec_reproduced() {
     assert!(has_note(&s, NoteKind::Convention, "MINIMUM"));
     assert!(s.steps[0]
         .substituted
-        .contains(r"(9 - 10)^2 + (14 - 15)^2 \\ &\quad + (15 - 12)^2 + (11 - 5)^2 = 47"));
+        .contains(r"S(c_{2}, r_{2}) = (9 - 10)^2 + (14 - 15)^2 + (15 - 12)^2 + (11 - 5)^2 = 47"));
     assert!(s.steps[1]
         .substituted
         .contains(r"\sum S = 47 + 361 + 153 + 171 = 732,\quad \bar S = \frac{732}{4} = 183"));

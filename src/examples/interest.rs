@@ -4,17 +4,17 @@
 //! step; and the Förstner operator on a generated test pattern, where the
 //! window can be moved and the whole image is thresholded and suppressed.
 
-use super::fields::{is_seed, Field, Inputs, Kind};
-use super::{Example, Lab, Topic};
-use crate::error::{Error, Result};
-use crate::interest::{self, Case, Forstner, Measures, Precision};
+use super::drill::{or_given, tol, value_in, BoxDef, Mistake, Tolerance};
+use super::fields::{Field, Inputs};
+use super::{Example, Topic};
+use crate::error::Result;
+use crate::interest::{Case, Forstner, Measures, Precision, Sums};
 use crate::raster::Grid;
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{num, tex, with_unit, Form, NoteKind, Record, Relation, Solution, Step, Value};
 
 mod forstner_image;
+mod forstner_window;
 mod moravec_window;
-use forstner_image::*;
-use moravec_window::*;
 
 const TITLE: &str = "Interest operators";
 /// Side of the generated test pattern (pixels).
@@ -25,42 +25,9 @@ pub const PATTERN_SEED: u64 = 7;
 
 /// The examples of this topic, in page order.
 pub const EXAMPLES: &[Example] = &[
-        Example {
-            id: "forstner-window",
-            title: "Förstner operator",
-            source: "Worked examples, Example 13; Lecture 21: Image matching",
-            summary: "Gradients by central differences, the matrix N, its inverse, weight w, roundness q, and Lecture 21's precision test with the error ellipse.",
-            fields: forstner_fields,
-            solve: forstner_window,
-            answer: &["w", "q", "accepted"],
-            labels: &[],
-            lab: Some(Lab { family: "interest", explains: &[] }),
-            practice: None,
-        },
-        Example {
-            id: "moravec-window",
-            title: "Moravec operator",
-            source: "Worked examples, Example 14",
-            summary: "Four directional differences at each interior pixel, squared and summed, averaged over the window.",
-            fields: moravec_fields,
-            solve: moravec_window,
-            answer: &["sums", "mean"],
-            labels: &[],
-            lab: Some(Lab { family: "interest", explains: &[] }),
-            practice: None,
-        },
-        Example {
-            id: "forstner-image",
-            title: "Förstner operator on a test pattern",
-            source: "Lecture 21: Image matching; Worked examples, Example 13",
-            summary: "Move a window over a generated 64×64 pattern (corners, edges, a flat area, noise): N, w, q and the error ellipse there, and the interest points of the whole image after thresholding and suppression.",
-            fields: image_fields,
-            solve: forstner_image,
-            answer: &["w", "q", "points"],
-            labels: &[],
-            lab: Some(Lab { family: "interest", explains: &[] }),
-            practice: None,
-        },
+    forstner_window::EXAMPLE,
+    moravec_window::EXAMPLE,
+    forstner_image::EXAMPLE,
 ];
 
 /// The topic: its module (`web/interest/`) and title.
@@ -70,35 +37,9 @@ pub const TOPIC: Topic = Topic {
     examples: EXAMPLES,
 };
 
-fn rows(m: &[[f64; 4]]) -> Value {
-    Value::matrix(&m.iter().map(|r| r.to_vec()).collect::<Vec<_>>())
-}
-
-fn window_field(default: Value, help: &'static str) -> Field {
-    Field {
-        key: "window",
-        label: "Window of grey values",
-        help,
-        kind: Kind::Matrix {
-            rows: None,
-            cols: None,
-        },
-        default,
-        when: None,
-    }
-}
-
-fn example_13() -> Value {
-    Value::matrix(
-        &[
-            [10.0, 13.0, 3.0, 11.0, 13.0],
-            [11.0, 15.0, 10.0, 9.0, 9.0],
-            [9.0, 24.0, 7.0, 8.0, 10.0],
-            [10.0, 13.0, 14.0, 15.0, 13.0],
-            [13.0, 18.0, 17.0, 19.0, 21.0],
-        ]
-        .map(|r| r.to_vec()),
-    )
+/// The window of grey values, with the seed's rows.
+fn window_field(default: &[Vec<f64>], help: &'static str) -> Field {
+    Field::matrix("window", "Window of grey values", default).help(help)
 }
 
 fn sigma_n(default: f64) -> Field {
@@ -117,99 +58,17 @@ fn threshold() -> Field {
         )
 }
 
-fn forstner_fields() -> Vec<Field> {
-    vec![
-        window_field(
-            example_13(),
-            "At least 3×3 (5×5 or 7×7 in the course notes); gradients are computed at the interior pixels.",
-        ),
-        sigma_n(1.0),
-        threshold(),
-    ]
-}
-
-fn moravec_fields() -> Vec<Field> {
-    vec![window_field(
-        rows(&[
-            [12.0, 15.0, 5.0, 13.0],
-            [10.0, 27.0, 9.0, 11.0],
-            [11.0, 14.0, 15.0, 13.0],
-            [12.0, 19.0, 18.0, 22.0],
-        ]),
-        "At least 3×3 (4×4 or 8×8 in the course notes); differences are computed at the interior pixels.",
-    )]
-}
-
-/// Fixed places of the test pattern, one for each of seed 003's cases
-/// (1-based column, row): the flat background, the long vertical edge and
-/// the centre of the checkerboard.
-const REFERENCE_WINDOWS: &[(&str, usize, usize)] = &[
-    ("flat background", 34, 16),
-    ("vertical edge", 47, 14),
-    ("checkerboard corner", 47, 47),
-];
-
-fn image_fields() -> Vec<Field> {
-    let side = PATTERN_SIZE as f64;
-    vec![
-        Field::integer("c", "Window centre: column c", 9.0)
-            .range(1.0, side)
-            .help("Column of the window's centre pixel, counted from 1 at the left."),
-        Field::integer("r", "Window centre: row r", 9.0)
-            .range(1.0, side)
-            .help("Row of the window's centre pixel, counted from 1 at the top."),
-        Field::integer("window_size", "Window size", 5.0)
-            .range(3.0, 9.0)
-            .help("Odd: 5×5 or 7×7 in the course notes."),
-        Field::number("noise", "Noise added to the pattern", 2.0)
-            .unit("grey values")
-            .range(0.0, 50.0)
-            .help("Uniform noise of ± this many grey values (a fixed sequence, the same every time)."),
-        sigma_n(2.0),
-        threshold(),
-        Field::number("q_min", "Least roundness q", 0.5)
-            .range(0.0, 1.0)
-            .help("Förstner's roundness test (q at least this) on top of Lecture 21's threshold; 0 switches it off (Lecture 21 alone)."),
-    ]
-}
-
 /// A validated matrix input as a grid.
 fn grid(inputs: &Record, key: &str) -> Result<Grid> {
-    let rows: Vec<Vec<f64>> = match inputs.get(key) {
-        Some(Value::List(rows)) => rows
-            .iter()
-            .map(|r| match r {
-                Value::List(xs) => xs
-                    .iter()
-                    .map(|x| {
-                        x.as_f64()
-                            .ok_or_else(|| Error::Internal(format!("{key}: not a number")))
-                    })
-                    .collect(),
-                _ => Err(Error::Internal(format!("{key}: not a matrix"))),
-            })
-            .collect::<Result<_>>()?,
-        _ => {
-            return Err(Error::Internal(format!(
-                "validated input \"{key}\" is missing"
-            )))
-        }
-    };
-    Grid::from_rows(key, &rows)
+    Grid::from_rows(key, &Inputs(inputs).rows(key)?)
 }
 
-fn bmatrix(m: &[[f64; 2]; 2]) -> String {
-    format!(
-        r"\begin{{bmatrix}} {} & {} \\ {} & {} \end{{bmatrix}}",
-        num(m[0][0]),
-        num(m[0][1]),
-        num(m[1][0]),
-        num(m[1][1])
-    )
+fn rows2(m: &[[f64; 2]; 2]) -> Vec<Vec<f64>> {
+    m.iter().map(|r| r.to_vec()).collect()
 }
 
 fn mat(m: &[[f64; 2]; 2]) -> Value {
-    Value::matrix(&[m[0].to_vec(), m[1].to_vec()])
+    Value::matrix(&rows2(m))
 }
 
 fn opt_mat(m: Option<[[f64; 2]; 2]>) -> Value {
@@ -229,47 +88,35 @@ fn opt_num(x: Option<f64>) -> String {
 /// example and the image mode).
 fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t: f64) {
     let m = &f.measures;
-    let mut diffs = vec![
-        r"\footnotesize\begin{array}{l|l|l}".to_string(),
-        r"\text{Pixel} & g'_x & g'_y \\ \hline".to_string(),
-    ];
-    let mut products = vec![
-        r"\small\begin{array}{l|r|r|r|r|r}".to_string(),
-        r"\text{Pixel} & g'_x & g'_y & g'_x g'_y & (g'_x)^2 & (g'_y)^2 \\ \hline".to_string(),
-    ];
+    let mut diffs = vec![vec![
+        r"\text{Pixel}".to_string(),
+        "g'_x".to_string(),
+        "g'_y".to_string(),
+    ]];
+    let mut products = vec![[
+        r"\text{Pixel}",
+        "g'_x",
+        "g'_y",
+        "g'_x g'_y",
+        "(g'_x)^2",
+        "(g'_y)^2",
+    ]
+    .map(String::from)
+    .to_vec()];
     for t in &f.rows {
-        diffs.push(format!(
-            r"{} = {} & ({} - {})/2 = {} & ({} - {})/2 = {} \\",
-            pos(t.c, t.r),
-            num(t.g),
-            num(t.right),
-            tex(t.left),
-            num(t.gx),
-            num(t.down),
-            tex(t.up),
-            num(t.gy),
-        ));
-        products.push(format!(
-            r"{} & {} & {} & {} & {} & {} \\",
-            pos(t.c, t.r),
-            num(t.gx),
-            num(t.gy),
-            num(t.gxgy),
-            num(t.gx2),
-            num(t.gy2)
-        ));
+        diffs.push(vec![
+            format!("{} = {}", pos(t.c, t.r), num(t.g)),
+            format!("({} - {})/2 = {}", num(t.right), tex(t.left), num(t.gx)),
+            format!("({} - {})/2 = {}", num(t.down), tex(t.up), num(t.gy)),
+        ]);
+        let mut row = vec![pos(t.c, t.r)];
+        row.extend([t.gx, t.gy, t.gxgy, t.gx2, t.gy2].map(num));
+        products.push(row);
     }
-    diffs.push(r"\end{array}".to_string());
     let sm = &f.sums;
-    products.push(format!(
-        r"\hline \text{{sum}} & {} & {} & {} & {} & {}",
-        num(sm.gx),
-        num(sm.gy),
-        num(sm.gxgy),
-        num(sm.gx2),
-        num(sm.gy2)
-    ));
-    products.push(r"\end{array}".to_string());
+    let mut sum_row = vec![r"\text{sum}".to_string()];
+    sum_row.extend([sm.gx, sm.gy, sm.gxgy, sm.gx2, sm.gy2].map(num));
+    products.push(sum_row);
     let table: Vec<Vec<f64>> = f
         .rows
         .iter()
@@ -291,37 +138,56 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
             "Gradient table: central differences",
             "At every interior pixel of the window, row by row as the course notes lay it out: g′x = (g(c+1, r) − g(c−1, r))/2 across the columns and g′y = (g(c, r+1) − g(c, r−1))/2 down the rows. Table rows are [c, r, g, g′x, g′y, g′x·g′y, (g′x)², (g′y)²], positions from 1.",
         )
-        .formula(
-            r"g'_x = \frac{g(c+1,r) - g(c-1,r)}{2},\quad g'_y = \frac{g(c,r+1) - g(c,r-1)}{2}",
-            diffs.join("\n"),
-        )
+        .relation(Relation::new("g'_x").key("gx").sym(r"\frac{g(c+1,r) - g(c-1,r)}{2}"))
+        .relation(Relation::new("g'_y").key("gy").sym(r"\frac{g(c,r+1) - g(c,r-1)}{2}"))
+        .relation(Relation::new(Form::default()).key("table").subst(Form::grid_tex(
+            "array",
+            diffs,
+            "gradient table",
+        )))
         .value("table", Value::matrix(&table))
         .value("gx", Value::matrix(&f.gx.rows()))
         .value("gy", Value::matrix(&f.gy.rows())),
     );
+    let mut sums = Step::new(
+        "Gradient table: products, squares and sums",
+        "The rest of the course notes' table: the product and the squares at each pixel, then the column sums.",
+    );
+    for (key, sym) in [
+        ("sum_gx", r"\sum g'_x"),
+        ("sum_gy", r"\sum g'_y"),
+        ("sum_gxgy", r"\sum g'_x g'_y"),
+        ("sum_gx2", r"\sum (g'_x)^2"),
+        ("sum_gy2", r"\sum (g'_y)^2"),
+    ] {
+        sums = sums.relation(Relation::new(Form::default()).key(key).sym(sym));
+    }
     s.step(
-        Step::new(
-            "Gradient table: products, squares and sums",
-            "The rest of the course notes' table: the product and the squares at each pixel, then the column sums.",
-        )
-        .formula(
-            r"\sum g'_x,\ \sum g'_y,\ \sum g'_x g'_y,\ \sum (g'_x)^2,\ \sum (g'_y)^2",
-            products.join("\n"),
-        )
+        sums.relation(Relation::new(Form::default()).subst(Form::grid_tex(
+            "array",
+            products,
+            "products and sums",
+        )))
         .value("sum_gx", sm.gx)
         .value("sum_gy", sm.gy)
         .value("sum_gxgy", sm.gxgy)
         .value("sum_gx2", sm.gx2)
         .value("sum_gy2", sm.gy2),
     );
+    let symbolic_n = vec![
+        vec![r"\sum (g'_x)^2".to_string(), r"\sum g'_x g'_y".to_string()],
+        vec![r"\sum g'_x g'_y".to_string(), r"\sum (g'_y)^2".to_string()],
+    ];
     s.step(
         Step::new(
             "The matrix N",
             "The sums of squares on the diagonal, the sum of products off it: the normal-equation matrix of a shift of the window.",
         )
-        .formula(
-            r"N = \begin{bmatrix} \sum (g'_x)^2 & \sum g'_x g'_y \\ \sum g'_x g'_y & \sum (g'_y)^2 \end{bmatrix}",
-            format!("N = {}", bmatrix(&m.n)),
+        .relation(
+            Relation::new("N")
+                .key("n")
+                .sym(Form::grid_tex("bmatrix", symbolic_n, ""))
+                .result(Form::grid("bmatrix", &rows2(&m.n), "N")),
         )
         .value("n", mat(&m.n)),
     );
@@ -335,81 +201,96 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
     };
     s.step(
         Step::new("Determinant of N", det_text)
-            .formula(
-                r"\det N = \sum (g'_x)^2 \sum (g'_y)^2 - \left(\sum g'_x g'_y\right)^2",
-                format!(
-                    r"\det N = {} \times {} - {}^2 = {}",
-                    num(a),
-                    num(d),
-                    tex(b),
-                    num(m.det)
-                ),
+            .relation(
+                Relation::new(r"\det N")
+                    .key("det_n")
+                    .sym(r"\sum (g'_x)^2 \sum (g'_y)^2 - \left(\sum g'_x g'_y\right)^2")
+                    .subst(format!(r"{} \times {} - {}^2", num(a), num(d), tex(b)))
+                    .value(m.det, ""),
             )
             .value("det_n", m.det)
             .value("trace_n", m.trace),
     );
     match m.inverse {
-        Some(inv) => s.step(
-            Step::new(
-                "Inverse of N",
-                "Swap the diagonal, change the sign of the off-diagonal, divide by the determinant. N⁻¹ is the cofactor matrix of the shift: Σuv = σn²·N⁻¹.",
+        Some(inv) => {
+            let cofactors = vec![
+                vec![r"\sum (g'_y)^2".to_string(), r"-\sum g'_x g'_y".to_string()],
+                vec![r"-\sum g'_x g'_y".to_string(), r"\sum (g'_x)^2".to_string()],
+            ];
+            s.step(
+                Step::new(
+                    "Inverse of N",
+                    "Swap the diagonal, change the sign of the off-diagonal, divide by the determinant. N⁻¹ is the cofactor matrix of the shift: Σuv = σn²·N⁻¹.",
+                )
+                .relation(
+                    Relation::new("N^{-1}")
+                        .key("n_inverse")
+                        .sym(Form::from(r"\frac{1}{\det N}").then(Form::grid_tex(
+                            "bmatrix",
+                            cofactors,
+                            "",
+                        )))
+                        .subst(
+                            Form::from(format!(r"\frac{{1}}{{{}}}", num(m.det)))
+                                .then(Form::grid("bmatrix", &[vec![d, -b], vec![-b, a]], "")),
+                        )
+                        .result(Form::grid("bmatrix", &rows2(&inv), "N^{-1}")),
+                )
+                .value("n_inverse", mat(&inv)),
             )
-            .formula(
-                r"N^{-1} = \frac{1}{\det N} \begin{bmatrix} \sum (g'_y)^2 & -\sum g'_x g'_y \\ -\sum g'_x g'_y & \sum (g'_x)^2 \end{bmatrix}",
-                format!(
-                    r"N^{{-1}} = \frac{{1}}{{{}}} {} = {}",
-                    num(m.det),
-                    bmatrix(&[[d, -b], [-b, a]]),
-                    bmatrix(&inv)
-                ),
-            )
-            .value("n_inverse", mat(&inv)),
-        ),
+        }
         None => s.step(Step::new(
             "Inverse of N",
             "det N = 0: N has no inverse, so N⁻¹ and trace N⁻¹ have no value (the position is undetermined in at least one direction).",
         )),
     }
+    let trace_inverse = Relation::new(r"\operatorname{tr} N^{-1}")
+        .key("trace_n_inverse")
+        .sym(r"\frac{\operatorname{tr} N}{\det N}");
+    let w = Relation::new("w")
+        .key("w")
+        .sym(r"\frac{1}{\operatorname{tr} N^{-1}}")
+        .sym(r"\frac{\det N}{\operatorname{tr} N}");
+    let (trace_inverse, w) = match m.trace_inverse {
+        Some(ti) => (
+            trace_inverse
+                .subst(format!(r"\frac{{{}}}{{{}}}", num(m.trace), num(m.det)))
+                .value(ti, ""),
+            w.subst(format!(r"\frac{{{}}}{{{}}}", num(m.det), num(m.trace)))
+                .value(m.w, ""),
+        ),
+        None => (trace_inverse.result(r"\infty"), w.value(m.w, "")),
+    };
     s.step(
         Step::new(
             "Trace of N⁻¹ and the weight w",
             "trace N⁻¹ = trace N / det N is σu² + σv² up to σn²: the size of the error ellipse. A distinct point has a SMALL trace N⁻¹, so Förstner's weight is its reciprocal, w = det N / trace N, large for a distinct point. Where det N = 0, trace N⁻¹ is infinite and w = 0 (its limit).",
         )
-        .formula(
-            r"\operatorname{tr} N^{-1} = \frac{\operatorname{tr} N}{\det N},\quad w = \frac{1}{\operatorname{tr} N^{-1}} = \frac{\det N}{\operatorname{tr} N}",
-            match m.trace_inverse {
-                Some(ti) => format!(
-                    r"\operatorname{{tr}} N^{{-1}} = \frac{{{}}}{{{}}} = {},\quad w = \frac{{{}}}{{{}}} = {}",
-                    num(m.trace),
-                    num(m.det),
-                    num(ti),
-                    num(m.det),
-                    num(m.trace),
-                    num(m.w)
-                ),
-                None => r"\operatorname{tr} N^{-1} = \infty,\quad w = 0".to_string(),
-            },
-        )
+        .relation(trace_inverse)
+        .relation(w)
         .value("trace_n_inverse", m.trace_inverse)
         .value("w", m.w),
     );
+    let q = Relation::new("q")
+        .key("q")
+        .sym(r"\frac{4 \det N}{(\operatorname{tr} N)^2}")
+        .sym(r"1 - \left(\frac{\lambda_1 - \lambda_2}{\lambda_1 + \lambda_2}\right)^2");
+    let q = match m.q {
+        Some(x) => q
+            .subst(format!(
+                r"\frac{{4 \times {}}}{{{}^2}}",
+                num(m.det),
+                num(m.trace)
+            ))
+            .value(x, ""),
+        None => q.subst(r"\frac{0}{0}").result(r"\text{no value}"),
+    };
     s.step(
         Step::new(
             "Roundness q",
             "q = 1 for a circular error ellipse (a symmetric corner), q = 0 for a straight edge; no value for a flat window (N = 0).",
         )
-        .formula(
-            r"q = \frac{4 \det N}{(\operatorname{tr} N)^2} = 1 - \left(\frac{\lambda_1 - \lambda_2}{\lambda_1 + \lambda_2}\right)^2",
-            match m.q {
-                Some(q) => format!(
-                    r"q = \frac{{4 \times {}}}{{{}^2}} = {}",
-                    num(m.det),
-                    num(m.trace),
-                    num(q)
-                ),
-                None => r"q = \frac{0}{0}\ \text{(no value)}".to_string(),
-            },
-        )
+        .relation(q)
         .value("q", m.q),
     );
     s.step(
@@ -417,37 +298,50 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
             "Eigenvalues of N",
             "The gradient energy along the strongest and the weakest direction. λmin = det N / λmax (the same number as tr/2 − root, without cancellation).",
         )
-        .formula(
-            r"\lambda_{1,2} = \frac{\operatorname{tr} N}{2} \pm \sqrt{\left(\frac{N_{11} - N_{22}}{2}\right)^2 + N_{12}^2}",
-            format!(
-                r"\lambda_{{max}} = {},\quad \lambda_{{min}} = {}",
-                num(m.lambda_max),
-                num(m.lambda_min)
-            ),
-        )
+        .relation(Relation::new(r"\lambda_{1,2}").sym(
+            r"\frac{\operatorname{tr} N}{2} \pm \sqrt{\left(\frac{N_{11} - N_{22}}{2}\right)^2 + N_{12}^2}",
+        ))
+        .relation(Relation::new(r"\lambda_{max}").key("lambda_max").value(m.lambda_max, ""))
+        .relation(Relation::new(r"\lambda_{min}").key("lambda_min").value(m.lambda_min, ""))
         .value("lambda_max", m.lambda_max)
         .value("lambda_min", m.lambda_min),
     );
     let mm = m.m as f64;
+    let px2 = |x: &str| format!(r"{x}\,\text{{px}}^2");
+    let shift = r"\lambda_{max}(\Sigma_{uv})";
     s.step(
         Step::new(
             "Lecture 21: precision of the position",
             "The gradient covariance is Σ∇g∇g = N/m (m pixels), its smallest eigenvalue λmin(N)/m; the largest eigenvalue of the shift's covariance Σuv = σn²·N⁻¹ is then σn²/λmin(N) — m cancels. The point is accepted when λmax(Σuv) ≤ T².",
         )
-        .formula(
-            r"\lambda_{max}(\Sigma_{uv}) = \frac{\sigma_n^2\, \lambda_{min}^{-1}(\Sigma_{\nabla g \nabla g})}{m} = \frac{\sigma_n^2}{\lambda_{min}(N)} \le T^2",
-            format!(
-                r"\lambda_{{min}}(\Sigma_{{\nabla g \nabla g}}) = \frac{{{}}}{{{}}} = {},\quad \lambda_{{max}}(\Sigma_{{uv}}) = \frac{{{}^2}}{{{}}} = {}\ \text{{px}}^2 {} {}^2 = {}\ \text{{px}}^2",
-                num(m.lambda_min),
-                num(mm),
-                num(m.lambda_min / mm),
-                num(sigma_n),
-                num(m.lambda_min),
-                opt_num(p.lambda_max_shift),
-                if p.accepted { r"\le" } else { ">" },
-                num(t),
-                num(t * t)
-            ),
+        .relation(
+            Relation::new(r"\lambda_{min}(\Sigma_{\nabla g \nabla g})")
+                .subst(format!(r"\frac{{{}}}{{{}}}", num(m.lambda_min), num(mm)))
+                .value(m.lambda_min / mm, ""),
+        )
+        .relation(
+            Relation::new(shift)
+                .key("lambda_max_shift")
+                .sym(r"\frac{\sigma_n^2\, \lambda_{min}^{-1}(\Sigma_{\nabla g \nabla g})}{m}")
+                .sym(r"\frac{\sigma_n^2}{\lambda_{min}(N)}")
+                .subst(format!(
+                    r"\frac{{{}^2}}{{{}}}",
+                    num(sigma_n),
+                    num(m.lambda_min)
+                ))
+                .result(px2(&opt_num(p.lambda_max_shift))),
+        )
+        .relation(Relation::new(shift).op(r"\le").sym("T^2"))
+        .relation(
+            Relation::new("T^2")
+                .subst(format!("{}^2", num(t)))
+                .result(px2(&num(t * t))),
+        )
+        .relation(
+            Relation::new(px2(&opt_num(p.lambda_max_shift)))
+                .key("accepted")
+                .op(if p.accepted { r"\le" } else { ">" })
+                .result(px2(&num(t * t))),
         )
         .value("m", mm)
         .value("lambda_max_shift", p.lambda_max_shift)
@@ -458,6 +352,20 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
         Case::Edge => "Only across the edge is the position within T; along it the ellipse is long (Lecture 21's edge case).",
         Case::Flat => "Neither direction is within T: a flat, homogeneous area (Lecture 21's large ellipse).",
     };
+    let degrees = |x: f64| format!(r"{}^\circ", num(x));
+    let theta = Relation::new(r"\theta").key("weak_angle_deg");
+    let theta = if m.trace > 0.0 {
+        theta
+            .sym(r"\tfrac{1}{2} \operatorname{atan2}(2 N_{12},\ N_{11} - N_{22}) + 90^\circ")
+            .subst(format!(
+                r"\tfrac{{1}}{{2}} \operatorname{{atan2}}(2 \times {},\ {} - {}) + 90^\circ",
+                tex(b),
+                num(a),
+                tex(d)
+            ))
+    } else {
+        theta
+    };
     s.step(
         Step::new(
             "Error ellipse and the three cases",
@@ -465,15 +373,19 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
                 "The standard error ellipse of the position has semi-axes √λ(Σuv); its long axis lies along the weakest gradient direction. {case_text}"
             ),
         )
-        .formula(
-            r"\sigma_{max} = \sqrt{\lambda_{max}(\Sigma_{uv})},\quad \sigma_{min} = \sqrt{\frac{\sigma_n^2}{\lambda_{max}(N)}}",
-            format!(
-                r"\sigma_{{max}} = {}\ \text{{px}},\quad \sigma_{{min}} = {}\ \text{{px}},\quad \theta = {}^\circ",
-                opt_num(p.sigma_max),
-                opt_num(p.sigma_min),
-                num(m.weak_angle.to_degrees())
-            ),
+        .relation(
+            Relation::new(r"\sigma_{max}")
+                .key("sigma_max_px")
+                .sym(r"\sqrt{\lambda_{max}(\Sigma_{uv})}")
+                .result(with_unit(&opt_num(p.sigma_max), "px")),
         )
+        .relation(
+            Relation::new(r"\sigma_{min}")
+                .key("sigma_min_px")
+                .sym(r"\sqrt{\frac{\sigma_n^2}{\lambda_{max}(N)}}")
+                .result(with_unit(&opt_num(p.sigma_min), "px")),
+        )
+        .relation(theta.result(degrees(m.weak_angle.to_degrees())))
         .value("sigma_max_px", p.sigma_max)
         .value("sigma_min_px", p.sigma_min)
         .value("weak_angle_deg", m.weak_angle.to_degrees())
@@ -504,9 +416,9 @@ fn forstner_result(f: &Forstner, p: &Precision) -> Record {
         .with("case", p.case.name())
 }
 
-/// What each result key is, for the page's result table.
-fn label_results(s: &mut Solution) {
-    s.label_present(&[
+/// What each result key is, for the page's result table (the three
+/// examples share it).
+const LABELS: &[(&str, &str, &str)] = &[
         ("gx", "Gradients g′x (interior)", "grey values/px"),
         ("gy", "Gradients g′y (interior)", "grey values/px"),
         ("n", "Matrix N", ""),
@@ -538,8 +450,7 @@ fn label_results(s: &mut Solution) {
             "[c, r, g, row, column, main diag., other diag., sum]",
             "",
         ),
-    ]);
-}
+    ];
 
 fn singular_notes(s: &mut Solution, m: &Measures) {
     if m.trace == 0.0 {
@@ -555,99 +466,114 @@ fn singular_notes(s: &mut Solution, m: &Measures) {
     }
 }
 
-fn forstner_window(inputs: &Record) -> Result<Solution> {
-    let i = Inputs(inputs);
-    let (sigma_n, t) = (i.number("sigma_n")?, i.number("threshold_px")?);
-    let window = grid(inputs, "window")?;
-    let f = interest::forstner(&window)?;
-    let p = interest::precision(&f.measures, sigma_n, t);
-    let mut s = Solution::new("forstner-window", "Förstner operator", inputs.clone());
-    forstner_steps(&mut s, &f, &p, sigma_n, t);
-    s.result = forstner_result(&f, &p);
-    label_results(&mut s);
-    singular_notes(&mut s, &f.measures);
-    s.note(
-        NoteKind::Convention,
-        "Gradients are the worked examples' central differences, at the interior pixels only (the border pixels are neighbours). Lecture 21 computes them with a Sobel operator instead; the rest of the operator is the same.",
-    ).about(&["gx", "gy"]);
-    if is_seed(&forstner_fields(), inputs) {
-        example_13_notes(&mut s, &f);
-    } else {
-        s.note(
-            NoteKind::Convention,
-            "The course documents give no noise level σn; the Example 13 default is 1 grey value.",
+
+// ------------------------------------------------- practice (both Förstner)
+
+/// The Förstner boxes (the window's and the test pattern's, which drops
+/// det N).
+fn forstner_boxes() -> Vec<BoxDef> {
+    let sum = tol::SUM;
+    vec![
+        BoxDef::new("n[1,1]", "N₁₁ = Σ gx²", None, sum)
+            .nudge("gx = (g(c+1) − g(c−1)) / 2 at each interior pixel; square and add."),
+        BoxDef::new("n[1,2]", "N₁₂ = Σ gx·gy", None, sum)
+            .nudge("gy = (g(r+1) − g(r−1)) / 2; multiply gx and gy pixel by pixel and add.")
+            .sign_flip("The size is right but the sign is not: gx is the next column minus the previous one, gy the next row minus the previous one."),
+        BoxDef::new("n[2,2]", "N₂₂ = Σ gy²", None, sum).nudge("Square gy and add."),
+        BoxDef::new(
+            "det_n",
+            "det N",
+            None,
+            Tolerance {
+                atol: 0.5,
+                rtol: 0.001,
+            },
         )
-        .about(&["lambda_max_shift", "accepted"]);
-    }
-    Ok(s)
+        .nudge("N₁₁·N₂₂ − N₁₂²."),
+        BoxDef::new(
+            "w",
+            "Weight w = 1 / tr(N⁻¹)",
+            None,
+            Tolerance {
+                atol: 0.01,
+                rtol: 0.001,
+            },
+        )
+        .nudge("tr(N⁻¹) = tr N / det N, so w = det N / tr N."),
+        BoxDef::new("q", "Roundness q", None, Tolerance::abs(0.001))
+            .nudge("q = 4 det N / (tr N)²: 1 for a round error ellipse."),
+        BoxDef::new(
+            "weak_angle_deg",
+            "Direction of the weak axis",
+            Some("°"),
+            Tolerance::abs(0.1),
+        )
+        .nudge("The strong direction is ½·atan2(2N₁₂, N₁₁ − N₂₂); the weak one is 90° on."),
+    ]
 }
 
-fn example_13_notes(s: &mut Solution, f: &Forstner) {
-    let m = &f.measures;
-    for (key, label) in [
-        ("sum_gx", "Sum of the column gradients Σg′x"),
-        ("sum_gy", "Sum of the row gradients Σg′y"),
-        ("sum_gxgy", "Sum of the products Σg′x·g′y"),
-        ("sum_gx2", "Sum of the squares Σg′x²"),
-        ("sum_gy2", "Sum of the squares Σg′y²"),
-    ] {
-        s.label(key, label, "");
-    }
-    let (printed_b, printed_det, printed_tr) = (-22.75, 8891.9375, 0.02);
-    s.textbook = Some(
-        Record::new()
-            .with("sum_gx", -9.0)
-            .with("sum_gy", 17.5)
-            .with("sum_gxgy", -22.25)
-            .with("sum_gx2", 82.0)
-            .with("sum_gy2", 114.75)
-            .with("n", mat(&[[82.0, printed_b], [printed_b, 114.75]]))
-            .with("det_n", printed_det)
-            .with(
-                "n_inverse",
-                mat(&[
-                    [114.75 / printed_det, 22.75 / printed_det],
-                    [22.75 / printed_det, 82.0 / printed_det],
-                ]),
-            )
-            .with("trace_n_inverse", printed_tr),
-    );
-    s.note(
-        NoteKind::Erratum,
-        format!(
-            "The course notes' table is right row by row, and its sum of g′x·g′y is {}; but the N it prints has {} off the diagonal. The determinant and inverse it prints follow from the slip: 82 × 114.75 − 22.75² = {} instead of 82 × 114.75 − 22.25² = {}, and 1/{} in front of N⁻¹ instead of 1/{}.",
-            num(f.sums.gxgy),
-            num(printed_b),
-            num(82.0 * 114.75 - printed_b * printed_b),
-            num(m.det),
-            num(printed_det),
-            num(m.det)
+/// The later Förstner boxes from the student's N (and det N, where it has
+/// a box): the example's solution `s` gives the exact ones.
+fn forstner_chain(s: &Solution, g: &Record) -> Result<Record> {
+    let a = or_given(g, "n[1,1]", value_in(s, "n[1,1]")?);
+    let b = or_given(g, "n[1,2]", value_in(s, "n[1,2]")?);
+    let d = or_given(g, "n[2,2]", value_in(s, "n[2,2]")?);
+    let det = or_given(g, "det_n", a * d - b * b);
+    let trace = a + d;
+    // the direction of the weak axis from the student's N, as the core computes it
+    let sums = Sums {
+        gx: 0.0,
+        gy: 0.0,
+        gxgy: b,
+        gx2: a,
+        gy2: d,
+    };
+    let weak = Measures::from_sums(&sums, 1).weak_angle;
+    Ok(Record::new()
+        .with("n[1,1]", a)
+        .with("n[1,2]", b)
+        .with("n[2,2]", d)
+        .with("det_n", det)
+        .with("w", or_given(g, "w", det / trace))
+        .with("q", 4.0 * det / (trace * trace))
+        .with("weak_angle_deg", weak.to_degrees()))
+}
+
+fn forstner_mistakes(s: &Solution) -> Result<Vec<Mistake>> {
+    let v = |k: &str| value_in(s, k);
+    let (a, b, d) = (v("n[1,1]")?, v("n[1,2]")?, v("n[2,2]")?);
+    const HALF: &str = "The central difference is (g(c+1) − g(c−1)) / 2: without the ½ every product is 4 times too big.";
+    const SWAP: &str = "gx runs along a row (columns c), gy down a column (rows r).";
+    Ok(vec![
+        Mistake::new("n[1,1]", "½ forgotten in the gradient", HALF, 4.0 * a),
+        Mistake::new("n[1,2]", "½ forgotten in the gradient", HALF, 4.0 * b),
+        Mistake::new("n[2,2]", "½ forgotten in the gradient", HALF, 4.0 * d),
+        Mistake::new("n[1,1]", "rows and columns swapped", SWAP, d),
+        Mistake::new("n[2,2]", "rows and columns swapped", SWAP, a),
+        Mistake::new(
+            "det_n",
+            "plus instead of minus",
+            "det N = N₁₁·N₂₂ − N₁₂².",
+            a * d + b * b,
         ),
-    ).about(&["n", "det_n", "n_inverse"]);
-    s.note(
-        NoteKind::Rounding,
-        format!(
-            "The course notes give trace N⁻¹ = {printed_tr}: the exact value is 196.75/{} = {}, and even its own determinant gives 196.75/{} = {}. Rounded to one significant digit, both slips disappear in a rounding of {} %.",
-            num(m.det),
-            opt_num(m.trace_inverse),
-            num(printed_det),
-            num(196.75 / printed_det),
-            crate::solution::fmt_sig(
-                m.trace_inverse
-                    .map_or(0.0, |t| ((t - printed_tr) / t * 100.0).abs()),
-                2
-            )
+        Mistake::new(
+            "w",
+            "tr(N⁻¹) instead of its inverse",
+            "w is one over the trace of N⁻¹: det N / tr N.",
+            v("trace_n_inverse").unwrap_or(f64::NAN),
         ),
-    ).about(&["trace_n_inverse"]);
-    s.note(
-        NoteKind::Erratum,
-        format!(
-            "The course notes' rule \"the window is classified as an interest point if the trace exceeds a certain threshold\" is backwards. trace N⁻¹ = σu² + σv² (up to σn²) is the size of the error ellipse: a distinct point has a SMALL trace N⁻¹, and a flat window has an infinite one — the rule as printed would pick exactly the homogeneous areas. Förstner accepts a window when the weight w = 1/trace N⁻¹ = det N/trace N exceeds a threshold (here w = {}); Lecture 21 accepts when λmax(Σuv) ≤ T².",
-            num(m.w)
+        Mistake::new("w", "½ forgotten in the gradient", HALF, 4.0 * v("w")?),
+        Mistake::new(
+            "q",
+            "the 4 left out",
+            "q = 4 det N / (tr N)², so that a round ellipse gives 1.",
+            v("q")? / 4.0,
         ),
-    ).about(&["accepted"]);
-    s.note(
-        NoteKind::Convention,
-        "The course documents give no noise level σn; the default is 1 grey value, with Lecture 21's T = 0.5 px.",
-    ).about(&["lambda_max_shift", "accepted"]);
+        Mistake::new(
+            "weak_angle_deg",
+            "degrees vs radians",
+            "That is the angle in radians; the box asks for degrees (× 180/π).",
+            v("weak_angle_deg")?.to_radians(),
+        ),
+    ])
 }

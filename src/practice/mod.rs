@@ -12,12 +12,10 @@
 //! - The expected values are the solver's own results
 //!   ([`crate::examples::solve`]); a test ties every chain to them.
 
-pub mod chains;
 pub mod coordinates;
 pub mod correlation;
 pub mod filters;
 pub mod grade;
-pub mod interest;
 pub mod matching;
 pub mod projection;
 pub mod resampling;
@@ -110,8 +108,6 @@ pub fn specs() -> Vec<Spec> {
     all.extend(matching::specs());
     all.extend(resampling::specs());
     all.extend(filters::specs());
-    all.extend(interest::specs());
-    all.extend(chains::specs());
     all.extend(projection::specs());
     all
 }

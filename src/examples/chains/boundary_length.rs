@@ -1,12 +1,48 @@
-//! Example 18: the length of a boundary from its chain code.
+//! Seed 000, Example 18: the length of a boundary from its chain code.
 
 use super::*;
+use crate::examples::drill::{or_given, tol, value_in, BoxDef, Drill, Mistake, Tolerance};
+use crate::examples::Lab;
 
-pub(super) fn boundary_length(inputs: &Record) -> Result<Solution> {
+pub const EXAMPLE: Example = Example {
+    id: "boundary-length",
+    title: "Boundary length",
+    source: "Worked examples, Example 18",
+    summary: "The length of a digital edge: pixels minus one when 4-connected; axial steps 1 and diagonal steps √2 when 8-connected.",
+    fields,
+    solve,
+    answer: &["length"],
+    labels: LABELS,
+    lab: Some(Lab {
+        family: "boundaries",
+        explains: &[],
+    }),
+    practice: Some(Drill {
+        generate: gen_edge,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+/// Example 18 (a), rebuilt: a 4-connected edge of 24 pixels.
+const EX18A_START: Pixel = [1, 1];
+const EX18A_CODE: [u8; 23] = [
+    1, 1, 4, 4, 1, 1, 1, 2, 2, 1, 1, 1, 4, 4, 4, 1, 1, 2, 2, 2, 1, 1, 4,
+];
+/// Example 18 (b), rebuilt: 4 horizontal, 4 vertical and 9 diagonal steps.
+const EX18B_START: Pixel = [1, 1];
+const EX18B_CODE: [u8; 17] = [1, 8, 8, 8, 7, 7, 8, 1, 2, 2, 3, 3, 2, 2, 1, 8, 1];
+
+fn fields() -> Vec<Field> {
+    edge_fields(EX18B_START, &EX18B_CODE)
+}
+
+fn solve(inputs: &Record) -> Result<Solution> {
     let conn = connectivity(inputs)?;
     let e = edge(inputs, conn, false)?;
     let p = &e.path;
-    let mut s = Solution::new("boundary-length", "Boundary length", inputs.clone());
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     s.step(edge_step(&e, conn, inputs)?);
     s.result.set("length", Value::Null);
     s.result.set("horizontal", Value::Null);
@@ -24,13 +60,7 @@ pub(super) fn boundary_length(inputs: &Record) -> Result<Solution> {
                     Connectivity::Four => "Horizontal steps are digits 1 and 3, vertical ones 2 and 4; there are no diagonal steps.",
                 },
             )
-            .formula(
-                r"n_h,\ n_v,\ n_d",
-                format!(
-                    r"n_h = {},\ n_v = {},\ n_d = {}",
-                    l.horizontal, l.vertical, l.diagonal
-                ),
-            )
+            .relations(count_relations(&l, conn))
             .value("horizontal", l.horizontal)
             .value("vertical", l.vertical)
             .value("diagonal", l.diagonal),
@@ -65,7 +95,7 @@ pub(super) fn boundary_length(inputs: &Record) -> Result<Solution> {
     problems(&mut s, p, conn);
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);
-    label_results(&mut s, conn);
+    label_code(&mut s, conn);
     if p.closed && p.code.is_some() {
         s.note(
             NoteKind::Convention,
@@ -107,4 +137,85 @@ pub(super) fn boundary_length(inputs: &Record) -> Result<Solution> {
         ).about(&["length", "pixel_count"]);
     }
     Ok(s)
+}
+
+/// `n_h`, `n_v`, `n_d`: how many digits of each kind, counted.
+fn count_relations(l: &chain::Length, conn: Connectivity) -> Vec<Relation> {
+    let (h, v, d) = match conn {
+        Connectivity::Eight => (r"\{1, 5\}", r"\{3, 7\}", r"\{2, 4, 6, 8\}"),
+        Connectivity::Four => (r"\{1, 3\}", r"\{2, 4\}", r"\{\}"),
+    };
+    [
+        ("n_h", "horizontal", h, l.horizontal),
+        ("n_v", "vertical", v, l.vertical),
+        ("n_d", "diagonal", d, l.diagonal),
+    ]
+    .into_iter()
+    .map(|(lhs, key, digits, n)| {
+        Relation::new(lhs)
+            .key(key)
+            .sym(format!(r"\#\{{k : a_k \in {digits}\}}"))
+            .value(n as f64, "")
+    })
+    .collect()
+}
+
+// ---------------------------------------------------------------- practice
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    vec![
+        BoxDef::new("horizontal", "Horizontal steps", None, tol::WHOLE)
+            .nudge("Steps straight left or right: codes 1 and 5."),
+        BoxDef::new("vertical", "Vertical steps", None, tol::WHOLE)
+            .nudge("Steps straight up or down: codes 3 and 7."),
+        BoxDef::new("diagonal", "Diagonal steps", None, tol::WHOLE)
+            .nudge("The even codes: 2, 4, 6, 8."),
+        BoxDef::new("length", "Length", Some("px"), Tolerance::abs(0.005))
+            .nudge("Straight steps count 1, diagonal ones √2."),
+    ]
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let h = or_given(g, "horizontal", value_in(&s, "horizontal")?);
+    let v = or_given(g, "vertical", value_in(&s, "vertical")?);
+    let d = or_given(g, "diagonal", value_in(&s, "diagonal")?);
+    Ok(Record::new()
+        .with("horizontal", h)
+        .with("vertical", v)
+        .with("diagonal", d)
+        .with("length", h + v + std::f64::consts::SQRT_2 * d))
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let v = chain(i, &Record::new())?;
+    let n = |k: &str| v.number(k).unwrap_or(f64::NAN);
+    let (h, vv, d) = (n("horizontal"), n("vertical"), n("diagonal"));
+    Ok(vec![
+        Mistake::new(
+            "length",
+            "diagonal steps counted as 1",
+            "A diagonal step is √2 pixel spacings long.",
+            h + vv + d,
+        ),
+        Mistake::new(
+            "length",
+            "4- vs 8-connectivity",
+            "With 8-connectivity a diagonal is one step of √2; 4-connectivity would walk it as two steps.",
+            h + vv + 2.0 * d,
+        ),
+    ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rebuilt_examples_have_the_seeds_counts() {
+        let a = chain::length(&EX18A_CODE, Connectivity::Four);
+        assert_eq!(a.length, 23.0);
+        let b = chain::length(&EX18B_CODE, Connectivity::Eight);
+        assert_eq!((b.horizontal, b.vertical, b.diagonal), (4, 4, 9));
+    }
 }

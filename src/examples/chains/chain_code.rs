@@ -1,12 +1,64 @@
-//! Example 17 and the exercise: the chain code of a boundary, its reverse and its differential code.
+//! Seed 000, Example 17 and the exercise: the chain code of a boundary,
+//! its reverse and its differential code.
 
 use super::*;
+use crate::examples::drill::{or_given, tol, value_in, BoxDef, Drill, Mistake};
+use crate::examples::fields::Inputs;
+use crate::examples::Lab;
 
-pub(super) fn chain_code(inputs: &Record) -> Result<Solution> {
+pub const EXAMPLE: Example = Example {
+    id: "chain-code",
+    title: "Freeman chain code",
+    source: "Worked examples, Example 17 and the exercise",
+    summary: "The chain code and differential chain code of a digital edge or closed boundary, from its pixels, from a code, or traced around drawn regions.",
+    fields,
+    solve,
+    answer: &["code", "differential"],
+    labels: LABELS,
+    lab: Some(Lab {
+        family: "boundaries",
+        explains: &["code"],
+    }),
+    practice: Some(Drill {
+        generate: gen_edge,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+/// Example 17's edge, rebuilt from its printed code (the figure is lost).
+const EX17_START: Pixel = [1, 4];
+const EX17_CODE: [u8; 16] = [1, 8, 8, 8, 7, 1, 1, 2, 3, 4, 4, 2, 1, 1, 2, 2];
+const EX17_DIFFERENCES: [f64; 15] = [
+    7.0, 0.0, 0.0, -1.0, -6.0, 0.0, 1.0, 1.0, 1.0, 0.0, -2.0, -1.0, 0.0, 1.0, 0.0,
+];
+const EX17_DIFFERENTIAL: [f64; 15] = [
+    7.0, 0.0, 0.0, 7.0, 2.0, 0.0, 1.0, 1.0, 1.0, 0.0, 6.0, 7.0, 0.0, 1.0, 0.0,
+];
+/// The 4-connectivity code of the seed's figure c.
+const FIG_C_CODE: [u8; 15] = [4, 4, 1, 1, 2, 1, 1, 4, 1, 1, 2, 2, 2, 3, 3];
+const FROM: &[(&str, &str)] = &[
+    ("start", "From the first pixel (the left end)"),
+    ("end", "From the last pixel (the right end)"),
+];
+
+
+fn fields() -> Vec<Field> {
+    let mut fields = edge_fields(EX17_START, &EX17_CODE);
+    fields.push(
+        Field::choice("from", "Start coding from", FROM, "start").help(
+            "The course notes' Example 17 starts at the left end; its exercise at the right end. A closed boundary is walked the other way round.",
+        ),
+    );
+    fields
+}
+
+fn solve(inputs: &Record) -> Result<Solution> {
     let conn = connectivity(inputs)?;
-    let from_end = text(inputs, "from")? == "end";
+    let from_end = Inputs(inputs).text("from")? == "end";
     let e = edge(inputs, conn, from_end)?;
-    let mut s = Solution::new("chain-code", "Freeman chain code", inputs.clone());
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     s.step(edge_step(&e, conn, inputs)?);
     s.step(numbering_step(conn));
     let p = &e.path;
@@ -52,7 +104,7 @@ pub(super) fn chain_code(inputs: &Record) -> Result<Solution> {
     if e.given == Given::Region {
         s.result.set("regions", e.regions.len());
     }
-    label_results(&mut s, conn);
+    label_code(&mut s, conn);
     problems(&mut s, p, conn);
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);
@@ -103,6 +155,86 @@ pub(super) fn chain_code(inputs: &Record) -> Result<Solution> {
     Ok(s)
 }
 
-pub(super) fn join(code: &[u8]) -> String {
+fn join(code: &[u8]) -> String {
     code.iter().map(u8::to_string).collect::<Vec<_>>().join(" ")
+}
+
+// ---------------------------------------------------------------- practice
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    let mut b: Vec<BoxDef> = (1..=STEPS)
+        .map(|k| {
+            BoxDef::new(&format!("code[{k}]"), &format!("Code digit {k}"), None, tol::WHOLE)
+                .nudge("1 = east, counted counter-clockwise: 2 north-east, 3 north … 8 south-east. Rows count down, so north is r − 1.")
+        })
+        .collect();
+    for k in 1..STEPS {
+        b.push(
+            BoxDef::new(
+                &format!("differential[{k}]"),
+                &format!("Differential digit {k}"),
+                None,
+                tol::WHOLE,
+            )
+            .nudge("Each digit minus the one before; add 8 when it is negative."),
+        );
+    }
+    b
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let mut out = Record::new();
+    let mut code = Vec::new();
+    for k in 1..=STEPS {
+        let key = format!("code[{k}]");
+        let d = or_given(g, &key, value_in(&s, &key)?);
+        code.push(d);
+        out.set(&key, d);
+    }
+    for k in 1..STEPS {
+        out.set(
+            &format!("differential[{k}]"),
+            (code[k] - code[k - 1]).rem_euclid(8.0),
+        );
+    }
+    Ok(out)
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let v = chain(i, &Record::new())?;
+    let digit = |k: usize| v.number(&format!("code[{k}]")).unwrap_or(f64::NAN);
+    let mut out = Vec::new();
+    for k in 1..=STEPS {
+        let d = digit(k);
+        out.push(Mistake::new(
+            &format!("code[{k}]"),
+            "y not flipped",
+            "Rows count down: a step to r − 1 goes north (2 or 3), to r + 1 south (7 or 8).",
+            (9.0 - d).rem_euclid(8.0) + 1.0,
+        ));
+        // 4-connectivity numbering: 1 east, 2 north, 3 west, 4 south.
+        let four = match d as u8 {
+            3 => Some(2.0),
+            7 => Some(4.0),
+            _ => None,
+        };
+        if let Some(f) = four {
+            out.push(Mistake::new(
+                &format!("code[{k}]"),
+                "4- vs 8-connectivity",
+                "With 8 directions north is 3 and south 7; 2 and 4 are the 4-connectivity numbers.",
+                f,
+            ));
+        }
+    }
+    for k in 1..STEPS {
+        out.push(Mistake::new(
+            &format!("differential[{k}]"),
+            "subtracted the wrong way round",
+            "The differential digit is this digit minus the one before, not the other way.",
+            (digit(k) - digit(k + 1)).rem_euclid(8.0),
+        ));
+    }
+    Ok(out)
 }

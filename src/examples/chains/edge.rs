@@ -65,31 +65,27 @@ pub(super) fn pixel_tex(p: Pixel) -> String {
     format!("({},{})", p[0], p[1])
 }
 
-/// Items for LaTeX, `per_line` to a line (a `gathered` block when more than
-/// one), at most [`SHOW`] of them.
-pub(super) fn list_tex<T>(
-    items: &[T],
-    f: impl Fn(&T) -> String,
-    sep: &str,
-    per_line: usize,
-) -> String {
-    let shown: Vec<String> = items.iter().take(SHOW).map(f).collect();
-    let mut lines: Vec<String> = shown.chunks(per_line.max(1)).map(|c| c.join(sep)).collect();
+/// Items as pieces of a formula the page may break between, the later
+/// ones after `sep` (`\;`), at most [`SHOW`] of them and then how many in all.
+pub(super) fn list_form<T>(items: &[T], f: impl Fn(&T) -> String, sep: &str) -> Form {
+    let mut pieces: Vec<String> = items
+        .iter()
+        .take(SHOW)
+        .enumerate()
+        .map(|(k, x)| if k == 0 { f(x) } else { format!("{sep}{}", f(x)) })
+        .collect();
     if items.len() > SHOW {
-        lines.push(format!(r"\ldots\ (\text{{{} in all}})", items.len()));
+        pieces.push(format!(r"\ldots\ (\text{{{} in all}})", items.len()));
     }
-    if lines.len() > 1 {
-        format!(r"\begin{{gathered}}{}\end{{gathered}}", lines.join(r" \\ "))
-    } else {
-        lines.concat()
-    }
+    Form::terms(pieces)
 }
 
-pub(super) fn digits_tex(code: &[u8]) -> String {
+/// A chain code's digits (`\text{(empty)}` for none).
+pub(super) fn digits_form(code: &[u8]) -> Form {
     if code.is_empty() {
-        return r"\text{(empty)}".to_string();
+        return Form::from(r"\text{(empty)}");
     }
-    list_tex(code, |d| d.to_string(), r"\;", 24)
+    list_form(code, |d| d.to_string(), r"\;")
 }
 
 pub(super) fn pixel_text(p: Pixel) -> String {
@@ -104,7 +100,11 @@ pub(super) fn edge_step(e: &Edge, conn: Connectivity, inputs: &Record) -> Result
     } else {
         "open edge"
     };
-    let shown = list_tex(&p.pixels, |q| pixel_tex(*q), r"\;", 8);
+    let shown = || {
+        Relation::new(Form::default())
+            .key("pixels")
+            .result(list_form(&p.pixels, |q| pixel_tex(*q), r"\;"))
+    };
     let step = match e.given {
         Given::Pixels => Step::new(
             "The edge",
@@ -117,7 +117,8 @@ pub(super) fn edge_step(e: &Edge, conn: Connectivity, inputs: &Record) -> Result
                 }
             ),
         )
-        .formula(r"p_1, p_2, \ldots, p_n", shown),
+        .relation(Relation::new(Form::default()).sym(r"p_1, p_2, \ldots, p_n"))
+        .relation(shown()),
         Given::Code => {
             let s = start(inputs)?;
             Step::new(
@@ -127,10 +128,8 @@ pub(super) fn edge_step(e: &Edge, conn: Connectivity, inputs: &Record) -> Result
                     pixel_text(s)
                 ),
             )
-            .formula(
-                r"p_{k+1} = p_k + \Delta(a_k)",
-                shown,
-            )
+            .relation(Relation::new("p_{k+1}").sym(r"p_k + \Delta(a_k)"))
+            .relation(shown())
         }
         Given::Region => {
             let r = e.regions.len();
@@ -142,7 +141,8 @@ pub(super) fn edge_step(e: &Edge, conn: Connectivity, inputs: &Record) -> Result
                     conn.directions()
                 ),
             )
-            .formula(r"b_1, b_2, \ldots, b_n", shown)
+            .relation(Relation::new(Form::default()).sym(r"b_1, b_2, \ldots, b_n"))
+            .relation(shown())
             .value(
                 "boundaries",
                 Value::List(e.regions.iter().map(|b| pixel_value(&b.pixels)).collect()),
@@ -155,24 +155,32 @@ pub(super) fn edge_step(e: &Edge, conn: Connectivity, inputs: &Record) -> Result
 }
 
 pub(super) fn numbering_step(conn: Connectivity) -> Step {
-    let (formula, text) = match conn {
+    let cells = |rows: [[&str; 3]; 3]| {
+        rows.iter()
+            .map(|r| r.iter().map(|c| c.to_string()).collect())
+            .collect()
+    };
+    let (figure, text) = match conn {
         Connectivity::Eight => (
-            r"\begin{array}{ccc} 4 & 3 & 2 \\ 5 & \cdot & 1 \\ 6 & 7 & 8 \end{array}",
+            cells([["4", "3", "2"], ["5", r"\cdot", "1"], ["6", "7", "8"]]),
             "Each step to one of the eight neighbours gets a digit: 1 to the east, counting counter-clockwise to 8 to the south-east (rows count downward, so 3 = north is one row up).",
         ),
         Connectivity::Four => (
-            r"\begin{array}{ccc} & 2 & \\ 3 & \cdot & 1 \\ & 4 & \end{array}",
+            cells([["", "2", ""], ["3", r"\cdot", "1"], ["", "4", ""]]),
             "With 4-connectivity only the four axial steps are allowed: 1 east, 2 north, 3 west, 4 south, counter-clockwise as in the 8-connectivity figure.",
         ),
     };
-    let steps: Vec<String> = (1..=conn.directions())
-        .filter_map(|d| {
-            conn.step(d)
-                .map(|(dc, dr)| format!(r"\Delta({d}) = ({dc},{dr})"))
-        })
-        .collect();
-    Step::new("Direction numbers", text)
-        .formula(formula, list_tex(&steps, String::clone, r",\ ", 4))
+    let mut step = Step::new("Direction numbers", text).relation(
+        Relation::new(Form::default()).sym(Form::grid_tex("array", figure, "direction numbers")),
+    );
+    for d in 1..=conn.directions() {
+        if let Some((dc, dr)) = conn.step(d) {
+            step = step.relation(
+                Relation::new(format!(r"\Delta({d})")).result(format!("({dc},{dr})")),
+            );
+        }
+    }
+    step
 }
 
 pub(super) fn code_step(path: &Path, code: &[u8]) -> Step {
@@ -184,10 +192,10 @@ pub(super) fn code_step(path: &Path, code: &[u8]) -> Step {
             if code.len() == 1 { "" } else { "s" }
         ),
     )
-    .formula(
-        r"a_k = \operatorname{dir}(c_{k+1} - c_k,\ r_{k+1} - r_k)",
-        format!("a = {}", digits_tex(code)),
+    .relation(
+        Relation::new("a_k").sym(r"\operatorname{dir}(c_{k+1} - c_k,\ r_{k+1} - r_k)"),
     )
+    .relation(Relation::new("a").key("code").result(digits_form(code)))
     .value("code", digits_value(code))
     .value("pixels", pixel_value(&path.pixels))
 }
@@ -201,14 +209,12 @@ pub(super) fn reverse_step(forward: &[u8], code: &[u8], conn: Connectivity) -> S
             conn.directions()
         ),
     )
-    .formula(
-        &format!(r"a'_k = (a_{{n+1-k}} + {half} - 1) \bmod {} + 1", conn.directions()),
-        format!(
-            r"a = {} \;\Rightarrow\; a' = {}",
-            digits_tex(forward),
-            digits_tex(code)
-        ),
-    )
+    .relation(Relation::new("a'_k").sym(format!(
+        r"(a_{{n+1-k}} + {half} - 1) \bmod {} + 1",
+        conn.directions()
+    )))
+    .relation(Relation::new("a").key("forward").result(digits_form(forward)))
+    .relation(Relation::new("a'").key("code").result(digits_form(code)))
     .value("forward", digits_value(forward))
 }
 
@@ -218,7 +224,19 @@ pub(super) fn differential_steps(
     conn: Connectivity,
 ) -> [Step; 2] {
     let n = conn.directions();
-    let diffs = list_tex(&d.differences, |x| tex(*x as f64), r"\;", 20);
+    let diffs = if d.differences.is_empty() {
+        Form::from(r"\text{(empty)}")
+    } else {
+        list_form(&d.differences, |x| tex(*x as f64), r"\;")
+    };
+    let rule = if closed {
+        vec![
+            Relation::new("d_1").sym("a_1 - a_n"),
+            Relation::new("d_k").sym("a_k - a_{k-1}"),
+        ]
+    } else {
+        vec![Relation::new("d_k").sym("a_{k+1} - a_k")]
+    };
     let first = if closed {
         "For a closed boundary the first element is the first digit minus the last; then each"
     } else {
@@ -233,21 +251,8 @@ pub(super) fn differential_steps(
                 d.differences.len() + usize::from(!closed)
             ),
         )
-        .formula(
-            if closed {
-                r"d_1 = a_1 - a_n,\quad d_k = a_k - a_{k-1}"
-            } else {
-                r"d_k = a_{k+1} - a_k"
-            },
-            format!(
-                "d = {}",
-                if d.differences.is_empty() {
-                    r"\text{(empty)}".to_string()
-                } else {
-                    diffs
-                }
-            ),
-        )
+        .relations(rule)
+        .relation(Relation::new("d").key("differences").result(diffs))
         .value(
             "differences",
             Value::List(d.differences.iter().map(|&x| Value::Number(x as f64)).collect()),
@@ -260,9 +265,11 @@ pub(super) fn differential_steps(
                 360 / u32::from(n)
             ),
         )
-        .formula(
-            &format!(r"d_k \bmod {n}"),
-            digits_tex(&d.code),
+        .relation(
+            Relation::new(Form::default())
+                .key("differential")
+                .sym(format!(r"d_k \bmod {n}"))
+                .result(digits_form(&d.code)),
         )
         .value("differential", digits_value(&d.code)),
     ]
@@ -371,21 +378,7 @@ pub(super) fn branches_value(path: &Path) -> Value {
 }
 
 pub(super) fn broken_step(path: &Path) -> Step {
-    let at = list_tex(
-        &path.gaps,
-        |g| {
-            format!(
-                r"p_{{{}}}{} \to p_{{{}}}{}",
-                g.index + 1,
-                pixel_tex(g.from),
-                g.index + 2,
-                pixel_tex(g.to)
-            )
-        },
-        r",\quad ",
-        2,
-    );
-    Step::new(
+    let mut step = Step::new(
         "The path breaks",
         &format!(
             "{} step{} between consecutive pixels {} not a step to a neighbour, so the edge has no chain code until the gaps are filled.",
@@ -394,8 +387,26 @@ pub(super) fn broken_step(path: &Path) -> Step {
             if path.gaps.len() == 1 { "is" } else { "are" }
         ),
     )
-    .formula(r"p_k \to p_{k+1}\ \text{not neighbours}", at)
-    .value("breaks", breaks_value(path))
+    .relation(
+        Relation::new("p_k")
+            .op(r"\to")
+            .sym(r"p_{k+1}\ \text{not neighbours}"),
+    );
+    for g in path.gaps.iter().take(SHOW) {
+        step = step.relation(
+            Relation::new(format!(r"p_{{{}}}{}", g.index + 1, pixel_tex(g.from)))
+                .key("breaks")
+                .op(r"\to")
+                .result(format!(r"p_{{{}}}{}", g.index + 2, pixel_tex(g.to))),
+        );
+    }
+    if path.gaps.len() > SHOW {
+        step = step.relation(
+            Relation::new(Form::default())
+                .result(format!(r"\ldots\ (\text{{{} in all}})", path.gaps.len())),
+        );
+    }
+    step.value("breaks", breaks_value(path))
 }
 
 pub(super) fn regions_note(s: &mut Solution, e: &Edge) {
@@ -460,50 +471,28 @@ pub(super) fn shape_summary_step(sh: &chain::Shape) -> Step {
         "Shape of the closed boundary",
         "The descriptors of the worked examples for this boundary (the example “Boundary descriptors” shows each step): the diameter D between the two farthest pixels (the major axis), the width m across it (the minor axis), the basic rectangle D × m, and the eccentricity D / m.",
     )
-    .formula(
-        r"D = \max_{i,j} \lVert p_i - p_j \rVert,\quad m = t_{\max} - t_{\min},\quad E = \frac{D}{m}",
-        format!(
-            r"D = \lVert {} - {} \rVert = {},\quad m = {},\quad E = {}",
-            pixel_tex(b),
-            pixel_tex(a),
-            num(sh.diameter),
-            num(sh.minor_axis_length),
-            e
-        ),
+    .relation(
+        Relation::new("D")
+            .key("diameter")
+            .sym(r"\max_{i,j} \lVert p_i - p_j \rVert")
+            .subst(format!(r"\lVert {} - {} \rVert", pixel_tex(b), pixel_tex(a)))
+            .value(sh.diameter, ""),
+    )
+    .relation(
+        Relation::new("m")
+            .key("minor_axis_length")
+            .sym(r"t_{\max} - t_{\min}")
+            .value(sh.minor_axis_length, ""),
+    )
+    .relation(
+        Relation::new("E")
+            .key("eccentricity")
+            .sym(r"\frac{D}{m}")
+            .result(e),
     )
     .value("diameter", sh.diameter)
     .value("minor_axis_length", sh.minor_axis_length)
     .value("eccentricity", sh.eccentricity)
-}
-
-/// What each result key means, for the result table.
-pub(super) fn label_results(s: &mut Solution, conn: Connectivity) {
-    let digits = match conn {
-        Connectivity::Eight => "Chain code (digits 1–8)",
-        Connectivity::Four => "Chain code (digits 1–4)",
-    };
-    s.label_present(&[
-        ("code", digits, ""),
-        ("differential", "Differential chain code", ""),
-        ("differences", "Differences before mod", ""),
-        ("pixels", "Pixels [c, r] in coding order", ""),
-        ("closed", "Closed boundary", ""),
-        ("breaks", "Breaks [k, c, r, c′, r′]: pixel k to k+1", ""),
-        ("branches", "Repeated pixels [k, first k, c, r]", ""),
-        ("regions", "Regions", ""),
-        ("length", "Length L", "px"),
-        ("horizontal", "Horizontal steps", ""),
-        ("vertical", "Vertical steps", ""),
-        ("diagonal", "Diagonal steps", ""),
-        ("pixel_count", "Pixels N", ""),
-        ("diameter", "Diameter D", "px"),
-        ("major_axis", "Major axis (end pixels [c, r])", ""),
-        ("minor_axis_length", "Minor axis length m", "px"),
-        ("basic_rectangle", "Basic rectangle (corners [c, r])", ""),
-        ("eccentricity", "Eccentricity E = D / m", ""),
-        ("minor_axis", "Minor axis (ends [c, r])", ""),
-        ("boundary", "Traced boundary [c, r]", ""),
-    ]);
 }
 
 // ---------------------------------------------------------------- solvers
@@ -516,36 +505,30 @@ pub(super) fn length_step(l: &chain::Length, conn: Connectivity, p: &Path) -> St
             "Length",
             "A 4-connected edge: every step is one pixel side, so the length is the number of pixels minus 1.",
         )
-        .formula(
-            "L = N - 1",
-            format!("L = {} - 1 = {}", positions, num(l.length)),
+        .relation(
+            Relation::new("L")
+                .key("length")
+                .sym("N - 1")
+                .subst(format!("{positions} - 1"))
+                .value(l.length, ""),
         ),
         Connectivity::Four => Step::new(
             "Length",
             "A closed 4-connected boundary: one step per pixel, the last one back to the start, so the length is the number of pixels.",
         )
-        .formula("L = N", format!("L = {}", num(l.length))),
+        .relation(Relation::new("L").key("length").sym("N").value(l.length, "")),
         Connectivity::Eight => Step::new(
             "Length",
             "Horizontal and vertical steps count 1, diagonal steps √2 (the diagonal of a pixel).",
         )
-        .formula(
-            r"L = n_h + n_v + \sqrt{2}\, n_d",
-            format!(
-                r"L = {} + {} + \sqrt{{2}} \times {} = {}",
-                l.horizontal,
-                l.vertical,
-                l.diagonal,
-                num(l.length)
-            ),
-        ),
+        .relation(length_relation(l)),
     };
     step.value("length", l.length)
 }
 
 pub(super) fn is_code_input(inputs: &Record, code: &[u8], conn: &str) -> bool {
-    text(inputs, "given").is_ok_and(|g| g == "code")
-        && text(inputs, "connectivity").is_ok_and(|c| c == conn)
+    Inputs(inputs).text("given").is_ok_and(|g| g == "code")
+        && Inputs(inputs).text("connectivity").is_ok_and(|c| c == conn)
         && digits(inputs).is_ok_and(|d| d == code)
 }
 
@@ -558,7 +541,19 @@ pub(super) fn conn_of(text: &str) -> Connectivity {
 }
 
 pub(super) fn is_pixel_input(inputs: &Record, start: Pixel, code: &[u8], conn: &str) -> bool {
-    text(inputs, "given").is_ok_and(|g| g == "pixels")
-        && text(inputs, "connectivity").is_ok_and(|c| c == conn)
+    Inputs(inputs).text("given").is_ok_and(|g| g == "pixels")
+        && Inputs(inputs).text("connectivity").is_ok_and(|c| c == conn)
         && inputs.get("pixels") == Some(&pixel_value(&decoded(start, code, conn_of(conn))))
+}
+
+/// `L = n_h + n_v + √2 n_d` with the counts put in.
+pub(super) fn length_relation(l: &chain::Length) -> Relation {
+    Relation::new("L")
+        .key("length")
+        .sym(r"n_h + n_v + \sqrt{2}\, n_d")
+        .subst(format!(
+            r"{} + {} + \sqrt{{2}} \times {}",
+            l.horizontal, l.vertical, l.diagonal
+        ))
+        .value(l.length, "")
 }

@@ -1,8 +1,67 @@
-//! The Förstner operator over a whole small image: w and q maps, threshold, non-maximum suppression, points.
+//! Seed 003: the Förstner operator on a generated test pattern, where the
+//! window can be moved and the whole image is thresholded and suppressed.
 
 use super::*;
+use crate::error::Error;
+use crate::examples::drill::{Drill, Rng};
+use crate::examples::Lab;
+use crate::interest;
 
-pub(super) fn forstner_image(inputs: &Record) -> Result<Solution> {
+pub const EXAMPLE: Example = Example {
+    id: "forstner-image",
+    title: "Förstner operator on a test pattern",
+    source: "Lecture 21: Image matching; Worked examples, Example 13",
+    summary: "Move a window over a generated 64×64 pattern (corners, edges, a flat area, noise): N, w, q and the error ellipse there, and the interest points of the whole image after thresholding and suppression.",
+    fields,
+    solve,
+    answer: &["w", "q", "points"],
+    labels: LABELS,
+    lab: Some(Lab {
+        family: "interest",
+        explains: &[],
+    }),
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+/// Fixed places of the test pattern, one for each of seed 003's cases
+/// (1-based column, row): the flat background, the long vertical edge and
+/// the centre of the checkerboard.
+const REFERENCE_WINDOWS: &[(&str, usize, usize)] = &[
+    ("flat background", 34, 16),
+    ("vertical edge", 47, 14),
+    ("checkerboard corner", 47, 47),
+];
+
+fn fields() -> Vec<Field> {
+    let side = PATTERN_SIZE as f64;
+    vec![
+        Field::integer("c", "Window centre: column c", 9.0)
+            .range(1.0, side)
+            .help("Column of the window's centre pixel, counted from 1 at the left."),
+        Field::integer("r", "Window centre: row r", 9.0)
+            .range(1.0, side)
+            .help("Row of the window's centre pixel, counted from 1 at the top."),
+        Field::integer("window_size", "Window size", 5.0)
+            .range(3.0, 9.0)
+            .help("Odd: 5×5 or 7×7 in the course notes."),
+        Field::number("noise", "Noise added to the pattern", 2.0)
+            .unit("grey values")
+            .range(0.0, 50.0)
+            .help("Uniform noise of ± this many grey values (a fixed sequence, the same every time)."),
+        sigma_n(2.0),
+        threshold(),
+        Field::number("q_min", "Least roundness q", 0.5)
+            .range(0.0, 1.0)
+            .help("Förstner's roundness test (q at least this) on top of Lecture 21's threshold; 0 switches it off (Lecture 21 alone)."),
+    ]
+}
+
+fn solve(inputs: &Record) -> Result<Solution> {
     let i = Inputs(inputs);
     let size = i.number("window_size")? as usize;
     let (c1, r1) = (i.number("c")? as usize, i.number("r")? as usize);
@@ -37,11 +96,7 @@ pub(super) fn forstner_image(inputs: &Record) -> Result<Solution> {
     let map = interest::forstner_map(&image, size)?;
     let det = interest::forstner_points(&map, sigma_n, t, q_min);
 
-    let mut s = Solution::new(
-        "forstner-image",
-        "Förstner operator on a test pattern",
-        inputs.clone(),
-    );
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     s.step(
         Step::new(
             "The test pattern",
@@ -130,13 +185,18 @@ pub(super) fn forstner_image(inputs: &Record) -> Result<Solution> {
                 det.candidates.len()
             ),
         )
-        .formula(
-            r"\lambda_{max}(\Sigma_{uv}) = \frac{\sigma_n^2}{\lambda_{min}(N)} \le T^2",
-            format!(
-                r"\frac{{{}^2}}{{\lambda_{{min}}(N)}} \le {}^2",
-                num(sigma_n),
-                num(t)
-            ),
+        .relation(
+            Relation::new(r"\lambda_{max}(\Sigma_{uv})")
+                .sym(r"\frac{\sigma_n^2}{\lambda_{min}(N)}"),
+        )
+        .relation(Relation::new(r"\lambda_{max}(\Sigma_{uv})").op(r"\le").sym("T^2"))
+        .relation(
+            Relation::new(format!(
+                r"\frac{{{}^2}}{{\lambda_{{min}}(N)}}",
+                num(sigma_n)
+            ))
+            .op(r"\le")
+            .subst(format!("{}^2", num(t))),
         )
         .value("candidates", one_based(&det.candidates)),
     );
@@ -149,10 +209,9 @@ pub(super) fn forstner_image(inputs: &Record) -> Result<Solution> {
                 det.points.len()
             ),
         )
-        .formula(
+        .relation(Relation::new(Form::default()).key("points").sym(
             r"\min(\lambda_{max,1}, \lambda_{max,2}, \dots, \lambda_{max,k})",
-            String::new(),
-        )
+        ))
         .value("points", one_based(&det.points)),
     );
     let w_map = Value::List(
@@ -174,7 +233,6 @@ pub(super) fn forstner_image(inputs: &Record) -> Result<Solution> {
     result.set("candidates", det.candidates.len());
     result.set("points", one_based(&det.points));
     s.result = result;
-    label_results(&mut s);
     singular_notes(&mut s, &f.measures);
     s.note(
         NoteKind::Convention,
@@ -185,4 +243,48 @@ pub(super) fn forstner_image(inputs: &Record) -> Result<Solution> {
         "The map has no value where the window does not fit inside the image (a border of half the window).",
     );
     Ok(s)
+}
+
+// ---------------------------------------------------------------- practice
+
+/// Places on the test pattern with a corner or an X-corner (1-based
+/// centres), as seed 003 suggests looking at.
+const PLACES: [(i64, i64); 8] = [
+    (9, 9),
+    (24, 9),
+    (9, 24),
+    (24, 24),
+    (47, 47),
+    (37, 47),
+    (47, 37),
+    (47, 29),
+];
+
+fn generate(rng: &mut Rng) -> Record {
+    let (c, r) = rng.pick(&PLACES);
+    Record::new()
+        // Up to one pixel up or left: every such window holds the corner
+        // (one pixel down or right of some places it holds only an edge).
+        .with("c", (c + rng.int(-1, 0)) as f64)
+        .with("r", (r + rng.int(-1, 0)) as f64)
+        .with("window_size", rng.pick(&[5.0, 7.0]))
+        .with("noise", rng.num(0, 4))
+}
+
+/// The Förstner boxes without det N: the pattern's steps are large, det N
+/// runs to 10⁸.
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    forstner_boxes()
+        .into_iter()
+        .filter(|b| b.key != "det_n")
+        .collect()
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    forstner_chain(&EXAMPLE.run(i)?, g)
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let all = forstner_mistakes(&EXAMPLE.run(i)?)?;
+    Ok(all.into_iter().filter(|m| m.key != "det_n").collect())
 }
