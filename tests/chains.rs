@@ -6,7 +6,7 @@
 use photogrammetry_playground::chain::{self, Connectivity, Pixel};
 use photogrammetry_playground::examples::{parse_inputs, solve};
 use photogrammetry_playground::raster::Grid;
-use photogrammetry_playground::solution::{NoteKind, Record, Solution, Value};
+use photogrammetry_playground::solution::{NoteKind, Record, Relation, Solution, Value};
 use std::collections::HashSet;
 
 const EX17: [f64; 16] = [
@@ -856,4 +856,51 @@ fn connectivity_given_as_a_number_is_the_same_choice() {
     assert_eq!(eight.inputs.get("connectivity"), Some(&Value::from("8")));
     let e = err("boundary-length", base().with("connectivity", 6.0));
     assert_eq!(e, "connectivity: 6 is not one of the choices (8, 4)");
+}
+
+// ---------------------------------------------------------------- issue 30
+
+mod parts_common;
+
+fn keyed<'a>(s: &'a Solution, key: &str) -> &'a Relation {
+    s.steps
+        .iter()
+        .flat_map(|st| st.parts.iter())
+        .find(|r| r.key.as_deref() == Some(key))
+        .unwrap_or_else(|| panic!("{}: no relation keyed {key}", s.id))
+}
+
+/// Issue 30, item 2: every step is data (its LaTeX made from its parts) and
+/// every practice box's hints come from the relation keyed with its value.
+#[test]
+fn steps_are_data_and_hints_are_keyed() {
+    let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(
+        &photogrammetry_playground::examples::chains::TOPIC,
+        4,
+    );
+    // the length of boundary-length, the diameter, minor axis and
+    // eccentricity of boundary-shape: in every variant
+    assert!(with_numbers >= 4 * (1 + 3), "{with_numbers}");
+    let s = solve("boundary-length", &Record::new()).unwrap();
+    assert_eq!(
+        keyed(&s, "length").question_latex(),
+        r"L = 4 + 4 + \sqrt{2} \times 9 = \;?"
+    );
+    // a code is a list of pieces the page may break between, one a digit
+    let s = solve("chain-code", &Record::new()).unwrap();
+    let code = keyed(&s, "code");
+    assert_eq!(code.result[0].0.len(), EX17.len());
+    let s = solve("boundary-shape", &Record::new()).unwrap();
+    let d = keyed(&s, "diameter");
+    assert!(d.question_latex().starts_with(r"D = \sqrt{("), "{}", d.question_latex());
+    assert_eq!(keyed(&s, "basic_rectangle").result[0].0.len(), 4);
+    // the direction numbers are a figure (a grid) and one relation each
+    let s = solve("chain-code", &Record::new()).unwrap();
+    let numbers = s
+        .steps
+        .iter()
+        .find(|t| t.title == "Direction numbers")
+        .unwrap();
+    assert_eq!(numbers.parts.len(), 1 + 8);
+    assert!(numbers.substituted.contains(r"\Delta(3) = (0,-1)"));
 }

@@ -11,7 +11,7 @@ use photogrammetry_playground::interest::{
     moravec_points, precision, suppress, test_pattern, window_at, Case,
 };
 use photogrammetry_playground::raster::Grid;
-use photogrammetry_playground::solution::{NoteKind, Record, Solution, Value};
+use photogrammetry_playground::solution::{NoteKind, Piece, Record, Relation, Solution, Value};
 
 /// A tiny deterministic generator (xorshift64*), fixed seeds only.
 struct Rng(u64);
@@ -730,4 +730,58 @@ fn bad_image_mode_inputs_are_named_errors() {
     assert_eq!(e, "image: is 4×4, smaller than the 5×5 window");
     let e = moravec_map(&tiny, 2).unwrap_err().to_string();
     assert_eq!(e, "window_size: must be between 3 and 32 (got 2)");
+}
+
+// ---------------------------------------------------------------- issue 30
+
+mod parts_common;
+
+fn keyed<'a>(s: &'a Solution, key: &str) -> &'a Relation {
+    s.steps
+        .iter()
+        .flat_map(|st| st.parts.iter())
+        .find(|r| r.key.as_deref() == Some(key))
+        .unwrap_or_else(|| panic!("{}: no relation keyed {key}", s.id))
+}
+
+/// Issue 30, item 2: every step is data (its LaTeX made from its parts) and
+/// every practice box's hints come from the relation keyed with its value.
+#[test]
+fn steps_are_data_and_hints_are_keyed() {
+    let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(
+        &photogrammetry_playground::examples::interest::TOPIC,
+        4,
+    );
+    // det N, w, q and the weak axis of forstner-window, w, q and the weak
+    // axis of forstner-image, the mean of moravec-window: in every variant
+    assert!(with_numbers >= 4 * (4 + 3 + 1), "{with_numbers}");
+    let s = solve("forstner-window", &Record::new()).unwrap();
+    // N and N⁻¹ are grids the page can lay out, with their numbers
+    let n = keyed(&s, "n");
+    let Piece::Grid { grid } = &n.result[0].0[0] else {
+        panic!("N is not a grid: {n:?}")
+    };
+    assert_eq!(grid.rows, [["82", "-22.25"], ["-22.25", "114.75"]]);
+    let inv = keyed(&s, "n_inverse");
+    assert!(inv.result[0].0.iter().any(|p| matches!(p, Piece::Grid { .. })));
+    assert_eq!(
+        keyed(&s, "det_n").question_latex(),
+        r"\det N = 82 \times 114.75 - (-22.25)^2 = \;?"
+    );
+    assert_eq!(
+        keyed(&s, "w").question_latex(),
+        r"w = \frac{8914.438}{196.75} = \;?"
+    );
+    // Moravec: each interior pixel's sum is its own relation, a sum of terms
+    let s = solve("moravec-window", &Record::new()).unwrap();
+    let r = keyed(&s, "sums[1,2]");
+    assert_eq!(r.substituted[0].0.len(), 4);
+    assert_eq!(
+        r.substituted_latex(),
+        r"S(c_{3}, r_{2}) = (11 - 27)^2 + (15 - 5)^2 + (13 - 15)^2 + (14 - 13)^2 = 361"
+    );
+    assert_eq!(
+        keyed(&s, "mean").question_latex(),
+        r"\bar S = \frac{732}{4} = \;?"
+    );
 }

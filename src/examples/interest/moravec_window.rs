@@ -50,7 +50,13 @@ fn solve(inputs: &Record) -> Result<Solution> {
         "Directional differences at each interior pixel",
         "Across each interior pixel, in the row direction g(c+1, r) − g(c−1, r), the column direction g(c, r+1) − g(c, r−1), the main diagonal g(c+1, r+1) − g(c−1, r−1) and the other diagonal g(c−1, r+1) − g(c+1, r−1); squared and summed. Table rows are [c, r, g, row, column, main diagonal, other diagonal, sum], positions from 1.",
     )
-    .relation(Relation::new("S(c,r)").sym(Form::terms(["d_1^2", "+ d_2^2", "+ d_3^2", "+ d_4^2"])))
+    // the rule is what every box of `sums` computes; each pixel's own
+    // numbers are the relations below, keyed with the element's path
+    .relation(
+        Relation::new("S(c,r)")
+            .key("sums")
+            .sym(Form::terms(["d_1^2", "+ d_2^2", "+ d_3^2", "+ d_4^2"])),
+    )
     .relation(Relation::new("d_1").sym("g_{c+1,r} - g_{c-1,r}"))
     .relation(Relation::new("d_2").sym("g_{c,r+1} - g_{c,r-1}"))
     .relation(Relation::new("d_3").sym("g_{c+1,r+1} - g_{c-1,r-1}"))
