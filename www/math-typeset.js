@@ -75,6 +75,8 @@ function longGridNode(term, first) {
   const node = document.createElement("span");
   node.className = "formula-term";
   node.dataset.tex = gridTermTex(term, short.rows);
+  // too wide, its first rows split into blocks of columns like any grid
+  terms.set(node, { term: { ...term, grid: { ...term.grid, rows: short.rows } }, first });
   katexInto(node, first ? node.dataset.tex : `{}${node.dataset.tex}`);
   const more = document.createElement("button");
   more.type = "button";
