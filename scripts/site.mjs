@@ -157,6 +157,8 @@ function onePageChunk(entry, graph) {
         // (one per importer: shared by two, it would be an empty chunk of its own)
         return graph.has(target) && target !== entry ? { path: `${target}?from=${args.importer}`, namespace: "page", pluginData: target } : null;
       });
+      // the page's modules by name (see buildSite: `import("./core.js")` from a course page or a test)
+      b.onResolve({ filter: /^page-module:/ }, (args) => ({ path: args.path.slice("page-module:".length), namespace: "page", pluginData: args.path.slice("page-module:".length) }));
       b.onLoad({ filter: /.*/, namespace: "page" }, (args) => ({
         contents: `import ${JSON.stringify(entry)};\nexport * from ${JSON.stringify(args.pluginData)};\n`,
         resolveDir: path.dirname(args.pluginData),
@@ -227,7 +229,7 @@ function manifestOf(outputs, stage) {
     const inputs = Object.keys(o.inputs);
     const source = o.entryPoint ?? (inputs.length === 1 && (!file.endsWith(".js") || inputs[0].startsWith("meta-url:")) ? inputs[0] : null);
     if (!source) continue;
-    const logical = posix(path.relative(stage, path.resolve(source.replace(/^meta-url:/, ""))));
+    const logical = posix(path.relative(stage, path.resolve(source.replace(/^[a-z-]+:/, ""))));
     if (!logical.startsWith("..")) map[logical] ??= file;
   }
   return map;
@@ -261,7 +263,12 @@ export async function buildSite(stage, dist) {
   const inner = [];
   const options = { ...COMMON, ...NAMES, outdir: dist, outbase: stage, format: "esm", splitting: true, loader: { ".woff2": "file", ".wasm": "file" } };
   // the pages, then (apart: they must not import the page's entry) the public entries
-  const page = await esbuild.build({ ...options, entryPoints: entries.map((f) => path.join(stage, f)), plugins: [onePageChunk(entry, await staticModules(entry)), metaUrl(stage, dist, inner)] });
+  // each of the page's own modules also by its name, through an entry that re-exports it (the
+  // same instance: its code stays in the page's chunk); see "modules by name" below
+  const graph = await staticModules(entry);
+  const named = [...graph].filter((f) => f !== entry && f.startsWith(stage + path.sep) && /\.m?js$/.test(f));
+  const entryPoints = [...entries.map((f) => path.join(stage, f)), ...named.map((f) => ({ in: `page-module:${f}`, out: posix(path.relative(stage, f)).replace(/\.m?js$/, "") }))];
+  const page = await esbuild.build({ ...options, entryPoints, plugins: [onePageChunk(entry, graph), metaUrl(stage, dist, inner)] });
   const api = await esbuild.build({ ...options, entryPoints: stable.map((f) => path.join(stage, f)), plugins: [metaUrl(stage, dist, inner)] });
   const result = { outputFiles: [...page.outputFiles, ...api.outputFiles] };
   for (const f of result.outputFiles) writeFile(f.path, await squeeze(f));
@@ -291,9 +298,19 @@ export async function buildSite(stage, dist) {
   fs.copyFileSync(path.join(stage, "sw.js"), path.join(dist, "sw.js"));
   const embed = await esbuild.transform(fs.readFileSync(path.join(stage, "embed.js"), "utf8"), { minify: true, legalComments: "none", charset: "utf8" });
   fs.writeFileSync(path.join(dist, "embed.js"), embed.code);
+  // modules by name: a page module or an import() target at its own path, re-exporting its
+  // build (one instance with the page's): what course pages and the tests import by name
+  // (`import("./figures/chains.js")`, `import("./lab/lab.js")`); the page itself never loads these
+  const byName = [];
+  for (const [logical, built] of Object.entries(map)) {
+    if (!/\.m?js$/.test(logical) || logical === modules[0] || stable.includes(logical) || !outputs.get(built)?.exports.length) continue;
+    byName.push(logical);
+    writeFile(path.join(dist, logical), `export * from "${posix(path.relative(path.dirname(logical), built)).replace(/^(?!\.)/, "./")}";\n`);
+  }
+
   // files no module imports (the lab's sample photos, vendor/: minified by their authors) as they are
   const used = new Set(Object.keys(map));
-  for (const o of outputs.values()) for (const i of Object.keys(o.inputs)) used.add(posix(path.relative(stage, path.resolve(i.replace(/^meta-url:/, "")))));
+  for (const o of outputs.values()) for (const i of Object.keys(o.inputs)) used.add(posix(path.relative(stage, path.resolve(i.replace(/^[a-z-]+:/, "")).replace(/\?.*$/, ""))));
   for (const f of walk(stage)) {
     if (used.has(f) || (/\.(m?js|css|html|json)$/.test(f) && !f.startsWith("vendor/"))) continue;
     let bytes = fs.readFileSync(path.join(stage, f));
@@ -315,7 +332,7 @@ export async function buildSite(stage, dist) {
     eager.add(f);
     for (const i of outputs.get(f)?.imports ?? []) queue.push(i.path);
   }
-  const lazy = [...outputs.keys()].filter((f) => !eager.has(f));
+  const lazy = [...[...outputs.keys()].filter((f) => !eager.has(f)), ...byName];
   fs.writeFileSync(path.join(dist, "assets.json"), `${JSON.stringify(Object.fromEntries(Object.entries(map).sort()), null, 1)}\n`);
   fs.writeFileSync(path.join(stage, "lazy.json"), `${JSON.stringify(lazy.sort())}\n`);
   console.log(`site: esbuild: ${entries.length} page entries + ${stable.length} public ones → ${outputs.size} files in ${ASSETS}/ (${inner.length} built apart: workers, stylesheets)`);
