@@ -66,10 +66,13 @@ describe("the built dist/", () => {
     }
     for (const [logical, name] of Object.entries(assets)) assert.ok(onDisk.has(name) && name.startsWith(`${ASSETS}/`), `${logical} → ${name}`);
     for (const f of ["app.js", "style.css", "pkg/all.js", "pkg/all_bg.wasm", "pkg/coordinates_bg.wasm", "lab/lab.js", "lab/worker.js", "catalog.json"]) assert.ok(assets[f], f);
-    // outside assets/: the stable names, the saved answers, the lab's photos and vendor/ (KaTeX and
-    // uqr as their authors built them: math.js and practice/sheets.js name them by a fixed URL)
-    const elsewhere = served.filter((f) => /\.(m?js|wasm|css)$/.test(f) && !f.startsWith(`${ASSETS}/`) && !STABLE.includes(f) && !f.startsWith("vendor/"));
+    // outside assets/: the stable names, the saved answers, the lab's photos, vendor/ (KaTeX and
+    // uqr as their authors built them: math.js and practice/sheets.js name them by a fixed URL),
+    // and the page's modules by name (one-line re-exports of their builds, never loaded by the page)
+    const byName = (f) => /^export \* from "(\.\.\/)*(\.\/)?assets\/[\w-]+\.js";\n$/.test(read(f));
+    const elsewhere = served.filter((f) => /\.(m?js|wasm|css)$/.test(f) && !f.startsWith(`${ASSETS}/`) && !STABLE.includes(f) && !f.startsWith("vendor/") && !byName(f));
     assert.deepEqual(elsewhere, []);
+    for (const f of ["core.js", "lab/lab.js", "figures/chains.js"]) assert.ok(onDisk.has(f) && byName(f), f);
     // fonts swap: text shows at once in a fallback font
     for (const f of served.filter((f) => f.endsWith(".css"))) {
       for (const face of read(f).match(/@font-face\s*\{[^}]*\}/g) ?? []) assert.match(face, /font-display:\s*swap/, `${f}: ${face.slice(0, 60)}`);

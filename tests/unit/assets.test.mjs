@@ -60,6 +60,10 @@ describe("site.mjs: esbuild's bundle of a small site", async () => {
     assert.equal(lab.css, pathToFileURL(path.join(dist, assets["lab/lab.css"])).href);
     assert.equal(lab.photo("a.png"), pathToFileURL(path.join(dist, "lab/samples/a.png")).href);
     assert.equal(read(dist, "lab/samples/a.png"), "a photo");
+    // a page module by its own name (a course page, a test): the page's instance
+    const byName = await import(pathToFileURL(path.join(dist, "shared.js")).href);
+    assert.equal(byName.count(), 1, "shared.js by its name counts app.js's call");
+    assert.match(read(dist, "shared.js"), /^export \* from "\.\/assets\/[\w-]+\.js";\n$/);
     const entry = await import(pathToFileURL(path.join(dist, "pkg/examples.js")).href);
     assert.equal(entry.default, 7);
     assert.equal(entry.wasmUrl().href, t.wasmUrl().href);
