@@ -85,7 +85,7 @@ impl Model {
             Model::Polynomial2 => "polynomial-2",
             Model::Polynomial3 => "polynomial-3",
             Model::Similarity => "similarity",
-            Model::FiducialAffine => "fiducial-affine",
+            Model::FiducialAffine => "affine-fiducials",
         }
     }
 

@@ -765,3 +765,32 @@ fn bad_inputs_name_the_field() {
     let e = err("lsm-affine", Record::new().with("spin", 1.0));
     assert!(e.starts_with("spin: unknown field"), "{e}");
 }
+
+mod parts_common;
+
+/// Issue 30, item 2: the steps are data, and every practice box's hints
+/// come from the relation that computes its value.
+#[test]
+fn steps_are_data_and_practice_hints_are_keyed() {
+    let topic = photogrammetry_playground::examples::matching::TOPIC;
+    let n = parts_common::steps_are_data_and_hints_are_keyed(&topic, 3);
+    // the first normal equation, the first shifts, the positions after
+    // them, the scale and the rotation have their numbers put in
+    assert!(n >= 3 * (4 + 4 + 2), "{n} boxes with numbers");
+    let s = solve("lsm-1d", &Record::new()).unwrap();
+    let ne = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Normal"))
+        .unwrap();
+    let dc = ne
+        .parts
+        .iter()
+        .find(|r| r.key.as_deref() == Some("first_dc"))
+        .unwrap();
+    assert_eq!(
+        dc.question_latex(),
+        r"dc = \frac{-11.5}{39} = \;?",
+        "the first shift by hand"
+    );
+}

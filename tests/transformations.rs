@@ -854,3 +854,34 @@ fn points_parse_from_text_as_the_table_sends_them() {
         ))
     );
 }
+
+mod parts_common;
+
+/// Issue 30, item 2: the steps are data, and every practice box's hints
+/// come from the relation that computes its value.
+#[test]
+fn steps_are_data_and_practice_hints_are_keyed() {
+    let topic = photogrammetry_playground::examples::transformations::TOPIC;
+    let n = parts_common::steps_are_data_and_hints_are_keyed(&topic, 3);
+    // σ₀ has its numbers put in (the parameters: their symbols)
+    assert!(n >= 3 * 3, "{n} boxes with numbers");
+    let s = solve("fiducial-similarity", &Record::new()).unwrap();
+    let sol = s.steps.iter().find(|st| st.title == "Solution").unwrap();
+    let x = &sol.parts[0];
+    assert_eq!(x.key.as_deref(), Some("parameters"));
+    assert!(x.question_latex().ends_with(r"\;?"));
+    assert!(sol
+        .formula
+        .starts_with(r"X = (A^\mathsf{T} A)^{-1} A^\mathsf{T} L"));
+    // the model's two equations are two relations
+    let obs = s
+        .steps
+        .iter()
+        .find(|st| st.title == "Observation equations")
+        .unwrap();
+    assert_eq!(
+        obs.formula,
+        r"x = a\,x' - b\,y' + c,\quad y = b\,x' + a\,y' + d"
+    );
+    assert_eq!(obs.parts.len(), 2 + 8);
+}

@@ -3,23 +3,19 @@
 //! laid out as the seed does, then every iteration as a table, and how the
 //! run ended.
 
-use super::fields::{Field, Inputs, Kind};
-use super::{Example, Lab, Topic};
+use super::drill::Tolerance;
+use super::fields::{Field, Inputs};
+use super::{Example, Topic};
 use crate::error::{Error, Result};
 use crate::matching::{
     self, Gradients, Iteration, Matching, Model, Param, Params, Settings, Status,
 };
 use crate::raster::Grid;
-use crate::solution::{
-    exact_minus_printed, fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value,
-};
+use crate::solution::{fmt_sig, num, tex, Form, NoteKind, Record, Relation, Solution, Step, Value};
 
 mod lsm_1d;
 mod lsm_2d;
 mod lsm_affine;
-use lsm_1d::*;
-use lsm_2d::*;
-use lsm_affine::*;
 
 const TITLE: &str = "Least-squares matching";
 /// Largest 1-D template or search window.
@@ -27,80 +23,8 @@ const MAX_1D: usize = 512;
 /// Largest side of a 2-D template or search window.
 const MAX_2D: usize = 64;
 
-const EX5_TEMPLATE: [f64; 7] = [1.0, 2.0, 9.0, 9.0, 8.0, 2.0, 1.0];
-const EX5_SEARCH: [f64; 12] = [1.0, 2.0, 2.0, 1.0, 1.0, 3.0, 8.0, 8.0, 6.0, 1.0, 1.0, 1.0];
-
-fn ex7_template() -> Vec<Vec<f64>> {
-    vec![
-        vec![30.0, 50.0, 30.0],
-        vec![50.0, 50.0, 50.0],
-        vec![30.0, 50.0, 30.0],
-    ]
-}
-
-fn ex7_search() -> Vec<Vec<f64>> {
-    vec![
-        vec![44.0, 45.0, 64.0, 50.0, 45.0, 43.0],
-        vec![43.0, 44.0, 63.0, 48.0, 49.0, 45.0],
-        vec![45.0, 47.0, 65.0, 50.0, 45.0, 45.0],
-        vec![62.0, 62.0, 69.0, 64.0, 64.0, 63.0],
-        vec![48.0, 48.0, 68.0, 51.0, 55.0, 50.0],
-        vec![41.0, 44.0, 63.0, 48.0, 42.0, 47.0],
-    ]
-}
-
-/// Example 11's printed design matrix (columns ∂G/∂c, ∂G/∂r).
-const EX11_PRINTED_GRADIENTS: [[f64; 2]; 9] = [
-    [9.0, 7.5],
-    [1.5, 2.0],
-    [-7.5, 7.0],
-    [3.5, 0.5],
-    [1.0, 1.5],
-    [-2.5, 0.5],
-    [10.0, -7.0],
-    [1.5, -0.5],
-    [-8.5, -6.5],
-];
-
 /// The examples of this topic, in page order.
-pub const EXAMPLES: &[Example] = &[
-        Example {
-            id: "lsm-1d",
-            title: "1-D least-squares matching",
-            source: "Worked examples, Example 10",
-            summary: "Refines the best correlation position of Example 5 to a subpixel shift (and optionally a gain and offset) by iterated least squares.",
-            fields: lsm_1d_fields,
-            solve: lsm_1d,
-            answer: &["c"],
-            labels: &[],
-            lab: None,
-            practice: None,
-        },
-        Example {
-            id: "lsm-2d",
-            title: "2-D least-squares matching",
-            source: "Worked examples, Example 11",
-            summary: "Refines the best correlation position of Example 7 to a subpixel shift with a gain and offset by iterated least squares.",
-            fields: lsm_2d_fields,
-            solve: lsm_2d,
-            answer: &["c", "r"],
-            labels: &[],
-            lab: Some(Lab { family: "correlation", explains: &[] }),
-            practice: None,
-        },
-        Example {
-            id: "lsm-affine",
-            title: "Affine + radiometric least-squares matching",
-            source: "Lecture 21: Image matching",
-            summary: "A generated patch pair with a known shift, rotation, scale, shear, gain and offset, recovered by eight-parameter least-squares matching.",
-            fields: lsm_affine_fields,
-            solve: lsm_affine,
-            answer: &["parameters", "sigma0"],
-            labels: &[],
-            lab: Some(Lab { family: "correlation", explains: &[] }),
-            practice: None,
-        },
-];
+pub const EXAMPLES: &[Example] = &[lsm_1d::EXAMPLE, lsm_2d::EXAMPLE, lsm_affine::EXAMPLE];
 
 /// The topic: its module (`web/matching/`) and title.
 pub const TOPIC: Topic = Topic {
@@ -109,57 +33,39 @@ pub const TOPIC: Topic = Topic {
     examples: EXAMPLES,
 };
 
-// ---------------------------------------------------------------- fields
-
-fn vector(key: &'static str, label: &'static str, default: &[f64]) -> Field {
-    Field {
-        key,
-        label,
-        help: "",
-        kind: Kind::Vector {
-            min_len: 3,
-            max_len: MAX_1D,
-        },
-        default: Value::numbers(default),
-        when: None,
-    }
-}
-
-fn matrix(key: &'static str, label: &'static str, default: &[Vec<f64>]) -> Field {
-    Field {
-        key,
-        label,
-        help: "",
-        kind: Kind::Matrix {
-            rows: None,
-            cols: None,
-        },
-        default: Value::matrix(default),
-        when: None,
-    }
-}
-
-fn flag(key: &'static str, label: &'static str, default: bool) -> Field {
-    Field {
-        key,
-        label,
-        help: "",
-        kind: Kind::Flag,
-        default: Value::Bool(default),
-        when: None,
-    }
-}
-
-const GRADIENT_OPTIONS: &[(&str, &str)] = &[
+/// What each result key of the topic's examples is, for the page's result
+/// table (the keys a solution has are labelled).
+const LABELS: &[(&str, &str, &str)] = &[
+    ("first_dc", "First iteration: shift increment dc", "px"),
+    ("first_dr", "First iteration: shift increment dr", "px"),
+    ("first_da", "First iteration: gain increment da", ""),
     (
-        "search-window",
-        "Search window: neighbours outside the patch from the search window (the stated formula)",
+        "first_db",
+        "First iteration: offset increment db",
+        "grey values",
     ),
+    ("c", "Matched position c (after the last iteration)", "px"),
+    ("r", "Matched position r (after the last iteration)", "px"),
+    ("a", "Gain a", ""),
+    ("b", "Offset b", "grey values"),
+    ("iterations", "Iterations", ""),
+    ("converged", "Converged", ""),
+    ("status", "How the run ended", ""),
+    ("sigma0", "σ0 of the last iteration", "grey values"),
+    ("parameters", "Estimates a1 … a8", ""),
+    ("true_parameters", "True values a1 … a8 (generated)", ""),
+    ("std_dev", "Standard deviations of a1 … a8", ""),
     (
-        "patch-edge",
-        "Patch edge: inside the patch only, an edge pixel stands in for its outside neighbour (the printed matrix)",
+        "expected_sigma0",
+        "Expected σ0 from the noise",
+        "grey values",
     ),
 ];
+
+/// Shifts and positions in practice: to a hundredth of a pixel.
+const SHIFT: Tolerance = Tolerance::abs(0.01);
+
+// ---------------------------------------------------------------- fields
 
 fn max_iterations() -> Field {
     Field::integer(
@@ -171,235 +77,7 @@ fn max_iterations() -> Field {
     .help("The run stops as “not converged” when this many iterations have not reached the tolerances.")
 }
 
-fn lsm_1d_fields() -> Vec<Field> {
-    vec![
-        vector("template", "Template T", &EX5_TEMPLATE)
-            .help("The template's grey values, left to right."),
-        vector("search", "Search window S", &EX5_SEARCH)
-            .help("The search window's grey values; positions count from 1."),
-        Field::number("c0", "Start position c⁰", 8.0)
-            .unit("px")
-            .range(1.0, MAX_1D as f64)
-            .help("Search-window position of the template's centre pixel to start from (Example 5's best match)."),
-        flag("radiometric", "Estimate gain a and offset b", false)
-            .help("Also estimate the linear radiometric change G_t = a·G_s + b (start a⁰ = 1, b⁰ = 0)."),
-        max_iterations(),
-    ]
-}
-
-fn lsm_2d_fields() -> Vec<Field> {
-    vec![
-        matrix("template", "Template T", &ex7_template())
-            .help("The template's grey values, rows top to bottom."),
-        matrix("search", "Search window S", &ex7_search())
-            .help("The search window's grey values; columns c and rows r count from 1."),
-        Field::number("c0", "Start column c⁰", 3.0)
-            .unit("px")
-            .range(1.0, MAX_2D as f64)
-            .help("Column of the template's centre in the search window (Example 7's best match)."),
-        Field::number("r0", "Start row r⁰", 4.0)
-            .unit("px")
-            .range(1.0, MAX_2D as f64)
-            .help("Row of the template's centre in the search window."),
-        flag("radiometric", "Estimate gain a and offset b", true)
-            .help("Example 11 estimates the radiometric change G_t = a·G_s + b with the shift; off, a and b stay at their start values and only the shift is estimated."),
-        Field::number("a0", "Start gain a⁰", 1.0)
-            .range(-1000.0, 1000.0)
-            .help("Start value of the gain a in G_t = a·G_s + b."),
-        Field::number("b0", "Start offset b⁰", -20.0)
-            .range(-10000.0, 10000.0)
-            .help("Start value of the offset b."),
-        Field {
-            key: "gradients",
-            label: "Gradients at the patch edge",
-            help: "How ∂G_s/∂c and ∂G_s/∂r are taken at the patch's edge pixels.",
-            kind: Kind::Choice {
-                options: GRADIENT_OPTIONS,
-            },
-            default: Value::Text("search-window".to_string()),
-            when: None,
-        },
-        max_iterations(),
-    ]
-}
-
-/// The two kinds of pair `lsm-affine` matches: one generated with a known
-/// change, or two patches given as grey values (e.g. from the image lab).
-const PAIR_OPTIONS: &[(&str, &str)] = &[
-    ("generated", "Generated, with a known change"),
-    ("patches", "Given patches (as from the lab)"),
-];
-const GENERATED: &[&str] = &["generated"];
-const PATCHES: &[&str] = &["patches"];
-
-/// The default given pair: an 11 × 11 texture and a 7 × 7 template made
-/// from it (rotated 4°, scaled 1.05, centred at column 6.3, row 5.8,
-/// gain 1.1, offset −5, rounded to whole grey values).
-fn affine_search_default() -> Vec<Vec<f64>> {
-    [
-        [150, 173, 180, 165, 133, 93, 63, 52, 65, 94, 127],
-        [153, 181, 190, 175, 143, 106, 80, 72, 83, 104, 124],
-        [142, 169, 177, 165, 140, 115, 101, 103, 116, 131, 137],
-        [129, 147, 149, 137, 120, 110, 113, 129, 150, 163, 159],
-        [127, 130, 118, 101, 89, 91, 110, 140, 170, 185, 179],
-        [140, 125, 100, 74, 61, 69, 97, 136, 170, 188, 182],
-        [162, 135, 98, 66, 50, 58, 87, 124, 155, 170, 164],
-        [178, 147, 109, 76, 61, 68, 91, 118, 137, 142, 132],
-        [177, 150, 119, 95, 87, 96, 113, 127, 130, 118, 99],
-        [155, 136, 117, 109, 115, 131, 146, 149, 136, 110, 79],
-        [121, 106, 100, 109, 131, 157, 175, 174, 152, 116, 79],
-    ]
-    .iter()
-    .map(|r| r.iter().map(|&x| f64::from(x)).collect())
-    .collect()
-}
-
-fn affine_template_default() -> Vec<Vec<f64>> {
-    [
-        [192, 169, 135, 108, 99, 110, 130],
-        [171, 151, 128, 117, 123, 144, 166],
-        [137, 117, 103, 106, 129, 163, 190],
-        [109, 84, 72, 84, 118, 160, 190],
-        [101, 68, 54, 68, 103, 142, 170],
-        [111, 75, 61, 73, 101, 130, 146],
-        [125, 96, 87, 100, 122, 137, 136],
-    ]
-    .iter()
-    .map(|r| r.iter().map(|&x| f64::from(x)).collect())
-    .collect()
-}
-
-fn lsm_affine_fields() -> Vec<Field> {
-    let n = |key, label, default, lo, hi, unit: Option<&'static str>, help| {
-        let f = Field::number(key, label, default)
-            .range(lo, hi)
-            .help(help)
-            .when("pair", GENERATED);
-        match unit {
-            Some(u) => f.unit(u),
-            None => f,
-        }
-    };
-    vec![
-        Field::choice("pair", "Patch pair", PAIR_OPTIONS, "generated")
-            .help("Generated: a texture seen through a known affine and radiometric change; the truth is shown beside the estimates. Given: any template and search window as grey values, and a start position (the image lab links its affine matches here)."),
-        matrix("template", "Template T", &affine_template_default())
-            .help("The template's grey values, rows top to bottom (at most 64 × 64).")
-            .when("pair", PATCHES),
-        matrix("search", "Search window S", &affine_search_default())
-            .help("The search window's grey values; columns c and rows r count from 1 (at most 64 × 64).")
-            .when("pair", PATCHES),
-        Field::number("c0", "Start column c⁰", 6.0)
-            .unit("px")
-            .range(1.0, MAX_2D as f64)
-            .help("Column of the template's centre in the search window to start from; the affine part starts as the identity, gain 1, offset 0.")
-            .when("pair", PATCHES),
-        Field::number("r0", "Start row r⁰", 6.0)
-            .unit("px")
-            .range(1.0, MAX_2D as f64)
-            .help("Row of the template's centre in the search window to start from.")
-            .when("pair", PATCHES),
-        Field::integer("patch_size", "Template size", 21.0)
-            .range(5.0, 41.0)
-            .help("Side of the square template in pixels (odd).")
-            .when("pair", GENERATED),
-        n(
-            "shift_c",
-            "Shift in c (a3)",
-            1.3,
-            -10.0,
-            10.0,
-            Some("px"),
-            "Column shift of the template centre from the search window's centre.",
-        ),
-        n(
-            "shift_r",
-            "Shift in r (a6)",
-            -0.7,
-            -10.0,
-            10.0,
-            Some("px"),
-            "Row shift (downward positive).",
-        ),
-        n(
-            "rotation_deg",
-            "Rotation θ",
-            5.0,
-            -45.0,
-            45.0,
-            Some("°"),
-            "Clockwise on the screen, since rows count downward.",
-        ),
-        n(
-            "scale",
-            "Scale s",
-            1.05,
-            0.5,
-            2.0,
-            None,
-            "Size of a search-window pixel step per template pixel.",
-        ),
-        n(
-            "shear",
-            "Shear k",
-            0.02,
-            -0.5,
-            0.5,
-            None,
-            "[a1 a2; a4 a5] = s·R(θ)·[1 k; 0 1].",
-        ),
-        n(
-            "gain",
-            "Gain a7",
-            1.2,
-            0.1,
-            10.0,
-            None,
-            "Radiometric scale: T = a7·S + a8.",
-        ),
-        n(
-            "offset",
-            "Offset a8",
-            -15.0,
-            -255.0,
-            255.0,
-            None,
-            "Radiometric offset in grey values.",
-        ),
-        n(
-            "noise",
-            "Noise σ",
-            0.0,
-            0.0,
-            50.0,
-            None,
-            "Standard deviation of the Gaussian noise added to each image (grey values).",
-        ),
-        Field::integer("seed", "Random seed", 1.0)
-            .range(0.0, 1e9)
-            .help("Chooses the texture and the noise; the same seed gives the same pair.")
-            .when("pair", GENERATED),
-        max_iterations(),
-    ]
-}
-
 // ---------------------------------------------------------------- inputs
-
-fn numbers(inputs: &Record, key: &str) -> Result<Vec<f64>> {
-    match inputs.get(key) {
-        Some(Value::List(xs)) => xs
-            .iter()
-            .map(|x| {
-                x.as_f64().ok_or_else(|| {
-                    Error::Internal(format!("validated input \"{key}\" is not numeric"))
-                })
-            })
-            .collect(),
-        _ => Err(Error::Internal(format!(
-            "validated input \"{key}\" is not a list"
-        ))),
-    }
-}
 
 /// The `template` and `search` patches of the 2-D matching examples, as rows
 /// and as grids, each at most `MAX_2D` a side.
@@ -411,8 +89,8 @@ struct Patches {
 }
 
 fn patches(inputs: &Record) -> Result<Patches> {
-    let tr = rows(inputs, "template")?;
-    let sr = rows(inputs, "search")?;
+    let tr = Inputs(inputs).rows("template")?;
+    let sr = Inputs(inputs).rows("search")?;
     for (key, m) in [("template", &tr), ("search", &sr)] {
         if m.len() > MAX_2D || m.first().map_or(0, Vec::len) > MAX_2D {
             return Err(Error::input(
@@ -429,48 +107,6 @@ fn patches(inputs: &Record) -> Result<Patches> {
     })
 }
 
-fn rows(inputs: &Record, key: &str) -> Result<Vec<Vec<f64>>> {
-    match inputs.get(key) {
-        Some(Value::List(rs)) => rs
-            .iter()
-            .map(|r| match r {
-                Value::List(xs) => xs
-                    .iter()
-                    .map(|x| {
-                        x.as_f64().ok_or_else(|| {
-                            Error::Internal(format!("validated input \"{key}\" is not numeric"))
-                        })
-                    })
-                    .collect(),
-                _ => Err(Error::Internal(format!(
-                    "validated input \"{key}\" is not a matrix"
-                ))),
-            })
-            .collect(),
-        _ => Err(Error::Internal(format!(
-            "validated input \"{key}\" is not a matrix"
-        ))),
-    }
-}
-
-fn flag_value(inputs: &Record, key: &str) -> Result<bool> {
-    match inputs.get(key) {
-        Some(Value::Bool(b)) => Ok(*b),
-        _ => Err(Error::Internal(format!(
-            "validated input \"{key}\" is not a flag"
-        ))),
-    }
-}
-
-fn text(inputs: &Record, key: &str) -> Result<String> {
-    match inputs.get(key) {
-        Some(Value::Text(t)) => Ok(t.clone()),
-        _ => Err(Error::Internal(format!(
-            "validated input \"{key}\" is not a choice"
-        ))),
-    }
-}
-
 /// True when the listed inputs equal their seed defaults.
 fn seed_inputs(fields: &[Field], inputs: &Record, keys: &[&str]) -> bool {
     keys.iter().all(|k| {
@@ -481,47 +117,46 @@ fn seed_inputs(fields: &[Field], inputs: &Record, keys: &[&str]) -> bool {
     })
 }
 
-// ---------------------------------------------------------------- LaTeX
-
-fn column(xs: &[f64]) -> String {
-    let body: Vec<String> = xs.iter().map(|x| num(*x)).collect();
-    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", body.join(r" \\ "))
-}
-
-fn bmatrix(rows: &[Vec<String>]) -> String {
-    let body: Vec<String> = rows.iter().map(|r| r.join(" & ")).collect();
-    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", body.join(r" \\ "))
-}
-
-fn numeric(rows: &[Vec<f64>]) -> String {
-    bmatrix(
-        &rows
-            .iter()
-            .map(|r| r.iter().map(|x| num(*x)).collect())
-            .collect::<Vec<_>>(),
-    )
-}
+// ---------------------------------------------------------------- symbols
 
 fn short(x: f64) -> String {
     fmt_sig(x, 5)
 }
 
-/// The symbol of an estimated parameter's increment, per example.
-fn symbols(est: &[Param], seed000: bool) -> Vec<&'static str> {
+/// An estimated parameter as the steps write it: in LaTeX, as the key of
+/// its step values and results, and in prose.
+#[derive(Clone, Copy)]
+struct Sym {
+    tex: &'static str,
+    key: &'static str,
+    prose: &'static str,
+    /// The unit of its increments in the steps ("" for none).
+    unit: &'static str,
+}
+
+/// The symbols of the estimated parameters: seed 000's c, r, a, b, or
+/// Lecture 21's a₁ … a₈.
+fn symbols(est: &[Param], seed000: bool) -> Vec<Sym> {
+    let sym = |tex, key, prose, unit| Sym {
+        tex,
+        key,
+        prose,
+        unit,
+    };
     est.iter()
         .map(|p| match (p, seed000) {
-            (Param::A3, true) => "c",
-            (Param::A6, true) => "r",
-            (Param::Gain, true) => "a",
-            (Param::Offset, true) => "b",
-            (Param::A1, _) => "a_1",
-            (Param::A2, _) => "a_2",
-            (Param::A3, _) => "a_3",
-            (Param::A4, _) => "a_4",
-            (Param::A5, _) => "a_5",
-            (Param::A6, _) => "a_6",
-            (Param::Gain, _) => "a_7",
-            (Param::Offset, _) => "a_8",
+            (Param::A3, true) => sym("c", "c", "c", "px"),
+            (Param::A6, true) => sym("r", "r", "r", "px"),
+            (Param::Gain, true) => sym("a", "a", "a", ""),
+            (Param::Offset, true) => sym("b", "b", "b", ""),
+            (Param::A1, _) => sym("a_1", "a1", "a₁", ""),
+            (Param::A2, _) => sym("a_2", "a2", "a₂", ""),
+            (Param::A3, _) => sym("a_3", "a3", "a₃", "px"),
+            (Param::A4, _) => sym("a_4", "a4", "a₄", ""),
+            (Param::A5, _) => sym("a_5", "a5", "a₅", ""),
+            (Param::A6, _) => sym("a_6", "a6", "a₆", "px"),
+            (Param::Gain, _) => sym("a_7", "a7", "a₇", ""),
+            (Param::Offset, _) => sym("a_8", "a8", "a₈", ""),
         })
         .collect()
 }
@@ -538,40 +173,122 @@ fn shown(p: &Params, q: Param, origin: f64) -> f64 {
     }
 }
 
-fn normal_step(it: &Iteration, syms: &[&str]) -> Step {
+/// The difference vector of the first iteration: the template minus the
+/// modelled search patch.
+fn difference_step(text: &str, it: &Iteration, template: &[f64]) -> Step {
+    let (a0, b0) = (it.params.gain(), it.params.offset());
+    let modelled: Vec<f64> = it.patch.data().iter().map(|g| a0 * g + b0).collect();
+    Step::new("Difference vector dL (iteration 1)", text).relation(
+        Relation::new(r"d\mathbf{L}")
+            .key("dL")
+            .sym(r"G_t - (a^0 G_s + b^0)")
+            .subst(
+                Form::column(template, "G_t")
+                    .then("-")
+                    .then(Form::column(&modelled, "a^0 G_s + b^0")),
+            )
+            .result(Form::column(&it.dl, r"d\mathbf{L}")),
+    )
+}
+
+/// The normal equations of the first iteration and the increments they
+/// give (seed 000's examples: `c^1 = c^0 + dc` for each position).
+fn normal_step(it: &Iteration, syms: &[Sym]) -> Step {
     let adj = &it.adjustment;
-    let dx: Vec<String> = syms.iter().map(|s| format!(r"d{s}")).collect();
-    Step::new(
+    let at: Vec<Vec<f64>> = (0..adj.n.len())
+        .map(|j| {
+            it.a.iter()
+                .map(|r| r.get(j).copied().unwrap_or(0.0))
+                .collect()
+        })
+        .collect();
+    let mut step = Step::new(
         "Normal equations and increments (iteration 1)",
         "N = AᵀA and AᵀdL; their solution is the first set of increments.",
     )
-    .formula(
-        r"d\mathbf{X} = (A^\mathsf{T}A)^{-1}A^\mathsf{T}d\mathbf{L}",
-        format!(
-            r"A^\mathsf{{T}}A = {},\quad A^\mathsf{{T}}d\mathbf{{L}} = {},\quad {} = {}",
-            numeric(&adj.n),
-            column(&adj.atl),
-            column_sym(&dx),
-            column(&it.increments)
-        ),
+    .relation(
+        Relation::new(r"A^\mathsf{T}A")
+            .key("N")
+            .subst(
+                Form::grid("bmatrix", &at, r"A^\mathsf{T}").then(Form::grid("bmatrix", &it.a, "A")),
+            )
+            .result(Form::grid("bmatrix", &adj.n, "N")),
     )
-    .value("N", Value::matrix(&adj.n))
-    .value("AtL", Value::numbers(&adj.atl))
-    .value("increments", Value::numbers(&it.increments))
+    .relation(
+        Relation::new(r"A^\mathsf{T}d\mathbf{L}")
+            .key("AtL")
+            .subst(
+                Form::grid("bmatrix", &at, r"A^\mathsf{T}")
+                    .then(Form::column(&it.dl, r"d\mathbf{L}")),
+            )
+            .result(Form::column(&adj.atl, r"A^\mathsf{T}d\mathbf{L}")),
+    );
+    let first = |k: usize| it.increments.get(k).copied().unwrap_or(0.0);
+    let n11 = adj
+        .n
+        .first()
+        .and_then(|r| r.first())
+        .copied()
+        .unwrap_or(0.0);
+    if let ([sym], [atl]) = (syms, adj.atl.as_slice()) {
+        // one unknown: the increment is a quotient
+        step = step.relation(
+            Relation::new(format!("d{}", sym.tex))
+                .key(&format!("first_d{}", sym.key))
+                .sym(r"\frac{A^\mathsf{T}d\mathbf{L}}{A^\mathsf{T}A}")
+                .subst(format!(r"\frac{{{}}}{{{}}}", num(*atl), num(n11)))
+                .value(first(0), sym.unit),
+        );
+    } else {
+        step = step.relation(
+            Relation::new(r"Q_{xx}")
+                .key("Qxx")
+                .sym(r"(A^\mathsf{T}A)^{-1}")
+                .result(Form::grid("bmatrix", &adj.qxx, r"Q_{xx}")),
+        );
+        for (k, sym) in syms.iter().enumerate() {
+            let row = adj.qxx.get(k).map_or(&[][..], Vec::as_slice);
+            let terms = row.iter().zip(&adj.atl).enumerate().map(|(j, (q, b))| {
+                let term = format!(r"{} \cdot {}", tex(*q), tex(*b));
+                if j == 0 {
+                    term
+                } else {
+                    format!("+ {term}")
+                }
+            });
+            step = step.relation(
+                Relation::new(format!("d{}", sym.tex))
+                    .key(&format!("first_d{}", sym.key))
+                    .sym(format!(r"(Q_{{xx}} A^\mathsf{{T}}d\mathbf{{L}})_{}", k + 1))
+                    .subst(Form::terms(terms))
+                    .value(first(k), sym.unit),
+            );
+        }
+    }
+    step.value("N", Value::matrix(&adj.n))
+        .value("AtL", Value::numbers(&adj.atl))
+        .value("increments", Value::numbers(&it.increments))
 }
 
-fn column_sym(xs: &[String]) -> String {
-    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", xs.join(r" \\ "))
+/// The position after the first iteration: `c¹ = c⁰ + dc` (1-based).
+fn moved(sym: &str, key: &str, start: f64, d: f64) -> Relation {
+    Relation::new(format!("{sym}^1"))
+        .key(key)
+        .sym(format!("{sym}^0 + d{sym}"))
+        .subst(format!("{} + {}", num(start), tex(d)))
+        .value(start + d, "px")
 }
 
 /// The iteration table: parameters where each iteration resampled, its
 /// increments and σ0; plus the per-iteration arrays for the figures.
-fn table_step(m: &Matching, syms: &[&str], origin: f64) -> Step {
+/// `vector`: the result key of all the parameters together (Lecture 21's
+/// `parameters`), else each parameter's own key is its result's.
+fn table_step(m: &Matching, syms: &[Sym], origin: f64, vector: Option<&str>) -> Step {
     let mut header: Vec<String> = vec!["k".into()];
-    header.extend(syms.iter().map(|s| s.to_string()));
-    header.extend(syms.iter().map(|s| format!("d{s}")));
+    header.extend(syms.iter().map(|s| s.tex.to_string()));
+    header.extend(syms.iter().map(|s| format!("d{}", s.tex)));
     header.push(r"\sigma_0".into());
-    let mut lines = vec![header.join(" & ")];
+    let mut lines = vec![header];
     let mut per_param: Vec<Vec<f64>> = vec![Vec::new(); m.estimated.len()];
     let mut per_inc: Vec<Vec<f64>> = vec![Vec::new(); m.estimated.len()];
     let mut sigma: Vec<Value> = Vec::new();
@@ -592,7 +309,7 @@ fn table_step(m: &Matching, syms: &[&str], origin: f64) -> Step {
         }
         row.push(it.adjustment.sigma0.map_or("–".to_string(), short));
         sigma.push(it.adjustment.sigma0.into());
-        lines.push(row.join(" & "));
+        lines.push(row);
     }
     let mut last = vec![r"\text{end}".to_string()];
     last.extend(
@@ -602,34 +319,46 @@ fn table_step(m: &Matching, syms: &[&str], origin: f64) -> Step {
     );
     last.extend(m.estimated.iter().map(|_| String::new()));
     last.push(String::new());
-    lines.push(last.join(" & "));
-    let cols = "r|".to_string() + &"r".repeat(syms.len()) + "|" + &"r".repeat(syms.len()) + "|r";
-    let symbolic = format!(
-        r"{} \leftarrow {} + d{}",
-        syms.first().copied().unwrap_or("x"),
-        syms.first().copied().unwrap_or("x"),
-        syms.first().copied().unwrap_or("x")
-    );
+    lines.push(last);
     let mut step = Step::new(
         "Every iteration",
         "Each row: the parameters the iteration resampled at, the increments it solved for, and σ0 of its adjustment. The last row holds the parameters after the last update.",
-    )
-    .formula(
-        &symbolic,
-        format!(
-            r"\begin{{array}}{{{cols}}} {} \end{{array}}",
-            lines.join(r" \\ ")
-        ),
+    );
+    // the update rule, keyed to what it ends with: each result of seed 000,
+    // or the vector of Lecture 21's parameters
+    match vector {
+        Some(key) => {
+            step = step.relation(
+                Relation::new("a_j")
+                    .key(key)
+                    .op(r"\leftarrow")
+                    .sym("a_j + da_j"),
+            );
+        }
+        None => {
+            for sym in syms {
+                step = step.relation(
+                    Relation::new(sym.tex)
+                        .key(sym.key)
+                        .op(r"\leftarrow")
+                        .sym(format!("{0} + d{0}", sym.tex)),
+                );
+            }
+        }
+    }
+    step = step.relation(
+        Relation::new(Form::default())
+            .key("iterations")
+            .subst(Form::grid_tex("array", lines, "iterations")),
     );
     for (j, s) in syms.iter().enumerate() {
-        let clean = s.replace('_', "");
         step = step
             .value(
-                &clean,
+                s.key,
                 Value::numbers(per_param.get(j).map_or(&[][..], |v| v)),
             )
             .value(
-                &format!("d{clean}"),
+                &format!("d{}", s.key),
                 Value::numbers(per_inc.get(j).map_or(&[][..], |v| v)),
             );
     }
@@ -657,52 +386,43 @@ fn table_step(m: &Matching, syms: &[&str], origin: f64) -> Step {
         )
 }
 
-/// The closing step and, unless converged, a warning note.
-/// The convergence test in the parameters actually estimated (`syms`, see
-/// [`symbols`]), and whether it has a radiometric part.
-fn convergence_test(syms: &[&str]) -> (&'static str, bool) {
-    let has = |s: &str| syms.contains(&s);
-    if has("a_1") {
-        (
-            r"\max_i \lVert d\mathbf{x}_i \rVert \le 10^{-4}\ \text{px},\quad \max_i |da_7\, G_i + da_8| \le 10^{-3}",
-            true,
-        )
+/// The convergence test in the parameters actually estimated, one relation
+/// per tolerance, and whether it has a radiometric part.
+fn convergence_test(est: &[Param]) -> (Vec<Relation>, bool) {
+    let has = |p: Param| est.contains(&p);
+    let position = if has(Param::A1) {
+        r"\max_i \lVert d\mathbf{x}_i \rVert"
+    } else if has(Param::A6) {
+        r"\sqrt{dc^2 + dr^2}"
     } else {
-        match (has("r"), has("a")) {
-            (true, true) => (
-                r"\sqrt{dc^2 + dr^2} \le 10^{-4}\ \text{px},\quad \max_i |da\, G_i + db| \le 10^{-3}",
-                true,
-            ),
-            (true, false) => (r"\sqrt{dc^2 + dr^2} \le 10^{-4}\ \text{px}", false),
-            (false, true) => (
-                r"|dc| \le 10^{-4}\ \text{px},\quad \max_i |da\, G_i + db| \le 10^{-3}",
-                true,
-            ),
-            (false, false) => (r"|dc| \le 10^{-4}\ \text{px}", false),
-        }
+        "|dc|"
+    };
+    let grey = if has(Param::A1) {
+        r"\max_i |da_7\, G_i + da_8|"
+    } else {
+        r"\max_i |da\, G_i + db|"
+    };
+    let radiometric = has(Param::Gain);
+    let mut out = vec![Relation::new(position)
+        .op(r"\le")
+        .sym(r"10^{-4}\ \text{px}")];
+    if radiometric {
+        out.push(Relation::new(grey).op(r"\le").sym(r"10^{-3}"));
     }
+    (out, radiometric)
 }
 
-/// A symbol such as `a_7` as prose writes it: `a₇`.
-fn prose_symbol(s: &str) -> String {
-    const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
-    s.replace('_', "")
-        .chars()
-        .map(|c| c.to_digit(10).map_or(c, |d| SUB[d as usize]))
-        .collect()
-}
-
-fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
+fn status_step(s: &mut Solution, m: &Matching, syms: &[Sym], limit: usize) {
     let k = m.iterations.len();
     let last = m.iterations.last();
     let incs = last.map_or(String::new(), |it| {
         syms.iter()
             .zip(&it.increments)
-            .map(|(s, d)| format!("d{} = {}", prose_symbol(s), fmt_sig(*d, 3)))
+            .map(|(s, d)| format!("d{} = {}", s.prose, fmt_sig(*d, 3)))
             .collect::<Vec<_>>()
             .join(", ")
     });
-    let (test, radiometric) = convergence_test(syms);
+    let (tests, radiometric) = convergence_test(&m.estimated);
     let (title, text) = match &m.status {
         Status::Converged => (
             "Converged".to_string(),
@@ -739,11 +459,18 @@ fn status_step(s: &mut Solution, m: &Matching, syms: &[&str], limit: usize) {
             format!("Iteration {} could not be solved: {reason}.", k + 1),
         ),
     };
+    let mut step = Step::new(&title, &text);
+    for t in tests {
+        step = step.relation(t);
+    }
     s.step(
-        Step::new(&title, &text)
-            .formula(test, format!(r"\text{{{}}}", m.status.word()))
-            .value("status", m.status.word())
-            .value("iterations", k),
+        step.relation(
+            Relation::new(Form::default())
+                .key("status")
+                .result(format!(r"\text{{{}}}", m.status.word())),
+        )
+        .value("status", m.status.word())
+        .value("iterations", k),
     );
     if m.status != Status::Converged {
         s.note(NoteKind::Warning, text)

@@ -4,17 +4,18 @@
 //! σ0 and the parameters' precision, with the seed's printed values and why
 //! they differ.
 
-use super::fields::{is_seed, Field, Inputs};
-use super::{Example, Lab, Topic};
+use super::drill::{mat, or_given, value_in, BoxDef, Mistake, Tolerance};
+use super::fields::{Field, Inputs};
+use super::{Example, Topic};
 use crate::error::{Error, Result};
 use crate::lsq::ILL_CONDITIONED;
-use crate::solution::{fmt_sig, num, tex, NoteKind, Record, Solution, Step, Value};
+use crate::solution::{fmt_sig, num, tex, Form, NoteKind, Record, Relation, Solution, Step, Value};
 use crate::transform::{self, Fit, Model, PointPair, Transform};
 
-mod example4;
+mod fiducial_affine;
+mod fiducial_similarity;
+mod fiducials;
 mod transform_fit;
-use example4::*;
-use transform_fit::*;
 
 const TITLE: &str = "Transformations";
 /// The most control points a point list may hold.
@@ -52,63 +53,11 @@ const SIM_PRINTED_V: [f64; 8] = [0.006, 0.009, 0.006, -0.006, -0.014, -0.001, 0.
 const AFF_PRINTED_X: [f64; 6] = [0.043, 0.000, -115.030, -0.000, 0.043, 115.030];
 const AFF_PRINTED_V: [f64; 8] = [0.006, 0.002, 0.006, 0.002, -0.006, -0.002, -0.006, -0.002];
 
-const MODELS: &[(&str, &str)] = &[
-    ("helmert", "1) Helmert (4 parameters)"),
-    ("affine", "2) Affine (6)"),
-    ("pseudo-affine", "3) Pseudo-affine (8)"),
-    ("projective", "4) Projective (8)"),
-    ("conformal-2", "5) Second-order conformal (6)"),
-    ("polynomial-2", "6) Polynomial, order 2 (12)"),
-    ("polynomial-3", "6) Polynomial, order 3 (20)"),
-];
-
-const POINT_SETS: &[(&str, &str)] = &[
-    ("table", "The points in the table"),
-    ("fiducials", "Example 4's four fiducials"),
-    (
-        "control-12",
-        "Fiducials + 8 check points (12, enough for every model)",
-    ),
-];
-
 /// The examples of this topic, in page order.
 pub const EXAMPLES: &[Example] = &[
-        Example {
-            id: "fiducial-similarity",
-            title: "Fiducials: similarity transformation",
-            source: "Worked examples, Example 4(a)",
-            summary: "Pixel to photo coordinates through the four fiducials: a similarity transformation (scale, rotation, shift) by least squares.",
-            fields: fiducial_fields,
-            solve: fiducial_similarity,
-            answer: &["parameters", "sigma0"],
-            labels: &[],
-            lab: Some(Lab { family: "fiducials", explains: &[] }),
-            practice: None,
-        },
-        Example {
-            id: "fiducial-affine",
-            title: "Fiducials: affine transformation",
-            source: "Worked examples, Example 4(b)",
-            summary: "Pixel to photo coordinates through the four fiducials: an affine transformation (two scales, shear, rotation, shift) by least squares.",
-            fields: fiducial_fields,
-            solve: fiducial_affine,
-            answer: &["parameters", "sigma0"],
-            labels: &[],
-            lab: Some(Lab { family: "fiducials", explains: &[] }),
-            practice: None,
-        },
-        Example {
-            id: "transform-fit",
-            title: "2-D transformations by least squares",
-            source: "Lecture 7: Image processing, Table 9.5.1",
-            summary: "Any model of the transform table — Helmert, affine, pseudo-affine, projective, second-order conformal, polynomials — fitted to your control points.",
-            fields: transform_fit_fields,
-            solve: transform_fit,
-            answer: &["parameters", "sigma0"],
-            labels: &[],
-            lab: None,
-            practice: None,
-        },
+    fiducial_similarity::EXAMPLE,
+    fiducial_affine::EXAMPLE,
+    transform_fit::EXAMPLE,
 ];
 
 /// The topic: its module (`web/transformations/`) and title.
@@ -128,37 +77,6 @@ fn row_axis_up(points: &[[f64; 4]]) -> Vec<Vec<f64>> {
         .iter()
         .map(|p| vec![p[0], -p[1], p[2], p[3]])
         .collect()
-}
-
-fn fiducial_fields() -> Vec<Field> {
-    vec![Field::points(
-        "points",
-        "Fiducials [c, r, x, y]",
-        4,
-        MAX_POINTS,
-        &rows_of(&FIDUCIALS),
-    )
-    .columns(&["c (px)", "r (px)", "x (mm)", "y (mm)"])
-    .help("One row per fiducial: measured column c and row r (pixels, r downward), calibrated x and y (mm). The solver uses x′ = c, y′ = −r.")]
-}
-
-fn transform_fit_fields() -> Vec<Field> {
-    vec![
-        Field::choice("model", "Model (Table 9.5.1)", MODELS, "helmert")
-            .help("The transformation x = f(u, v), y = g(u, v); the number is how many parameters it has. Each point gives two equations."),
-        Field::choice("point_set", "Control points", POINT_SETS, "table")
-            .help("\"The points in the table\" uses the point list below. A prepared set replaces it: Example 4's fiducials, or the fiducials with 8 check points, enough for every model (the third-order polynomial needs 10)."),
-        Field::points(
-            "points",
-            "Points [u, v, x, y]",
-            4,
-            MAX_POINTS,
-            &row_axis_up(&FIDUCIALS),
-        )
-        .columns(&["u", "v", "x", "y"])
-        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm.")
-        .when("point_set", &["table"]),
-    ]
 }
 
 /// `[u, v, x, y]` rows to point pairs (rows have been checked to hold 4).
@@ -187,7 +105,8 @@ fn pairs(rows: &[Vec<f64>]) -> Result<Vec<PointPair>> {
 
 // ---------------------------------------------------------------- LaTeX
 
-/// `a` → `a`, `a7` → `a_{7}`, `a21` → `a_{21}`.
+/// `a` → `a`, `a7` → `a_{7}`, `a21` → `a_{21}` (a parameter's name, not
+/// LaTeX, to LaTeX).
 fn tex_name(n: &str) -> String {
     let split = n.find(|c: char| c.is_ascii_digit()).unwrap_or(n.len());
     let (base, idx) = n.split_at(split);
@@ -207,62 +126,98 @@ fn shown(n: usize) -> (usize, bool) {
     }
 }
 
-fn bmatrix(rows: &[Vec<f64>]) -> String {
+/// Rows of LaTeX cells as a matrix named `name`, shortened to the rows
+/// [`shown`] and a row of dots when there are many.
+fn grid_cut(env: &'static str, rows: Vec<Vec<String>>, name: &str) -> Form {
     let (k, cut) = shown(rows.len());
     let cols = rows.first().map_or(1, Vec::len);
-    let mut lines: Vec<String> = rows
-        .iter()
-        .take(k)
-        .map(|r| r.iter().map(|x| num(*x)).collect::<Vec<_>>().join(" & "))
-        .collect();
+    let mut rows: Vec<Vec<String>> = rows.into_iter().take(k).collect();
     if cut {
-        lines.push(vec![r"\vdots"; cols].join(" & "));
+        rows.push(vec![r"\vdots".to_string(); cols]);
     }
-    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", lines.join(r" \\ "))
+    Form::grid_tex(env, rows, name)
 }
 
-fn bvector(xs: &[f64]) -> String {
-    let rows: Vec<Vec<f64>> = xs.iter().map(|x| vec![*x]).collect();
-    bmatrix(&rows)
+/// A matrix of numbers, shortened when long.
+fn matrix(rows: &[Vec<f64>], name: &str) -> Form {
+    grid_cut(
+        "bmatrix",
+        rows.iter()
+            .map(|r| r.iter().map(|&x| num(x)).collect())
+            .collect(),
+        name,
+    )
 }
 
-fn bsymbols(names: &[String]) -> String {
-    let (k, cut) = shown(names.len());
-    let mut lines: Vec<String> = names.iter().take(k).map(|n| tex_name(n)).collect();
-    if cut {
-        lines.push(r"\vdots".to_string());
-    }
-    format!(r"\begin{{bmatrix}} {} \end{{bmatrix}}", lines.join(r" \\ "))
+/// A column of numbers, shortened when long.
+fn vector(xs: &[f64], name: &str) -> Form {
+    grid_cut("bmatrix", xs.iter().map(|&x| vec![num(x)]).collect(), name)
 }
 
-/// The model's equations, symbolic.
-fn equations_tex(model: Model) -> &'static str {
+/// The column of the parameters' symbols, shortened when long.
+fn symbols(names: &[String]) -> Form {
+    grid_cut(
+        "bmatrix",
+        names.iter().map(|n| vec![tex_name(n)]).collect(),
+        "X",
+    )
+}
+
+/// The model's equations, symbolic: one relation for x, one for y.
+fn model_relations(model: Model) -> [Relation; 2] {
+    let eq = |lhs: &str, rhs: &str| Relation::new(lhs).sym(rhs);
     match model {
-        Model::Helmert => r"x = a\,u + b\,v + c,\qquad y = -b\,u + a\,v + d",
-        Model::Affine => r"x = a\,u + b\,v + c,\qquad y = d\,u + e\,v + f",
-        Model::PseudoAffine => {
-            r"x = a_1 uv + a_2 u + a_3 v + a_4,\qquad y = a_5 uv + a_6 u + a_7 v + a_8"
-        }
-        Model::Projective => {
-            r"x = \frac{a_1 u + a_2 v + a_3}{a_7 u + a_8 v + 1},\qquad y = \frac{a_4 u + a_5 v + a_6}{a_7 u + a_8 v + 1}"
-        }
-        Model::Conformal2 => {
-            r"x = a_1 u + a_2 v + a_3 (u^2 - v^2) + 2 a_4 uv + a_5,\qquad y = -a_2 u + a_1 v + 2 a_3 uv - a_4 (u^2 - v^2) + a_6"
-        }
-        Model::Polynomial2 => {
-            r"x = \sum_{i+j \le 4} a_{ij}\, u^{i-1} v^{j-1} = a_{11} + a_{21} u + a_{12} v + a_{31} u^2 + a_{22} uv + a_{13} v^2,\qquad y = \sum_{i+j \le 4} b_{ij}\, u^{i-1} v^{j-1}"
-        }
-        Model::Polynomial3 => {
-            r"x = \sum_{i+j \le 5} a_{ij}\, u^{i-1} v^{j-1} = a_{11} + a_{21} u + a_{12} v + a_{31} u^2 + a_{22} uv + a_{13} v^2 + a_{41} u^3 + a_{32} u^2 v + a_{23} u v^2 + a_{14} v^3,\qquad y = \sum_{i+j \le 5} b_{ij}\, u^{i-1} v^{j-1}"
-        }
-        Model::Similarity => r"x = a\,x' - b\,y' + c,\qquad y = b\,x' + a\,y' + d",
-        Model::FiducialAffine => r"x = a\,x' + b\,y' + e,\qquad y = c\,x' + d\,y' + f",
+        Model::Helmert => [eq("x", r"a\,u + b\,v + c"), eq("y", r"-b\,u + a\,v + d")],
+        Model::Affine => [eq("x", r"a\,u + b\,v + c"), eq("y", r"d\,u + e\,v + f")],
+        Model::PseudoAffine => [
+            eq("x", r"a_1 uv + a_2 u + a_3 v + a_4"),
+            eq("y", r"a_5 uv + a_6 u + a_7 v + a_8"),
+        ],
+        Model::Projective => [
+            eq("x", r"\frac{a_1 u + a_2 v + a_3}{a_7 u + a_8 v + 1}"),
+            eq("y", r"\frac{a_4 u + a_5 v + a_6}{a_7 u + a_8 v + 1}"),
+        ],
+        Model::Conformal2 => [
+            Relation::new("x").sym(Form::terms([
+                "a_1 u + a_2 v",
+                "+ a_3 (u^2 - v^2)",
+                "+ 2 a_4 uv + a_5",
+            ])),
+            Relation::new("y").sym(Form::terms([
+                "-a_2 u + a_1 v",
+                "+ 2 a_3 uv",
+                "- a_4 (u^2 - v^2) + a_6",
+            ])),
+        ],
+        Model::Polynomial2 => [
+            Relation::new("x")
+                .sym(r"\sum_{i+j \le 4} a_{ij}\, u^{i-1} v^{j-1}")
+                .sym(Form::terms([
+                    "a_{11} + a_{21} u + a_{12} v",
+                    "+ a_{31} u^2 + a_{22} uv + a_{13} v^2",
+                ])),
+            eq("y", r"\sum_{i+j \le 4} b_{ij}\, u^{i-1} v^{j-1}"),
+        ],
+        Model::Polynomial3 => [
+            Relation::new("x")
+                .sym(r"\sum_{i+j \le 5} a_{ij}\, u^{i-1} v^{j-1}")
+                .sym(Form::terms([
+                    "a_{11} + a_{21} u + a_{12} v",
+                    "+ a_{31} u^2 + a_{22} uv + a_{13} v^2",
+                    "+ a_{41} u^3 + a_{32} u^2 v",
+                    "+ a_{23} u v^2 + a_{14} v^3",
+                ])),
+            eq("y", r"\sum_{i+j \le 5} b_{ij}\, u^{i-1} v^{j-1}"),
+        ],
+        Model::Similarity => [eq("x", r"a\,x' - b\,y' + c"), eq("y", r"b\,x' + a\,y' + d")],
+        Model::FiducialAffine => [eq("x", r"a\,x' + b\,y' + e"), eq("y", r"c\,x' + d\,y' + f")],
     }
 }
 
-/// One observation equation with its numbers: `l_k + v_k = Σ A_kj·X_j`.
-fn obs_equation(k: usize, row: &[f64], l: f64, names: &[String]) -> String {
-    let mut rhs = String::new();
+/// One observation equation with its numbers: `l_k + v_k = Σ A_kj·X_j`,
+/// a term per parameter.
+fn obs_relation(k: usize, row: &[f64], l: f64, names: &[String]) -> Relation {
+    let mut terms: Vec<String> = Vec::new();
     for (c, n) in row.iter().zip(names) {
         if *c == 0.0 {
             continue;
@@ -274,20 +229,16 @@ fn obs_equation(k: usize, row: &[f64], l: f64, names: &[String]) -> String {
         } else {
             format!(r"{}\,{name}", num(mag))
         };
-        if rhs.is_empty() {
-            rhs = if sign == "-" {
-                format!("-{term}")
-            } else {
-                term
-            };
-        } else {
-            rhs = format!("{rhs} {sign} {term}");
-        }
+        terms.push(match (terms.is_empty(), sign) {
+            (true, "-") => format!("-{term}"),
+            (true, _) => term,
+            (false, _) => format!("{sign} {term}"),
+        });
     }
-    if rhs.is_empty() {
-        rhs = "0".to_string();
+    if terms.is_empty() {
+        terms.push("0".to_string());
     }
-    format!("{} + v_{{{k}}} = {rhs}", num(l))
+    Relation::new(format!("{} + v_{{{k}}}", num(l))).subst(Form::terms(terms))
 }
 
 // ---------------------------------------------------------------- steps
@@ -300,45 +251,34 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
     let (n_obs, u) = (fit.l.len(), model.n_params());
     let n_pts = n_obs / 2;
 
-    let (k, cut) = shown(n_obs);
-    let mut eqs: Vec<String> = fit
-        .a
-        .iter()
-        .zip(&fit.l)
-        .take(k)
-        .enumerate()
-        .map(|(i, (row, l))| obs_equation(i + 1, row, *l, &names))
-        .collect();
-    if cut {
-        eqs.push(r"\vdots".to_string());
-    }
     let lin = if model.is_linearised() {
         " The projective model is not linear in its parameters; multiplying out its denominator gives the linearised form that is solved here: a₁u + a₂v + a₃ − a₇·u·x − a₈·v·x = x (and the same for y with a₄, a₅, a₆), so x and y appear in A as well as in L."
     } else {
         ""
     };
-    s.step(
-        Step::new(
-            "Observation equations",
-            &format!(
-                "Each of the {n_pts} points gives two equations, one for x and one for y, with {src} as the source coordinates: {n_obs} equations in {u} unknowns. An observation plus its residual equals the model's value: l + v = A·X.{lin}"
-            ),
-        )
-        .formula(
-            if model.is_linearised() {
-                r"\begin{aligned} x\,(a_7 u + a_8 v + 1) &= a_1 u + a_2 v + a_3 \\ \Rightarrow\quad a_1 u + a_2 v + a_3 - a_7\,u x - a_8\,v x &= x \end{aligned}"
-            } else {
-                equations_tex(model)
-            },
-            format!(
-                r"\begin{{aligned}} {} \end{{aligned}}",
-                eqs.iter()
-                    .map(|e| e.replacen(" = ", " &= ", 1))
-                    .collect::<Vec<_>>()
-                    .join(r" \\ ")
-            ),
+    let mut step = Step::new(
+        "Observation equations",
+        &format!(
+            "Each of the {n_pts} points gives two equations, one for x and one for y, with {src} as the source coordinates: {n_obs} equations in {u} unknowns. An observation plus its residual equals the model's value: l + v = A·X.{lin}"
         ),
     );
+    if model.is_linearised() {
+        step = step
+            .relation(Relation::new(r"x\,(a_7 u + a_8 v + 1)").sym(r"a_1 u + a_2 v + a_3"))
+            .relation(Relation::new(r"a_1 u + a_2 v + a_3 - a_7\,u x - a_8\,v x").sym("x"));
+    } else {
+        for r in model_relations(model) {
+            step = step.relation(r);
+        }
+    }
+    let (k, cut) = shown(n_obs);
+    for (i, (row, l)) in fit.a.iter().zip(&fit.l).take(k).enumerate() {
+        step = step.relation(obs_relation(i + 1, row, *l, &names));
+    }
+    if cut {
+        step = step.relation(Relation::new(Form::default()).subst(r"\vdots"));
+    }
+    s.step(step);
 
     s.step(
         Step::new(
@@ -347,14 +287,11 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
                 "Rows 2i−1 and 2i of A belong to point i (its x and its y equation); L holds the target coordinates in the same order. A is {n_obs}×{u}."
             ),
         )
-        .formula(
-            r"A\,X = L + V",
-            format!(
-                r"{}\,{} = {} + V",
-                bmatrix(&fit.a),
-                bsymbols(&names),
-                bvector(&fit.l)
-            ),
+        .relation(Relation::new(r"A\,X").sym("L + V"))
+        .relation(
+            Relation::new(matrix(&fit.a, "A").then(symbols(&names)))
+                .key("L")
+                .subst(vector(&fit.l, "L").then("+ V")),
         )
         .value("A", Value::matrix(&fit.a))
         .value("L", Value::numbers(&fit.l)),
@@ -365,9 +302,16 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
             "Normal equations",
             "Multiplying by Aᵀ gives u equations in u unknowns (all observations have weight 1, P = I).",
         )
-        .formula(
-            r"N = A^\mathsf{T} A,\qquad A^\mathsf{T} L",
-            format!(r"N = {},\qquad A^\mathsf{{T}} L = {}", bmatrix(&adj.n), bvector(&adj.atl)),
+        .relation(
+            Relation::new("N")
+                .key("N")
+                .sym(r"A^\mathsf{T} A")
+                .result(matrix(&adj.n, "N")),
+        )
+        .relation(
+            Relation::new(r"A^\mathsf{T} L")
+                .key("AtL")
+                .result(vector(&adj.atl, r"A^\mathsf{T} L")),
         )
         .value("N", Value::matrix(&adj.n))
         .value("AtL", Value::numbers(&adj.atl))
@@ -379,9 +323,13 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
             "Solution",
             "The parameters that make the sum of squared residuals smallest.",
         )
-        .formula(
-            r"X = (A^\mathsf{T} A)^{-1} A^\mathsf{T} L = Q_{xx}\, A^\mathsf{T} L",
-            format!(r"X = {} = {}", bsymbols(&names), bvector(&adj.x)),
+        .relation(
+            Relation::new("X")
+                .key("parameters")
+                .sym(r"(A^\mathsf{T} A)^{-1} A^\mathsf{T} L")
+                .sym(r"Q_{xx}\, A^\mathsf{T} L")
+                .subst(symbols(&names))
+                .result(vector(&adj.x, "X")),
         )
         .value("X", Value::numbers(&adj.x))
         .value("Qxx", Value::matrix(&adj.qxx))
@@ -400,7 +348,12 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
     let pr: Vec<f64> = fit.point_residuals.iter().flatten().copied().collect();
     s.step(
         Step::new("Residuals", &vtext)
-            .formula(r"V = A\,X - L", format!(r"V = {}", bvector(&adj.v)))
+            .relation(
+                Relation::new("V")
+                    .key("residuals")
+                    .sym(r"A\,X - L")
+                    .result(vector(&adj.v, "V")),
+            )
             .value("V", Value::numbers(&adj.v))
             .value(
                 "point_residuals",
@@ -411,18 +364,21 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
     );
 
     let r = adj.redundancy;
+    let sigma0 = Relation::new(r"\sigma_0")
+        .key("sigma0")
+        .sym(r"\sqrt{\frac{V^\mathsf{T} V}{n - u}}");
     let s0_step = match adj.sigma0 {
         Some(s0) => Step::new(
             "Standard deviation of unit weight",
             &format!("The redundancy is r = n − u = {n_obs} − {u} = {r}."),
         )
-        .formula(
-            r"\sigma_0 = \sqrt{\frac{V^\mathsf{T} V}{n - u}}",
-            format!(
-                r"\sigma_0 = \sqrt{{\frac{{{}}}{{{n_obs} - {u}}}}} = {}",
-                num(adj.vtpv),
-                num(s0)
-            ),
+        .relation(
+            sigma0
+                .subst(format!(
+                    r"\sqrt{{\frac{{{}}}{{{n_obs} - {u}}}}}",
+                    num(adj.vtpv)
+                ))
+                .value(s0, ""),
         ),
         None => Step::new(
             "Standard deviation of unit weight",
@@ -430,9 +386,10 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
                 "There are exactly as many equations as unknowns (r = n − u = {n_obs} − {u} = 0): the transformation passes through the points, the residuals vanish and σ0 cannot be estimated."
             ),
         )
-        .formula(
-            r"\sigma_0 = \sqrt{\frac{V^\mathsf{T} V}{n - u}}",
-            format!(r"\sigma_0 = \sqrt{{\frac{{{}}}{{0}}}}\ \text{{(undefined)}}", num(adj.vtpv)),
+        .relation(
+            sigma0
+                .subst(format!(r"\sqrt{{\frac{{{}}}{{0}}}}", num(adj.vtpv)))
+                .result(r"\text{(undefined)}"),
         ),
     };
     s.step(
@@ -451,37 +408,30 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
                 .unwrap_or(0.0)
         })
         .collect();
+    let rule = Relation::new(r"\sigma_{x_j}")
+        .key("std_devs")
+        .sym(r"\sigma_0 \sqrt{q_{jj}}");
     let prec = match (&adj.std_dev, adj.sigma0) {
         (Some(sd), Some(s0)) => {
-            let lines: Vec<String> = names
-                .iter()
-                .zip(sd)
-                .zip(&q)
-                .map(|((n, sdj), qj)| {
-                    format!(
-                        r"\sigma_{{{}}} = {} \sqrt{{{}}} = {}",
-                        tex_name(n),
-                        num(s0),
-                        num(*qj),
-                        num(*sdj)
-                    )
-                })
-                .collect();
-            Step::new(
+            let mut step = Step::new(
                 "Precision of the parameters",
                 "Each parameter's standard deviation is σ0 times the square root of its diagonal element of Qxx = N⁻¹.",
             )
-            .formula(
-                r"\sigma_{x_j} = \sigma_0 \sqrt{q_{jj}}",
-                format!(r"\begin{{gathered}} {} \end{{gathered}}", lines.join(r" \\ ")),
-            )
-            .value("std_devs", Value::numbers(sd))
+            .relation(rule);
+            for ((n, sdj), qj) in names.iter().zip(sd).zip(&q) {
+                step = step.relation(
+                    Relation::new(format!(r"\sigma_{{{}}}", tex_name(n)))
+                        .subst(format!(r"{} \sqrt{{{}}}", num(s0), num(*qj)))
+                        .value(*sdj, ""),
+                );
+            }
+            step.value("std_devs", Value::numbers(sd))
         }
         _ => Step::new(
             "Precision of the parameters",
             "Without redundancy there is no σ0, so the parameters' standard deviations cannot be given; only the cofactors q_jj of Qxx = N⁻¹ are known.",
         )
-        .formula(r"\sigma_{x_j} = \sigma_0 \sqrt{q_{jj}}", String::new())
+        .relation(rule)
         .value("std_devs", Value::Null),
     };
     s.step(prec.value("q_diagonal", Value::numbers(&q)));
@@ -491,39 +441,31 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
             fit.transform.params.first().copied().unwrap_or(0.0),
             fit.transform.params.get(1).copied().unwrap_or(0.0),
         );
-        let (f, sub) = if model == Model::Similarity {
-            (
-                r"m = \sqrt{a^2 + b^2},\qquad \theta = \operatorname{atan2}(b, a)",
-                format!(
-                    r"m = \sqrt{{{}^2 + {}^2}} = {},\qquad \theta = \operatorname{{atan2}}({}, {}) = {}^\circ",
-                    tex(a),
-                    tex(b),
-                    num(scale),
-                    num(b),
-                    num(a),
-                    num(rot)
-                ),
-            )
+        // the sine's sign: b (similarity) or −b (Helmert)
+        let (sine, sb) = if model == Model::Similarity {
+            ("b", b)
         } else {
-            (
-                r"m = \sqrt{a^2 + b^2},\qquad \theta = \operatorname{atan2}(-b, a)",
-                format!(
-                    r"m = \sqrt{{{}^2 + {}^2}} = {},\qquad \theta = \operatorname{{atan2}}({}, {}) = {}^\circ",
-                    tex(a),
-                    tex(b),
-                    num(scale),
-                    num(-b),
-                    num(a),
-                    num(rot)
-                ),
-            )
+            ("-b", -b)
         };
         s.step(
             Step::new(
                 "Scale and rotation",
                 "A similarity is a scale times a rotation (counter-clockwise positive) plus a shift.",
             )
-            .formula(f, sub)
+            .relation(
+                Relation::new("m")
+                    .key("scale")
+                    .sym(r"\sqrt{a^2 + b^2}")
+                    .subst(format!(r"\sqrt{{{}^2 + {}^2}}", tex(a), tex(b)))
+                    .value(scale, ""),
+            )
+            .relation(
+                Relation::new(r"\theta")
+                    .key("rotation_deg")
+                    .sym(format!(r"\operatorname{{atan2}}({sine}, a)"))
+                    .subst(format!(r"\operatorname{{atan2}}({}, {})", num(sb), num(a)))
+                    .result(format!(r"{}^\circ", num(rot))),
+            )
             .value("scale", scale)
             .value("rotation_deg", rot),
         );
@@ -606,11 +548,6 @@ fn inverse_step(
         }
     };
     let names = model.param_names();
-    let lines: Vec<String> = names
-        .iter()
-        .zip(&inv.params)
-        .map(|(n, p)| format!("{}' = {}", tex_name(n), num(*p)))
-        .collect();
     // Check on the first point: its fitted (x̂, ŷ) goes back to (u, v).
     let mut check = String::new();
     let mut step_values = Record::new();
@@ -635,18 +572,15 @@ fn inverse_step(
             "The inverse is a transformation of the same form, from (x, y) back to {src}: the 3×3 matrix of the transformation inverted and scaled so that its last element is 1.{check}"
         ),
     )
-    .formula(
-        r"H^{-1} = \frac{\operatorname{adj} H}{\det H}",
-        format!(
-            r"\begin{{gathered}} {} \end{{gathered}}",
-            lines
-                .chunks(2)
-                .map(|c| c.join(r",\quad "))
-                .collect::<Vec<_>>()
-                .join(r" \\ ")
-        ),
-    )
-    .value("inverse_parameters", Value::numbers(&inv.params));
+    .relation(
+        Relation::new("H^{-1}")
+            .key("inverse_parameters")
+            .sym(r"\frac{\operatorname{adj} H}{\det H}"),
+    );
+    for (n, p) in names.iter().zip(&inv.params) {
+        st = st.relation(Relation::new(format!("{}'", tex_name(n))).value(*p, ""));
+    }
+    st = st.value("inverse_parameters", Value::numbers(&inv.params));
     for (k, v) in step_values.iter() {
         st = st.value(k, v.clone());
     }
@@ -732,4 +666,50 @@ fn condition_note(s: &mut Solution, fit: &Fit) {
             "No redundancy (r = 0): the model passes exactly through the points, so σ0, the parameters' precision and every check on the measurements are undefined (σ0 has no value). Add points to get them.",
         ).about(&["sigma0", "std_devs"]);
     }
+}
+
+// ---------------------------------------------------------------- practice
+
+/// Rounds to `decimals` decimals.
+fn round_to(x: f64, decimals: i32) -> f64 {
+    let f = 10f64.powi(decimals);
+    (x * f).round() / f
+}
+
+/// `A·X − L` for given parameters.
+fn residuals(a: &[Vec<f64>], l: &[f64], x: &[f64]) -> Vec<f64> {
+    a.iter()
+        .zip(l)
+        .map(|(row, l)| row.iter().zip(x).map(|(a, b)| a * b).sum::<f64>() - l)
+        .collect()
+}
+
+/// A step's value `key`, alone in a record (to read it as an input).
+fn step_value(s: &Solution, key: &str) -> Record {
+    s.steps
+        .iter()
+        .find_map(|st| st.values.get(key))
+        .map(|v| Record::new().with(key, v.clone()))
+        .unwrap_or_default()
+}
+
+/// σ₀ from the student's parameters: V = A·X − L with their X (A and L do
+/// not depend on X: the fits are linear), over the redundancy.
+fn chain_sigma0(ex: &Example, i: &Record, g: &Record) -> Result<Record> {
+    let s = ex.run(i)?;
+    let a = Inputs(&step_value(&s, "A")).rows("A")?;
+    let l = Inputs(&step_value(&s, "L")).list("L")?;
+    let n = a.first().map_or(0, Vec::len);
+    let mut out = Record::new();
+    let mut x = Vec::new();
+    for k in 1..=n {
+        let key = format!("parameters[{k}]");
+        let v = or_given(g, &key, value_in(&s, &key)?);
+        x.push(v);
+        out.set(&key, v);
+    }
+    let vv: f64 = residuals(&a, &l, &x).iter().map(|v| v * v).sum();
+    let redundancy = value_in(&s, "redundancy")?;
+    out.set("sigma0", or_given(g, "sigma0", (vv / redundancy).sqrt()));
+    Ok(out)
 }

@@ -16,10 +16,8 @@ pub mod coordinates;
 pub mod correlation;
 pub mod filters;
 pub mod grade;
-pub mod matching;
 pub mod projection;
 pub mod resampling;
-pub mod transformations;
 
 use crate::error::{Error, Result};
 use crate::examples;
@@ -103,9 +101,7 @@ pub fn specs() -> Vec<Spec> {
         })
         .collect();
     all.extend(coordinates::specs());
-    all.extend(transformations::specs());
     all.extend(correlation::specs());
-    all.extend(matching::specs());
     all.extend(resampling::specs());
     all.extend(filters::specs());
     all.extend(projection::specs());

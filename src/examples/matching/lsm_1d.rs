@@ -1,42 +1,54 @@
-//! Example 10: least-squares matching in 1-D (shift, optionally gain and offset).
+//! Example 10: least-squares matching in 1-D (shift, optionally gain and
+//! offset), and its practice: the first normal equation, the first shift
+//! and the converged position.
 
 use super::*;
+use crate::examples::drill::{nums, or_given, tol, value_in, BoxDef, Drill, Mistake, Rng};
+use crate::solution::exact_minus_printed;
 
-/// What each result key is, for the page's result table.
-pub(super) fn label_results(s: &mut Solution) {
-    s.label_present(&[
-        ("first_dc", "First iteration: shift increment dc", "px"),
-        ("first_dr", "First iteration: shift increment dr", "px"),
-        ("first_da", "First iteration: gain increment da", ""),
-        (
-            "first_db",
-            "First iteration: offset increment db",
-            "grey values",
-        ),
-        ("c", "Matched position c (after the last iteration)", "px"),
-        ("r", "Matched position r (after the last iteration)", "px"),
-        ("a", "Gain a", ""),
-        ("b", "Offset b", "grey values"),
-        ("iterations", "Iterations", ""),
-        ("converged", "Converged", ""),
-        ("status", "How the run ended", ""),
-        ("sigma0", "σ0 of the last iteration", "grey values"),
-        ("parameters", "Estimates a1 … a8", ""),
-        ("true_parameters", "True values a1 … a8 (generated)", ""),
-        ("std_dev", "Standard deviations of a1 … a8", ""),
-        (
-            "expected_sigma0",
-            "Expected σ0 from the noise",
-            "grey values",
-        ),
-    ]);
+pub const EXAMPLE: Example = Example {
+    id: "lsm-1d",
+    title: "1-D least-squares matching",
+    source: "Worked examples, Example 10",
+    summary: "Refines the best correlation position of Example 5 to a subpixel shift (and optionally a gain and offset) by iterated least squares.",
+    fields,
+    solve,
+    answer: &["c"],
+    labels: LABELS,
+    lab: None,
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+const EX5_TEMPLATE: [f64; 7] = [1.0, 2.0, 9.0, 9.0, 8.0, 2.0, 1.0];
+const EX5_SEARCH: [f64; 12] = [1.0, 2.0, 2.0, 1.0, 1.0, 3.0, 8.0, 8.0, 6.0, 1.0, 1.0, 1.0];
+
+fn fields() -> Vec<Field> {
+    vec![
+        Field::vector("template", "Template T", (3, MAX_1D), &EX5_TEMPLATE)
+            .help("The template's grey values, left to right."),
+        Field::vector("search", "Search window S", (3, MAX_1D), &EX5_SEARCH)
+            .help("The search window's grey values; positions count from 1."),
+        Field::number("c0", "Start position c⁰", 8.0)
+            .unit("px")
+            .range(1.0, MAX_1D as f64)
+            .help("Search-window position of the template's centre pixel to start from (Example 5's best match)."),
+        Field::flag("radiometric", "Estimate gain a and offset b", false)
+            .help("Also estimate the linear radiometric change G_t = a·G_s + b (start a⁰ = 1, b⁰ = 0)."),
+        max_iterations(),
+    ]
 }
 
-pub(super) fn lsm_1d(inputs: &Record) -> Result<Solution> {
-    let t = numbers(inputs, "template")?;
-    let sw = numbers(inputs, "search")?;
-    let c0 = Inputs(inputs).number("c0")?;
-    let radiometric = flag_value(inputs, "radiometric")?;
+fn solve(inputs: &Record) -> Result<Solution> {
+    let i = Inputs(inputs);
+    let t = i.list("template")?;
+    let sw = i.list("search")?;
+    let c0 = i.number("c0")?;
+    let radiometric = i.flag("radiometric")?;
     let model = if radiometric {
         Model::ShiftRadiometric
     } else {
@@ -48,7 +60,7 @@ pub(super) fn lsm_1d(inputs: &Record) -> Result<Solution> {
     let syms = symbols(&m.estimated, true);
     let n = t.len();
     let half = (n as f64 - 1.0) / 2.0;
-    let mut s = Solution::new("lsm-1d", "1-D least-squares matching", inputs.clone());
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
 
     let first_pos: Vec<f64> = (0..n).map(|i| c0 - half + i as f64).collect();
     s.step(
@@ -56,27 +68,31 @@ pub(super) fn lsm_1d(inputs: &Record) -> Result<Solution> {
             "Template and start",
             "The template's centre is placed at the start position c⁰ of the search window; the template's pixels then fall on these search-window positions.",
         )
-        .formula(
-            r"c_i = c^0 + \left(i - \tfrac{n+1}{2}\right),\quad i = 1 \dots n",
-            format!(
-                r"T = {},\quad c_i = {}",
-                column(&t),
-                column(&first_pos)
-            ),
+        .relation(Relation::new("T").key("template").subst(Form::column(&t, "T")))
+        .relation(
+            Relation::new("c_i")
+                .key("positions")
+                .sym(r"c^0 + \left(i - \tfrac{n+1}{2}\right)")
+                .subst(Form::column(&first_pos, "c_i")),
         )
+        .relation(Relation::new("i").sym(r"1 \dots n").subst(format!(r"1 \dots {n}")))
         .value("template", Value::numbers(&t))
         .value("search", Value::numbers(&sw))
         .value("positions", Value::numbers(&first_pos)),
     );
     let (eq, lin) = if radiometric {
         (
-            r"G_t(c) + V = a\,G_s(c + dc) + b",
-            r"[G_t(c) - (a^0 G_s(c) + b^0)] + V = a^0\frac{\partial G_s(c)}{\partial c}\,dc + G_s(c)\,da + db",
+            Relation::new(r"G_t(c) + V").sym(r"a\,G_s(c + dc) + b"),
+            Relation::new(r"[G_t(c) - (a^0 G_s(c) + b^0)] + V").sym(Form::terms([
+                r"a^0\frac{\partial G_s(c)}{\partial c}\,dc",
+                r"+ G_s(c)\,da",
+                "+ db",
+            ])),
         )
     } else {
         (
-            r"G_t(c) + V = G_s(c + dc)",
-            r"[G_t(c) - G_s(c)] + V = \frac{\partial G_s(c)}{\partial c}\,dc",
+            Relation::new(r"G_t(c) + V").sym(r"G_s(c + dc)"),
+            Relation::new(r"[G_t(c) - G_s(c)] + V").sym(r"\frac{\partial G_s(c)}{\partial c}\,dc"),
         )
     };
     s.step(
@@ -84,12 +100,13 @@ pub(super) fn lsm_1d(inputs: &Record) -> Result<Solution> {
             "Observation equation",
             "Each template pixel is one observation. Taylor's first-order term turns the unknown shift into a linear unknown; the gradient is the central difference (G_s(c+1) − G_s(c−1))/2 of the search window, resampled at the current position.",
         )
-        .formula(eq, lin.to_string()),
+        .relation(eq)
+        .relation(lin),
     );
     if let Some(it) = m.iterations.first() {
         first_iteration_1d(&mut s, it, &t, &syms);
     }
-    s.step(table_step(&m, &syms, -1.0));
+    s.step(table_step(&m, &syms, -1.0, None));
     status_step(&mut s, &m, &syms, set.max_iterations);
 
     let first = m.iterations.first();
@@ -109,31 +126,20 @@ pub(super) fn lsm_1d(inputs: &Record) -> Result<Solution> {
         NoteKind::Convention,
         "Positions count from 1 as in the course notes; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
     ).about(&["c"]);
-    if seed_inputs(&lsm_1d_fields(), inputs, &["template", "search", "c0"]) {
+    if seed_inputs(&fields(), inputs, &["template", "search", "c0"]) {
         ex10_notes(&mut s, &m, radiometric);
     }
-    label_results(&mut s);
     Ok(s)
 }
 
-pub(super) fn first_iteration_1d(s: &mut Solution, it: &Iteration, t: &[f64], syms: &[&str]) {
+fn first_iteration_1d(s: &mut Solution, it: &Iteration, t: &[f64], syms: &[Sym]) {
     let b = it.bordered.data();
     let g = it.patch.data();
-    let (a0, b0) = (it.params.gain(), it.params.offset());
-    let modelled: Vec<f64> = g.iter().map(|x| a0 * x + b0).collect();
     s.step(
-        Step::new(
-            "Difference vector dL (iteration 1)",
+        difference_step(
             "The template minus the search patch resampled at the current position (and scaled by the current gain and offset).",
-        )
-        .formula(
-            r"d\mathbf{L} = G_t - (a^0 G_s + b^0)",
-            format!(
-                r"d\mathbf{{L}} = {} - {} = {}",
-                column(t),
-                column(&modelled),
-                column(&it.dl)
-            ),
+            it,
+            t,
         )
         .value("patch", Value::numbers(g))
         .value("dL", Value::numbers(&it.dl)),
@@ -143,9 +149,8 @@ pub(super) fn first_iteration_1d(s: &mut Solution, it: &Iteration, t: &[f64], sy
             let right = b.get(i + 2).copied().unwrap_or(0.0);
             let left = b.get(i).copied().unwrap_or(0.0);
             let mut row = vec![format!(r"({} - {})/2", num(right), tex(left))];
-            for (k, sym) in syms.iter().enumerate().skip(1) {
+            for k in 1..syms.len() {
                 let v = it.a.get(i).and_then(|r| r.get(k)).copied().unwrap_or(0.0);
-                let _ = sym;
                 row.push(num(v));
             }
             row
@@ -161,20 +166,29 @@ pub(super) fn first_iteration_1d(s: &mut Solution, it: &Iteration, t: &[f64], sy
             "Design matrix A (iteration 1)",
             "The gradient column is the central difference of the resampled search window: the neighbours one pixel left and right of each patch pixel, the outermost ones from the one-pixel border around the patch.",
         )
-        .formula(
-            &format!(r"A_{{i,1}} = {gain_note}\frac{{G_s(c_i+1) - G_s(c_i-1)}}{{2}}"),
-            format!(r"A = {} = {}", bmatrix(&rows), numeric(&it.a)),
+        .relation(
+            Relation::new("A_{i,1}")
+                .sym(format!(r"{gain_note}\frac{{G_s(c_i+1) - G_s(c_i-1)}}{{2}}")),
+        )
+        .relation(
+            Relation::new("A")
+                .key("A")
+                .subst(Form::grid_tex("bmatrix", rows, "A"))
+                .result(Form::grid("bmatrix", &it.a, "A")),
         )
         .value("A", Value::matrix(&it.a))
         .value("bordered", Value::numbers(b)),
     );
-    s.step(normal_step(it, syms).value(
-        "c_after_first",
-        it.params.a[2] + 1.0 + it.increments.first().copied().unwrap_or(0.0),
-    ));
+    let c0 = it.params.a[2] + 1.0;
+    let dc = it.increments.first().copied().unwrap_or(0.0);
+    s.step(
+        normal_step(it, syms)
+            .relation(moved("c", "c_after_first", c0, dc))
+            .value("c_after_first", c0 + dc),
+    );
 }
 
-pub(super) fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
+fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
     let Some(first) = m.iterations.first() else {
         return;
     };
@@ -240,4 +254,94 @@ pub(super) fn ex10_notes(s: &mut Solution, m: &Matching, radiometric: bool) {
         ),
     ).about(&["c", "iterations"]);
     s.textbook = Some(printed);
+}
+
+// ---------------------------------------------------------------- practice
+
+/// The boxes: the first normal equation by hand, the first shift and the
+/// converged position (the iterations are long by hand).
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    vec![
+        BoxDef::new("N[1,1]", "N = Σ g² (iteration 1)", None, tol::SUM)
+            .nudge("g is the search window's gradient at each template pixel, (g(c+1) − g(c−1)) / 2; square and add."),
+        BoxDef::new("AtL[1]", "AᵀdL = Σ g·dL (iteration 1)", None, tol::SUM)
+            .nudge("dL is the template minus the search patch at the start position; multiply by g and add."),
+        BoxDef::new("first_dc", "First shift Δc", Some("px"), SHIFT)
+            .nudge("Δc = AᵀdL / N.")
+            .axis(),
+        BoxDef::new("c_after_first", "Position after the first iteration", Some("px"), SHIFT)
+            .nudge("The start position plus the first shift."),
+        BoxDef::new("c", "Converged position c", Some("px"), SHIFT)
+            .nudge("Resample, repeat until the shift is tiny."),
+    ]
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let n = or_given(g, "N[1,1]", value_in(&s, "N[1,1]")?);
+    let atl = or_given(g, "AtL[1]", value_in(&s, "AtL[1]")?);
+    let dc = or_given(g, "first_dc", atl / n);
+    let c0 = Inputs(i).number("c0")?;
+    Ok(Record::new()
+        .with("N[1,1]", n)
+        .with("AtL[1]", atl)
+        .with("first_dc", dc)
+        .with("c_after_first", or_given(g, "c_after_first", c0 + dc))
+        .with("c", value_in(&s, "c")?))
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let s = EXAMPLE.run(i)?;
+    const HALF: &str = "The gradient is (g(c+1) − g(c−1)) / 2: without the ½ it is twice too big.";
+    const SIGN: &str = "The gradient is (g(c+1) − g(c−1)) / 2: right minus left.";
+    let (n, atl, dc) = (
+        value_in(&s, "N[1,1]")?,
+        value_in(&s, "AtL[1]")?,
+        value_in(&s, "first_dc")?,
+    );
+    let c0 = Inputs(i).number("c0")?;
+    Ok(vec![
+        Mistake::new("AtL[1]", "gradient taken the wrong way", SIGN, -atl),
+        Mistake::new("first_dc", "gradient taken the wrong way", SIGN, -dc),
+        Mistake::new("N[1,1]", "½ forgotten in the gradient", HALF, 4.0 * n),
+        Mistake::new("AtL[1]", "½ forgotten in the gradient", HALF, 2.0 * atl),
+        Mistake::new(
+            "first_dc",
+            "N over AᵀdL",
+            "The shift is AᵀdL / N, not its inverse.",
+            n / atl,
+        ),
+        Mistake::new(
+            "c_after_first",
+            "shift subtracted",
+            "The new position is the old one plus the increment.",
+            c0 - dc,
+        ),
+    ])
+}
+
+/// A smooth bump of grey values sampled at `x` (the template's shape).
+fn bump(x: f64, centre: f64, height: f64, width: f64) -> f64 {
+    20.0 + height * (-((x - centre) / width).powi(2)).exp()
+}
+
+/// A search window with a smooth bump; the template is the same bump
+/// sampled a fraction of a pixel away, so the match is off the start by
+/// that fraction.
+fn generate(rng: &mut Rng) -> Record {
+    let (height, width) = (rng.num(40, 80), rng.num(15, 25) / 10.0);
+    let n = 12;
+    let centre = rng.num(5, 7) as usize; // 0-based search position of the peak
+    let frac = rng.num(-4, 4) / 10.0;
+    let frac = if frac == 0.0 { 0.3 } else { frac };
+    let search: Vec<f64> = (0..n)
+        .map(|k| bump(k as f64, centre as f64 + frac, height, width).round())
+        .collect();
+    let template: Vec<f64> = (0..7)
+        .map(|k| bump(k as f64, 3.0, height, width).round())
+        .collect();
+    Record::new()
+        .with("template", nums(&template))
+        .with("search", nums(&search))
+        .with("c0", (centre + 1) as f64)
 }

@@ -1,15 +1,196 @@
-//! Lecture 21: least-squares matching with an affine geometric model and gain and offset, on a generated patch pair or on two given patches.
+//! Lecture 21: least-squares matching with an affine geometric model and
+//! gain and offset, on a generated patch pair or on two given patches; and
+//! its practice: the converged affine part, its shifts, scale and rotation.
 
 use super::*;
+use crate::examples::drill::{or_given, value_in, BoxDef, Drill, Mistake, Rng};
+use crate::examples::Lab;
 
-pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
-    let mut s = Solution::new(
-        "lsm-affine",
-        "Affine + radiometric least-squares matching",
-        inputs.clone(),
-    );
+pub const EXAMPLE: Example = Example {
+    id: "lsm-affine",
+    title: "Affine + radiometric least-squares matching",
+    source: "Lecture 21: Image matching",
+    summary: "A generated patch pair with a known shift, rotation, scale, shear, gain and offset, recovered by eight-parameter least-squares matching.",
+    fields,
+    solve,
+    answer: &["parameters", "sigma0"],
+    labels: LABELS,
+    lab: Some(Lab {
+        family: "correlation",
+        explains: &["affine-lsm"],
+    }),
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+/// The two kinds of pair this example matches: one generated with a known
+/// change, or two patches given as grey values (e.g. from the image lab).
+const PAIR_OPTIONS: &[(&str, &str)] = &[
+    ("generated", "Generated, with a known change"),
+    ("patches", "Given patches (as from the lab)"),
+];
+const GENERATED: &[&str] = &["generated"];
+const PATCHES: &[&str] = &["patches"];
+
+/// The default given pair: an 11 × 11 texture and a 7 × 7 template made
+/// from it (rotated 4°, scaled 1.05, centred at column 6.3, row 5.8,
+/// gain 1.1, offset −5, rounded to whole grey values).
+fn affine_search_default() -> Vec<Vec<f64>> {
+    [
+        [150, 173, 180, 165, 133, 93, 63, 52, 65, 94, 127],
+        [153, 181, 190, 175, 143, 106, 80, 72, 83, 104, 124],
+        [142, 169, 177, 165, 140, 115, 101, 103, 116, 131, 137],
+        [129, 147, 149, 137, 120, 110, 113, 129, 150, 163, 159],
+        [127, 130, 118, 101, 89, 91, 110, 140, 170, 185, 179],
+        [140, 125, 100, 74, 61, 69, 97, 136, 170, 188, 182],
+        [162, 135, 98, 66, 50, 58, 87, 124, 155, 170, 164],
+        [178, 147, 109, 76, 61, 68, 91, 118, 137, 142, 132],
+        [177, 150, 119, 95, 87, 96, 113, 127, 130, 118, 99],
+        [155, 136, 117, 109, 115, 131, 146, 149, 136, 110, 79],
+        [121, 106, 100, 109, 131, 157, 175, 174, 152, 116, 79],
+    ]
+    .iter()
+    .map(|r| r.iter().map(|&x| f64::from(x)).collect())
+    .collect()
+}
+
+fn affine_template_default() -> Vec<Vec<f64>> {
+    [
+        [192, 169, 135, 108, 99, 110, 130],
+        [171, 151, 128, 117, 123, 144, 166],
+        [137, 117, 103, 106, 129, 163, 190],
+        [109, 84, 72, 84, 118, 160, 190],
+        [101, 68, 54, 68, 103, 142, 170],
+        [111, 75, 61, 73, 101, 130, 146],
+        [125, 96, 87, 100, 122, 137, 136],
+    ]
+    .iter()
+    .map(|r| r.iter().map(|&x| f64::from(x)).collect())
+    .collect()
+}
+
+fn fields() -> Vec<Field> {
+    let n = |key, label, default, lo, hi, unit: Option<&'static str>, help| {
+        let f = Field::number(key, label, default)
+            .range(lo, hi)
+            .help(help)
+            .when("pair", GENERATED);
+        match unit {
+            Some(u) => f.unit(u),
+            None => f,
+        }
+    };
+    vec![
+        Field::choice("pair", "Patch pair", PAIR_OPTIONS, "generated")
+            .help("Generated: a texture seen through a known affine and radiometric change; the truth is shown beside the estimates. Given: any template and search window as grey values, and a start position (the image lab links its affine matches here)."),
+        Field::matrix("template", "Template T", &affine_template_default())
+            .help("The template's grey values, rows top to bottom (at most 64 × 64).")
+            .when("pair", PATCHES),
+        Field::matrix("search", "Search window S", &affine_search_default())
+            .help("The search window's grey values; columns c and rows r count from 1 (at most 64 × 64).")
+            .when("pair", PATCHES),
+        Field::number("c0", "Start column c⁰", 6.0)
+            .unit("px")
+            .range(1.0, MAX_2D as f64)
+            .help("Column of the template's centre in the search window to start from; the affine part starts as the identity, gain 1, offset 0.")
+            .when("pair", PATCHES),
+        Field::number("r0", "Start row r⁰", 6.0)
+            .unit("px")
+            .range(1.0, MAX_2D as f64)
+            .help("Row of the template's centre in the search window to start from.")
+            .when("pair", PATCHES),
+        Field::integer("patch_size", "Template size", 21.0)
+            .range(5.0, 41.0)
+            .help("Side of the square template in pixels (odd).")
+            .when("pair", GENERATED),
+        n(
+            "shift_c",
+            "Shift in c (a3)",
+            1.3,
+            -10.0,
+            10.0,
+            Some("px"),
+            "Column shift of the template centre from the search window's centre.",
+        ),
+        n(
+            "shift_r",
+            "Shift in r (a6)",
+            -0.7,
+            -10.0,
+            10.0,
+            Some("px"),
+            "Row shift (downward positive).",
+        ),
+        n(
+            "rotation_deg",
+            "Rotation θ",
+            5.0,
+            -45.0,
+            45.0,
+            Some("°"),
+            "Clockwise on the screen, since rows count downward.",
+        ),
+        n(
+            "scale",
+            "Scale s",
+            1.05,
+            0.5,
+            2.0,
+            None,
+            "Size of a search-window pixel step per template pixel.",
+        ),
+        n(
+            "shear",
+            "Shear k",
+            0.02,
+            -0.5,
+            0.5,
+            None,
+            "[a1 a2; a4 a5] = s·R(θ)·[1 k; 0 1].",
+        ),
+        n(
+            "gain",
+            "Gain a7",
+            1.2,
+            0.1,
+            10.0,
+            None,
+            "Radiometric scale: T = a7·S + a8.",
+        ),
+        n(
+            "offset",
+            "Offset a8",
+            -15.0,
+            -255.0,
+            255.0,
+            None,
+            "Radiometric offset in grey values.",
+        ),
+        n(
+            "noise",
+            "Noise σ",
+            0.0,
+            0.0,
+            50.0,
+            None,
+            "Standard deviation of the Gaussian noise added to each image (grey values).",
+        ),
+        Field::integer("seed", "Random seed", 1.0)
+            .range(0.0, 1e9)
+            .help("Chooses the texture and the noise; the same seed gives the same pair.")
+            .when("pair", GENERATED),
+        max_iterations(),
+    ]
+}
+
+fn solve(inputs: &Record) -> Result<Solution> {
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     let set = settings(Model::AffineRadiometric, Gradients::SearchWindow, inputs)?;
-    let given = text(inputs, "pair")? == "patches";
+    let given = Inputs(inputs).text("pair")? == "patches";
     let pair = if given {
         given_pair(&mut s, inputs)?
     } else {
@@ -40,14 +221,17 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
                 "One equation per template pixel, linearised at the current parameters; G_p, G_q are the central-difference gradients of the resampled search patch along the window's columns and rows. Initial values as Lecture 21 says: translations zero, the diagonal of the affine part 1, gain 1, offset 0."
             },
         )
-        .formula(
-            r"T - (a_7 G + a_8) + V = a_7G_p(u\,da_1 + v\,da_2 + da_3) + a_7G_q(u\,da_4 + v\,da_5 + da_6) + G\,da_7 + da_8",
-            format!(
-                r"\mathbf{{a}}^0 = [1, 0, {}, 0, 1, {}, 1, 0]",
-                num(start.a[2] - origin),
-                num(start.a[5] - origin)
-            ),
-        ),
+        .relation(Relation::new("T - (a_7 G + a_8) + V").sym(Form::terms([
+            r"a_7G_p(u\,da_1 + v\,da_2 + da_3)",
+            r"+ a_7G_q(u\,da_4 + v\,da_5 + da_6)",
+            r"+ G\,da_7",
+            "+ da_8",
+        ])))
+        .relation(Relation::new(r"\mathbf{a}^0").subst(format!(
+            "[1, 0, {}, 0, 1, {}, 1, 0]",
+            num(start.a[2] - origin),
+            num(start.a[5] - origin)
+        ))),
     );
     if let Some(it) = m.iterations.first() {
         s.step(
@@ -55,21 +239,33 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
                 "Design matrix and normal equations (iteration 1)",
                 "A has one row per template pixel and eight columns; N = AᵀA is 8×8.",
             )
-            .formula(
-                r"A_i = [a_7G_p u,\ a_7G_p v,\ a_7G_p,\ a_7G_q u,\ a_7G_q v,\ a_7G_q,\ G,\ 1]",
-                format!(
-                    r"A_1 = {},\quad N = {},\quad d\mathbf{{X}} = {}",
-                    numeric(&it.a.iter().take(1).cloned().collect::<Vec<_>>()),
-                    numeric(&it.adjustment.n),
-                    column(&it.increments)
-                ),
+            .relation(
+                Relation::new("A_i")
+                    .sym(r"[a_7G_p u,\ a_7G_p v,\ a_7G_p,\ a_7G_q u,\ a_7G_q v,\ a_7G_q,\ G,\ 1]"),
+            )
+            .relation(Relation::new("A_1").subst(Form::grid(
+                "bmatrix",
+                &it.a[..it.a.len().min(1)],
+                "A_1",
+            )))
+            .relation(
+                Relation::new("N")
+                    .key("N")
+                    .sym(r"A^\mathsf{T}A")
+                    .result(Form::grid("bmatrix", &it.adjustment.n, "N")),
+            )
+            .relation(
+                Relation::new(r"d\mathbf{X}")
+                    .key("increments")
+                    .sym(r"(A^\mathsf{T}A)^{-1}A^\mathsf{T}d\mathbf{L}")
+                    .result(Form::column(&it.increments, r"d\mathbf{X}")),
             )
             .value("A", Value::matrix(&it.a))
             .value("N", Value::matrix(&it.adjustment.n))
             .value("increments", Value::numbers(&it.increments)),
         );
     }
-    s.step(table_step(&m, &syms, origin));
+    s.step(table_step(&m, &syms, origin, Some("parameters")));
     status_step(&mut s, &m, &syms, set.max_iterations);
 
     let est: Vec<f64> = (0..8)
@@ -89,33 +285,24 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
             .map_or("–".to_string(), |x| fmt_sig(*x, 3))
     };
     let est_text = |k: usize| num(est.get(k).copied().unwrap_or(0.0));
-    let rows: Vec<String> = (0..8)
-        .map(|k| match &truth {
-            Some(t) => format!(
-                r"a_{} & {} & {} & {}",
-                k + 1,
-                num(t.a.get(k).copied().unwrap_or(0.0)),
-                est_text(k),
-                sd_text(k)
-            ),
-            None => format!(r"a_{} & {} & {}", k + 1, est_text(k), sd_text(k)),
-        })
-        .collect();
-    let (title, table) = match &truth {
-        Some(_) => (
-            "Estimates beside the truth",
-            format!(
-                r"\begin{{array}}{{l|rrr}} & \text{{true}} & \text{{estimate}} & \sigma \\ \hline {} \end{{array}}",
-                rows.join(r" \\ ")
-            ),
-        ),
-        None => (
-            "Estimates",
-            format!(
-                r"\begin{{array}}{{l|rr}} & \text{{estimate}} & \sigma \\ \hline {} \end{{array}}",
-                rows.join(r" \\ ")
-            ),
-        ),
+    let mut header = vec![String::new()];
+    if truth.is_some() {
+        header.push(r"\text{true}".to_string());
+    }
+    header.extend([r"\text{estimate}".to_string(), r"\sigma".to_string()]);
+    let mut rows = vec![header];
+    rows.extend((0..8).map(|k| {
+        let mut row = vec![format!("a_{}", k + 1)];
+        if let Some(t) = &truth {
+            row.push(num(t.a.get(k).copied().unwrap_or(0.0)));
+        }
+        row.extend([est_text(k), sd_text(k)]);
+        row
+    }));
+    let title = if truth.is_some() {
+        "Estimates beside the truth"
+    } else {
+        "Estimates"
     };
     let how = if given {
         "a3 and a6 are the column and row of the template's centre in the search window, counted from 1. The standard deviations are σ0·√qᵢᵢ from the last iteration's Qxx = N⁻¹."
@@ -123,14 +310,42 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
         "The standard deviations are σ0·√qᵢᵢ from the last iteration's Qxx = N⁻¹."
     };
     let true_parameters = truth.as_ref().map_or(Value::Null, |t| Value::numbers(&t.a));
+    // the scale and rotation the estimate implies (no shear: the first
+    // column of [a1 a2; a4 a5] is s·(cos θ, sin θ))
+    let (scale, rotation) = (est[0].hypot(est[3]), est[3].atan2(est[0]).to_degrees());
     let mut step = Step::new(title, how)
-        .formula(r"\sigma_{a_j} = \sigma_0\sqrt{q_{jj}}", table)
+        .relation(
+            Relation::new(r"\sigma_{a_j}")
+                .key("std_dev")
+                .sym(r"\sigma_0\sqrt{q_{jj}}"),
+        )
+        .relation(
+            Relation::new(Form::default())
+                .key("estimates")
+                .subst(Form::grid_tex("array", rows, "estimates")),
+        )
+        .relation(
+            Relation::new("s")
+                .key("estimated_scale")
+                .sym(r"\sqrt{a_1^2 + a_4^2}")
+                .subst(format!(r"\sqrt{{{}^2 + {}^2}}", tex(est[0]), tex(est[3])))
+                .value(scale, ""),
+        )
+        .relation(
+            Relation::new(r"\theta")
+                .key("estimated_rotation_deg")
+                .sym(r"\operatorname{atan2}(a_4, a_1)")
+                .subst(format!(
+                    r"\operatorname{{atan2}}({}, {})",
+                    num(est[3]),
+                    num(est[0])
+                ))
+                .result(format!(r"{}^\circ", num(rotation))),
+        )
         .value("parameters", Value::numbers(&est))
         .value("true_parameters", true_parameters.clone())
-        // the scale and rotation the estimate implies (no shear: the first
-        // column of [a1 a2; a4 a5] is s·(cos θ, sin θ))
-        .value("estimated_scale", est[0].hypot(est[3]))
-        .value("estimated_rotation_deg", est[3].atan2(est[0]).to_degrees());
+        .value("estimated_scale", scale)
+        .value("estimated_rotation_deg", rotation);
     if let Some(sd) = &sd {
         step = step.value("std_dev", Value::numbers(sd));
     }
@@ -145,16 +360,23 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
                 "σ0 against the noise",
                 "Each residual carries the template's noise and the search window's noise, the latter through the four bilinear weights w_k and the gain; averaged over the patch this is what σ0 should come out as.",
             )
-            .formula(
-                r"\sigma_0 \approx \sigma_n\sqrt{1 + a_7^2\,\overline{\textstyle\sum_k w_k^2}}",
-                format!(
-                    r"\sigma_0 = {},\quad \sigma_n\sqrt{{1 + a_7^2\,\overline{{\textstyle\sum_k w_k^2}}}} = {}\sqrt{{1 + {}^2 \times {}}} = {}",
-                    m.sigma0().map_or("–".to_string(), num),
-                    num(noise),
-                    num(m.params.gain()),
-                    num(m2),
-                    num(e)
-                ),
+            .relation(
+                Relation::new(r"\sigma_0")
+                    .key("sigma0")
+                    .result(m.sigma0().map_or("–".to_string(), num)),
+            )
+            .relation(
+                Relation::new(r"\sigma_0")
+                    .key("expected_sigma0")
+                    .op(r"\approx")
+                    .sym(r"\sigma_n\sqrt{1 + a_7^2\,\overline{\textstyle\sum_k w_k^2}}")
+                    .subst(format!(
+                        r"{}\sqrt{{1 + {}^2 \times {}}}",
+                        num(noise),
+                        num(m.params.gain()),
+                        num(m2)
+                    ))
+                    .value(e, ""),
             )
             .value("expected_sigma0", e),
         );
@@ -212,7 +434,6 @@ pub(super) fn lsm_affine(inputs: &Record) -> Result<Solution> {
             }
         }
     }
-    label_results(&mut s);
     Ok(s)
 }
 
@@ -257,17 +478,23 @@ fn generated_pair(s: &mut Solution, inputs: &Record) -> Result<Pair> {
             "The generated pair",
             "A smooth texture (six sinusoids, wavelengths 7–16 px, drawn with the random seed) fills the search window. The template is that window seen through the chosen transformation — resampled bilinearly at p = a1·u + a2·v + a3, q = a4·u + a5·v + a6 — then scaled by the gain and shifted by the offset; noise is added to both. u, v count from the template's centre, p, q from the search window's centre.",
         )
-        .formula(
-            r"\begin{bmatrix} a_1 & a_2 \\ a_4 & a_5 \end{bmatrix} = s\begin{bmatrix} \cos\theta & -\sin\theta \\ \sin\theta & \cos\theta \end{bmatrix}\begin{bmatrix} 1 & k \\ 0 & 1 \end{bmatrix},\quad T(u,v) = a_7\,S(p,q) + a_8 + n",
-            format!(
-                r"\begin{{bmatrix}} a_1 & a_2 \\ a_4 & a_5 \end{{bmatrix}} = {},\quad \begin{{bmatrix}} a_3 \\ a_6 \end{{bmatrix}} = {},\quad a_7 = {},\ a_8 = {},\ \sigma_n = {}",
-                numeric(&[vec![a[0], a[1]], vec![a[3], a[4]]]),
-                column(&[a[2], a[5]]),
-                num(a[6]),
-                num(a[7]),
-                num(noise)
-            ),
+        .relation(
+            Relation::new(cells(&[&["a_1", "a_2"], &["a_4", "a_5"]]))
+                .sym(
+                    Form::from("s")
+                        .then(cells(&[&[r"\cos\theta", r"-\sin\theta"], &[r"\sin\theta", r"\cos\theta"]]))
+                        .then(cells(&[&["1", "k"], &["0", "1"]])),
+                )
+                .subst(Form::grid("bmatrix", &[vec![a[0], a[1]], vec![a[3], a[4]]], "")),
         )
+        .relation(Relation::new("T(u,v)").sym(r"a_7\,S(p,q) + a_8 + n"))
+        .relation(
+            Relation::new(cells(&[&["a_3"], &["a_6"]]))
+                .subst(Form::column(&[a[2], a[5]], "")),
+        )
+        .relation(Relation::new("a_7").value(a[6], ""))
+        .relation(Relation::new("a_8").value(a[7], ""))
+        .relation(Relation::new(r"\sigma_n").value(noise, ""))
         .value("template", Value::matrix(&pair.template.rows()))
         .value("search", Value::matrix(&pair.search.rows()))
         .value("true_parameters", Value::numbers(&truth.a)),
@@ -299,15 +526,8 @@ fn given_pair(s: &mut Solution, inputs: &Record) -> Result<Pair> {
             "Template, search window and start",
             "The template's centre is placed at (c⁰, r⁰) in the search window, columns c to the right and rows r downward, both counted from 1; u, v count from the template's centre.",
         )
-        .formula(
-            r"T,\ S,\quad (c^0, r^0)",
-            format!(
-                r"T = {},\quad (c^0, r^0) = ({}, {})",
-                numeric(&tr),
-                num(c0),
-                num(r0)
-            ),
-        )
+        .relation(Relation::new("T").key("template").subst(Form::grid("bmatrix", &tr, "T")))
+        .relation(Relation::new("(c^0, r^0)").subst(format!("({}, {})", num(c0), num(r0))))
         .value("template", Value::matrix(&tr))
         .value("search", Value::matrix(&sr)),
     );
@@ -321,9 +541,20 @@ fn given_pair(s: &mut Solution, inputs: &Record) -> Result<Pair> {
     })
 }
 
+/// A matrix of symbols (no name).
+fn cells(rows: &[&[&str]]) -> Form {
+    Form::grid_tex(
+        "bmatrix",
+        rows.iter()
+            .map(|r| r.iter().map(|c| c.to_string()).collect())
+            .collect(),
+        "",
+    )
+}
+
 /// Mean over the template pixels of Σ w_k² of the four bilinear weights at
 /// the parameters' positions.
-pub(super) fn mean_square_weights(t: &Grid, p: &Params) -> f64 {
+fn mean_square_weights(t: &Grid, p: &Params) -> f64 {
     let (w, h) = (t.width(), t.height());
     let (cu, cv) = ((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
     let mut sum = 0.0;
@@ -335,6 +566,121 @@ pub(super) fn mean_square_weights(t: &Grid, p: &Params) -> f64 {
         }
     }
     sum / (w * h).max(1) as f64
+}
+
+// ---------------------------------------------------------------- practice
+
+/// The affine part's parameters and the scale: to 0.001 (0.1 %).
+const AFFINE: Tolerance = Tolerance::abs(0.001);
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    vec![
+        BoxDef::new("parameters[1]", "a₁ (converged)", None, AFFINE).nudge(
+            "The affine model's first parameter after convergence: s·cos θ when there is no shear.",
+        ),
+        BoxDef::new("parameters[4]", "a₄ (converged)", None, AFFINE)
+            .nudge("The fourth parameter: s·sin θ when there is no shear."),
+        BoxDef::new("parameters[3]", "Shift a₃ (columns)", Some("px"), SHIFT)
+            .nudge("The affine model's column shift after convergence.")
+            .axis(),
+        BoxDef::new("parameters[6]", "Shift a₆ (rows)", Some("px"), SHIFT)
+            .nudge("The row shift after convergence.")
+            .axis(),
+        BoxDef::new("estimated_scale", "Scale s = √(a₁² + a₄²)", None, AFFINE)
+            .nudge("[a₁ a₂; a₄ a₅] = s·R(θ) without shear: the first column is s·(cos θ, sin θ)."),
+        BoxDef::new(
+            "estimated_rotation_deg",
+            "Rotation θ = atan2(a₄, a₁)",
+            Some("°"),
+            Tolerance::abs(0.05),
+        )
+        .nudge("The angle of the first column (a₁, a₄), in degrees."),
+    ]
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let mut out = Record::new();
+    let mut p = [0.0; 7];
+    for k in [1, 4, 3, 6] {
+        let key = format!("parameters[{k}]");
+        p[k] = or_given(g, &key, value_in(&s, &key)?);
+        out.set(&key, p[k]);
+    }
+    let scale = or_given(g, "estimated_scale", p[1].hypot(p[4]));
+    Ok(out
+        .with("estimated_scale", scale)
+        .with("estimated_rotation_deg", p[4].atan2(p[1]).to_degrees()))
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let s = EXAMPLE.run(i)?;
+    let (a1, a4, a3, a6) = (
+        value_in(&s, "parameters[1]")?,
+        value_in(&s, "parameters[4]")?,
+        value_in(&s, "parameters[3]")?,
+        value_in(&s, "parameters[6]")?,
+    );
+    const SWAP: &str = "a₃ shifts the columns c, a₆ the rows r.";
+    let theta = a4.atan2(a1);
+    Ok(vec![
+        Mistake::new("parameters[3]", "rows and columns swapped", SWAP, a6),
+        Mistake::new("parameters[6]", "rows and columns swapped", SWAP, a3),
+        Mistake::new(
+            "estimated_rotation_deg",
+            "degrees vs radians",
+            "atan2 gives radians; the box asks for degrees (× 180/π).",
+            theta,
+        ),
+        Mistake::new(
+            "estimated_scale",
+            "a₁ taken as the scale",
+            "a₁ = s·cos θ: the scale is the length of the column (a₁, a₄).",
+            a1,
+        ),
+    ])
+}
+
+/// A generated 11 × 11 pair with a small shift, rotation, scale, gain and
+/// offset, within the pull-in range of its start.
+fn generate(rng: &mut Rng) -> Record {
+    let shift_c = rng.num(-15, 15) / 10.0;
+    let shift_r = rng.num(-15, 15) / 10.0;
+    // The pull-in range of an 11×11 patch: shifts of 1.5 px along both axes
+    // at once (≈2 px) with a rotation can leave the window. The shift is kept
+    // within 1.5 px of the start (only the row shift of such a draw is
+    // shortened, so every other variant keeps its numbers).
+    let reach = (1.5f64 * 1.5 - shift_c * shift_c).max(0.0).sqrt();
+    let shift_r = if shift_r.abs() > reach {
+        shift_r.signum() * (reach * 10.0).floor() / 10.0 + 0.0
+    } else {
+        shift_r
+    };
+    Record::new()
+        .with("patch_size", 11.0)
+        .with("shift_c", shift_c)
+        .with("shift_r", shift_r)
+        .with("rotation_deg", rng.num(-5, 5))
+        .with("scale", rng.num(95, 105) / 100.0)
+        .with("shear", 0.0)
+        .with("gain", rng.num(90, 120) / 100.0)
+        .with("offset", rng.num(-10, 10))
+        .with("noise", rng.num(0, 2))
+        .with("seed", texture(rng.num(1, 100)))
+}
+
+/// The texture seed of a generated pair. Five of `synthetic_pair`'s
+/// textures (found by the release audit over every variant) leave the 11×11
+/// patch with a weak gradient in one direction: with them LSM takes 30–75
+/// iterations or walks out of the window. Their variants take the next
+/// texture instead (only those variants change).
+fn texture(seed: f64) -> f64 {
+    const WEAK: [f64; 5] = [4.0, 25.0, 62.0, 81.0, 97.0];
+    if WEAK.contains(&seed) {
+        seed + 1.0
+    } else {
+        seed
+    }
 }
 
 #[cfg(test)]
@@ -358,7 +704,7 @@ mod tests {
     #[test]
     fn given_patches_match_as_the_generated_pair_does() {
         // the generated pair, handed over as given patches with the same start
-        let g = crate::examples::solve("lsm-affine", &Record::new()).unwrap();
+        let g = EXAMPLE.run(&Record::new()).unwrap();
         let search = step_matrix(&g, "search");
         let n = match &search {
             Value::List(rows) => rows.len() as f64,
@@ -371,7 +717,7 @@ mod tests {
             .with("search", search)
             .with("c0", origin + 1.0)
             .with("r0", origin + 1.0);
-        let p = crate::examples::solve("lsm-affine", &inputs).unwrap();
+        let p = EXAMPLE.run(&inputs).unwrap();
         let (eg, ep) = (numbers_of(&g, "parameters"), numbers_of(&p, "parameters"));
         for k in 0..8 {
             // a3, a6: from the window's centre there, 1-based positions here
@@ -386,8 +732,7 @@ mod tests {
         assert_eq!(p.result.get("converged"), Some(&Value::Bool(true)));
         // the default given pair: 4°, 1.05, centre (6.3, 5.8) within the
         // rounding of its grey values to integers
-        let d =
-            crate::examples::solve("lsm-affine", &Record::new().with("pair", "patches")).unwrap();
+        let d = EXAMPLE.run(&Record::new().with("pair", "patches")).unwrap();
         let e = numbers_of(&d, "parameters");
         let (sn, cs) = 4f64.to_radians().sin_cos();
         assert!(
@@ -402,32 +747,5 @@ mod tests {
             (e[6] - 1.1).abs() < 0.05 && (e[7] + 5.0).abs() < 5.0,
             "{e:?}"
         );
-    }
-
-    #[test]
-    fn lsm_2d_without_radiometry_estimates_the_shift_only() {
-        let s = crate::examples::solve(
-            "lsm-2d",
-            &Record::new().with("radiometric", false).with("b0", 0.0),
-        )
-        .unwrap();
-        let t = Grid::from_rows("template", &ex7_template()).unwrap();
-        let sw = Grid::from_rows("search", &ex7_search()).unwrap();
-        let m = matching::match_2d(
-            &t,
-            &sw,
-            Params::shift(2.0, 3.0, 1.0, 0.0),
-            Settings {
-                model: Model::Shift,
-                gradients: Gradients::SearchWindow,
-                max_iterations: matching::DEFAULT_ITERATIONS,
-            },
-        )
-        .unwrap();
-        assert_eq!(s.result.get("c"), Some(&Value::Number(m.params.a[2] + 1.0)));
-        assert_eq!(s.result.get("r"), Some(&Value::Number(m.params.a[5] + 1.0)));
-        assert_eq!(s.result.get("a"), Some(&Value::Number(1.0)));
-        assert_eq!(s.result.get("b"), Some(&Value::Number(0.0)));
-        assert_eq!(s.result.get("first_da"), Some(&Value::Null));
     }
 }

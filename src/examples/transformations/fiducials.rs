@@ -1,16 +1,33 @@
-//! Example 4: the similarity and affine transformations from four fiducial marks (pixels to photo millimetres), with the seed's printed values.
+//! Example 4, shared by its two examples: the similarity and affine
+//! transformations from four fiducial marks (pixels to photo millimetres),
+//! with the seed's printed values; and their practice (drawn fiducials,
+//! the parameters and σ₀).
 
 use super::*;
+use crate::examples::drill::Rng;
 
-pub(super) fn fiducial_similarity(inputs: &Record) -> Result<Solution> {
-    example4(inputs, Model::Similarity)
+/// Example 4's fiducials as the course notes' table gives them.
+pub(super) fn fields() -> Vec<Field> {
+    vec![Field::points(
+        "points",
+        "Fiducials [c, r, x, y]",
+        4,
+        MAX_POINTS,
+        &rows_of(&FIDUCIALS),
+    )
+    .columns(&["c (px)", "r (px)", "x (mm)", "y (mm)"])
+    .help("One row per fiducial: measured column c and row r (pixels, r downward), calibrated x and y (mm). The solver uses x′ = c, y′ = −r.")]
 }
 
-pub(super) fn fiducial_affine(inputs: &Record) -> Result<Solution> {
-    example4(inputs, Model::FiducialAffine)
-}
-
-pub(super) fn example4(inputs: &Record, model: Model) -> Result<Solution> {
+/// Example 4(a) or (b): `model` fitted to the fiducials with the row axis
+/// turned up.
+/// Returns the solution, the fit and the points as given (`[c, r, x, y]`)
+/// for the example's own notes on the seed.
+pub(super) fn example4(
+    ex: &Example,
+    inputs: &Record,
+    model: Model,
+) -> Result<(Solution, Fit, Vec<PointPair>)> {
     let rows = Inputs(inputs).rows("points")?;
     let cr = pairs(&rows)?;
     // x' = c, y' = −r: the row axis turned up.
@@ -24,46 +41,31 @@ pub(super) fn example4(inputs: &Record, model: Model) -> Result<Solution> {
         })
         .collect();
     let fit = transform::fit(model, &pts)?;
-    let (id, title) = if model == Model::Similarity {
-        (
-            "fiducial-similarity",
-            "Fiducials: similarity transformation",
-        )
-    } else {
-        ("fiducial-affine", "Fiducials: affine transformation")
-    };
-    let mut s = Solution::new(id, title, inputs.clone());
+    let mut s = Solution::new(ex.id, ex.title, inputs.clone());
 
-    let table: Vec<String> = pts
-        .iter()
-        .enumerate()
-        .map(|(i, b)| {
-            format!(
-                r"{} & {} & {} & {} & {}",
-                i + 1,
-                num(b.u),
-                tex(b.v),
-                num(b.x),
-                num(b.y)
-            )
-        })
-        .collect();
-    let (k, cut) = shown(table.len());
-    let mut table: Vec<String> = table.into_iter().take(k).collect();
-    if cut {
-        table.push(r"\vdots & & & &".to_string());
-    }
+    let mut table = vec![vec![
+        r"\text{No.}".to_string(),
+        "x' = c".to_string(),
+        "y' = -r".to_string(),
+        "x".to_string(),
+        "y".to_string(),
+    ]];
+    table.extend(
+        pts.iter()
+            .enumerate()
+            .map(|(i, b)| vec![(i + 1).to_string(), num(b.u), tex(b.v), num(b.x), num(b.y)]),
+    );
     s.step(
         Step::new(
             "Axes: x′ = c, y′ = −r",
             "The pixel system counts rows r downward, the photo system counts y upward. The design matrices of Example 4 only fit the fiducials with the row axis turned up: x′ = c, y′ = −r. (The photo x axis runs along c, its y axis against r.)",
         )
-        .formula(
-            r"x' = c,\qquad y' = -r",
-            format!(
-                r"\begin{{array}}{{c|rr|rr}} \text{{No.}} & x' = c & y' = -r & x & y \\ \hline {} \end{{array}}",
-                table.join(r" \\ ")
-            ),
+        .relation(Relation::new("x'").sym("c"))
+        .relation(Relation::new("y'").sym("-r"))
+        .relation(
+            Relation::new(Form::default())
+                .key("source")
+                .subst(grid_cut("array", table, "fiducials")),
         )
         .value("source", Value::matrix(&pts.iter().map(|p| vec![p.u, p.v]).collect::<Vec<_>>()))
         .value("target", Value::matrix(&pts.iter().map(|p| vec![p.x, p.y]).collect::<Vec<_>>()))
@@ -82,32 +84,11 @@ pub(super) fn example4(inputs: &Record, model: Model) -> Result<Solution> {
         "Points are entered as the course notes' table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
     );
     condition_note(&mut s, &fit);
-    if is_seed(&fiducial_fields(), inputs) {
-        if model == Model::Similarity {
-            seed_notes_similarity(&mut s, &fit, &cr)?;
-        } else {
-            seed_notes_affine(&mut s, &fit, &cr)?;
-        }
-    }
-    Ok(s)
-}
-
-/// `A·X − L` for given parameters.
-pub(super) fn residuals_with(fit: &Fit, x: &[f64]) -> Vec<f64> {
-    fit.a
-        .iter()
-        .zip(&fit.l)
-        .map(|(row, l)| row.iter().zip(x).map(|(a, b)| a * b).sum::<f64>() - l)
-        .collect()
+    Ok((s, fit, cr))
 }
 
 pub(super) fn max_abs(xs: &[f64]) -> f64 {
     xs.iter().fold(0.0, |m, x| m.max(x.abs()))
-}
-
-pub(super) fn round_to(x: f64, decimals: i32) -> f64 {
-    let f = 10f64.powi(decimals);
-    (x * f).round() / f
 }
 
 /// Notes on printed values that are not the exact ones rounded to three
@@ -175,7 +156,7 @@ pub(super) fn rounding_notes(
 }
 
 pub(super) fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f64]) {
-    let v = residuals_with(fit, printed_x);
+    let v = residuals(&fit.a, &fit.l, printed_x);
     let a = fit.adjustment.x.first().copied().unwrap_or(0.0);
     s.note(
         NoteKind::Rounding,
@@ -191,77 +172,98 @@ pub(super) fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f6
     ).about(&["residuals"]);
 }
 
-pub(super) fn seed_notes_similarity(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
-    s.textbook = Some(
-        Record::new()
-            .with("parameters", Value::numbers(&SIM_PRINTED_X))
-            .with("residuals", Value::numbers(&SIM_PRINTED_V)),
-    );
-    // The stated equations with y' = r literally, as the table header says.
-    let literal: Vec<PointPair> = cr.to_vec();
-    let lit = transform::fit(Model::Similarity, &literal)?;
-    let x = &fit.adjustment.x;
-    let g = |i: usize| x.get(i).copied().unwrap_or(0.0);
-    s.note(
-        NoteKind::Erratum,
-        format!(
-            "The course notes' table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, their printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
-            num(g(0)),
-            num(g(1)),
-            num(g(2)),
-            num(g(3)),
-            fmt_sig(lit.adjustment.sigma0.unwrap_or(0.0), 3),
-            fmt_sig(max_abs(&lit.adjustment.v), 3)
-        ),
-    );
-    let names = Model::Similarity.param_names();
-    rounding_notes(s, "parameters", &names, x, &SIM_PRINTED_X);
-    if let Some((_, rot)) = scale_rotation(&fit.transform) {
-        s.note(
-            NoteKind::Rounding,
-            format!(
-                "b = {} is printed as 0.000 (its sign lost in the rounding): a rotation of {}° between the scanned photo and the fiducial system.",
-                num(g(1)),
-                fmt_sig(rot, 2)
-            ),
-        ).about(&["parameters", "rotation_deg"]);
+// ---------------------------------------------------------------- practice
+
+/// Four fiducials at the middle of the sides (as in Example 4): calibrated
+/// x, y in mm, measured c, r in pixels from a scan at about 600 dpi, turned
+/// by a fraction of a degree, with a few tenths of a pixel of noise.
+pub(super) fn generate(rng: &mut Rng) -> Record {
+    let a = rng.pick(&[106.0, 110.0, 113.0, 115.0]);
+    let k = rng.num(2340, 2380) / 100.0; // pixels per mm
+    let theta = (rng.num(-50, 50) / 100.0).to_radians();
+    // The centre far enough in that every fiducial has a positive pixel
+    // position (Example 4's lie about 48 px from the edges).
+    let margin = (k * (a + 0.1)).ceil();
+    let (cc, rc) = (margin + rng.num(30, 80), margin + rng.num(30, 80));
+    let mut points = Vec::new();
+    for (ux, uy) in [(-1.0, 0.0), (1.0, 0.0), (0.0, 1.0), (0.0, -1.0)] {
+        let x = round_to(a * ux + rng.num(-30, 30) / 1000.0, 3);
+        let y = round_to(a * uy + rng.num(-30, 30) / 1000.0, 3);
+        let xp = k * (x * theta.cos() + y * theta.sin());
+        let yp = k * (-x * theta.sin() + y * theta.cos());
+        let c = round_to(cc + xp + rng.num(-30, 30) / 100.0, 2);
+        let r = round_to(rc - yp + rng.num(-30, 30) / 100.0, 2);
+        points.push(vec![c, r, x, y]);
     }
-    printed_residual_note(s, fit, &SIM_PRINTED_X);
-    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
-    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &SIM_PRINTED_V);
-    s.note(
-        NoteKind::Convention,
-        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
-    ).about(&["sigma0", "std_devs"]);
-    Ok(())
+    Record::new().with("points", mat(&points))
 }
 
-pub(super) fn seed_notes_affine(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
-    s.textbook = Some(
-        Record::new()
-            .with("parameters", Value::numbers(&AFF_PRINTED_X))
-            .with("residuals", Value::numbers(&AFF_PRINTED_V)),
+/// Scale-like parameters to 0.01 %, translations to 0.01 mm.
+const SCALE: Tolerance = Tolerance {
+    atol: 1e-7,
+    rtol: 1e-4,
+};
+const SHIFT: Tolerance = Tolerance::abs(0.01);
+
+/// The boxes: each parameter (`(name, is a shift)`, in the order of X)
+/// and σ₀.
+pub(super) fn boxes(names: &[(&str, bool)]) -> Vec<BoxDef> {
+    let mut b: Vec<BoxDef> = names
+        .iter()
+        .enumerate()
+        .map(|(k, &(name, shift))| {
+            let b = BoxDef::new(
+                &format!("parameters[{}]", k + 1),
+                &format!("Parameter {name}"),
+                if shift { Some("mm") } else { None },
+                if shift { SHIFT } else { SCALE },
+            )
+            .nudge("Write two equations per fiducial with x′ = c and y′ = −r, then solve the normal equations N·X = Aᵀ·L.");
+            if shift {
+                b.axis()
+            } else {
+                b
+            }
+        })
+        .collect();
+    b.push(
+        BoxDef::new(
+            "sigma0",
+            "σ₀",
+            Some("mm"),
+            Tolerance {
+                atol: 0.0005,
+                rtol: 0.01,
+            },
+        )
+        .nudge("√(VᵀV / redundancy), with V = A·X − L."),
     );
-    let lit = transform::fit(Model::FiducialAffine, cr)?;
-    let lx = &lit.adjustment.x;
-    let g = |i: usize| lx.get(i).copied().unwrap_or(0.0);
-    s.note(
-        NoteKind::Convention,
-        format!(
-            "Here the printed A carries −r in its y′ columns ([c, −r, 1, 0, 0, 0] and [0, 0, 0, c, −r, 1]): y′ = −r is written into the matrix, consistent with the equations x = a·x′ + b·y′ + e, y = c·x′ + d·y′ + f. An affine transformation could absorb the flip itself: with y′ = r it fits just as well (σ0 = {} mm, the same residuals) but b and d change sign (b = {}, d = {}).",
-            fmt_sig(lit.adjustment.sigma0.unwrap_or(0.0), 4),
-            num(g(1)),
-            num(g(4))
-        ),
-    );
-    let names = Model::FiducialAffine.param_names();
-    rounding_notes(s, "parameters", &names, &fit.adjustment.x, &AFF_PRINTED_X);
-    printed_residual_note(s, fit, &AFF_PRINTED_X);
-    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
-    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &AFF_PRINTED_V);
-    s.note(
-        NoteKind::Convention,
-        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
-    ).about(&["sigma0", "std_devs"]);
-    Ok(())
+    b
+}
+
+/// The axis mistakes: y not flipped, rows and columns swapped, in each of
+/// the `n` parameters.
+pub(super) fn mistakes(ex: &Example, i: &Record, n: usize) -> Result<Vec<Mistake>> {
+    let p = Inputs(i).rows("points")?;
+    let flipped: Vec<Vec<f64>> = p.iter().map(|q| vec![q[0], -q[1], q[2], q[3]]).collect();
+    let swapped: Vec<Vec<f64>> = p.iter().map(|q| vec![q[1], q[0], q[2], q[3]]).collect();
+    let f = ex.run(&i.clone().with("points", mat(&flipped)))?;
+    let s = ex.run(&i.clone().with("points", mat(&swapped)))?;
+    let mut out = Vec::new();
+    for k in 1..=n {
+        let key = format!("parameters[{k}]");
+        out.push(Mistake::new(
+            &key,
+            "y not flipped",
+            "Rows count down and y counts up: use y′ = −r, not r.",
+            value_in(&f, &key)?,
+        ));
+        out.push(Mistake::new(
+            &key,
+            "rows and columns swapped",
+            "x′ is the column c, y′ comes from the row r.",
+            value_in(&s, &key)?,
+        ));
+    }
+    Ok(out)
 }

@@ -1,8 +1,66 @@
-//! Table 9.5.1's models fitted by least squares to any point pairs.
+//! Table 9.5.1's models fitted by least squares to any point pairs; and its
+//! practice: a Helmert or affine fit to a few drawn points.
 
 use super::*;
+use crate::examples::drill::{Drill, Rng};
 
-pub(super) fn transform_fit(inputs: &Record) -> Result<Solution> {
+pub const EXAMPLE: Example = Example {
+    id: "transform-fit",
+    title: "2-D transformations by least squares",
+    source: "Lecture 7: Image processing, Table 9.5.1",
+    summary: "Any model of the transform table — Helmert, affine, pseudo-affine, projective, second-order conformal, polynomials — fitted to your control points.",
+    fields,
+    solve,
+    answer: &["parameters", "sigma0"],
+    labels: &[],
+    lab: None,
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
+        mistakes,
+    }),
+};
+
+const MODELS: &[(&str, &str)] = &[
+    ("helmert", "1) Helmert (4 parameters)"),
+    ("affine", "2) Affine (6)"),
+    ("pseudo-affine", "3) Pseudo-affine (8)"),
+    ("projective", "4) Projective (8)"),
+    ("conformal-2", "5) Second-order conformal (6)"),
+    ("polynomial-2", "6) Polynomial, order 2 (12)"),
+    ("polynomial-3", "6) Polynomial, order 3 (20)"),
+];
+
+const POINT_SETS: &[(&str, &str)] = &[
+    ("table", "The points in the table"),
+    ("fiducials", "Example 4's four fiducials"),
+    (
+        "control-12",
+        "Fiducials + 8 check points (12, enough for every model)",
+    ),
+];
+
+fn fields() -> Vec<Field> {
+    vec![
+        Field::choice("model", "Model (Table 9.5.1)", MODELS, "helmert")
+            .help("The transformation x = f(u, v), y = g(u, v); the number is how many parameters it has. Each point gives two equations."),
+        Field::choice("point_set", "Control points", POINT_SETS, "table")
+            .help("\"The points in the table\" uses the point list below. A prepared set replaces it: Example 4's fiducials, or the fiducials with 8 check points, enough for every model (the third-order polynomial needs 10)."),
+        Field::points(
+            "points",
+            "Points [u, v, x, y]",
+            4,
+            MAX_POINTS,
+            &row_axis_up(&FIDUCIALS),
+        )
+        .columns(&["u", "v", "x", "y"])
+        .help("One row per control point: source (u, v), target (x, y). The default is Example 4's fiducials with u = c, v = −r (row axis turned up) and x, y in mm.")
+        .when("point_set", &["table"]),
+    ]
+}
+
+fn solve(inputs: &Record) -> Result<Solution> {
     let i = Inputs(inputs);
     let model_id = i.text("model")?;
     let model = Model::from_id(model_id)
@@ -30,17 +88,14 @@ pub(super) fn transform_fit(inputs: &Record) -> Result<Solution> {
     })?;
     let mut used = inputs.clone();
     used.set("points", Value::matrix(&rows));
-    let mut s = Solution::new(
-        "transform-fit",
-        "2-D transformations by least squares",
-        used,
-    );
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, used);
 
     let set_text = match set.as_str() {
         "fiducials" => "Example 4's four fiducials (prepared set; the table's points are not used), u = c, v = −r.".to_string(),
         "control-12" => "Example 4's four fiducials and eight check points (prepared set `control-12`; the table's points are not used), u = c, v = −r. The check points are made up for this playground.".to_string(),
         _ => format!("The {} points of the table.", pts.len()),
     };
+    let [model_eq_x, model_eq_y] = model_relations(model);
     s.step(
         Step::new(
             "Model and control points",
@@ -52,7 +107,8 @@ pub(super) fn transform_fit(inputs: &Record) -> Result<Solution> {
                 pts.len()
             ),
         )
-        .formula(equations_tex(model), String::new())
+        .relation(model_eq_x)
+        .relation(model_eq_y)
         .value(
             "source",
             Value::matrix(&pts.iter().map(|p| vec![p.u, p.v]).collect::<Vec<_>>()),
@@ -140,4 +196,123 @@ pub(super) fn transform_fit(inputs: &Record) -> Result<Solution> {
         }
     }
     Ok(s)
+}
+
+// ---------------------------------------------------------------- practice
+
+/// Four to six control points with small whole-number source coordinates
+/// and targets from a Helmert or affine transformation with round
+/// parameters, plus a little noise.
+fn generate(rng: &mut Rng) -> Record {
+    let model = if rng.coin() { "helmert" } else { "affine" };
+    let n = rng.int(4, 6) as usize;
+    // Corners of a box plus extra points: never all on a line.
+    let (w, h) = (rng.num(4, 9), rng.num(4, 9));
+    let mut uv = vec![(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)];
+    while uv.len() < n {
+        let p = (rng.num(1, w as i64 - 1), rng.num(1, h as i64 - 1));
+        if !uv.contains(&p) {
+            uv.push(p);
+        } else {
+            uv.push((p.0, h + uv.len() as f64));
+        }
+    }
+    let (a, b) = (rng.num(50, 200) / 100.0, rng.num(-50, 50) / 100.0);
+    let (c, d) = (rng.num(-20, 20), rng.num(-20, 20));
+    let (e, f) = if model == "affine" {
+        (rng.num(50, 200) / 100.0, rng.num(-50, 50) / 100.0)
+    } else {
+        (a, -b)
+    };
+    let points: Vec<Vec<f64>> = uv
+        .iter()
+        .map(|&(u, v)| {
+            let x = a * u + b * v + c + rng.num(-2, 2) / 100.0;
+            let y = f * u + e * v + d + rng.num(-2, 2) / 100.0;
+            vec![u, v, round_to(x, 2), round_to(y, 2)]
+        })
+        .collect();
+    Record::new()
+        .with("model", model)
+        .with("point_set", "table")
+        .with("points", mat(&points))
+}
+
+/// The parameters of the drawn model, in the order of X.
+fn names(i: &Record) -> &'static [&'static str] {
+    if Inputs(i).text("model").is_ok_and(|m| m == "affine") {
+        &["a", "b", "c", "d", "e", "f"]
+    } else {
+        &["a", "b", "c", "d"]
+    }
+}
+
+fn boxes(i: &Record) -> Vec<BoxDef> {
+    let t = Tolerance {
+        atol: 0.002,
+        rtol: 0.001,
+    };
+    let mut b: Vec<BoxDef> = names(i)
+        .iter()
+        .enumerate()
+        .map(|(k, name)| {
+            BoxDef::new(
+                &format!("parameters[{}]", k + 1),
+                &format!("Parameter {name}"),
+                None,
+                t,
+            )
+            .nudge("Two equations per point; solve the normal equations (AᵀA)·X = AᵀL.")
+        })
+        .collect();
+    b.push(
+        BoxDef::new(
+            "sigma0",
+            "σ₀",
+            None,
+            Tolerance {
+                atol: 0.001,
+                rtol: 0.01,
+            },
+        )
+        .nudge("√(VᵀV / redundancy), with V = A·X − L."),
+    );
+    b
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let p = Inputs(i).rows("points")?;
+    let swapped: Vec<Vec<f64>> = p.iter().map(|q| vec![q[1], q[0], q[2], q[3]]).collect();
+    let s = EXAMPLE.run(&i.clone().with("points", mat(&swapped)))?;
+    let mut out = (1..=names(i).len())
+        .map(|k| {
+            let key = format!("parameters[{k}]");
+            Ok(Mistake::new(
+                &key,
+                "u and v swapped",
+                "The first source coordinate is u, the second v.",
+                value_in(&s, &key)?,
+            ))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    // σ₀ from VᵀV over the wrong count, or without the root
+    let exact = EXAMPLE.run(i)?;
+    let (sigma0, redundancy) = (value_in(&exact, "sigma0")?, value_in(&exact, "redundancy")?);
+    let vtv = sigma0 * sigma0 * redundancy;
+    let observations = 2.0 * p.len() as f64;
+    out.extend([
+        Mistake::new(
+            "sigma0",
+            "divided by the observations, not the redundancy",
+            "σ₀² = VᵀV / r with r = observations − unknowns: the fitted parameters use up some of the observations.",
+            (vtv / observations).sqrt(),
+        ),
+        Mistake::new(
+            "sigma0",
+            "square root forgotten",
+            "VᵀV / r is σ₀²; σ₀ is its square root.",
+            vtv / redundancy,
+        ),
+    ]);
+    Ok(out)
 }

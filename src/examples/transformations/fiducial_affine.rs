@@ -1,0 +1,76 @@
+//! Example 4(b): the affine transformation from the four fiducials (pixels
+//! to photo millimetres), with the seed's printed values.
+
+use super::fiducials::{printed_residual_note, rounding_notes};
+use super::*;
+use crate::examples::drill::Drill;
+use crate::examples::fields::is_seed;
+use crate::examples::Lab;
+
+pub const EXAMPLE: Example = Example {
+    id: "fiducial-affine",
+    title: "Fiducials: affine transformation",
+    source: "Worked examples, Example 4(b)",
+    summary: "Pixel to photo coordinates through the four fiducials: an affine transformation (two scales, shear, rotation, shift) by least squares.",
+    fields: fiducials::fields,
+    solve,
+    answer: &["parameters", "sigma0"],
+    labels: &[],
+    lab: Some(Lab {
+        family: "fiducials",
+        explains: &["affine"],
+    }),
+    practice: Some(Drill {
+        generate: fiducials::generate,
+        boxes: |_| {
+            fiducials::boxes(&[
+                ("a", false),
+                ("b", false),
+                ("e", true),
+                ("c", false),
+                ("d", false),
+                ("f", true),
+            ])
+        },
+        chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
+        mistakes: |i| fiducials::mistakes(&EXAMPLE, i, 6),
+    }),
+};
+
+fn solve(inputs: &Record) -> Result<Solution> {
+    let (mut s, fit, cr) = fiducials::example4(&EXAMPLE, inputs, Model::FiducialAffine)?;
+    if is_seed(&fiducials::fields(), inputs) {
+        seed_notes(&mut s, &fit, &cr)?;
+    }
+    Ok(s)
+}
+
+fn seed_notes(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
+    s.textbook = Some(
+        Record::new()
+            .with("parameters", Value::numbers(&AFF_PRINTED_X))
+            .with("residuals", Value::numbers(&AFF_PRINTED_V)),
+    );
+    let lit = transform::fit(Model::FiducialAffine, cr)?;
+    let lx = &lit.adjustment.x;
+    let g = |i: usize| lx.get(i).copied().unwrap_or(0.0);
+    s.note(
+        NoteKind::Convention,
+        format!(
+            "Here the printed A carries −r in its y′ columns ([c, −r, 1, 0, 0, 0] and [0, 0, 0, c, −r, 1]): y′ = −r is written into the matrix, consistent with the equations x = a·x′ + b·y′ + e, y = c·x′ + d·y′ + f. An affine transformation could absorb the flip itself: with y′ = r it fits just as well (σ0 = {} mm, the same residuals) but b and d change sign (b = {}, d = {}).",
+            fmt_sig(lit.adjustment.sigma0.unwrap_or(0.0), 4),
+            num(g(1)),
+            num(g(4))
+        ),
+    );
+    let names = Model::FiducialAffine.param_names();
+    rounding_notes(s, "parameters", &names, &fit.adjustment.x, &AFF_PRINTED_X);
+    printed_residual_note(s, fit, &AFF_PRINTED_X);
+    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
+    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &AFF_PRINTED_V);
+    s.note(
+        NoteKind::Convention,
+        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 6 = 2).",
+    ).about(&["sigma0", "std_devs"]);
+    Ok(())
+}

@@ -1,0 +1,82 @@
+//! Example 4(a): the similarity transformation from the four fiducials
+//! (pixels to photo millimetres), with the seed's printed values.
+
+use super::fiducials::{max_abs, printed_residual_note, rounding_notes};
+use super::*;
+use crate::examples::drill::Drill;
+use crate::examples::fields::is_seed;
+use crate::examples::Lab;
+
+pub const EXAMPLE: Example = Example {
+    id: "fiducial-similarity",
+    title: "Fiducials: similarity transformation",
+    source: "Worked examples, Example 4(a)",
+    summary: "Pixel to photo coordinates through the four fiducials: a similarity transformation (scale, rotation, shift) by least squares.",
+    fields: fiducials::fields,
+    solve,
+    answer: &["parameters", "sigma0"],
+    labels: &[],
+    lab: Some(Lab {
+        family: "fiducials",
+        explains: &["similarity"],
+    }),
+    practice: Some(Drill {
+        generate: fiducials::generate,
+        boxes: |_| fiducials::boxes(&[("a", false), ("b", false), ("c", true), ("d", true)]),
+        chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
+        mistakes: |i| fiducials::mistakes(&EXAMPLE, i, 4),
+    }),
+};
+
+fn solve(inputs: &Record) -> Result<Solution> {
+    let (mut s, fit, cr) = fiducials::example4(&EXAMPLE, inputs, Model::Similarity)?;
+    if is_seed(&fiducials::fields(), inputs) {
+        seed_notes(&mut s, &fit, &cr)?;
+    }
+    Ok(s)
+}
+
+fn seed_notes(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
+    s.textbook = Some(
+        Record::new()
+            .with("parameters", Value::numbers(&SIM_PRINTED_X))
+            .with("residuals", Value::numbers(&SIM_PRINTED_V)),
+    );
+    // The stated equations with y' = r literally, as the table header says.
+    let literal: Vec<PointPair> = cr.to_vec();
+    let lit = transform::fit(Model::Similarity, &literal)?;
+    let x = &fit.adjustment.x;
+    let g = |i: usize| x.get(i).copied().unwrap_or(0.0);
+    s.note(
+        NoteKind::Erratum,
+        format!(
+            "The course notes' table heads the pixel columns x′ (c) and y′ (r). Read with y′ = r, their printed matrix has the rows [x′, y′, 1, 0] and [−y′, x′, 0, 1], i.e. x = a·x′ + b·y′ + c, y = b·x′ − a·y′ + d — not its own equations x = a·x′ − b·y′ + c, y = b·x′ + a·y′ + d. The printed rows [c, r, 1, 0] and [−r, c, 0, 1] are exactly the stated equations with y′ = −r: [x′, −y′, 1, 0] and [y′, x′, 0, 1]. So the printed A is the similarity in (x′, y′) = (c, −r) — in (c, r) a scale, a rotation and a reflection of the row axis, which is what pixel → photo needs — and the printed X is its least-squares solution: a = {}, b = {}, c = {}, d = {}. Put y′ = r literally into the stated equations and no similarity fits: σ0 = {} mm, residuals up to {} mm.",
+            num(g(0)),
+            num(g(1)),
+            num(g(2)),
+            num(g(3)),
+            fmt_sig(lit.adjustment.sigma0.unwrap_or(0.0), 3),
+            fmt_sig(max_abs(&lit.adjustment.v), 3)
+        ),
+    );
+    let names = Model::Similarity.param_names();
+    rounding_notes(s, "parameters", &names, x, &SIM_PRINTED_X);
+    if let Some((_, rot)) = scale_rotation(&fit.transform) {
+        s.note(
+            NoteKind::Rounding,
+            format!(
+                "b = {} is printed as 0.000 (its sign lost in the rounding): a rotation of {}° between the scanned photo and the fiducial system.",
+                num(g(1)),
+                fmt_sig(rot, 2)
+            ),
+        ).about(&["parameters", "rotation_deg"]);
+    }
+    printed_residual_note(s, fit, &SIM_PRINTED_X);
+    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
+    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &SIM_PRINTED_V);
+    s.note(
+        NoteKind::Convention,
+        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
+    ).about(&["sigma0", "std_devs"]);
+    Ok(())
+}
