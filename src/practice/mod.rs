@@ -12,15 +12,11 @@
 //! - The expected values are the solver's own results
 //!   ([`crate::examples::solve`]); a test ties every chain to them.
 
-pub mod chains;
 pub mod correlation;
 pub mod filters;
 pub mod grade;
-pub mod interest;
-pub mod matching;
 pub mod projection;
 pub mod resampling;
-pub mod transformations;
 
 use crate::error::{Error, Result};
 use crate::examples;
@@ -103,13 +99,9 @@ pub fn specs() -> Vec<Spec> {
             })
         })
         .collect();
-    all.extend(transformations::specs());
     all.extend(correlation::specs());
-    all.extend(matching::specs());
     all.extend(resampling::specs());
     all.extend(filters::specs());
-    all.extend(interest::specs());
-    all.extend(chains::specs());
     all.extend(projection::specs());
     all
 }
