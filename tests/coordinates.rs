@@ -333,67 +333,30 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
     }
 }
 
-/// The steps are data: every step with a formula has its relations, and
-/// every practice box's hints come from a keyed relation (the numbers put
-/// in, the result as `?`, never the answer itself).
-fn steps_are_parts_and_hints_come_from_keyed_relations(
-    topic: &photogrammetry_playground::examples::Topic,
-) {
-    use photogrammetry_playground::examples::drill::value_in;
-    use photogrammetry_playground::practice::{encode, practice};
-    use photogrammetry_playground::solution::num;
-    for e in topic.examples {
-        let mut solutions = vec![solve(e.id, &Record::new()).unwrap()];
-        for v in 0..20 {
-            let p = practice(e.id, Some(&encode(v)), 0).unwrap();
-            let s = solve(e.id, &p.inputs).unwrap();
-            for b in &p.boxes {
-                let numbers = &b.hints.numbers;
-                assert!(numbers.ends_with(r"\;?"), "{} {}: {numbers}", e.id, b.key);
-                let keyed = s
-                    .steps
-                    .iter()
-                    .flat_map(|st| &st.parts)
-                    .any(|r| r.key.is_some() && &r.question_latex() == numbers);
-                assert!(
-                    keyed,
-                    "{} {}: {numbers} is no keyed relation's",
-                    e.id, b.key
-                );
-                assert!(!b.hints.formula.is_empty(), "{} {}", e.id, b.key);
-                let x = value_in(&s, &b.key).unwrap();
-                let shown = num(x);
-                if x.fract() != 0.0 && shown.len() >= 4 {
-                    assert!(!numbers.contains(&shown), "{} {}: {numbers}", e.id, b.key);
-                }
-            }
-            solutions.push(s);
-        }
-        for s in &solutions {
-            for st in &s.steps {
-                if st.formula.is_empty() && st.substituted.is_empty() {
-                    continue;
-                }
-                assert!(
-                    !st.parts.is_empty(),
-                    "{}: step \"{}\" has no parts",
-                    e.id,
-                    st.title
-                );
-                assert!(
-                    st.parts.iter().any(|r| r.key.is_some()),
-                    "{}: step \"{}\" computes no keyed value",
-                    e.id,
-                    st.title
-                );
-            }
-        }
-    }
-}
+mod parts_common;
 
+/// Issue 30, item 2: every step is data (its LaTeX made from its parts) and
+/// every practice box's hints come from the relation keyed with its value.
 #[test]
-fn coordinates_steps_are_data() {
-    steps_are_parts_and_hints_come_from_keyed_relations(
+fn steps_are_data_and_hints_are_keyed() {
+    let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(
         &photogrammetry_playground::examples::coordinates::TOPIC,
+        20,
+    );
+    // every box of the three examples (7 + 4 + 7) shows its numbers
+    assert_eq!(with_numbers, 20 * 18);
+    let s = solve("gsd", &Record::new()).unwrap();
+    assert_eq!(
+        s.steps[2].substituted,
+        r"\text{GSD} = 0.02822222 \times 12631.58 = 356.4912\,\text{mm},\quad \text{GSD} = \frac{356.4912\,\text{mm}}{10} = 35.64912\,\text{cm}"
+    );
+    let s = solve("photo-to-pixel", &Record::new()).unwrap();
+    assert_eq!(
+        s.steps[2].formula,
+        r"\Delta c = \frac{x}{p},\quad \Delta r = -\frac{y}{p}"
+    );
+    assert_eq!(
+        s.steps[2].parts[1].question_latex(),
+        r"\Delta r = -\frac{-25.36}{0.04233333} = \;?"
     );
 }

@@ -87,8 +87,16 @@ fn solve(inputs: &Record) -> Result<Solution> {
                     num(g.pixel_size_mm),
                     num(g.scale_denominator)
                 ))
-                .value(g.gsd_mm, "mm")
-                .result(with_unit(&num(gsd_cm), "cm")),
+                .value(g.gsd_mm, "mm"),
+        )
+        .relation(
+            Relation::new(r"\text{GSD}")
+                .key("gsd_cm")
+                .subst(format!(
+                    r"\frac{{{}}}{{10}}",
+                    with_unit(&num(g.gsd_mm), "mm")
+                ))
+                .value(gsd_cm, "cm"),
         )
         .value("gsd_mm", g.gsd_mm)
         .value("gsd_cm", gsd_cm),
