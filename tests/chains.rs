@@ -892,7 +892,11 @@ fn steps_are_data_and_hints_are_keyed() {
     assert_eq!(code.result[0].0.len(), EX17.len());
     let s = solve("boundary-shape", &Record::new()).unwrap();
     let d = keyed(&s, "diameter");
-    assert!(d.question_latex().starts_with(r"D = \sqrt{("), "{}", d.question_latex());
+    assert!(
+        d.question_latex().starts_with(r"D = \sqrt{("),
+        "{}",
+        d.question_latex()
+    );
     assert_eq!(keyed(&s, "basic_rectangle").result[0].0.len(), 4);
     // the direction numbers are a figure (a grid) and one relation each
     let s = solve("chain-code", &Record::new()).unwrap();

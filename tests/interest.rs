@@ -763,7 +763,10 @@ fn steps_are_data_and_hints_are_keyed() {
     };
     assert_eq!(grid.rows, [["82", "-22.25"], ["-22.25", "114.75"]]);
     let inv = keyed(&s, "n_inverse");
-    assert!(inv.result[0].0.iter().any(|p| matches!(p, Piece::Grid { .. })));
+    assert!(inv.result[0]
+        .0
+        .iter()
+        .any(|p| matches!(p, Piece::Grid { .. })));
     assert_eq!(
         keyed(&s, "det_n").question_latex(),
         r"\det N = 82 \times 114.75 - (-22.25)^2 = \;?"

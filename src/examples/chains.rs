@@ -9,7 +9,9 @@ use super::fields::{Field, Inputs, MAX_DIM, MAX_LEN};
 use super::{Example, Topic};
 use crate::chain::{self, Boundary, Connectivity, Path, Pixel};
 use crate::error::{Error, Result};
-use crate::solution::{exact_minus_printed, num, tex, Form, NoteKind, Record, Relation, Solution, Step, Value};
+use crate::solution::{
+    exact_minus_printed, num, tex, Form, NoteKind, Record, Relation, Solution, Step, Value,
+};
 
 mod boundary_length;
 mod boundary_shape;

@@ -10,7 +10,9 @@ use super::{Example, Topic};
 use crate::error::Result;
 use crate::interest::{Case, Forstner, Measures, Precision, Sums};
 use crate::raster::Grid;
-use crate::solution::{num, tex, with_unit, Form, NoteKind, Record, Relation, Solution, Step, Value};
+use crate::solution::{
+    num, tex, with_unit, Form, NoteKind, Record, Relation, Solution, Step, Value,
+};
 
 mod forstner_image;
 mod forstner_window;
@@ -419,38 +421,38 @@ fn forstner_result(f: &Forstner, p: &Precision) -> Record {
 /// What each result key is, for the page's result table (the three
 /// examples share it).
 const LABELS: &[(&str, &str, &str)] = &[
-        ("gx", "Gradients g′x (interior)", "grey values/px"),
-        ("gy", "Gradients g′y (interior)", "grey values/px"),
-        ("n", "Matrix N", ""),
-        ("det_n", "det N", ""),
-        ("n_inverse", "N⁻¹", ""),
-        ("trace_n_inverse", "trace N⁻¹", ""),
-        ("w", "Weight w = det N / trace N", ""),
-        ("q", "Roundness q = 4 det N / trace² N", ""),
-        ("lambda_min", "Smaller eigenvalue λmin(N)", ""),
-        ("lambda_max_shift", "λmax(Σuv) = σn² / λmin(N)", "px²"),
-        ("accepted", "Accepted: λmax(Σuv) ≤ T²", ""),
-        ("lambda_max", "Larger eigenvalue λmax(N)", ""),
-        ("trace_n", "trace N", ""),
-        ("sigma_max_px", "Error ellipse, major semi-axis", "px"),
-        ("sigma_min_px", "Error ellipse, minor semi-axis", "px"),
-        (
-            "weak_angle_deg",
-            "Direction of the major axis (from +c toward +r)",
-            "°",
-        ),
-        ("case", "Lecture 21's case", ""),
-        ("window", "The window", "grey values"),
-        ("candidates", "Pixels that pass the threshold", ""),
-        ("points", "Interest points [c, r, λmax(Σuv)]", ""),
-        ("sums", "Sums of squared differences", "grey values²"),
-        ("mean", "Measure of distinctness (mean)", "grey values²"),
-        (
-            "differences",
-            "[c, r, g, row, column, main diag., other diag., sum]",
-            "",
-        ),
-    ];
+    ("gx", "Gradients g′x (interior)", "grey values/px"),
+    ("gy", "Gradients g′y (interior)", "grey values/px"),
+    ("n", "Matrix N", ""),
+    ("det_n", "det N", ""),
+    ("n_inverse", "N⁻¹", ""),
+    ("trace_n_inverse", "trace N⁻¹", ""),
+    ("w", "Weight w = det N / trace N", ""),
+    ("q", "Roundness q = 4 det N / trace² N", ""),
+    ("lambda_min", "Smaller eigenvalue λmin(N)", ""),
+    ("lambda_max_shift", "λmax(Σuv) = σn² / λmin(N)", "px²"),
+    ("accepted", "Accepted: λmax(Σuv) ≤ T²", ""),
+    ("lambda_max", "Larger eigenvalue λmax(N)", ""),
+    ("trace_n", "trace N", ""),
+    ("sigma_max_px", "Error ellipse, major semi-axis", "px"),
+    ("sigma_min_px", "Error ellipse, minor semi-axis", "px"),
+    (
+        "weak_angle_deg",
+        "Direction of the major axis (from +c toward +r)",
+        "°",
+    ),
+    ("case", "Lecture 21's case", ""),
+    ("window", "The window", "grey values"),
+    ("candidates", "Pixels that pass the threshold", ""),
+    ("points", "Interest points [c, r, λmax(Σuv)]", ""),
+    ("sums", "Sums of squared differences", "grey values²"),
+    ("mean", "Measure of distinctness (mean)", "grey values²"),
+    (
+        "differences",
+        "[c, r, g, row, column, main diag., other diag., sum]",
+        "",
+    ),
+];
 
 fn singular_notes(s: &mut Solution, m: &Measures) {
     if m.trace == 0.0 {
@@ -465,7 +467,6 @@ fn singular_notes(s: &mut Solution, m: &Measures) {
         ).about(&["det_n", "n_inverse", "trace_n_inverse", "q", "w", "lambda_max_shift"]);
     }
 }
-
 
 // ------------------------------------------------- practice (both Förstner)
 

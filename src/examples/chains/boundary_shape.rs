@@ -85,7 +85,6 @@ const BLOB: [Pixel; 55] = [
     [7, 7],
 ];
 
-
 fn fields() -> Vec<Field> {
     vec![
         pixels_field(
@@ -189,9 +188,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         "Eccentricity",
         "The ratio of the major axis to the minor axis.",
     );
-    let eccentricity = Relation::new("E")
-        .key("eccentricity")
-        .sym(r"\frac{D}{m}");
+    let eccentricity = Relation::new("E").key("eccentricity").sym(r"\frac{D}{m}");
     s.step(match sh.eccentricity {
         Some(x) => ecc_step
             .relation(

@@ -43,7 +43,6 @@ const FROM: &[(&str, &str)] = &[
     ("end", "From the last pixel (the right end)"),
 ];
 
-
 fn fields() -> Vec<Field> {
     let mut fields = edge_fields(EX17_START, &EX17_CODE);
     fields.push(

@@ -72,7 +72,13 @@ pub(super) fn list_form<T>(items: &[T], f: impl Fn(&T) -> String, sep: &str) -> 
         .iter()
         .take(SHOW)
         .enumerate()
-        .map(|(k, x)| if k == 0 { f(x) } else { format!("{sep}{}", f(x)) })
+        .map(|(k, x)| {
+            if k == 0 {
+                f(x)
+            } else {
+                format!("{sep}{}", f(x))
+            }
+        })
         .collect();
     if items.len() > SHOW {
         pieces.push(format!(r"\ldots\ (\text{{{} in all}})", items.len()));
@@ -175,9 +181,8 @@ pub(super) fn numbering_step(conn: Connectivity) -> Step {
     );
     for d in 1..=conn.directions() {
         if let Some((dc, dr)) = conn.step(d) {
-            step = step.relation(
-                Relation::new(format!(r"\Delta({d})")).result(format!("({dc},{dr})")),
-            );
+            step = step
+                .relation(Relation::new(format!(r"\Delta({d})")).result(format!("({dc},{dr})")));
         }
     }
     step
@@ -192,9 +197,7 @@ pub(super) fn code_step(path: &Path, code: &[u8]) -> Step {
             if code.len() == 1 { "" } else { "s" }
         ),
     )
-    .relation(
-        Relation::new("a_k").sym(r"\operatorname{dir}(c_{k+1} - c_k,\ r_{k+1} - r_k)"),
-    )
+    .relation(Relation::new("a_k").sym(r"\operatorname{dir}(c_{k+1} - c_k,\ r_{k+1} - r_k)"))
     .relation(Relation::new("a").key("code").result(digits_form(code)))
     .value("code", digits_value(code))
     .value("pixels", pixel_value(&path.pixels))
