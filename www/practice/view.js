@@ -18,7 +18,7 @@ import { showOverview, showWorksheet } from "./sheets.js";
 import { siteTitle } from "../site.js";
 import { testData } from "../test-hooks.js";
 
-const STYLESHEET = "./practice/practice.css";
+const STYLESHEET = new URL("./practice.css", import.meta.url).href; // (the build gives it its hashed name)
 /** The rungs of a box's hint ladder. */
 const RUNGS = ["A nudge", "The formula", "The formula with this variant's numbers", "The worked step"];
 /** What each verdict says in the badge. */
