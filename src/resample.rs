@@ -99,6 +99,13 @@ impl Bilinear {
     }
 }
 
+/// One linear interpolation, `a + t·(b − a)`, as the seed writes each
+/// stage of bilinear interpolation (practice carries a student's stages
+/// forward with it).
+pub fn lerp(a: f64, b: f64, t: f64) -> f64 {
+    a + t * (b - a)
+}
+
 /// Bilinear interpolation at `(x, y)`. The 2×2 neighbourhood starts at
 /// `([x], [y])`, moved one pixel back on the last column or row so that a
 /// position on the last pixel centre still has one (with `dc` or `dr` = 1).
@@ -118,9 +125,9 @@ pub fn bilinear(img: &Grid, x: f64, y: f64) -> Option<Bilinear> {
         img.get(c, r + 1)?,
         img.get(c + 1, r + 1)?,
     ];
-    let i1 = p[0] + dc * (p[1] - p[0]);
-    let i2 = p[2] + dc * (p[3] - p[2]);
-    let value = i1 + dr * (i2 - i1);
+    let i1 = lerp(p[0], p[1], dc);
+    let i2 = lerp(p[2], p[3], dc);
+    let value = lerp(i1, i2, dr);
     Some(Bilinear {
         c,
         r,

@@ -1019,3 +1019,57 @@ fn central_difference_kernels_equal_the_forstner_operators_gradients() {
         }
     }
 }
+
+// ---------------------------------------------------------------- issue 30
+
+mod parts_common;
+
+/// Issue 30, item 2: every step is data (its LaTeX made from its parts) and
+/// every practice box's hints come from the relation keyed with its value.
+#[test]
+fn resampling_steps_are_data_and_hints_are_keyed() {
+    let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(
+        &photogrammetry_playground::examples::resampling::TOPIC,
+        10,
+    );
+    // nearest, I1, I2, I and the bicubic value: in every variant
+    assert_eq!(with_numbers, 10 * 5);
+    let s = solve("resample", &Record::new()).unwrap();
+    let st = s
+        .steps
+        .iter()
+        .find(|st| st.title.contains("between the rows"))
+        .unwrap();
+    assert_eq!(st.formula, r"I = I_1 + dr\,(I_2 - I_1)");
+    assert_eq!(
+        st.substituted,
+        r"I = 75.08 + 0.24\,(76.24 - 75.08) = 75.3584,\quad I \approx 75"
+    );
+    // the bicubic value: the row weights times the weighted rows of P
+    let s = solve(
+        "resample",
+        &Record::new().with("c", 546.44).with("r", 818.24),
+    )
+    .unwrap();
+    let st = s
+        .steps
+        .iter()
+        .find(|st| st.title.contains("4×4 product"))
+        .unwrap();
+    let q = st
+        .parts
+        .iter()
+        .find(|r| r.key.as_deref() == Some("bicubic"))
+        .unwrap();
+    assert!(
+        q.question_latex().starts_with(r"Q = [-0.1"),
+        "{}",
+        q.question_latex()
+    );
+    assert!(
+        st.substituted
+            .starts_with(r"P = \begin{bmatrix}68 & 64 & 72 & 79 \\"),
+        "{}",
+        st.substituted
+    );
+}

@@ -16,7 +16,6 @@ pub mod correlation;
 pub mod filters;
 pub mod grade;
 pub mod projection;
-pub mod resampling;
 
 use crate::error::{Error, Result};
 use crate::examples;
@@ -100,7 +99,6 @@ pub fn specs() -> Vec<Spec> {
         })
         .collect();
     all.extend(correlation::specs());
-    all.extend(resampling::specs());
     all.extend(filters::specs());
     all.extend(projection::specs());
     all
