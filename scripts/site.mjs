@@ -312,7 +312,10 @@ export async function buildSite(stage, dist) {
   const used = new Set(Object.keys(map));
   for (const o of outputs.values()) for (const i of Object.keys(o.inputs)) used.add(posix(path.relative(stage, path.resolve(i.replace(/^[a-z-]+:/, "")).replace(/\?.*$/, ""))));
   for (const f of walk(stage)) {
-    if (used.has(f) || (/\.(m?js|css|html|json)$/.test(f) && !f.startsWith("vendor/"))) continue;
+    if (f.endsWith(".css") && !used.has(f) && !f.startsWith("vendor/")) {
+      throw new Error(`site: ${f} is loaded by nothing the build sees: name it in a page's <link> or by new URL("…", import.meta.url) in the module that loads it`);
+    }
+    if (used.has(f) || (/\.(m?js|html|json)$/.test(f) && !f.startsWith("vendor/"))) continue;
     let bytes = fs.readFileSync(path.join(stage, f));
     // KaTeX's fonts: text shows at once in a fallback font; only the woff2 files are shipped
     if (f.endsWith(".css")) bytes = String(bytes).replace(/font-display:\s*block/g, "font-display:swap").replace(/,\s*url\([^)]*\.(?:woff|ttf)\)\s*format\("[a-z]+"\)/g, "");

@@ -101,7 +101,8 @@ describe("the built dist/", () => {
     for (const f of served.filter((f) => /\.m?js$/.test(f) && !f.startsWith("vendor/"))) {
       const source = read(f);
       // relative paths to a file of ours: import specifiers, the names esbuild wrote for emitted files
-      const refs = [...source.matchAll(/["'`]((?:\.{1,2}\/)[\w@~.\/-]+\.(?:m?js|wasm|css|json|woff2?|png|jpe?g|svg))["'`]/g)].map((m) => m[1]);
+      // (not a key of the wasm's import object: { "./x_bg.js": import0 })
+      const refs = [...source.matchAll(/["'`]((?:\.{1,2}\/)[\w@~.\/-]+\.(?:m?js|wasm|css|json|woff2?|png|jpe?g|svg))["'`](?!\s*:)/g)].map((m) => m[1]);
       for (const ref of refs) check(f, ref);
     }
     for (const f of served.filter((f) => f.endsWith(".css"))) {
