@@ -113,8 +113,9 @@ fn connectivity_field() -> Field {
 const PIXEL_MODES: &[&str] = &["pixels", "region"];
 const CODE_MODE: &[&str] = &["code"];
 
-/// The fields of an edge given by pixels or by a code (chain-code and
-/// boundary-length): the seed's edge is the one `code` walks from `start`.
+/// The fields of an edge given by pixels or by a code (the chain code's
+/// and the boundary length's): the seed's edge is the one `code` walks
+/// from `start`.
 fn edge_fields(start: Pixel, code: &[u8]) -> Vec<Field> {
     vec![
         given_field("pixels"),

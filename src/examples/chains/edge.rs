@@ -464,7 +464,8 @@ pub(super) fn set_shape(result: &mut Record, sh: &chain::Shape) {
 }
 
 /// One step with the descriptors of a closed boundary, for the examples
-/// whose subject is the code or the length (`boundary-shape` has a step each).
+/// whose subject is the code or the length (the boundary descriptors
+/// example has a step each).
 pub(super) fn shape_summary_step(sh: &chain::Shape) -> Step {
     let [a, b] = sh.major_axis;
     let e = sh
