@@ -94,7 +94,7 @@ impl Template {
     /// Prepares `values` (non-empty, finite; `field` names them in errors).
     pub fn new(field: &str, values: &[f64]) -> Result<Self> {
         check_values(field, values)?;
-        let mean = values.iter().sum::<f64>() / values.len() as f64;
+        let mean = mean(values);
         let dev: Vec<f64> = values.iter().map(|a| a - mean).collect();
         let sum_da2 = dev.iter().map(|d| d * d).sum();
         Ok(Template {
@@ -131,13 +131,7 @@ impl Template {
     {
         let n = self.values.len();
         let mean_b = window.clone().sum::<f64>() / n as f64;
-        let mut sum_dadb = 0.0;
-        let mut sum_db2 = 0.0;
-        for (da, b) in self.dev.iter().zip(window) {
-            let db = b - mean_b;
-            sum_dadb += da * db;
-            sum_db2 += db * db;
-        }
+        let (sum_dadb, sum_db2) = cross_sums(self.dev.iter().copied(), window, mean_b);
         let mut out = Ncc {
             n,
             mean_a: self.mean,
@@ -148,13 +142,49 @@ impl Template {
             rho: None,
         };
         if out.flat() == Flat::Neither {
-            let denom = (self.sum_da2 * sum_db2).sqrt();
-            if denom > 0.0 {
-                out.rho = Some((sum_dadb / denom).clamp(-1.0, 1.0));
+            let rho = rho_of_sums(sum_dadb, self.sum_da2, sum_db2);
+            if rho.is_finite() {
+                out.rho = Some(rho.clamp(-1.0, 1.0));
             }
         }
         out
     }
+}
+
+/// `Σ ΔA·(B−B̄)` and `Σ (B−B̄)²` over deviations `da` of A and values `b`.
+fn cross_sums(
+    da: impl Iterator<Item = f64>,
+    b: impl Iterator<Item = f64>,
+    mean_b: f64,
+) -> (f64, f64) {
+    let (mut sum_dadb, mut sum_db2) = (0.0, 0.0);
+    for (da, b) in da.zip(b) {
+        let db = b - mean_b;
+        sum_dadb += da * db;
+        sum_db2 += db * db;
+    }
+    (sum_dadb, sum_db2)
+}
+
+/// The mean of `xs` (0 for none).
+pub fn mean(xs: &[f64]) -> f64 {
+    xs.iter().sum::<f64>() / xs.len().max(1) as f64
+}
+
+/// The three sums of a correlation coefficient about means that are
+/// given, not computed: `[Σ(A−Ā)(B−B̄), Σ(A−Ā)², Σ(B−B̄)²]` (a stage of
+/// [`ncc`]: what practice carries a student's rounded or wrong means
+/// through; means 0 give the sums of the plain grey values).
+pub fn sums_about(a: &[f64], mean_a: f64, b: &[f64], mean_b: f64) -> [f64; 3] {
+    let da = a.iter().map(|x| x - mean_a);
+    let (sum_dadb, sum_db2) = cross_sums(da.clone(), b.iter().copied(), mean_b);
+    [sum_dadb, da.map(|d| d * d).sum(), sum_db2]
+}
+
+/// `ρ = Σ(A−Ā)(B−B̄) / √(Σ(A−Ā)² · Σ(B−B̄)²)` from its three sums (the last
+/// stage of [`ncc`]; not finite when a sum of squares is 0).
+pub fn rho_of_sums(sum_dadb: f64, sum_da2: f64, sum_db2: f64) -> f64 {
+    sum_dadb / (sum_da2 * sum_db2).sqrt()
 }
 
 fn check_values(field: &str, values: &[f64]) -> Result<()> {
@@ -168,6 +198,21 @@ fn check_values(field: &str, values: &[f64]) -> Result<()> {
         ));
     }
     Ok(())
+}
+
+/// Where both slopes of `ρ = a0 + a1·x + a2·y + a3·x·y + a4·x² + a5·y²`
+/// are zero: `[2a4 a3; a3 2a5]·[x y]ᵀ = −[a1 a2]ᵀ` by Cramer's rule
+/// (`None` when the determinant `4·a4·a5 − a3²` is 0). A stage of
+/// [`quadric_peak`], for coefficients given (printed, or a student's).
+pub fn stationary(a: &[f64; 6]) -> Option<[f64; 2]> {
+    let det = 4.0 * a[4] * a[5] - a[3] * a[3];
+    if det == 0.0 {
+        return None;
+    }
+    Some([
+        (-a[1] * 2.0 * a[5] + a[2] * a[3]) / det,
+        (-a[2] * 2.0 * a[4] + a[1] * a[3]) / det,
+    ])
 }
 
 /// The correlation coefficient of two equal-length arrays `a` and `b`
@@ -565,9 +610,7 @@ pub fn quadric_peak(c: [f64; 3], r: [f64; 3], rho: [[f64; 3]; 3]) -> Result<Quad
     let extremum = if flat || det.abs() <= DEGENERATE * scale || scale == 0.0 {
         Extremum::Degenerate
     } else {
-        // [2b4 b3; b3 2b5]·[u v]ᵀ = −[b1 b2]ᵀ by Cramer's rule
-        let u = (-b[1] * 2.0 * b[5] + b[2] * b[3]) / det;
-        let v = (-b[2] * 2.0 * b[4] + b[1] * b[3]) / det;
+        let [u, v] = stationary(&b).unwrap_or([0.0, 0.0]);
         let value = b[0] + b[1] * u + b[2] * v + b[3] * u * v + b[4] * u * u + b[5] * v * v;
         let at = [cm + u, rm + v];
         if det < 0.0 {

@@ -4,6 +4,8 @@
 //! neighbourhoods and every bad-input class.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod parts_common;
+
 use photogrammetry_playground::correlation::{
     correlate_1d, correlate_2d, ncc, ncc_grid, parabola_peak, quadric_peak, Extremum,
 };
@@ -924,4 +926,55 @@ fn a_64_by_64_search_array_and_a_long_1d_search_solve() {
     .unwrap();
     assert_eq!(num(result(&s, "best")), 1001.0);
     assert_eq!(s.steps.len(), 2 + 12 + 1 + 2);
+}
+
+// ------------------------------------------------------------ steps as data
+
+/// Every step with a formula has parts (its LaTeX made from them), and
+/// every practice box's hint comes from the relation keyed with the box's
+/// value (`tests/parts_common`); in "exact" mode too, and no relation has
+/// nothing on its right (it would print its left-hand side alone).
+#[test]
+fn steps_are_data_and_practice_hints_come_from_keyed_relations() {
+    use photogrammetry_playground::examples::correlation::{EXAMPLES, TOPIC};
+    let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(&TOPIC, 5);
+    // every box but "best" (its relation has no numbers to put in)
+    assert!(with_numbers >= 5 * (22 + 6 - 1), "{with_numbers}");
+    let exact = Record::new().with("rho_from", "exact");
+    for e in EXAMPLES {
+        for s in [e.run(&Record::new()), e.run(&exact)].into_iter().flatten() {
+            for step in &s.steps {
+                assert!(
+                    step.formula.is_empty() || !step.parts.is_empty(),
+                    "{}: \"{}\"",
+                    e.id,
+                    step.title
+                );
+                for r in &step.parts {
+                    assert!(
+                        !(r.symbolic.is_empty() && r.substituted.is_empty() && r.result.is_empty()),
+                        "{}: \"{}\" has an empty relation",
+                        e.id,
+                        step.title
+                    );
+                }
+            }
+        }
+    }
+    // the ρ of Example 6 as data: symbols, the numbers put in, the result
+    let s = solve("ncc-2d", &Record::new()).unwrap();
+    let rho = s
+        .steps
+        .iter()
+        .flat_map(|st| &st.parts)
+        .find(|r| r.key.as_deref() == Some("rho"))
+        .unwrap();
+    assert_eq!(
+        rho.substituted_latex(),
+        r"\rho = \frac{1149.222}{\sqrt{843.5556 \times 2604.889}} = 0.7752693"
+    );
+    assert_eq!(
+        rho.question_latex(),
+        r"\rho = \frac{1149.222}{\sqrt{843.5556 \times 2604.889}} = \;?"
+    );
 }

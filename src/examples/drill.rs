@@ -224,3 +224,23 @@ pub fn mat(rows: &[Vec<f64>]) -> Value {
 pub fn or_given(given: &Record, key: &str, exact: f64) -> f64 {
     given.number(key).unwrap_or(exact)
 }
+
+/// The numbers of list input `key` of a drawn variant (empty when it has
+/// none): the lenient form of [`Inputs::list`](super::fields::Inputs::list)
+/// for boxes and mistakes, whose inputs the generator made.
+pub fn list(inputs: &Record, key: &str) -> Vec<f64> {
+    super::fields::Inputs(inputs).list(key).unwrap_or_default()
+}
+
+/// The rows of matrix input `key` of a drawn variant (empty when it has
+/// none); see [`list`].
+pub fn rows_of(inputs: &Record, key: &str) -> Vec<Vec<f64>> {
+    super::fields::Inputs(inputs).rows(key).unwrap_or_default()
+}
+
+/// A matrix with rows and columns swapped (a short row counts as zeros).
+pub fn transpose(m: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    (0..m.first().map_or(0, Vec::len))
+        .map(|j| m.iter().map(|r| r.get(j).copied().unwrap_or(0.0)).collect())
+        .collect()
+}

@@ -1,7 +1,7 @@
 //! Practice for seed 000, Examples 15–16 and seed 004: a kernel applied to
 //! a window, and edge operators.
 
-use super::correlation::{rows_of, transpose};
+use crate::examples::drill::{rows_of, transpose};
 use super::grade::tol;
 use super::{mat, or_given, pick, value_in, BoxDef, Mistake, Rng, Spec};
 use crate::error::Result;

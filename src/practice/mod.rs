@@ -12,7 +12,6 @@
 //! - The expected values are the solver's own results
 //!   ([`crate::examples::solve`]); a test ties every chain to them.
 
-pub mod correlation;
 pub mod filters;
 pub mod grade;
 pub mod projection;
@@ -98,7 +97,6 @@ pub fn specs() -> Vec<Spec> {
             })
         })
         .collect();
-    all.extend(correlation::specs());
     all.extend(filters::specs());
     all.extend(projection::specs());
     all

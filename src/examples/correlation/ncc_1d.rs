@@ -1,37 +1,74 @@
 //! Example 5: the 1-D correlation coefficient of a template with every sub-window of a search array.
 
 use super::*;
+use crate::correlation::{correlate_1d, mean};
+use crate::examples::drill::{list, nums, or_given, tol, BoxDef, Drill, Mistake};
+use crate::examples::fields::{is_seed, MAX_LEN};
+use crate::solution::{exact_minus_printed, fmt_sig, NoteKind, Solution};
 
-pub(super) fn ncc_1d(inputs: &Record) -> Result<Solution> {
-    let template = list(inputs, "template")?;
-    let search = list(inputs, "search")?;
+/// Example 5's ρ as the seed prints them.
+const EX5_PRINTED: [f64; 6] = [-0.5, -0.59, -0.09, 0.69, 0.97, 0.37];
+
+pub const EXAMPLE: Example = Example {
+    id: "ncc-1d",
+    title: "1-D correlation matching",
+    source: "Worked examples, Example 5",
+    summary: "The normalized correlation coefficient of a template with every sub-window of a 1-D search array, and the best match.",
+    fields,
+    solve,
+    answer: &["best", "best_c"],
+    labels: LABELS,
+    lab: None,
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+fn fields() -> Vec<Field> {
+    vec![
+        Field::vector("template", "Template A", (2, MAX_LEN), &EX5_TEMPLATE)
+            .help("The pattern to find: at least 2 grey values."),
+        Field::vector("search", "Search array", (2, MAX_LEN), &EX5_SEARCH)
+            .help("Grey values to search in; at least as long as the template."),
+    ]
+}
+
+fn solve(inputs: &Record) -> Result<Solution> {
+    let i = Inputs(inputs);
+    let template = i.list("template")?;
+    let search = i.list("search")?;
     let profile = correlate_1d(&template, &search)?;
     let n = template.len();
-    let mut s = Solution::new("ncc-1d", "1-D correlation matching", inputs.clone());
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     let first = profile.windows.first().copied();
     let (mean_a, sum_da2) = first.map_or((0.0, 0.0), |w| (w.mean_a, w.sum_da2));
 
+    let [sum, mean_rel] = mean_relations(
+        r"\sum A_j",
+        r"\bar A",
+        r"\frac{1}{n}\sum A_j",
+        "mean_template",
+        &template,
+        mean_a,
+    );
     s.step(
         Step::new(
             "Template mean",
             "The mean of the template's grey values, and the sum of its squared deviations from it (the same for every sub-window).",
         )
-        .formula(
-            r"\bar A = \frac{1}{n}\sum A_j,\quad \sum (A_j - \bar A)^2",
-            format!(
-                r"{},\quad \sum (A_j - \bar A)^2 = {} = {}",
-                tex_mean(r"\sum A_j", r"\bar A", &template, mean_a),
-                tex_dev_terms(&template, mean_a, None),
-                num(sum_da2)
-            ),
-        )
+        .relation(sum)
+        .relation(mean_rel)
+        .relation(squares_relation("A", "A_j", "sum_da2", &template, mean_a, sum_da2))
         .value("mean_template", mean_a)
         .value("sum_da2", sum_da2),
     );
 
     let count = profile.windows.len();
     let starts: Vec<f64> = (1..=count).map(|k| k as f64).collect();
-    let half = (n as f64 - 1.0) / 2.0;
+    let half = half(n);
     let centres: Vec<f64> = starts.iter().map(|k| k + half).collect();
     s.step(
         Step::new(
@@ -44,9 +81,11 @@ pub(super) fn ncc_1d(inputs: &Record) -> Result<Solution> {
                 num(half)
             ),
         )
-        .formula(
-            r"K = N - n + 1",
-            format!("K = {} - {n} + 1 = {count}", search.len()),
+        .relation(
+            Relation::new("K")
+                .sym("N - n + 1")
+                .subst(format!("{} - {n} + 1", search.len()))
+                .value(count as f64, ""),
         )
         .value("starts", Value::numbers(&starts))
         .value("centres", Value::numbers(&centres)),
@@ -66,48 +105,41 @@ pub(super) fn ncc_1d(inputs: &Record) -> Result<Solution> {
         let mut text = format!(
             "B_{} = {}: its mean, then the correlation coefficient with the template.",
             k + 1,
-            tex_list(sub).replace(r",\ ", ", ")
+            plain_list(sub)
         );
         let flat = flat_text(w, "The template", &format!("B_{}", k + 1));
         if !flat.is_empty() {
             text = format!("{text} {flat}");
         }
+        let [sum, mean_rel] = mean_relations(
+            &format!(r"\sum B_{{{}}}", k + 1),
+            &format!(r"\bar B_{{{}}}", k + 1),
+            r"\frac{1}{n}\sum B_j",
+            "mean_b",
+            sub,
+            w.mean_b,
+        );
         let step = Step::new(&format!("Sub-window {}", k + 1), &text)
-            .formula(
-                &format!(
-                    r"\bar B_{{{0}}} = \frac{{1}}{{n}}\sum B_j,\quad {RHO_SYMBOLIC}",
-                    k + 1
-                ),
-                format!(
-                    r"{},\quad {}",
-                    tex_mean(
-                        &format!(r"\sum B_{{{}}}", k + 1),
-                        &format!(r"\bar B_{{{}}}", k + 1),
-                        sub,
-                        w.mean_b
-                    ),
-                    tex_rho_chain(&format!(r"\rho_{{{}}}", k + 1), &template, sub, w)
-                ),
-            )
-            .value("k", (k + 1) as f64)
-            .value("start", (k + 1) as f64)
-            .value("centre", k as f64 + 1.0 + half)
-            .value("window", Value::numbers(sub));
+            .relation(sum)
+            .relation(mean_rel);
+        let step = rho_chain(
+            step,
+            AB_1D,
+            &format!(r"\rho_{{{}}}", k + 1),
+            &template,
+            sub,
+            w,
+        )
+        .value("k", (k + 1) as f64)
+        .value("start", (k + 1) as f64)
+        .value("centre", k as f64 + 1.0 + half)
+        .value("window", Value::numbers(sub));
         s.step(ncc_values(step, w));
     }
 
     let means: Vec<f64> = profile.windows.iter().map(|w| w.mean_b).collect();
     let rhos: Vec<Option<f64>> = profile.windows.iter().map(|w| w.rho).collect();
     let rho_tex: Vec<String> = rhos.iter().map(|r| rho_text(*r)).collect();
-    let shown = if rho_tex.len() > 2 * MAX_TERMS {
-        format!(
-            r"{},\ \dots,\ {}",
-            rho_tex[..MAX_TERMS].join(r",\ "),
-            rho_tex[rho_tex.len() - 1]
-        )
-    } else {
-        rho_tex.join(r",\ ")
-    };
     let mut all = Step::new(
         "All positions",
         &format!(
@@ -121,7 +153,11 @@ pub(super) fn ncc_1d(inputs: &Record) -> Result<Solution> {
             }
         ),
     )
-    .formula(r"\rho_k,\ k = 1 \dots K", format!(r"\rho = [{shown}]"))
+    .relation(
+        Relation::new(r"\rho")
+            .sym(r"[\rho_1, \dots, \rho_K]")
+            .result(list_form(&rho_tex)),
+    )
     .value("mean_subwindows", Value::numbers(&means))
     .value("rho", opt_list(rhos.iter().copied()))
     .value(
@@ -147,9 +183,19 @@ pub(super) fn ncc_1d(inputs: &Record) -> Result<Solution> {
                     num(b as f64 + 1.0 + half)
                 ),
             )
-            .formula(
-                r"k^* = \arg\max_k \rho_k",
-                format!(r"k^* = {},\quad \rho_{{{}}} = {}", b + 1, b + 1, num(r)),
+            .relation(
+                Relation::new("k^*")
+                    .key("best")
+                    .sym(r"\arg\max_k \rho_k")
+                    .value((b + 1) as f64, ""),
+            )
+            .relation(Relation::new(format!(r"\rho_{{{}}}", b + 1)).value(r, ""))
+            .relation(
+                Relation::new("c")
+                    .key("best_c")
+                    .sym(r"k^* + \tfrac{n - 1}{2}")
+                    .subst(format!("{} + {}", b + 1, num(half)))
+                    .value(b as f64 + 1.0 + half, "px"),
             )
             .value("best", (b + 1) as f64)
             .value("best_c", b as f64 + 1.0 + half),
@@ -177,14 +223,13 @@ pub(super) fn ncc_1d(inputs: &Record) -> Result<Solution> {
         ),
     ).about(&["centres", "best_c", "best"]);
     flat_notes_1d(&mut s, &profile);
-    if is_seed(&ncc_1d_fields(), inputs) {
+    if is_seed(&fields(), inputs) {
         seed_notes_5(&mut s, &profile);
     }
-    label_results(&mut s);
     Ok(s)
 }
 
-pub(super) fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
+fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
     let Some(first) = profile.windows.first() else {
         return;
     };
@@ -231,7 +276,7 @@ pub(super) fn flat_notes_1d(s: &mut Solution, profile: &correlation::Profile) {
     }
 }
 
-pub(super) fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
+fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
     s.textbook = Some(
         Record::new()
             .with("mean_template", 4.57)
@@ -284,4 +329,111 @@ pub(super) fn seed_notes_5(s: &mut Solution, profile: &correlation::Profile) {
             fmt_sig(round_to(r5, 2), 2)
         ),
     ).about(&["rho", "best"]);
+}
+
+// ---------------------------------------------------------------- practice
+
+/// Template length and number of sub-windows of the variants.
+const N_T: usize = 7;
+const WINDOWS: usize = 5;
+
+/// A bump like the seed's template (1 2 9 9 8 2 1): distinct values rising
+/// to a peak and falling, so no shifted copy of it looks like it.
+fn bump(rng: &mut Rng) -> Vec<f64> {
+    let mut pool: Vec<f64> = (0..10).map(f64::from).collect();
+    let mut v = Vec::new();
+    for _ in 0..N_T {
+        let k = rng.int(0, pool.len() as i64 - 1) as usize;
+        v.push(pool.remove(k));
+    }
+    let peak = rng.int(2, N_T as i64 - 3) as usize;
+    v.sort_by(|a, b| a.total_cmp(b));
+    // Every other value goes up the left flank, the rest down the right.
+    let top = v.pop().unwrap_or(9.0);
+    let (mut left, mut right) = (Vec::new(), Vec::new());
+    for (i, x) in v.into_iter().enumerate() {
+        if (i % 2 == 0 && left.len() < peak) || right.len() >= N_T - 1 - peak {
+            left.push(x);
+        } else {
+            right.push(x);
+        }
+    }
+    right.reverse();
+    left.push(top);
+    left.extend(right);
+    left
+}
+
+fn generate(rng: &mut Rng) -> Record {
+    let t = bump(rng);
+    let mut s = textured(rng, N_T + WINDOWS - 1);
+    // The template, brightened, at a random place: the best match (ρ = 1,
+    // as brightness does not change ρ).
+    let at = rng.int(0, WINDOWS as i64 - 1) as usize;
+    let gain = rng.num(0, 3);
+    for (k, v) in t.iter().enumerate() {
+        s[at + k] = v + gain;
+    }
+    Record::new()
+        .with("template", nums(&t))
+        .with("search", nums(&s))
+}
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    let mut b = vec![
+        BoxDef::new("mean_template", "Template mean Ā", None, tol::GREY)
+            .nudge("Add the template's grey values and divide by how many there are."),
+    ];
+    for k in 1..=WINDOWS {
+        b.push(
+            BoxDef::new(&format!("rho[{k}]"), &format!("ρ at sub-window {k}"), None, tol::RHO)
+                .nudge("Subtract each mean, then: sum of products over the root of the product of the sums of squares.")
+                .sign_flip(RHO_FLIP),
+        );
+    }
+    b.push(
+        BoxDef::new("best", "Best sub-window (from 1)", None, tol::WHOLE)
+            .nudge("The sub-window with the largest ρ."),
+    );
+    b
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let (t, s) = (list(i, "template"), list(i, "search"));
+    let ma = or_given(g, "mean_template", mean(&t));
+    let mut out = Record::new().with("mean_template", ma);
+    let mut best = (0usize, f64::NEG_INFINITY);
+    for k in 1..=WINDOWS {
+        let key = format!("rho[{k}]");
+        let w = s.get(k - 1..k - 1 + t.len()).unwrap_or(&[]);
+        let rho = or_given(g, &key, rho_about(&t, ma, w, mean(w)));
+        if rho > best.1 {
+            best = (k, rho);
+        }
+        out.set(&key, rho);
+    }
+    out.set("best", or_given(g, "best", best.0 as f64));
+    Ok(out)
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let (t, s) = (list(i, "template"), list(i, "search"));
+    let mut out = Vec::new();
+    for k in 1..=WINDOWS {
+        let w = s.get(k - 1..k - 1 + t.len()).unwrap_or(&[]);
+        out.push(Mistake::new(
+            &format!("rho[{k}]"),
+            "mean not subtracted",
+            "ρ compares the deviations from the means: subtract Ā from the template and B̄ from the sub-window first.",
+            rho_about(&t, 0.0, w, 0.0),
+        ));
+    }
+    let best = chain(i, &Record::new())?.number("best").unwrap_or(0.0);
+    out.push(Mistake::new(
+        "best",
+        "counted from 0",
+        "The seed counts the sub-windows from 1.",
+        best - 1.0,
+    ));
+    Ok(out)
 }

@@ -1,10 +1,47 @@
 //! Example 8: the subpixel peak of a parabola through three correlation coefficients.
 
 use super::*;
+use crate::correlation::{correlate_1d, parabola_peak, Extremum, Parabola};
+use crate::examples::drill::Tolerance;
+use crate::examples::drill::{list, nums, or_given, tol, value_in, BoxDef, Drill, Mistake};
+use crate::examples::fields::is_seed;
+use crate::solution::{fmt_sig, NoteKind, Solution};
+
+pub const EXAMPLE: Example = Example {
+    id: "subpixel-1d",
+    title: "Subpixel peak in 1-D",
+    source: "Worked examples, Example 8",
+    summary: "A parabola through the best correlation coefficient and its two neighbours, and the location of its maximum.",
+    fields,
+    solve,
+    answer: &["c_max"],
+    labels: LABELS,
+    lab: None,
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+fn fields() -> Vec<Field> {
+    vec![
+        Field::vector("positions", "Positions c", (3, 3), &[7.0, 8.0, 9.0])
+            .help("Centre columns of the best sub-window and its two neighbours.")
+            .when("rho_from", PRINTED),
+        Field::vector("rho", "Correlation coefficients ρ", (3, 3), &[0.69, 0.97, 0.37])
+            .help("ρ at the three positions (the printed values of Example 5).")
+            .when("rho_from", PRINTED),
+        rho_from_field(
+            "“Printed” uses the positions and ρ above; “Exact” takes them from Example 5's arrays computed exactly (the fields above are then not used).",
+        ),
+    ]
+}
 
 /// Example 5 computed exactly: positions (sub-window centres) and ρ of the
 /// best sub-window and its two neighbours, and the best index.
-pub(super) fn example_5_exact() -> Result<([f64; 3], [f64; 3], usize)> {
+fn example_5_exact() -> Result<([f64; 3], [f64; 3], usize)> {
     let profile = correlate_1d(&EX5_TEMPLATE, &EX5_SEARCH)?;
     let half = half(EX5_TEMPLATE.len());
     let best = profile.best.unwrap_or(0);
@@ -27,18 +64,10 @@ pub(super) fn example_5_exact() -> Result<([f64; 3], [f64; 3], usize)> {
     }
 }
 
-pub(super) fn extremum_name(e: &Extremum) -> &'static str {
-    match e {
-        Extremum::Maximum { .. } => "maximum",
-        Extremum::Minimum { .. } => "minimum",
-        Extremum::Saddle { .. } => "saddle",
-        Extremum::Degenerate => "none",
-    }
-}
-
-pub(super) fn subpixel_1d(inputs: &Record) -> Result<Solution> {
-    let exact_mode = text(inputs, "rho_from")? == "exact";
-    let mut s = Solution::new("subpixel-1d", "Subpixel peak in 1-D", inputs.clone());
+fn solve(inputs: &Record) -> Result<Solution> {
+    let i = Inputs(inputs);
+    let exact_mode = i.text("rho_from")? == "exact";
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     let (x, y) = if exact_mode {
         let (x, y, best) = example_5_exact()?;
         s.step(
@@ -52,27 +81,22 @@ pub(super) fn subpixel_1d(inputs: &Record) -> Result<Solution> {
                     best + 2
                 ),
             )
-            .formula(
-                r"(c_i, \rho_i)",
-                format!(
-                    r"({}, {}),\ ({}, {}),\ ({}, {})",
-                    num(x[0]),
-                    num(y[0]),
-                    num(x[1]),
-                    num(y[1]),
-                    num(x[2]),
-                    num(y[2])
-                ),
+            .relation(
+                Relation::new("c")
+                    .key("positions")
+                    .sym(r"k + \tfrac{n - 1}{2}")
+                    .result(list_form(&x.map(num))),
+            )
+            .relation(
+                Relation::new(r"\rho")
+                    .key("rho")
+                    .sym(r"\rho_k")
+                    .result(list_form(&y.map(num))),
             )
             .value("positions", Value::numbers(&x))
             .value("rho", Value::numbers(&y)),
         );
-        let defaults = subpixel_1d_fields();
-        let changed = ["positions", "rho"].iter().any(|k| {
-            defaults
-                .iter()
-                .any(|f| f.key == *k && inputs.get(k) != Some(&f.default))
-        });
+        let changed = changed(&fields(), inputs, &["positions", "rho"]);
         if changed {
             s.note(
                 NoteKind::Warning,
@@ -82,8 +106,8 @@ pub(super) fn subpixel_1d(inputs: &Record) -> Result<Solution> {
         (x, y)
     } else {
         (
-            three("positions", &list(inputs, "positions")?)?,
-            three("rho", &list(inputs, "rho")?)?,
+            three("positions", &i.list("positions")?)?,
+            three("rho", &i.list("rho")?)?,
         )
     };
     let p = parabola_peak(x, y)?;
@@ -107,14 +131,12 @@ pub(super) fn subpixel_1d(inputs: &Record) -> Result<Solution> {
                     "How far the peak moves",
                     "The same parabola through the printed ρ (0.69, 0.97, 0.37) peaks elsewhere; the difference is what the printed ρ4 = 0.69 (exact 0.6731) and the rounding cost.",
                 )
-                .formula(
-                    r"\Delta c = c_{\max}^{\text{exact}} - c_{\max}^{\text{printed}}",
-                    format!(
-                        r"\Delta c = {} - {} = {}\ \text{{px}}",
-                        num(ce),
-                        num(cp),
-                        num(ce - cp)
-                    ),
+                .relation(
+                    Relation::new(r"\Delta c")
+                        .key("peak_shift")
+                        .sym(r"c_{\max}^{\text{exact}} - c_{\max}^{\text{printed}}")
+                        .subst(format!("{} - {}", num(ce), tex(cp)))
+                        .value(ce - cp, "px"),
                 )
                 .value("c_max_printed_rho", cp)
                 .value("peak_shift", ce - cp),
@@ -127,7 +149,7 @@ pub(super) fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             "ρ comes from Example 5's arrays computed exactly, not from the values the course notes print; the printed values shown beside are the course notes' answer from their printed ρ.",
         ).about(&["coefficients", "c_max"]);
     }
-    let seed = is_seed(&subpixel_1d_fields(), inputs);
+    let seed = is_seed(&fields(), inputs);
     if seed || exact_mode {
         s.textbook = Some(
             Record::new()
@@ -169,44 +191,33 @@ pub(super) fn subpixel_1d(inputs: &Record) -> Result<Solution> {
             ).about(&["rho"]);
         }
     }
-    label_results(&mut s);
     Ok(s)
 }
 
-pub(super) fn peak_value(e: &Extremum) -> Option<f64> {
-    match e {
-        Extremum::Maximum { value, .. } => Some(*value),
-        _ => None,
-    }
-}
-
-pub(super) fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
+fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
     let a: Vec<Vec<f64>> = x.iter().map(|c| vec![1.0, *c, c * c]).collect();
-    let eqs: Vec<String> = x
-        .iter()
-        .zip(&y)
-        .map(|(c, r)| {
-            format!(
-                r"{} = a_0 + a_1 ({}) + a_2 ({})^2",
-                num(*r),
-                num(*c),
-                num(*c)
-            )
-        })
-        .collect();
+    let mut step = Step::new(
+        "Three equations",
+        "A 2nd-order polynomial ρ(c) = a0 + a1·c + a2·c² through the best ρ and its two neighbours: one equation per position, in matrix form A·X = L.",
+    );
+    for (k, (c, r)) in x.iter().zip(&y).enumerate() {
+        let rel = Relation::new(format!(r"\rho_{}", k + 1));
+        let rel = if k == 0 {
+            rel.sym(r"a_0 + a_1 c_1 + a_2 c_1^2")
+        } else {
+            rel
+        };
+        step = step.relation(
+            rel.subst(format!(r"a_0 + a_1 ({}) + a_2 ({})^2", num(*c), num(*c)))
+                .value(*r, ""),
+        );
+    }
     s.step(
-        Step::new(
-            "Three equations",
-            "A 2nd-order polynomial ρ(c) = a0 + a1·c + a2·c² through the best ρ and its two neighbours: one equation per position, in matrix form A·X = L.",
-        )
-        .formula(
-            r"\rho_i = a_0 + a_1 c_i + a_2 c_i^2,\quad A X = L",
-            format!(
-                r"\begin{{aligned}} {} \end{{aligned}}\quad {} \begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \end{{bmatrix}} = {}",
-                eqs.join(r" \\ "),
-                tex_matrix(&a),
-                tex_column(&y)
-            ),
+        step.relation(
+            Relation::new("A X")
+                .sym("L")
+                .subst(Form::grid("bmatrix", &a, "A").then(unknowns(3, "X")))
+                .result(column(&y, "L")),
         )
         .value("A", Value::matrix(&a))
         .value("L", Value::numbers(&y)),
@@ -216,52 +227,78 @@ pub(super) fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Par
             "Coefficients",
             "Three equations, three unknowns: the parabola passes exactly through the three points. (Solved about the middle position with divided differences, which is the same as A⁻¹L but exact for any size of c.)",
         )
-        .formula(
-            r"X = A^{-1} L",
-            format!(
-                r"\begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \end{{bmatrix}} = {}",
-                tex_column(&p.coefficients)
-            ),
+        .relation(
+            Relation::new("X")
+                .key("coefficients")
+                .sym(r"A^{-1} L")
+                .subst(
+                    Form::grid("bmatrix", &a, "A")
+                        .then("^{-1}")
+                        .then(column(&y, "L")),
+                )
+                .result(column(&p.coefficients, "X")),
         )
         .value("coefficients", Value::numbers(&p.coefficients)),
     );
-    let [_, a1, a2] = p.coefficients;
-    let (text, sub) = match p.extremum {
-        Extremum::Maximum { at, value } => (
-            "The slope of the parabola is zero at its maximum (a2 < 0, so it opens downward).".to_string(),
-            format!(
-                r"{} + 2 ({}) c = 0 \;\Rightarrow\; c = -\frac{{{}}}{{2 \times {}}} = {},\quad \rho_{{\max}} = {}",
-                num(a1),
-                num(a2),
-                num(a1),
-                tex(a2),
-                num(at[0]),
-                num(value)
-            ),
+    let [a0, a1, a2] = p.coefficients;
+    let slope = Relation::new(r"\frac{\partial \rho}{\partial c}")
+        .sym("a_1 + 2 a_2 c")
+        .sym("0")
+        .subst(format!("{} + 2 {} c", num(a1), tex(a2)))
+        .result("0");
+    let quotient = format!(r"-\frac{{{}}}{{2 \times {}}}", num(a1), tex(a2));
+    let (text, rels) = match p.extremum {
+        Extremum::Maximum { at: c, value } => (
+            "The slope of the parabola is zero at its maximum (a2 < 0, so it opens downward).",
+            vec![
+                Relation::new("c")
+                    .key("c_max")
+                    .sym(r"-\frac{a_1}{2 a_2}")
+                    .subst(quotient.as_str())
+                    .value(c[0], "px"),
+                Relation::new(r"\rho_{\max}")
+                    .key("rho_max")
+                    .sym(r"a_0 + a_1 c + a_2 c^2")
+                    .subst(format!(
+                        r"{} + {} \cdot {} + {} \cdot {}^2",
+                        num(a0),
+                        tex(a1),
+                        num(c[0]),
+                        tex(a2),
+                        num(c[0])
+                    ))
+                    .value(value, ""),
+            ],
         ),
-        Extremum::Minimum { at, .. } => (
-            "a2 > 0: the parabola opens upward, so its stationary point is a minimum, not a peak. There is no subpixel maximum.".to_string(),
-            format!(
-                r"a_2 = {} > 0,\quad c_{{\min}} = -\frac{{{}}}{{2 \times {}}} = {}",
-                num(a2),
-                num(a1),
-                tex(a2),
-                num(at[0])
-            ),
+        Extremum::Minimum { at: c, .. } => (
+            "a2 > 0: the parabola opens upward, so its stationary point is a minimum, not a peak. There is no subpixel maximum.",
+            vec![
+                Relation::new("a_2").value(a2, ""),
+                Relation::new(r"c_{\min}")
+                    .sym(r"-\frac{a_1}{2 a_2}")
+                    .subst(quotient.as_str())
+                    .value(c[0], "px"),
+            ],
         ),
         _ => (
-            "a2 = 0: the three values lie on a straight line, which has no maximum.".to_string(),
-            format!(r"a_2 = {} \approx 0", num(a2)),
+            "a2 = 0: the three values lie on a straight line, which has no maximum.",
+            vec![Relation::new("a_2")
+                .op(r"\approx")
+                .subst(num(a2))
+                .result("0")],
         ),
     };
-    let mut step = Step::new("Location of the maximum", &text)
-        .formula(r"\frac{\partial \rho}{\partial c} = a_1 + 2 a_2 c = 0", sub)
-        .value("extremum", extremum_name(&p.extremum));
-    step = step.value("c_max", opt(p.extremum.maximum().map(|a| a[0])));
-    s.step(step);
+    let step = rels.into_iter().fold(
+        Step::new("Location of the maximum", text).relation(slope),
+        Step::relation,
+    );
+    s.step(
+        step.value("extremum", extremum_name(&p.extremum))
+            .value("c_max", opt(p.extremum.maximum().map(|a| a[0]))),
+    );
 }
 
-pub(super) fn extremum_notes_1d(s: &mut Solution, p: &Parabola, x: [f64; 3]) {
+fn extremum_notes_1d(s: &mut Solution, p: &Parabola, x: [f64; 3]) {
     match p.extremum {
         Extremum::Maximum { at, .. } => {
             let lo = x.iter().fold(f64::INFINITY, |m, v| m.min(*v));
@@ -287,4 +324,88 @@ pub(super) fn extremum_notes_1d(s: &mut Solution, p: &Parabola, x: [f64; 3]) {
             "The three values lie on a straight line (a2 = 0): the parabola has no maximum, so there is no peak column.",
         ).about(&["c_max", "coefficients"]),
     }
+}
+
+// ---------------------------------------------------------------- practice
+
+fn generate(rng: &mut Rng) -> Record {
+    let k = rng.num(4, 30);
+    let mid = rng.num(80, 99);
+    let left = mid - rng.num(3, 40);
+    let mut right = mid - rng.num(3, 40);
+    if right == left {
+        right -= 2.0;
+    }
+    Record::new()
+        .with("positions", nums(&[k - 1.0, k, k + 1.0]))
+        .with("rho", nums(&[left / 100.0, mid / 100.0, right / 100.0]))
+}
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    vec![
+        BoxDef::new("coefficients[1]", "a₀", None, tol::PARAM).nudge(
+            "Put the three (c, ρ) pairs into ρ = a₀ + a₁c + a₂c² and solve the three equations.",
+        ),
+        BoxDef::new("coefficients[2]", "a₁", None, tol::PARAM).nudge("The linear coefficient."),
+        BoxDef::new("coefficients[3]", "a₂", None, tol::PARAM)
+            .nudge("The quadratic coefficient: negative for a peak."),
+        BoxDef::new(
+            "c_max",
+            "Peak position c_max",
+            Some("px"),
+            Tolerance::abs(0.005),
+        )
+        .nudge("Where the derivative a₁ + 2a₂c is zero."),
+    ]
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let co = |k: usize| -> Result<f64> {
+        let key = format!("coefficients[{k}]");
+        Ok(or_given(g, &key, value_in(&s, &key)?))
+    };
+    let (a0, a1, a2) = (co(1)?, co(2)?, co(3)?);
+    Ok(Record::new()
+        .with("coefficients[1]", a0)
+        .with("coefficients[2]", a1)
+        .with("coefficients[3]", a2)
+        .with("c_max", or_given(g, "c_max", -a1 / (2.0 * a2))))
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let v = chain(i, &Record::new())?;
+    let (a1, a2) = (
+        v.number("coefficients[2]").unwrap_or(f64::NAN),
+        v.number("coefficients[3]").unwrap_or(f64::NAN),
+    );
+    let c_max = -a1 / (2.0 * a2);
+    // the middle position: where the offset is measured from
+    let k = list(i, "positions").get(1).copied().unwrap_or(f64::NAN);
+    Ok(vec![
+        Mistake::new(
+            "c_max",
+            "sign lost in −a₁/(2a₂)",
+            "Setting a₁ + 2a₂c = 0 gives c = −a₁ / (2a₂).",
+            a1 / (2.0 * a2),
+        ),
+        Mistake::new(
+            "coefficients[3]",
+            "½ forgotten in a₂",
+            "The second difference ρ₋ − 2ρ₀ + ρ₊ is 2a₂ (with positions one pixel apart): halve it.",
+            2.0 * a2,
+        ),
+        Mistake::new(
+            "c_max",
+            "the offset, not the position",
+            "The parabola's peak is an offset from the middle position: add it to that position.",
+            c_max - k,
+        ),
+        Mistake::new(
+            "c_max",
+            "offset the wrong way",
+            "The peak lies on the side of the larger neighbour: c_max − c₀ has the sign of ρ₊ − ρ₋.",
+            2.0 * k - c_max,
+        ),
+    ])
 }

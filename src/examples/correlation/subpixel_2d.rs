@@ -1,14 +1,59 @@
 //! Example 9: the subpixel peak of a six-term quadratic surface fitted to 3×3 coefficients.
 
 use super::*;
+use crate::correlation::{correlate_2d, quadric_peak, stationary, Quadric};
+use crate::examples::drill::{
+    mat, nums, or_given, rows_of, transpose, value_in, BoxDef, Drill, Mistake, Tolerance,
+};
+use crate::examples::fields::is_seed;
+use crate::solution::{exact_minus_printed, fmt_sig, with_unit, NoteKind, Solution};
+
+pub const EXAMPLE: Example = Example {
+    id: "subpixel-2d",
+    title: "Subpixel peak in 2-D",
+    source: "Worked examples, Example 9",
+    summary: "A six-term quadratic surface fitted by least squares to the 3×3 correlation coefficients around the best one, and the location of its maximum.",
+    fields,
+    solve,
+    answer: &["c_max", "r_max"],
+    labels: LABELS,
+    lab: Some(Lab {
+        family: "correlation",
+        explains: &["subpixel"],
+    }),
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+fn fields() -> Vec<Field> {
+    vec![
+        Field::vector("c", "Columns c", (3, 3), &[2.0, 3.0, 4.0])
+            .help("The three columns of the neighbourhood (centre pixels in the search array).")
+            .when("rho_from", PRINTED),
+        Field::vector("r", "Rows r", (3, 3), &[3.0, 4.0, 5.0])
+            .help("The three rows of the neighbourhood.")
+            .when("rho_from", PRINTED),
+        Field::matrix("rho", "Correlation coefficients ρ", &to_rows(&EX9_PRINTED_RHO))
+            .shape(3, 3)
+            .help("3×3: one row per r, one column per c (the printed values of Example 7).")
+            .when("rho_from", PRINTED),
+        rho_from_field(
+            "“Printed” uses c, r and ρ above; “Exact” takes them from Example 7's arrays computed exactly (the fields above are then not used).",
+        ),
+    ]
+}
 
 /// Example 7 computed exactly: the columns, rows and 3×3 ρ around the best.
 /// A 3×3 neighbourhood of ρ: its columns, rows and values.
-pub(super) type Neighbourhood = ([f64; 3], [f64; 3], [[f64; 3]; 3]);
+type Neighbourhood = ([f64; 3], [f64; 3], [[f64; 3]; 3]);
 
-pub(super) fn example_7_exact() -> Result<(Neighbourhood, (usize, usize))> {
-    let t = Grid::from_rows("template", &rows_of(&EX7_TEMPLATE))?;
-    let sg = Grid::from_rows("search", &rows_of(&EX7_SEARCH))?;
+fn example_7_exact() -> Result<(Neighbourhood, (usize, usize))> {
+    let t = Grid::from_rows("template", &to_rows(&EX7_TEMPLATE))?;
+    let sg = Grid::from_rows("search", &to_rows(&EX7_SEARCH))?;
     let surface = correlate_2d(&t, &sg)?;
     let Some((bc, br)) = surface.best else {
         return Err(Error::input("rho_from", "Example 7 has no best position"));
@@ -40,15 +85,16 @@ pub(super) fn example_7_exact() -> Result<(Neighbourhood, (usize, usize))> {
     ))
 }
 
-pub(super) const EX9_PRINTED_RHO: [[f64; 3]; 3] = [
+const EX9_PRINTED_RHO: [[f64; 3]; 3] = [
     [-0.3334, 0.2394, -0.3921],
     [0.0585, 0.9665, 0.0806],
     [-0.2321, 0.2904, -0.1268],
 ];
 
-pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
-    let exact_mode = text(inputs, "rho_from")? == "exact";
-    let mut s = Solution::new("subpixel-2d", "Subpixel peak in 2-D", inputs.clone());
+fn solve(inputs: &Record) -> Result<Solution> {
+    let i = Inputs(inputs);
+    let exact_mode = i.text("rho_from")? == "exact";
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     let (c, r, rho) = if exact_mode {
         let ((c, r, rho), (bc, br)) = example_7_exact()?;
         s.step(
@@ -62,20 +108,29 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                     num(r[1])
                 ),
             )
-            .formula(
-                r"\rho(c, r)",
-                tex_matrix(&rows_of(&rho)),
+            .relation(
+                Relation::new("c")
+                    .key("c")
+                    .sym(r"j + \tfrac{n-1}{2}")
+                    .result(list_form(&c.map(num))),
+            )
+            .relation(
+                Relation::new("r")
+                    .key("r")
+                    .sym(r"i + \tfrac{m-1}{2}")
+                    .result(list_form(&r.map(num))),
+            )
+            .relation(
+                Relation::new(r"\rho(c, r)")
+                    .key("rho")
+                    .sym(r"\rho_{ij}")
+                    .result(Form::grid("bmatrix", &to_rows(&rho), "ρ")),
             )
             .value("c", Value::numbers(&c))
             .value("r", Value::numbers(&r))
-            .value("rho", Value::matrix(&rows_of(&rho))),
+            .value("rho", Value::matrix(&to_rows(&rho))),
         );
-        let defaults = subpixel_2d_fields();
-        let changed = ["c", "r", "rho"].iter().any(|k| {
-            defaults
-                .iter()
-                .any(|f| f.key == *k && inputs.get(k) != Some(&f.default))
-        });
+        let changed = changed(&fields(), inputs, &["c", "r", "rho"]);
         if changed {
             s.note(
                 NoteKind::Warning,
@@ -85,13 +140,13 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         }
         (c, r, rho)
     } else {
-        let m = rows(inputs, "rho")?;
+        let m = i.rows("rho")?;
         let row = |i: usize| -> Result<[f64; 3]> {
             three("rho", m.get(i).map(Vec::as_slice).unwrap_or(&[]))
         };
         (
-            three("c", &list(inputs, "c")?)?,
-            three("r", &list(inputs, "r")?)?,
+            three("c", &i.list("c")?)?,
+            three("r", &i.list("r")?)?,
             [row(0)?, row(1)?, row(2)?],
         )
     };
@@ -108,7 +163,7 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
         .with("sigma0", opt(q.adjustment.sigma0))
         .with("c", Value::numbers(&c))
         .with("r", Value::numbers(&r))
-        .with("rho", Value::matrix(&rows_of(&rho)));
+        .with("rho", Value::matrix(&to_rows(&rho)));
     extremum_notes_2d(&mut s, &q, c, r);
     s.note(
         NoteKind::Convention,
@@ -125,18 +180,23 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                     "How far the peak moves",
                     "The same fit to the printed ρ (four decimals) peaks at a slightly different place; the difference is what rounding the coefficients of Example 7 costs.",
                 )
-                .formula(
-                    r"\Delta = \sqrt{(c^{\text{exact}} - c^{\text{printed}})^2 + (r^{\text{exact}} - r^{\text{printed}})^2}",
-                    format!(
-                        r"\Delta c = {} - {} = {},\quad \Delta r = {} - {} = {},\quad \Delta = {}\ \text{{px}}",
-                        num(e[0]),
-                        num(p[0]),
-                        fmt_sig(e[0] - p[0], 3),
-                        num(e[1]),
-                        num(p[1]),
-                        fmt_sig(e[1] - p[1], 3),
-                        fmt_sig(d, 3)
-                    ),
+                .relation(
+                    Relation::new(r"\Delta c")
+                        .sym(r"c^{\text{exact}} - c^{\text{printed}}")
+                        .subst(format!("{} - {}", num(e[0]), tex(p[0])))
+                        .result(with_unit(&fmt_sig(e[0] - p[0], 3), "px")),
+                )
+                .relation(
+                    Relation::new(r"\Delta r")
+                        .sym(r"r^{\text{exact}} - r^{\text{printed}}")
+                        .subst(format!("{} - {}", num(e[1]), tex(p[1])))
+                        .result(with_unit(&fmt_sig(e[1] - p[1], 3), "px")),
+                )
+                .relation(
+                    Relation::new(r"\Delta")
+                        .key("peak_shift")
+                        .sym(r"\sqrt{\Delta c^2 + \Delta r^2}")
+                        .result(with_unit(&fmt_sig(d, 3), "px")),
                 )
                 .value("c_max_printed_rho", p[0])
                 .value("r_max_printed_rho", p[1])
@@ -151,7 +211,7 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             "ρ comes from Example 7's arrays computed exactly, not from the four-decimal values the course notes print; the printed values shown beside are the course notes' answer from their printed ρ.",
         ).about(&["coefficients", "c_max", "r_max"]);
     }
-    let seed = is_seed(&subpixel_2d_fields(), inputs);
+    let seed = is_seed(&fields(), inputs);
     if seed || exact_mode {
         let pc = [-12.297, 3.785, 3.634, 0.041, -0.656, -0.461];
         s.textbook = Some(
@@ -174,7 +234,7 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
                 num(pa[5])
             ),
         ).about(&["coefficients"]);
-        if let (Some((rc, rr)), Some(p)) = (from_rounded, printed_at) {
+        if let (Some([rc, rr]), Some(p)) = (from_rounded, printed_at) {
             s.note(
                 NoteKind::Rounding,
                 format!(
@@ -212,23 +272,12 @@ pub(super) fn subpixel_2d(inputs: &Record) -> Result<Solution> {
             ).about(&["rho"]);
         }
     }
-    label_results(&mut s);
     Ok(s)
 }
 
-/// The stationary point of the seed-form coefficients (for checking the
-/// printed answer), if the 2×2 system is regular.
-pub(super) fn stationary(a: &[f64; 6]) -> Option<(f64, f64)> {
-    let det = 4.0 * a[4] * a[5] - a[3] * a[3];
-    if det == 0.0 {
-        return None;
-    }
-    let c = (-a[1] * 2.0 * a[5] + a[2] * a[3]) / det;
-    let r = (-a[2] * 2.0 * a[4] + a[1] * a[3]) / det;
-    Some((c, r))
-}
-
-pub(super) fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
+fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
+    let first = q.design.first().cloned().unwrap_or_default();
+    let at = |k: usize| first.get(k).copied().unwrap_or(0.0);
     s.step(
         Step::new(
             "Nine equations",
@@ -243,19 +292,45 @@ pub(super) fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quad
                 num(r[0])
             ),
         )
-        .formula(
-            r"\rho(c, r) = a_0 + a_1 c + a_2 r + a_3 c r + a_4 c^2 + a_5 r^2,\quad A X = L,\quad A_i = [1,\ c_i,\ r_i,\ c_i r_i,\ c_i^2,\ r_i^2]",
-            format!(
-                r"{} \begin{{bmatrix}} a_0 \\ a_1 \\ a_2 \\ a_3 \\ a_4 \\ a_5 \end{{bmatrix}} = {}",
-                tex_matrix(&q.design),
-                tex_column(&q.observations)
-            ),
+        .relation(
+            Relation::new(r"\rho_1")
+                .sym(Form::terms([
+                    "a_0",
+                    "+ a_1 c_1",
+                    "+ a_2 r_1",
+                    "+ a_3 c_1 r_1",
+                    "+ a_4 c_1^2",
+                    "+ a_5 r_1^2",
+                ]))
+                .subst(Form::terms([
+                    "a_0".to_string(),
+                    format!("+ a_1 ({})", num(at(1))),
+                    format!("+ a_2 ({})", num(at(2))),
+                    format!("+ a_3 ({})({})", num(at(1)), num(at(2))),
+                    format!("+ a_4 ({})^2", num(at(1))),
+                    format!("+ a_5 ({})^2", num(at(2))),
+                ]))
+                .value(q.observations.first().copied().unwrap_or(0.0), ""),
+        )
+        .relation(
+            Relation::new("A X")
+                .sym("L")
+                .subst(Form::grid("bmatrix", &q.design, "A").then(unknowns(6, "X")))
+                .result(column(&q.observations, "L")),
         )
         .value("A", Value::matrix(&q.design))
         .value("L", Value::numbers(&q.observations)),
     );
     let adj = &q.adjustment;
     let [cm, rm] = q.centre;
+    let sigma0 = Relation::new(r"\sigma_0")
+        .key("sigma0")
+        .sym(r"\sqrt{\frac{V^T V}{9 - 6}}")
+        .subst(format!(r"\sqrt{{\frac{{{}}}{{3}}}}", num(adj.vtpv)));
+    let sigma0 = match adj.sigma0 {
+        Some(x) => sigma0.value(x, ""),
+        None => sigma0.result("-"),
+    };
     s.step(
         Step::new(
             "Least squares",
@@ -265,17 +340,35 @@ pub(super) fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quad
                 num(rm)
             ),
         )
-        .formula(
-            r"N = A^T A,\quad X = N^{-1} A^T L,\quad V = A X - L,\quad \sigma_0 = \sqrt{\frac{V^T V}{9 - 6}}",
-            format!(
-                r"N = {},\quad A^T L = {},\quad b = {},\quad V = {},\quad \sigma_0 = {}",
-                tex_matrix(&adj.n),
-                tex_column(&adj.atl),
-                tex_column(&adj.x),
-                tex_list(&adj.v),
-                adj.sigma0.map_or_else(|| "-".to_string(), num)
-            ),
+        .relation(
+            Relation::new("N")
+                .key("N")
+                .sym("A^T A")
+                .result(Form::grid("bmatrix", &adj.n, "N")),
         )
+        .relation(
+            Relation::new("A^T L")
+                .key("AtL")
+                .result(column(&adj.atl, "AᵀL")),
+        )
+        .relation(
+            Relation::new("b")
+                .key("local_coefficients")
+                .sym(r"N^{-1} A^T L")
+                .subst(
+                    Form::grid("bmatrix", &adj.n, "N")
+                        .then("^{-1}")
+                        .then(column(&adj.atl, "AᵀL")),
+                )
+                .result(column(&adj.x, "b")),
+        )
+        .relation(
+            Relation::new("V")
+                .key("residuals")
+                .sym("A X - L")
+                .result(list_form(&adj.v.iter().map(|v| num(*v)).collect::<Vec<_>>())),
+        )
+        .relation(sigma0)
         .value("N", Value::matrix(&adj.n))
         .value("AtL", Value::numbers(&adj.atl))
         .value("local_coefficients", Value::numbers(&adj.x))
@@ -285,76 +378,165 @@ pub(super) fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quad
     );
     let b = q.local;
     let a = q.coefficients;
+    let plain = |k: usize| {
+        Relation::new(format!("a_{k}"))
+            .sym(format!("b_{k}"))
+            .value(a[k], "")
+    };
     s.step(
         Step::new(
             "Coefficients in c and r",
             "Expanding u = c − c̄ and v = r − r̄ gives the coefficients of the course notes' form.",
         )
-        .formula(
-            r"a_1 = b_1 - b_3 \bar r - 2 b_4 \bar c,\ a_2 = b_2 - b_3 \bar c - 2 b_5 \bar r,\ a_3 = b_3,\ a_4 = b_4,\ a_5 = b_5,\ a_0 = \rho(0, 0)",
-            format!(
-                r"a_0 = {},\ a_1 = {},\ a_2 = {},\ a_3 = {},\ a_4 = {},\ a_5 = {}\quad (b_1 = {},\ b_2 = {})",
-                num(a[0]),
-                num(a[1]),
-                num(a[2]),
-                num(a[3]),
-                num(a[4]),
-                num(a[5]),
-                num(b[1]),
-                num(b[2])
-            ),
+        .relation(
+            Relation::new("a_1")
+                .sym(r"b_1 - b_3 \bar r - 2 b_4 \bar c")
+                .subst(format!(
+                    r"{} - {} \cdot {} - 2 \cdot {} \cdot {}",
+                    num(b[1]),
+                    tex(b[3]),
+                    num(rm),
+                    tex(b[4]),
+                    num(cm)
+                ))
+                .value(a[1], ""),
+        )
+        .relation(
+            Relation::new("a_2")
+                .sym(r"b_2 - b_3 \bar c - 2 b_5 \bar r")
+                .subst(format!(
+                    r"{} - {} \cdot {} - 2 \cdot {} \cdot {}",
+                    num(b[2]),
+                    tex(b[3]),
+                    num(cm),
+                    tex(b[5]),
+                    num(rm)
+                ))
+                .value(a[2], ""),
+        )
+        .relation(plain(3))
+        .relation(plain(4))
+        .relation(plain(5))
+        .relation(
+            Relation::new("a_0")
+                .key("coefficients")
+                .sym(r"\rho(0, 0)")
+                .value(a[0], ""),
         )
         .value("coefficients", Value::numbers(&a)),
     );
-    let system = format!(
-        r"\begin{{bmatrix}} 2 a_4 & a_3 \\ a_3 & 2 a_5 \end{{bmatrix}} = {},\quad \det = 4 a_4 a_5 - a_3^2 = {}",
-        tex_matrix(&[vec![2.0 * a[4], a[3]], vec![a[3], 2.0 * a[5]]]),
-        num(q.det)
-    );
-    let (text, sub) = match q.extremum {
+    let hessian = Relation::new(Form::grid_tex(
+        "bmatrix",
+        vec![
+            vec!["2 a_4".to_string(), "a_3".to_string()],
+            vec!["a_3".to_string(), "2 a_5".to_string()],
+        ],
+        "",
+    ))
+    .result(Form::grid(
+        "bmatrix",
+        &[vec![2.0 * a[4], a[3]], vec![a[3], 2.0 * a[5]]],
+        "",
+    ));
+    let det = Relation::new(r"\det")
+        .key("det")
+        .sym(r"4 a_4 a_5 - a_3^2")
+        .subst(format!(
+            r"4 \cdot {} \cdot {} - {}^2",
+            tex(a[4]),
+            tex(a[5]),
+            tex(a[3])
+        ))
+        .value(q.det, "");
+    let slope_c = Relation::new(r"\frac{\partial \rho}{\partial c}")
+        .sym("a_1 + a_3 r + 2 a_4 c")
+        .sym("0")
+        .subst(format!(
+            "{} + {} r + 2 {} c",
+            num(a[1]),
+            tex(a[3]),
+            tex(a[4])
+        ))
+        .result("0");
+    let slope_r = Relation::new(r"\frac{\partial \rho}{\partial r}")
+        .sym("a_2 + a_3 c + 2 a_5 r")
+        .sym("0")
+        .subst(format!(
+            "{} + {} c + 2 {} r",
+            num(a[2]),
+            tex(a[3]),
+            tex(a[5])
+        ))
+        .result("0");
+    let point = |c_name: &str, r_name: &str, at: [f64; 2], keyed: bool| {
+        let (rc, rr) = (Relation::new(c_name), Relation::new(r_name));
+        let (rc, rr) = if keyed {
+            (rc.key("c_max"), rr.key("r_max"))
+        } else {
+            (rc, rr)
+        };
+        [
+            rc.sym(r"\frac{a_2 a_3 - 2 a_1 a_5}{4 a_4 a_5 - a_3^2}")
+                .subst(format!(
+                    r"\frac{{{} \cdot {} - 2 \cdot {} \cdot {}}}{{{}}}",
+                    num(a[2]),
+                    tex(a[3]),
+                    tex(a[1]),
+                    tex(a[5]),
+                    num(q.det)
+                ))
+                .value(at[0], "px"),
+            rr.sym(r"\frac{a_1 a_3 - 2 a_2 a_4}{4 a_4 a_5 - a_3^2}")
+                .subst(format!(
+                    r"\frac{{{} \cdot {} - 2 \cdot {} \cdot {}}}{{{}}}",
+                    num(a[1]),
+                    tex(a[3]),
+                    tex(a[2]),
+                    tex(a[4]),
+                    num(q.det)
+                ))
+                .value(at[1], "px"),
+        ]
+    };
+    let (text, rels): (&str, Vec<Relation>) = match q.extremum {
         Extremum::Maximum { at, value } => (
             "Both slopes are zero at the maximum. The surface is concave (a4 < 0 and 4·a4·a5 − a3² > 0), so the stationary point is a true maximum.",
-            format!(
-                r"{system}:\ {} + {} r + 2({}) c = 0,\ {} + {} c + 2({}) r = 0 \;\Rightarrow\; c = {},\ r = {},\ \rho_{{\max}} = {}",
-                num(a[1]),
-                tex(a[3]),
-                num(a[4]),
-                num(a[2]),
-                tex(a[3]),
-                num(a[5]),
-                num(at[0]),
-                num(at[1]),
-                num(value)
-            ),
+            point("c", "r", at, true)
+                .into_iter()
+                .chain([Relation::new(r"\rho_{\max}")
+                    .key("rho_max")
+                    .value(value, "")])
+                .collect(),
         ),
         Extremum::Minimum { at, .. } => (
             "The surface curves upward in every direction (a4 > 0 and 4·a4·a5 − a3² > 0): the stationary point is a minimum, so there is no subpixel maximum.",
-            format!(r"{system},\ \text{{minimum at }} c = {},\ r = {}", num(at[0]), num(at[1])),
+            point(r"c_{\min}", r"r_{\min}", at, false).to_vec(),
         ),
         Extremum::Saddle { at, .. } => (
             "4·a4·a5 − a3² < 0: the surface curves down one way and up the other; the stationary point is a saddle, not a maximum, so there is no subpixel peak.",
-            format!(r"{system} < 0,\ \text{{saddle at }} c = {},\ r = {}", num(at[0]), num(at[1])),
+            std::iter::once(Relation::new(r"\det").op("<").result("0"))
+                .chain(point(r"c_{\text{saddle}}", r"r_{\text{saddle}}", at, false))
+                .collect(),
         ),
         Extremum::Degenerate => (
             "4·a4·a5 − a3² = 0: the surface is flat in some direction (a ridge or a plane), so it has no single maximum.",
-            system,
+            Vec::new(),
         ),
     };
     let at = q.extremum.maximum();
+    let step = [slope_c, slope_r, hessian, det]
+        .into_iter()
+        .chain(rels)
+        .fold(Step::new("Location of the maximum", text), Step::relation);
     s.step(
-        Step::new("Location of the maximum", text)
-            .formula(
-                r"\frac{\partial \rho}{\partial c} = a_1 + a_3 r + 2 a_4 c = 0,\quad \frac{\partial \rho}{\partial r} = a_2 + a_3 c + 2 a_5 r = 0",
-                sub,
-            )
-            .value("det", q.det)
+        step.value("det", q.det)
             .value("extremum", extremum_name(&q.extremum))
             .value("c_max", opt(at.map(|a| a[0])))
             .value("r_max", opt(at.map(|a| a[1]))),
     );
 }
 
-pub(super) fn extremum_notes_2d(s: &mut Solution, q: &Quadric, c: [f64; 3], r: [f64; 3]) {
+fn extremum_notes_2d(s: &mut Solution, q: &Quadric, c: [f64; 3], r: [f64; 3]) {
     let span = |x: [f64; 3]| {
         (
             x.iter().fold(f64::INFINITY, |m, v| m.min(*v)),
@@ -388,4 +570,100 @@ pub(super) fn extremum_notes_2d(s: &mut Solution, q: &Quadric, c: [f64; 3], r: [
             "The fitted surface is not concave: 4·a4·a5 − a3² = 0 (flat in some direction), so it has no single maximum (no peak column or row).",
         ).about(&["c_max", "r_max", "coefficients"]),
     }
+}
+
+// ---------------------------------------------------------------- practice
+
+fn generate(rng: &mut Rng) -> Record {
+    let (k, m) = (rng.num(3, 30), rng.num(3, 30));
+    let alpha = rng.num(8, 25) / 100.0;
+    let beta = rng.num(8, 25) / 100.0;
+    let dc = rng.num(-35, 35) / 100.0;
+    let mut dr = rng.num(-35, 35) / 100.0;
+    if (dr - dc).abs() < 0.1 {
+        dr = if dc > 0.0 { dc - 0.3 } else { dc + 0.3 };
+    }
+    let peak = rng.num(85, 97) / 100.0;
+    let rho: Vec<Vec<f64>> = (-1..=1)
+        .map(|r| {
+            (-1..=1)
+                .map(|c| {
+                    let v = peak - alpha * (c as f64 - dc).powi(2) - beta * (r as f64 - dr).powi(2);
+                    (v * 100.0).round() / 100.0
+                })
+                .collect()
+        })
+        .collect();
+    Record::new()
+        .with("c", nums(&[k - 1.0, k, k + 1.0]))
+        .with("r", nums(&[m - 1.0, m, m + 1.0]))
+        .with("rho", mat(&rho))
+}
+
+/// The centred coefficients b₁ … b₅ (u = c − c̄, v = r − r̄) that the peak
+/// follows from: four decimals are plenty.
+const LOCAL: Tolerance = Tolerance::abs(0.0005);
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    let t = Tolerance::abs(0.01);
+    let fit = "Fit ρ = b₀ + b₁u + b₂v + b₃uv + b₄u² + b₅v² by least squares in the centred coordinates u = c − c̄, v = r − r̄ (each −1, 0 or 1): the normal equations nearly separate.";
+    vec![
+        BoxDef::new("local_coefficients[2]", "b₁ (u)", None, LOCAL)
+            .nudge("Σ u·ρ over Σ u²: the right column minus the left, over 6.")
+            .axis(),
+        BoxDef::new("local_coefficients[3]", "b₂ (v)", None, LOCAL)
+            .nudge("Σ v·ρ over Σ v²: the bottom row minus the top, over 6.")
+            .axis(),
+        BoxDef::new("local_coefficients[4]", "b₃ (uv)", None, LOCAL)
+            .nudge("Σ uv·ρ over Σ u²v²: the four corners, over 4."),
+        BoxDef::new("local_coefficients[5]", "b₄ (u²)", None, LOCAL).nudge(fit),
+        BoxDef::new("local_coefficients[6]", "b₅ (v²)", None, LOCAL).nudge(fit),
+        BoxDef::new("c_max", "Peak column c_max", Some("px"), t).nudge(
+            "Both slopes zero: b₁ + b₃v + 2b₄u = 0 and b₂ + b₃u + 2b₅v = 0; then c = c̄ + u.",
+        ),
+        BoxDef::new("r_max", "Peak row r_max", Some("px"), t)
+            .nudge("Solve the two derivative equations together; r = r̄ + v."),
+    ]
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let mut out = Record::new();
+    let mut b = [0.0; 6];
+    for (k, bk) in b.iter_mut().enumerate().skip(1) {
+        let key = format!("local_coefficients[{}]", k + 1);
+        *bk = or_given(g, &key, value_in(&s, &key)?);
+        out.set(&key, *bk);
+    }
+    let (cc, rc) = (value_in(&s, "centre[1]")?, value_in(&s, "centre[2]")?);
+    // the stationary point of the centred surface (b₀ does not matter)
+    let [u, v] = stationary(&b).unwrap_or([f64::NAN, f64::NAN]);
+    Ok(out
+        .with("c_max", or_given(g, "c_max", cc + u))
+        .with("r_max", or_given(g, "r_max", rc + v)))
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let swapped = i.clone().with("rho", mat(&transpose(&rows_of(i, "rho"))));
+    let s = EXAMPLE.run(&swapped)?;
+    const SWAP: &str = "The rows of the ρ table are the rows r; its columns are the columns c.";
+    let mut out = Vec::new();
+    for k in [2, 3] {
+        let key = format!("local_coefficients[{k}]");
+        out.push(Mistake::new(
+            &key,
+            "rows and columns swapped",
+            SWAP,
+            value_in(&s, &key)?,
+        ));
+    }
+    for key in ["c_max", "r_max"] {
+        out.push(Mistake::new(
+            key,
+            "rows and columns swapped",
+            SWAP,
+            s.result.number(key).unwrap_or(f64::NAN),
+        ));
+    }
+    Ok(out)
 }
