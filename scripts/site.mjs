@@ -262,16 +262,14 @@ export async function buildSite(stage, dist) {
   const entry = path.join(stage, modules[0]);
   const inner = [];
   const options = { ...COMMON, ...NAMES, outdir: dist, outbase: stage, format: "esm", splitting: true, loader: { ".woff2": "file", ".wasm": "file" } };
-  // the pages, then (apart: they must not import the page's entry) the public entries
-  // each of the page's own modules also by its name, through an entry that re-exports it (the
-  // same instance: its code stays in the page's chunk); see "modules by name" below
+  // the pages (each of the page's own modules also by its name, through an entry that re-exports
+  // it: see "modules by name" below), then apart (they must not import the page's entry) the public entries
   const graph = await staticModules(entry);
   const named = [...graph].filter((f) => f !== entry && f.startsWith(stage + path.sep) && /\.m?js$/.test(f));
   const entryPoints = [...entries.map((f) => path.join(stage, f)), ...named.map((f) => ({ in: `page-module:${f}`, out: posix(path.relative(stage, f)).replace(/\.m?js$/, "") }))];
   const page = await esbuild.build({ ...options, entryPoints, plugins: [onePageChunk(entry, graph), metaUrl(stage, dist, inner)] });
   const api = await esbuild.build({ ...options, entryPoints: stable.map((f) => path.join(stage, f)), plugins: [metaUrl(stage, dist, inner)] });
-  const result = { outputFiles: [...page.outputFiles, ...api.outputFiles] };
-  for (const f of result.outputFiles) writeFile(f.path, await squeeze(f));
+  for (const f of [...page.outputFiles, ...api.outputFiles]) writeFile(f.path, await squeeze(f));
   const outputs = outputsOf([page.metafile, api.metafile, ...inner], dist);
   const map = manifestOf(outputs, stage);
   // the entry is a stub importing the one chunk that holds the page's code: the page loads that chunk
@@ -282,14 +280,16 @@ export async function buildSite(stage, dist) {
     map[modules[0]] = stub.imports[0].path;
   }
 
-  // the public entries under their own names, re-exporting their builds
+  /** dist/<logical>: a module re-exporting its build (the same module instance), under a fixed name. */
+  const reexport = (logical) => {
+    const spec = JSON.stringify(posix(path.relative(path.dirname(logical), map[logical])).replace(/^(?!\.)/, "./"));
+    const lines = [`export * from ${spec};`];
+    if (outputs.get(map[logical]).exports.includes("default")) lines.push(`export { default } from ${spec};`);
+    writeFile(path.join(dist, logical), `${lines.join("\n")}\n`);
+  };
+  // the public entries under their own names
   for (const f of stable) {
-    const built = map[f];
-    const spec = posix(path.relative(path.dirname(f), built)).replace(/^(?!\.)/, "./");
-    const exports = outputs.get(built).exports;
-    const lines = [`export * from "${spec}";`];
-    if (exports.includes("default")) lines.push(`export { default } from "${spec}";`);
-    writeFile(path.join(dist, f), `${lines.join("\n")}\n`);
+    reexport(f);
     delete map[f];
   }
 
@@ -305,7 +305,7 @@ export async function buildSite(stage, dist) {
   for (const [logical, built] of Object.entries(map)) {
     if (!/\.m?js$/.test(logical) || logical === modules[0] || stable.includes(logical) || !outputs.get(built)?.exports.length) continue;
     byName.push(logical);
-    writeFile(path.join(dist, logical), `export * from "${posix(path.relative(path.dirname(logical), built)).replace(/^(?!\.)/, "./")}";\n`);
+    reexport(logical);
   }
 
   // files no module imports (the lab's sample photos, vendor/: minified by their authors) as they are
@@ -323,7 +323,7 @@ export async function buildSite(stage, dist) {
   }
 
   const catalog = JSON.parse(fs.readFileSync(path.join(stage, "catalog.json"), "utf8"));
-  for (const [page, source] of html) fs.writeFileSync(path.join(dist, page), await pageHtml(page, source, refs.get(page), { stage, map, outputs: outputs, catalog }));
+  for (const [page, source] of html) fs.writeFileSync(path.join(dist, page), await pageHtml(page, source, refs.get(page), { stage, map, outputs, catalog }));
 
   // what the service worker caches when first used: whatever only a lazy entry leads to
   const eager = new Set();
