@@ -4,7 +4,6 @@
 use super::fiducials::{printed_residual_note, rounding_notes};
 use super::*;
 use crate::examples::drill::Drill;
-use crate::examples::fields::is_seed;
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -38,11 +37,7 @@ pub const EXAMPLE: Example = Example {
 };
 
 fn solve(inputs: &Record) -> Result<Solution> {
-    let (mut s, fit, cr) = fiducials::example4(&EXAMPLE, inputs, Model::FiducialAffine)?;
-    if is_seed(&fiducials::fields(), inputs) {
-        seed_notes(&mut s, &fit, &cr)?;
-    }
-    Ok(s)
+    fiducials::example4(&EXAMPLE, inputs, Model::FiducialAffine, seed_notes)
 }
 
 fn seed_notes(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {

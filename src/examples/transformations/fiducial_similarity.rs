@@ -4,7 +4,6 @@
 use super::fiducials::{max_abs, printed_residual_note, rounding_notes};
 use super::*;
 use crate::examples::drill::Drill;
-use crate::examples::fields::is_seed;
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -29,11 +28,7 @@ pub const EXAMPLE: Example = Example {
 };
 
 fn solve(inputs: &Record) -> Result<Solution> {
-    let (mut s, fit, cr) = fiducials::example4(&EXAMPLE, inputs, Model::Similarity)?;
-    if is_seed(&fiducials::fields(), inputs) {
-        seed_notes(&mut s, &fit, &cr)?;
-    }
-    Ok(s)
+    fiducials::example4(&EXAMPLE, inputs, Model::Similarity, seed_notes)
 }
 
 fn seed_notes(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {

@@ -5,6 +5,7 @@
 
 use super::*;
 use crate::examples::drill::Rng;
+use crate::examples::fields::is_seed;
 
 /// Example 4's fiducials as the course notes' table gives them.
 pub(super) fn fields() -> Vec<Field> {
@@ -21,13 +22,14 @@ pub(super) fn fields() -> Vec<Field> {
 
 /// Example 4(a) or (b): `model` fitted to the fiducials with the row axis
 /// turned up.
-/// Returns the solution, the fit and the points as given (`[c, r, x, y]`)
-/// for the example's own notes on the seed.
+/// With the seed's fiducials, `seed_notes` adds the example's own notes
+/// (from the fit and the points as given, `[c, r, x, y]`).
 pub(super) fn example4(
     ex: &Example,
     inputs: &Record,
     model: Model,
-) -> Result<(Solution, Fit, Vec<PointPair>)> {
+    seed_notes: fn(&mut Solution, &Fit, &[PointPair]) -> Result<()>,
+) -> Result<Solution> {
     let rows = Inputs(inputs).rows("points")?;
     let cr = pairs(&rows)?;
     // x' = c, y' = −r: the row axis turned up.
@@ -84,7 +86,10 @@ pub(super) fn example4(
         "Points are entered as the course notes' table gives them, [c, r, x, y]; the solver turns the row axis up (x′ = c, y′ = −r) before forming A, which is what the printed matrices do. Residuals V = A·X − L (fitted minus given), in mm, in the order of the rows of A: v1 = x of fiducial 1, v2 = y of fiducial 1, …",
     );
     condition_note(&mut s, &fit);
-    Ok((s, fit, cr))
+    if is_seed(&fields(), inputs) {
+        seed_notes(&mut s, &fit, &cr)?;
+    }
+    Ok(s)
 }
 
 pub(super) fn max_abs(xs: &[f64]) -> f64 {
