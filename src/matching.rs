@@ -48,7 +48,7 @@
 //! A start outside the pull-in range has no status of its own: the matching
 //! cannot know the truth. It shows as one of the above — most often *left
 //! the window* or *not converged* — or as *converged* at another optimum,
-//! which only a caller that knows the truth can tell (the `lsm-affine`
+//! which only a caller that knows the truth can tell (the affine LSM
 //! example warns when estimates lie more than five standard deviations from
 //! its generated truth).
 

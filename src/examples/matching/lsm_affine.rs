@@ -437,7 +437,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
     Ok(s)
 }
 
-/// The pair `lsm-affine` matches, its start, the origin its shifts count
+/// The pair this example matches, its start, the origin its shifts count
 /// from (the search window's centre, or −1 for 1-based positions), and the
 /// truth when it is known.
 struct Pair {
