@@ -224,12 +224,6 @@ fn list_form(cells: &[String]) -> Form {
     }))
 }
 
-/// A column of numbers (a vector of unknowns or observations).
-fn column(xs: &[f64], name: &str) -> Form {
-    let rows: Vec<Vec<f64>> = xs.iter().map(|x| vec![*x]).collect();
-    Form::grid("bmatrix", &rows, name)
-}
-
 /// A column of LaTeX symbols (`a_0 … a_n`).
 fn unknowns(n: usize, name: &str) -> Form {
     Form::grid_tex(

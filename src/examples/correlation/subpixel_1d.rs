@@ -200,15 +200,11 @@ fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
         "Three equations",
         "A 2nd-order polynomial ρ(c) = a0 + a1·c + a2·c² through the best ρ and its two neighbours: one equation per position, in matrix form A·X = L.",
     );
+    step = step.relation(Relation::new(r"\rho_i").sym(r"a_0 + a_1 c_i + a_2 c_i^2"));
     for (k, (c, r)) in x.iter().zip(&y).enumerate() {
-        let rel = Relation::new(format!(r"\rho_{}", k + 1));
-        let rel = if k == 0 {
-            rel.sym(r"a_0 + a_1 c_1 + a_2 c_1^2")
-        } else {
-            rel
-        };
         step = step.relation(
-            rel.subst(format!(r"a_0 + a_1 ({}) + a_2 ({})^2", num(*c), num(*c)))
+            Relation::new(format!(r"\rho_{}", k + 1))
+                .subst(format!(r"a_0 + a_1 ({}) + a_2 ({})^2", num(*c), num(*c)))
                 .value(*r, ""),
         );
     }
@@ -217,7 +213,7 @@ fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
             Relation::new("A X")
                 .sym("L")
                 .subst(Form::grid("bmatrix", &a, "A").then(unknowns(3, "X")))
-                .result(column(&y, "L")),
+                .result(Form::column(&y, "L")),
         )
         .value("A", Value::matrix(&a))
         .value("L", Value::numbers(&y)),
@@ -234,9 +230,9 @@ fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
                 .subst(
                     Form::grid("bmatrix", &a, "A")
                         .then("^{-1}")
-                        .then(column(&y, "L")),
+                        .then(Form::column(&y, "L")),
                 )
-                .result(column(&p.coefficients, "X")),
+                .result(Form::column(&p.coefficients, "X")),
         )
         .value("coefficients", Value::numbers(&p.coefficients)),
     );
@@ -288,10 +284,9 @@ fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
                 .result("0")],
         ),
     };
-    let step = rels.into_iter().fold(
-        Step::new("Location of the maximum", text).relation(slope),
-        Step::relation,
-    );
+    let step = Step::new("Location of the maximum", text)
+        .relation(slope)
+        .relations(rels);
     s.step(
         step.value("extremum", extremum_name(&p.extremum))
             .value("c_max", opt(p.extremum.maximum().map(|a| a[0]))),

@@ -293,15 +293,17 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
             ),
         )
         .relation(
+            Relation::new(r"\rho(c, r)").sym(Form::terms([
+                "a_0",
+                "+ a_1 c",
+                "+ a_2 r",
+                "+ a_3 c r",
+                "+ a_4 c^2",
+                "+ a_5 r^2",
+            ])),
+        )
+        .relation(
             Relation::new(r"\rho_1")
-                .sym(Form::terms([
-                    "a_0",
-                    "+ a_1 c_1",
-                    "+ a_2 r_1",
-                    "+ a_3 c_1 r_1",
-                    "+ a_4 c_1^2",
-                    "+ a_5 r_1^2",
-                ]))
                 .subst(Form::terms([
                     "a_0".to_string(),
                     format!("+ a_1 ({})", num(at(1))),
@@ -316,7 +318,7 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
             Relation::new("A X")
                 .sym("L")
                 .subst(Form::grid("bmatrix", &q.design, "A").then(unknowns(6, "X")))
-                .result(column(&q.observations, "L")),
+                .result(Form::column(&q.observations, "L")),
         )
         .value("A", Value::matrix(&q.design))
         .value("L", Value::numbers(&q.observations)),
@@ -349,7 +351,7 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
         .relation(
             Relation::new("A^T L")
                 .key("AtL")
-                .result(column(&adj.atl, "AᵀL")),
+                .result(Form::column(&adj.atl, "AᵀL")),
         )
         .relation(
             Relation::new("b")
@@ -358,9 +360,9 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
                 .subst(
                     Form::grid("bmatrix", &adj.n, "N")
                         .then("^{-1}")
-                        .then(column(&adj.atl, "AᵀL")),
+                        .then(Form::column(&adj.atl, "AᵀL")),
                 )
-                .result(column(&adj.x, "b")),
+                .result(Form::column(&adj.x, "b")),
         )
         .relation(
             Relation::new("V")
@@ -524,10 +526,9 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
         ),
     };
     let at = q.extremum.maximum();
-    let step = [slope_c, slope_r, hessian, det]
-        .into_iter()
-        .chain(rels)
-        .fold(Step::new("Location of the maximum", text), Step::relation);
+    let step = Step::new("Location of the maximum", text)
+        .relations([slope_c, slope_r, hessian, det])
+        .relations(rels);
     s.step(
         step.value("det", q.det)
             .value("extremum", extremum_name(&q.extremum))
