@@ -343,7 +343,8 @@ fn utm_default_is_bangkok_in_zone_47_as_geoconvert_says() {
         .find(|st| st.title == "Easting and northing")
         .unwrap();
     assert!(
-        en.substituted.contains(r"E = 662\,176.290477\ \text{m}"),
+        en.substituted
+            .contains(r"E = 500\,000 + 162\,176.290477 = 662\,176.290477\,\text{m}"),
         "{}",
         en.substituted
     );
@@ -716,4 +717,80 @@ fn formulas_are_well_formed_latex_for_many_inputs() {
             }
         }
     }
+}
+
+/// Steps are data: every step with a formula has its relations, and every
+/// practice box of the three examples has the relation that computes it
+/// (its key), whose numbers hint ends with the result as "?" and does not
+/// show the answer.
+#[test]
+fn steps_have_parts_and_practice_hints_come_from_keyed_relations() {
+    use photogrammetry_playground::practice::{encode, practice as variant};
+    use photogrammetry_playground::solution::num as shown;
+    for id in ["utm", "utm-inverse", "utm-facts"] {
+        let s = solve(id, &Record::new()).unwrap();
+        for st in &s.steps {
+            if !st.formula.is_empty() || !st.substituted.is_empty() {
+                assert!(!st.parts.is_empty(), "{id} {}: no parts", st.title);
+            }
+        }
+        for v in [3, 7, 11] {
+            let p = variant(id, Some(&encode(v)), 0).unwrap();
+            let s = solve(id, &p.inputs).unwrap();
+            let mut with_numbers = 0;
+            for b in &p.boxes {
+                let r = s
+                    .steps
+                    .iter()
+                    .flat_map(|st| st.parts.iter())
+                    .find(|r| r.key.as_deref() == Some(b.key.as_str()))
+                    .unwrap_or_else(|| panic!("{id}: no relation computes box {}", b.key));
+                assert_eq!(b.hints.numbers, r.question_latex(), "{id} {}", b.key);
+                if b.hints.numbers.is_empty() {
+                    continue;
+                }
+                with_numbers += 1;
+                assert!(b.hints.numbers.ends_with(r"\;?"), "{}", b.hints.numbers);
+                let x = s
+                    .result
+                    .number(&b.key)
+                    .or_else(|| s.steps.iter().find_map(|st| st.values.number(&b.key)));
+                let x = shown(x.unwrap());
+                if x.len() >= 4 {
+                    assert!(
+                        !b.hints.numbers.contains(&x),
+                        "{id} {}: {x} in {}",
+                        b.key,
+                        b.hints.numbers
+                    );
+                }
+            }
+            // most boxes show their numbers
+            assert!(
+                2 * with_numbers >= p.boxes.len(),
+                "{id}: {with_numbers} of {}",
+                p.boxes.len()
+            );
+        }
+    }
+    // the zone step as relations: the floor, λ₀, Δλ, i, the band, the hemisphere
+    let s = solve("utm", &Record::new()).unwrap();
+    let zone = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Zone"))
+        .unwrap();
+    let keys: Vec<_> = zone
+        .parts
+        .iter()
+        .map(|r| r.key.as_deref().unwrap_or(""))
+        .collect();
+    assert_eq!(
+        keys,
+        ["zone", "central_meridian", "dlon", "", "band", "hemisphere"]
+    );
+    assert_eq!(
+        zone.parts[2].substituted_latex(),
+        r"\Delta\lambda = 100.5^\circ - 99^\circ = 1.5^\circ"
+    );
 }

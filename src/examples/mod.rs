@@ -17,8 +17,6 @@ pub mod filters;
 pub mod interest;
 pub mod matching;
 pub mod projection;
-pub mod projection_facts;
-pub mod projection_figure;
 pub mod resampling;
 pub mod transformations;
 

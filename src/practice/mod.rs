@@ -14,7 +14,6 @@
 
 pub mod filters;
 pub mod grade;
-pub mod projection;
 
 use crate::error::{Error, Result};
 use crate::examples;
@@ -98,7 +97,6 @@ pub fn specs() -> Vec<Spec> {
         })
         .collect();
     all.extend(filters::specs());
-    all.extend(projection::specs());
     all
 }
 
