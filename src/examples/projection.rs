@@ -287,6 +287,37 @@ fn coefficient_step(s: &Series, forward: bool) -> Step {
         .value(key, Value::numbers(&c))
 }
 
+/// `lhs = sym`, with the numbers `start ± sum = value`: a series' sum added
+/// to (`plus`) or taken from where it starts (ξ = ξ′ + Σ…, ξ′ = ξ − Σ…).
+fn series_relation(
+    lhs: &str,
+    key: &str,
+    sym: &str,
+    start: f64,
+    value: f64,
+    plus: bool,
+) -> Relation {
+    let (op, sum) = if plus {
+        ("+", value - start)
+    } else {
+        ("-", start - value)
+    };
+    Relation::new(lhs)
+        .key(key)
+        .sym(sym)
+        .subst(format!("{} {op} {}", fmt_sig(start, 14), par(sci(sum, 10))))
+        .result(fmt_sig(value, 14))
+}
+
+/// λ₀ = 6·zone − 183 with the numbers.
+fn central_meridian_relation(zone: u8, central_meridian: f64) -> Relation {
+    Relation::new(r"\lambda_0")
+        .key("central_meridian")
+        .sym(r"6\cdot\text{zone} - 183")
+        .subst(format!(r"6\cdot {zone} - 183"))
+        .result(deg(central_meridian.to_string()))
+}
+
 // ---------------------------------------------------------------------------
 // Practice: what the drills of `utm` and `utm-inverse` share.
 //
@@ -306,6 +337,8 @@ const CONVERGENCE: Tolerance = Tolerance::abs(1e-4);
 
 /// The sign flip of a value east or west of the central meridian.
 const EAST_WEST: &str = "The size is right but the sign is not: east of the central meridian it is positive, west negative.";
+/// The central meridian taken for the zone's eastern edge.
+const EDGE: &str = "6·zone − 180 is the zone's eastern edge; its central meridian is 6·zone − 183.";
 /// The sign flip of the meridian convergence.
 const CONVERGENCE_FLIP: &str = "The size is right but the sign is not: γ has the sign of Δλ·sin φ (east of the central meridian in the north, positive).";
 

@@ -108,39 +108,33 @@ fn zone_step(lon: f64, u: &utm::Forward) -> Step {
     } else {
         format!(" {} 360", if wrap > 0.0 { "+" } else { "-" })
     };
-    step.relation(
-        Relation::new(r"\lambda_0")
-            .key("central_meridian")
-            .sym(r"6\cdot\text{zone} - 183")
-            .subst(format!(r"6\cdot {} - 183", u.zone))
-            .result(deg(u.central_meridian.to_string())),
-    )
-    .relation(
-        Relation::new(r"\Delta\lambda")
-            .key("dlon")
-            .sym(r"\lambda - \lambda_0")
-            .subst(format!(
-                "{} - {}{wrap}",
-                deg(par(fmt_sig(lon, 12))),
-                deg(par(u.central_meridian.to_string()))
-            ))
-            .result(deg(fmt_sig(u.dlon, 12))),
-    )
-    .relation(Relation::new("i").sym(r"\left\lfloor\frac{\varphi^\circ + 80}{8}\right\rfloor"))
-    .relation(
-        Relation::new(r"\text{band}")
-            .key("band")
-            .sym(r"\text{CDE}\ldots\text{WX}[i]")
-            .result(format!(r"\text{{{}}}", u.band)),
-    )
-    .relation(
-        Relation::new(r"\text{hemisphere}")
-            .key("hemisphere")
-            .result(format!(r"\text{{{}}}", u.hemisphere.name())),
-    )
-    .value("zone", f64::from(u.zone))
-    .value("central_meridian", u.central_meridian)
-    .value("dlon", u.dlon)
+    step.relation(central_meridian_relation(u.zone, u.central_meridian))
+        .relation(
+            Relation::new(r"\Delta\lambda")
+                .key("dlon")
+                .sym(r"\lambda - \lambda_0")
+                .subst(format!(
+                    "{} - {}{wrap}",
+                    deg(par(fmt_sig(lon, 12))),
+                    deg(par(u.central_meridian.to_string()))
+                ))
+                .result(deg(fmt_sig(u.dlon, 12))),
+        )
+        .relation(Relation::new("i").sym(r"\left\lfloor\frac{\varphi^\circ + 80}{8}\right\rfloor"))
+        .relation(
+            Relation::new(r"\text{band}")
+                .key("band")
+                .sym(r"\text{CDE}\ldots\text{WX}[i]")
+                .result(format!(r"\text{{{}}}", u.band)),
+        )
+        .relation(
+            Relation::new(r"\text{hemisphere}")
+                .key("hemisphere")
+                .result(format!(r"\text{{{}}}", u.hemisphere.name())),
+        )
+        .value("zone", f64::from(u.zone))
+        .value("central_meridian", u.central_meridian)
+        .value("dlon", u.dlon)
 }
 
 fn solve(inputs: &Record) -> Result<Solution> {
@@ -250,28 +244,22 @@ fn solve(inputs: &Record) -> Result<Solution> {
             "Krüger's series",
             "From the sphere back to the ellipsoid: six terms of a series in the complex number ζ′ = ξ′ + iη′, written out in real and imaginary parts.",
         )
-        .relation(
-            Relation::new(r"\xi")
-                .key("xi")
-                .sym(r"\xi' + \sum_{j=1}^{6} \alpha_j \sin 2j\xi' \cosh 2j\eta'")
-                .subst(format!(
-                    "{} + {}",
-                    fmt_sig(tm.xi_prime, 14),
-                    par(sci(tm.xi - tm.xi_prime, 10))
-                ))
-                .result(fmt_sig(tm.xi, 14)),
-        )
-        .relation(
-            Relation::new(r"\eta")
-                .key("eta")
-                .sym(r"\eta' + \sum_{j=1}^{6} \alpha_j \cos 2j\xi' \sinh 2j\eta'")
-                .subst(format!(
-                    "{} + {}",
-                    fmt_sig(tm.eta_prime, 14),
-                    par(sci(tm.eta - tm.eta_prime, 10))
-                ))
-                .result(fmt_sig(tm.eta, 14)),
-        )
+        .relation(series_relation(
+            r"\xi",
+            "xi",
+            r"\xi' + \sum_{j=1}^{6} \alpha_j \sin 2j\xi' \cosh 2j\eta'",
+            tm.xi_prime,
+            tm.xi,
+            true,
+        ))
+        .relation(series_relation(
+            r"\eta",
+            "eta",
+            r"\eta' + \sum_{j=1}^{6} \alpha_j \cos 2j\xi' \sinh 2j\eta'",
+            tm.eta_prime,
+            tm.eta,
+            true,
+        ))
         .value("xi", tm.xi)
         .value("eta", tm.eta),
     );
@@ -589,8 +577,6 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
     const SWAP: &str =
         "φ is the latitude (north–south), λ the longitude (east–west): the zone comes from λ.";
     const RULE: &str = "South-west Norway (56°–64°N, 3°–12°E) is all zone 32; on Svalbard (72°–84°N, 0°–42°E) only zones 31, 33, 35 and 37 are used.";
-    const EDGE: &str =
-        "6·zone − 180 is the zone's eastern edge; its central meridian is 6·zone − 183.";
     const OFF: &str =
         "Zone z spans 6z − 186° to 6z − 180°: that meridian belongs to the next zone.";
     const RAD: &str = "Degrees and radians mixed: trigonometric functions need Δλ in radians, the box asks for degrees.";

@@ -114,13 +114,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
             "Remove the false easting and northing",
             "x is measured east of the central meridian, y north of the equator.",
         )
-        .relation(
-            Relation::new(r"\lambda_0")
-                .key("central_meridian")
-                .sym(r"6\cdot\text{zone} - 183")
-                .subst(format!(r"6\cdot{zone} - 183"))
-                .result(deg(inv.central_meridian.to_string())),
-        )
+        .relation(central_meridian_relation(zone, inv.central_meridian))
         .relation(
             Relation::new("x")
                 .key("x")
@@ -164,28 +158,22 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 .subst(format!(r"\frac{{{}}}{{{ka}}}", fixed(inv.x, 6)))
                 .result(fmt_sig(tm.eta, 14)),
         )
-        .relation(
-            Relation::new(r"\xi'")
-                .key("xi_prime")
-                .sym(r"\xi - \sum_{j=1}^{6}\beta_j \sin 2j\xi\cosh 2j\eta")
-                .subst(format!(
-                    "{} - {}",
-                    fmt_sig(tm.xi, 14),
-                    par(sci(tm.xi - tm.xi_prime, 10))
-                ))
-                .result(fmt_sig(tm.xi_prime, 14)),
-        )
-        .relation(
-            Relation::new(r"\eta'")
-                .key("eta_prime")
-                .sym(r"\eta - \sum_{j=1}^{6}\beta_j\cos 2j\xi \sinh 2j\eta")
-                .subst(format!(
-                    "{} - {}",
-                    fmt_sig(tm.eta, 14),
-                    par(sci(tm.eta - tm.eta_prime, 10))
-                ))
-                .result(fmt_sig(tm.eta_prime, 14)),
-        )
+        .relation(series_relation(
+            r"\xi'",
+            "xi_prime",
+            r"\xi - \sum_{j=1}^{6}\beta_j \sin 2j\xi\cosh 2j\eta",
+            tm.xi,
+            tm.xi_prime,
+            false,
+        ))
+        .relation(series_relation(
+            r"\eta'",
+            "eta_prime",
+            r"\eta - \sum_{j=1}^{6}\beta_j\cos 2j\xi \sinh 2j\eta",
+            tm.eta,
+            tm.eta_prime,
+            false,
+        ))
         .value("xi", tm.xi)
         .value("eta", tm.eta)
         .value("xi_prime", tm.xi_prime)
@@ -503,8 +491,6 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
     let zone = n(i, "zone");
     let (e, north) = (n(i, "easting"), n(i, "northing"));
     let south = inputs.text("hemisphere")? == "south";
-    const EDGE: &str =
-        "6·zone − 180 is the zone's eastern edge; its central meridian is 6·zone − 183.";
     const OFF: &str = "Zone z spans 6z − 186° to 6z − 180°: its central meridian is 6z − 183°.";
     const RAD: &str = "That is the angle in radians; the box asks for degrees (× 180/π).";
     const K0_: &str = "k₀ = 0.9996 scales the whole projection: divide by k₀·A, not by A.";
