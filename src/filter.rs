@@ -179,7 +179,7 @@ pub fn high_pass() -> Kernel {
     Kernel::literal([[-1, -1, -1], [-1, 8, -1], [-1, -1, -1]], 9.0)
 }
 
-/// A kernel of the course by its name in `filter-window` and the lab
+/// A kernel of the course by its name in the filter example and the lab
 /// (`mean`, `weighted-mean`, `gaussian-3`, `gaussian-5`, `laplacian-4`,
 /// `laplacian-8`, `laplacian-004`, `log`, `sharpen`, `high-pass`):
 /// `Some(Some(k))`; `Some(None)` for `median` (no kernel); `None` for any

@@ -413,9 +413,23 @@ fn example_15_mean_exact_and_every_slip_flagged() {
         .unwrap();
     assert!(flat(&st.substituted)
         .contains(r"9 + 24 + 7 + 10 + 13 + 14 + 13 + 18 + 17\right) = \frac{125}{9}"));
-    // one line per kernel row, as the kernel is laid out
-    assert!(st.substituted.starts_with(r"\begin{aligned}"));
-    assert_eq!(st.substituted.matches(r"\\").count(), 3);
+    // one piece per kernel row (the page breaks lines between them), as
+    // the kernel is laid out
+    let sum = st
+        .parts
+        .iter()
+        .find(|r| r.key.as_deref() == Some("numerator_sum"))
+        .unwrap();
+    let rows: Vec<String> = sum.substituted[0].0.iter().map(|p| p.latex()).collect();
+    assert_eq!(
+        rows,
+        [
+            r"\tfrac{1}{9}\big(9 + 24 + 7",
+            "+ 10 + 13 + 14",
+            r"+ 13 + 18 + 17\big)"
+        ]
+    );
+    assert_eq!(sum.result.len(), 2, "125/9 and its value");
 }
 
 #[test]
@@ -1027,7 +1041,7 @@ mod parts_common;
 /// Issue 30, item 2: every step is data (its LaTeX made from its parts) and
 /// every practice box's hints come from the relation keyed with its value.
 #[test]
-fn resampling_steps_are_data_and_hints_are_keyed() {
+fn resampling_and_filters_steps_are_data_and_hints_are_keyed() {
     let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(
         &photogrammetry_playground::examples::resampling::TOPIC,
         10,
@@ -1071,5 +1085,43 @@ fn resampling_steps_are_data_and_hints_are_keyed() {
             .starts_with(r"P = \begin{bmatrix}68 & 64 & 72 & 79 \\"),
         "{}",
         st.substituted
+    );
+}
+
+#[test]
+fn filters_steps_are_data_and_hints_are_keyed() {
+    let with_numbers = parts_common::steps_are_data_and_hints_are_keyed(
+        &photogrammetry_playground::examples::filters::TOPIC,
+        10,
+    );
+    // the sum of filter-window (its output boxes are elements of the whole
+    // filtered grid: formula and nudge only) and the three boxes of
+    // edge-window, whose variants select the centre: in every variant
+    assert_eq!(with_numbers, 10 * (1 + 3));
+    let s = solve(
+        "edge-window",
+        &Record::new().with("select_c", 3.0).with("select_r", 3.0),
+    )
+    .unwrap();
+    let st = s
+        .steps
+        .iter()
+        .find(|st| st.title.starts_with("Gx at"))
+        .unwrap();
+    assert_eq!(
+        st.formula,
+        r"G_x(r, c) = \sum_j\sum_i \mathrm{pk_x}(i, j)\, f(r + j, c + i)"
+    );
+    assert_eq!(
+        st.parts[1].question_latex(),
+        r"G_x(r_{3}, c_{3}) = 15 + 10 + 9 - 13 - 14 - 15 = \;?"
+    );
+    // a kernel with its divisor: the factor, then the numerators as a grid
+    let s = solve("filter-window", &Record::new().with("kernel", "gaussian-3")).unwrap();
+    let w = &s.steps[0].parts[0];
+    assert_eq!(w.substituted[0].0.len(), 2);
+    assert_eq!(
+        s.steps[0].substituted,
+        r"w = \frac{1}{16} \begin{bmatrix}1 & 2 & 1 \\ 2 & 4 & 2 \\ 1 & 2 & 1\end{bmatrix}"
     );
 }

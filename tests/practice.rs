@@ -1553,14 +1553,14 @@ fn carried_forward_windows() {
         carries_forward(
             "edge-window",
             code,
-            &[("gx[2,2]", 5.0)],
-            &["magnitude[2,2]"],
+            &[("selected_gx", 5.0)],
+            &["selected_magnitude"],
         );
         carries_forward(
             "edge-window",
             code,
-            &[("gy[2,2]", -5.0)],
-            &["magnitude[2,2]"],
+            &[("selected_gy", -5.0)],
+            &["selected_magnitude"],
         );
         let d = scaled("forstner-window", code, "n[1,1]", 0.3);
         // (a larger N₁₁ moves det N and tr N together: q may hardly move)

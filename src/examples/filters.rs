@@ -3,18 +3,20 @@
 //! Prewitt and Sobel edge operators with the gradient magnitude. The output
 //! pixel the student selects is worked out as the seeds write it; the
 //! seeds' printed values stand beside the exact ones, every slip explained.
-
-use super::fields::{Field, Inputs, Kind};
-use super::{Example, Lab, Topic};
-use crate::error::{Error, Result};
-use crate::filter::{self, Filtered, Gradient, Kernel, PixelSum};
-use crate::raster::{Border, Grid};
-use crate::solution::{num, tex, NoteKind, Record, Solution, Step, Value};
+//! Each example is one file beside this one; this file keeps what they
+//! share: the window, selection and border fields, the written-out sum,
+//! the notes and the practice windows.
 
 mod edge_window;
 mod filter_window;
-use edge_window::*;
-use filter_window::*;
+
+use super::drill::Rng;
+use super::fields::{Field, Inputs};
+use super::{Example, Topic};
+use crate::error::{Error, Result};
+use crate::filter::{self, Kernel, PixelSum};
+use crate::raster::{Border, Grid};
+use crate::solution::{num, tex, Form, NoteKind, Record, Relation, Solution, Step, Value};
 
 const TITLE: &str = "Filters and edges";
 
@@ -32,44 +34,6 @@ pub const EXAMPLE_15: [[f64; 5]; 5] = [
     [13.0, 18.0, 17.0, 19.0, 21.0],
 ];
 
-/// Example 16's window (seed 000).
-pub const EXAMPLE_16: [[f64; 5]; 5] = [
-    [1.0, 2.0, 1.0, 1.0, 1.0],
-    [1.0, 1.0, 9.0, 2.0, 1.0],
-    [1.0, 9.0, 9.0, 8.0, 1.0],
-    [1.0, 1.0, 8.0, 1.0, 2.0],
-    [2.0, 1.0, 1.0, 1.0, 1.0],
-];
-
-/// Seed 004's 5×5 image f(x, y) under the 3×3 mean.
-pub const SEED_004: [[f64; 5]; 5] = [
-    [5.0, 6.0, 7.0, 8.0, 9.0],
-    [11.0, 10.0, 20.0, 30.0, 9.0],
-    [31.0, 50.0, 60.0, 70.0, 9.0],
-    [40.0, 30.0, 20.0, 10.0, 9.0],
-    [58.0, 95.0, 105.0, 106.0, 98.0],
-];
-
-const KERNELS: &[(&str, &str)] = &[
-    ("mean", "3×3 mean (1/9)"),
-    ("weighted-mean", "3×3 weighted mean (1/10, centre 2)"),
-    ("gaussian-3", "3×3 Gaussian (1/16)"),
-    ("gaussian-5", "5×5 Gaussian (1/256)"),
-    ("laplacian-4", "Laplacian, 4 neighbours (centre −4)"),
-    ("laplacian-8", "Laplacian, 8 neighbours (centre −8)"),
-    (
-        "laplacian-004",
-        "Lecture 7's Laplacian as printed (centre 1)",
-    ),
-    ("log", "Laplacian of Gaussian (5×5)"),
-    ("sharpen", "Sharpening (Lecture 7, 1/9)"),
-    ("high-pass", "High-pass (Lecture 7, 1/9)"),
-    ("median", "3×3 median"),
-    ("custom", "Custom kernel"),
-];
-
-const OPERATORS: &[(&str, &str)] = &[("prewitt", "Prewitt"), ("sobel", "Sobel")];
-
 const BORDERS: &[(&str, &str)] = &[
     (
         "crop",
@@ -81,32 +45,7 @@ const BORDERS: &[(&str, &str)] = &[
 ];
 
 /// The examples of this topic, in page order.
-pub const EXAMPLES: &[Example] = &[
-        Example {
-            id: "filter-window",
-            title: "Filtering a window",
-            source: "Worked examples, Examples 15–16; Lecture 7: Image processing",
-            summary: "A window of grey values under a smoothing, sharpening or Laplacian kernel (or the median), each output pixel's sum written out.",
-            fields: filter_fields,
-            solve: filter_window,
-            answer: &["selected", "output"],
-            labels: &[],
-            lab: Some(Lab { family: "filters", explains: &[] }),
-            practice: None,
-        },
-        Example {
-            id: "edge-window",
-            title: "Prewitt and Sobel edges",
-            source: "Worked examples, Example 15",
-            summary: "The responses to the Prewitt or Sobel kernels in both directions and the edge magnitude √(Gx² + Gy²).",
-            fields: edge_fields,
-            solve: edge_window,
-            answer: &["selected_gx", "selected_gy", "selected_magnitude"],
-            labels: &[],
-            lab: Some(Lab { family: "edges", explains: &[] }),
-            practice: None,
-        },
-];
+pub const EXAMPLES: &[Example] = &[filter_window::EXAMPLE, edge_window::EXAMPLE];
 
 /// The topic: its module (`web/filters/`) and title.
 pub const TOPIC: Topic = Topic {
@@ -114,77 +53,6 @@ pub const TOPIC: Topic = Topic {
     title: TITLE,
     examples: EXAMPLES,
 };
-
-// ---------------------------------------------------------------------------
-// Field builders and input readers shared with the resampling examples (kept
-// here, not in fields.rs, so that the shared file stays untouched).
-
-/// A matrix field of any size up to `MAX_DIM` × `MAX_DIM`.
-pub(super) fn matrix_field(key: &'static str, label: &'static str, default: &[Vec<f64>]) -> Field {
-    Field {
-        key,
-        label,
-        help: "",
-        kind: Kind::Matrix {
-            rows: None,
-            cols: None,
-        },
-        default: Value::matrix(default),
-        when: None,
-    }
-}
-
-/// A choice field; `options` are `(value, label)` pairs.
-pub(super) fn choice_field(
-    key: &'static str,
-    label: &'static str,
-    options: &'static [(&'static str, &'static str)],
-    default: &'static str,
-) -> Field {
-    Field {
-        key,
-        label,
-        help: "",
-        kind: Kind::Choice { options },
-        default: Value::from(default),
-        when: None,
-    }
-}
-
-/// The text of a validated choice field.
-pub(super) fn text<'a>(inputs: &'a Record, key: &str) -> Result<&'a str> {
-    match inputs.get(key) {
-        Some(Value::Text(t)) => Ok(t),
-        _ => Err(Error::Internal(format!(
-            "validated input \"{key}\" is not a string"
-        ))),
-    }
-}
-
-/// The rows of a validated matrix field.
-pub(super) fn rows(inputs: &Record, key: &str) -> Result<Vec<Vec<f64>>> {
-    let bad = || Error::Internal(format!("validated input \"{key}\" is not a matrix"));
-    match inputs.get(key) {
-        Some(Value::List(rows)) => rows
-            .iter()
-            .map(|r| match r {
-                Value::List(xs) => xs.iter().map(|x| x.as_f64().ok_or_else(bad)).collect(),
-                _ => Err(bad()),
-            })
-            .collect(),
-        _ => Err(bad()),
-    }
-}
-
-/// A matrix in LaTeX.
-pub(super) fn bmatrix(rows: &[Vec<f64>]) -> String {
-    let body = rows
-        .iter()
-        .map(|r| r.iter().map(|x| num(*x)).collect::<Vec<_>>().join(" & "))
-        .collect::<Vec<_>>()
-        .join(r" \\ ");
-    format!(r"\begin{{bmatrix}} {body} \end{{bmatrix}}")
-}
 
 fn to_rows<const N: usize>(m: &[[f64; N]]) -> Vec<Vec<f64>> {
     m.iter().map(|r| r.to_vec()).collect()
@@ -194,7 +62,7 @@ fn to_rows<const N: usize>(m: &[[f64; N]]) -> Vec<Vec<f64>> {
 // Fields
 
 fn window_field() -> Field {
-    matrix_field("window", "Window of grey values", &to_rows(&EXAMPLE_15)).help(
+    Field::matrix("window", "Window of grey values", &to_rows(&EXAMPLE_15)).help(
         "Rows of grey values. Example 15: the default. Example 16: 1 2 1 1 1; 1 1 9 2 1; 1 9 9 8 1; 1 1 8 1 2; 2 1 1 1 1. Lecture 7: 5 6 7 8 9; 11 10 20 30 9; 31 50 60 70 9; 40 30 20 10 9; 58 95 105 106 98.",
     )
 }
@@ -211,43 +79,9 @@ fn select_fields() -> [Field; 2] {
 }
 
 fn border_field() -> Field {
-    choice_field("border", "At the window's edge", BORDERS, "crop").help(
+    Field::choice("border", "At the window's edge", BORDERS, "crop").help(
         "Crop keeps only the pixels where the whole kernel lies inside the window, as the course documents do; the other policies give an output for every pixel by inventing values outside.",
     )
-}
-
-fn filter_fields() -> Vec<Field> {
-    let [sc, sr] = select_fields();
-    vec![
-        window_field(),
-        choice_field("kernel", "Kernel", KERNELS, "mean")
-            .help("Example 15 uses the mean and the Gaussian, Example 16 the 8-neighbour Laplacian, Lecture 7 the mean."),
-        matrix_field(
-            "custom_kernel",
-            "Custom kernel (numerators)",
-            &[vec![0.0, -1.0, 0.0], vec![-1.0, 5.0, -1.0], vec![0.0, -1.0, 0.0]],
-        )
-        .help("Used when the kernel is Custom: an odd number of rows and of columns, at most 15×15; applied as written (no flip).")
-        .when("kernel", &["custom"]),
-        Field::number("custom_divisor", "Custom kernel divisor", 1.0)
-            .positive(1e12)
-            .help("The custom kernel's numerators are divided by this (16 for a 1/16 kernel).")
-            .when("kernel", &["custom"]),
-        sc,
-        sr,
-        border_field(),
-    ]
-}
-
-fn edge_fields() -> Vec<Field> {
-    let [sc, sr] = select_fields();
-    vec![
-        window_field(),
-        choice_field("operator", "Edge operator", OPERATORS, "prewitt"),
-        sc,
-        sr,
-        border_field(),
-    ]
 }
 
 // ---------------------------------------------------------------------------
@@ -263,35 +97,10 @@ fn border_of(name: &str) -> Result<Border> {
     }
 }
 
-/// The named kernel (`None` for the median).
-fn named_kernel(name: &str, inputs: &Record) -> Result<Option<Kernel>> {
-    if let Some(k) = filter::by_name(name) {
-        return Ok(k);
-    }
-    Ok(Some(match name {
-        "custom" => {
-            let k = rows(inputs, "custom_kernel")?;
-            let (h, w) = (k.len(), k.first().map_or(0, Vec::len));
-            if h > MAX_KERNEL || w > MAX_KERNEL {
-                return Err(Error::input(
-                    "custom_kernel",
-                    format!("is {h}×{w}; at most {MAX_KERNEL}×{MAX_KERNEL} is allowed"),
-                ));
-            }
-            Kernel::new(
-                "custom_kernel",
-                &k,
-                Inputs(inputs).number("custom_divisor")?,
-            )?
-        }
-        other => return Err(Error::Internal(format!("unknown kernel \"{other}\""))),
-    }))
-}
-
 /// The window as a grid, and the selected pixel (zero-based), checked.
 fn window_and_selection(inputs: &Record) -> Result<(Grid, usize, usize)> {
-    let window = Grid::from_rows("window", &rows(inputs, "window")?)?;
     let i = Inputs(inputs);
+    let window = Grid::from_rows("window", &i.rows("window")?)?;
     let (sc, sr) = (i.number("select_c")?, i.number("select_r")?);
     if sc > window.width() as f64 {
         return Err(Error::input(
@@ -352,9 +161,9 @@ fn term(n: f64, f: f64, first: bool) -> Option<String> {
     Some(format!("{sign}{body}"))
 }
 
-/// The sum `Σ n·f` written out as the seed writes it.
-/// The sum `Σ n·f` written out as the seed writes it, one line per kernel
-/// row (rows of zero weights left out).
+/// The sum `Σ n·f` written out as the seed writes it, one piece per
+/// kernel row (rows of zero weights left out), so that the page breaks
+/// lines where the kernel's rows end.
 fn written_lines(ps: &PixelSum) -> Vec<String> {
     let mut lines = Vec::new();
     let w = ps.width.max(1);
@@ -366,7 +175,7 @@ fn written_lines(ps: &PixelSum) -> Vec<String> {
             }
         }
         if !line.is_empty() {
-            lines.push(line);
+            lines.push(line.trim_start().to_string());
         }
     }
     if lines.is_empty() {
@@ -375,109 +184,58 @@ fn written_lines(ps: &PixelSum) -> Vec<String> {
     lines
 }
 
-/// The selected pixel's sum, aligned one kernel row per line:
-/// `g(r_2, c_2) = 1/9 (10 + 13 + 3 ⏎ + 11 + 15 + 10 ⏎ + 9 + 24 + 7) = 102/9 = 11.33333`.
-fn written_sum(name: &str, ps: &PixelSum) -> String {
+/// The selected pixel's sum as the seeds write it, `name(r_2, c_2) =
+/// 1/9 (10 + 13 + 3 ⏎ + 11 + 15 + 10 ⏎ + 9 + 24 + 7) = 102/9 = 11.33333`,
+/// after the general formula `symbolic` (whose left-hand side is
+/// `name(r, c)`); `key` is the value it computes.
+fn written_sum(name: &str, symbolic: &str, key: &str, ps: &PixelSum) -> [Relation; 2] {
     let lines = written_lines(ps);
-    let last = lines.len().saturating_sub(1);
+    let last = lines.len() - 1;
     let scaled = ps.divisor != 1.0;
     let d = num(ps.divisor);
-    let mut body = String::new();
-    for (i, l) in lines.iter().enumerate() {
+    let pieces = lines.iter().enumerate().map(|(i, l)| {
         let open = if i == 0 && scaled {
             format!(r"\tfrac{{1}}{{{d}}}\big(")
         } else {
             String::new()
         };
         let close = if i == last && scaled { r"\big)" } else { "" };
-        let lead = if i == 0 { "&= " } else { r"&\qquad " };
-        body.push_str(&format!(r"{lead}{open}{l}{close} \\ "));
+        format!("{open}{l}{close}")
+    });
+    let mut numbers = Relation::new(format!("{name}{}", pixel_name(ps.c, ps.r)))
+        .key(key)
+        .subst(Form::terms(pieces));
+    if scaled {
+        numbers = numbers.result(format!(r"\frac{{{}}}{{{d}}}", num(ps.numerator_sum)));
     }
-    let total = if scaled {
-        format!(
-            r"&= \frac{{{}}}{{{d}}} = {}",
-            num(ps.numerator_sum),
-            num(ps.value)
-        )
-    } else {
-        format!("&= {}", num(ps.value))
-    };
-    format!(
-        r"\begin{{aligned}} {name}{} {body}{total} \end{{aligned}}",
-        pixel_name(ps.c, ps.r)
-    )
+    [
+        Relation::new(format!("{name}(r, c)")).sym(symbolic),
+        numbers.value(ps.value, ""),
+    ]
 }
 
-/// The kernel in LaTeX: `\frac{1}{16}\begin{bmatrix}…\end{bmatrix}`.
-fn kernel_tex(k: &Kernel) -> String {
-    let m = bmatrix(&k.numerators().rows());
+/// The kernel as a formula: `\frac{1}{16}` and its numerators as a grid
+/// named `name`.
+fn kernel_form(k: &Kernel, name: &str) -> Form {
+    let m = Form::grid("bmatrix", &k.numerators().rows(), name);
     if k.divisor() == 1.0 {
         m
     } else {
-        format!(r"\frac{{1}}{{{}}}{m}", num(k.divisor()))
+        Form::from(format!(r"\frac{{1}}{{{}}}", num(k.divisor()))).then(m)
     }
 }
 
-fn matrix_step(title: &str, text: &str, symbol: &str, key: &str, g: &Grid) -> Step {
+/// A whole output grid: `symbol = [ symbol(r, c) ]` and its values, the
+/// grid named `name` for the page's captions.
+fn matrix_step(title: &str, text: &str, (symbol, name): (&str, &str), key: &str, g: &Grid) -> Step {
     Step::new(title, text)
-        .formula(
-            &format!("{symbol} = [\\,{symbol}(r, c)\\,]"),
-            format!("{symbol} = {}", bmatrix(&g.rows())),
+        .relation(
+            Relation::new(symbol)
+                .key(key)
+                .sym(format!("[\\,{symbol}(r, c)\\,]"))
+                .result(Form::grid("bmatrix", &g.rows(), name)),
         )
         .value(key, Value::matrix(&g.rows()))
-}
-
-/// Notes for a kernel whose sum is not what its kind needs.
-fn kernel_sum_notes(s: &mut Solution, name: &str, k: &Kernel) {
-    let sum = k.sum();
-    let expected = match name {
-        "mean" | "weighted-mean" | "gaussian-3" | "gaussian-5" | "sharpen" => Some(1.0),
-        "laplacian-4" | "laplacian-8" | "laplacian-004" | "log" | "high-pass" => Some(0.0),
-        _ => None,
-    };
-    match expected {
-        Some(e) if (sum - e).abs() > 1e-12 => s.note(
-            NoteKind::Erratum,
-            format!(
-                "Lecture 7 prints its Laplacian as [−1 −1 −1; −1 1 −1; −1 −1 −1]. Its weights sum to {}, not 0, so a flat area of grey value g comes out as {}·g instead of 0 and the filter is no edge detector. The centre must be 8: [−1 −1 −1; −1 8 −1; −1 −1 −1] sums to 0 and is the worked examples' 8-neighbour Laplacian with the sign turned (the same page's high-pass kernel is it divided by 9).",
-                num(sum),
-                num(sum)
-            ),
-        ).about(&["kernel", "kernel_sum"]),
-        Some(1.0) => s.note(
-            NoteKind::Convention,
-            "The kernel's weights sum to 1, as a smoothing (or sharpening) kernel's must: a flat area keeps its grey value.",
-        ).about(&["kernel_sum"]),
-        Some(_) => s.note(
-            NoteKind::Convention,
-            "The kernel's weights sum to 0, as a derivative kernel's must: a flat area gives 0.",
-        ).about(&["kernel_sum"]),
-        None => {
-            if (sum - 1.0).abs() > 1e-12 && sum.abs() > 1e-12 {
-                s.note(
-                    NoteKind::Warning,
-                    format!(
-                        "The custom kernel's weights sum to {}: a flat area of grey value g comes out as {}·g. A smoothing kernel sums to 1 (grey values kept), a derivative kernel to 0.",
-                        num(sum),
-                        num(sum)
-                    ),
-                ).about(&["kernel_sum"]);
-            } else {
-                s.note(
-                    NoteKind::Convention,
-                    format!(
-                        "The custom kernel's weights sum to {}: {}",
-                        num(sum),
-                        if sum.abs() <= 1e-12 {
-                            "a flat area gives 0, as for a derivative kernel."
-                        } else {
-                            "a flat area keeps its grey value, as under a smoothing kernel."
-                        }
-                    ),
-                ).about(&["kernel_sum"]);
-            }
-        }
-    }
 }
 
 fn correlation_note(s: &mut Solution) {
@@ -538,4 +296,52 @@ fn printed_at(printed: &[Vec<f64>], region: filter::Region, c: usize, r: usize) 
         .get(r - region.r0)
         .and_then(|row| row.get(c - region.c0))
         .copied()
+}
+
+// ---------------------------------------------------------------------------
+// Practice: the windows both drills draw.
+
+/// A 5×5 window of grey values (about 10–60, 0–75 with a steep slope) with
+/// an edge and some texture: no 3×3 neighbourhood is flat.
+fn practice_window(rng: &mut Rng) -> Vec<Vec<f64>> {
+    let (gc, gr) = (rng.num(-6, 6), rng.num(-6, 6));
+    let (gc, gr) = (
+        if gc == 0.0 { 4.0 } else { gc },
+        if gr == 0.0 { -3.0 } else { gr },
+    );
+    let noise: Vec<Vec<f64>> = (0..5)
+        .map(|_| (0..5).map(|_| rng.num(-4, 4)).collect())
+        .collect();
+    let ramp = |gc: f64| -> Vec<Vec<f64>> {
+        (0..5)
+            .map(|r| {
+                (0..5)
+                    .map(|c| {
+                        (35.0 + gc * (c as f64 - 2.0) + gr * (r as f64 - 2.0) + noise[r][c])
+                            .clamp(0.0, 99.0)
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let w = ramp(gc);
+    // Now and then the noise cancels a gentle slope and leaves a 3×3
+    // neighbourhood flat (about one window in 10 000). Such a window gets a
+    // steeper slope: |gc| ≥ 6 spans 12 grey levels over three columns, which
+    // noise of ± 4 cannot bring below 4.
+    if flat_neighbourhood(&w) {
+        ramp(gc + 5.0 * gc.signum())
+    } else {
+        w
+    }
+}
+
+/// Whether some interior pixel's 3×3 neighbourhood spans less than 3 grey levels.
+fn flat_neighbourhood(w: &[Vec<f64>]) -> bool {
+    (1..w.len().saturating_sub(1)).any(|r| {
+        (1..w[r].len().saturating_sub(1)).any(|c| {
+            let n = || (r - 1..=r + 1).flat_map(|y| w[y][c - 1..=c + 1].iter().copied());
+            n().fold(f64::MIN, f64::max) - n().fold(f64::MAX, f64::min) < 3.0
+        })
+    })
 }

@@ -12,7 +12,6 @@
 //! - The expected values are the solver's own results
 //!   ([`crate::examples::solve`]); a test ties every chain to them.
 
-pub mod filters;
 pub mod grade;
 
 use crate::error::{Error, Result};
@@ -96,7 +95,6 @@ pub fn specs() -> Vec<Spec> {
             })
         })
         .collect();
-    all.extend(filters::specs());
     all
 }
 

@@ -1,13 +1,59 @@
-//! Example 15's edges: Prewitt and Sobel gradients, magnitude and direction of one window.
+//! Seed 000, Example 15's edges: the Prewitt and Sobel responses and the
+//! gradient magnitude of one window, the selected pixel's sums written out;
+//! and its practice.
 
+use super::super::drill::{mat, or_given, rows_of, tol, transpose, BoxDef, Drill, Mistake, Rng};
+use super::super::{Example, Lab};
 use super::*;
+use crate::filter::Gradient;
 
-// edge-window
+pub const EXAMPLE: Example = Example {
+    id: "edge-window",
+    title: "Prewitt and Sobel edges",
+    source: "Worked examples, Example 15",
+    summary: "The responses to the Prewitt or Sobel kernels in both directions and the edge magnitude √(Gx² + Gy²).",
+    fields,
+    solve,
+    answer: &["selected_gx", "selected_gy", "selected_magnitude"],
+    labels: &[
+        ("gx", "Gx: top row minus bottom row", ""),
+        ("gy", "Gy: right column minus left column", ""),
+        ("magnitude", "Edge magnitude √(Gx² + Gy²)", ""),
+        ("selected_gx", "Gx at the selected pixel", ""),
+        ("selected_gy", "Gy at the selected pixel", ""),
+        ("selected_magnitude", "Edge magnitude at the selected pixel", ""),
+        ("output_first_c", "Column of the output's first pixel", ""),
+        ("output_first_r", "Row of the output's first pixel", ""),
+    ],
+    lab: Some(Lab {
+        family: "edges",
+        explains: &["window"],
+    }),
+    practice: Some(Drill {
+        generate,
+        boxes,
+        chain: Some(chain),
+        mistakes,
+    }),
+};
+
+const OPERATORS: &[(&str, &str)] = &[("prewitt", "Prewitt"), ("sobel", "Sobel")];
+
+fn fields() -> Vec<Field> {
+    let [sc, sr] = select_fields();
+    vec![
+        window_field(),
+        Field::choice("operator", "Edge operator", OPERATORS, "prewitt"),
+        sc,
+        sr,
+        border_field(),
+    ]
+}
 
 /// Printed Gx, Gy and magnitude.
-pub(super) type Printed3 = ([[f64; 3]; 3], [[f64; 3]; 3], [[f64; 3]; 3]);
+type Printed3 = ([[f64; 3]; 3], [[f64; 3]; 3], [[f64; 3]; 3]);
 
-pub(super) const EX15_PREWITT: Printed3 = (
+const EX15_PREWITT: Printed3 = (
     [
         [-14.0, -12.0, 2.0],
         [-1.0, -8.0, -14.0],
@@ -16,7 +62,7 @@ pub(super) const EX15_PREWITT: Printed3 = (
     [[-10.0, -24.0, 12.0], [1.0, -20.0, 1.0], [6.0, -13.0, 6.0]],
     [[17.2, 26.8, 12.2], [1.4, 21.54, 14.0], [10.0, 19.85, 32.6]],
 );
-pub(super) const EX15_SOBEL: Printed3 = (
+const EX15_SOBEL: Printed3 = (
     [
         [-25.0, -16.0, 5.0],
         [1.0, -12.0, -20.0],
@@ -26,10 +72,11 @@ pub(super) const EX15_SOBEL: Printed3 = (
     [[27.3, 34.0, 12.1], [1.4, 37.9, 20.4], [10.2, 27.3, 43.3]],
 );
 
-pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
+fn solve(inputs: &Record) -> Result<Solution> {
     let (window, sc, sr) = window_and_selection(inputs)?;
-    let op = text(inputs, "operator")?;
-    let border = border_of(text(inputs, "border")?)?;
+    let i = Inputs(inputs);
+    let op = i.text("operator")?;
+    let border = border_of(i.text("border")?)?;
     let (kx, ky, nx, ny, title) = match op {
         "sobel" => (
             filter::sobel_x(),
@@ -50,19 +97,21 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
         return Err(too_small(&window, 3, 3));
     }
     let g: Gradient = filter::gradient(&window, &kx, &ky, border)?;
-    let mut s = Solution::new("edge-window", "Prewitt and Sobel edges", inputs.clone());
+    let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     s.step(
         Step::new(
             &format!("The {title} kernels"),
             "The first kernel takes the top row minus the bottom row, the second the right column minus the left one; the course notes call their responses Gx and Gy.",
         )
-        .formula(
-            &format!(r"\mathrm{{{nx}}},\quad \mathrm{{{ny}}}"),
-            format!(
-                r"\mathrm{{{nx}}} = {},\quad \mathrm{{{ny}}} = {}",
-                kernel_tex(&kx),
-                kernel_tex(&ky)
-            ),
+        .relation(
+            Relation::new(format!(r"\mathrm{{{nx}}}"))
+                .key("kernel_x")
+                .result(kernel_form(&kx, nx)),
+        )
+        .relation(
+            Relation::new(format!(r"\mathrm{{{ny}}}"))
+                .key("kernel_y")
+                .result(kernel_form(&ky, ny)),
         )
         .value("kernel_x", Value::matrix(&kx.numerators().rows()))
         .value("kernel_y", Value::matrix(&ky.numerators().rows())),
@@ -78,10 +127,12 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
                     "Gx at the selected pixel, written out",
                     &format!("The kernel {nx} centred on the pixel in {at}: weights times grey values, added."),
                 )
-                .formula(
-                    &format!(r"G_x(r, c) = \sum_j\sum_i \mathrm{{{nx}}}(i, j)\, f(r + j, c + i)"),
-                    written_sum("G_x", px),
-                )
+                .relations(written_sum(
+                    "G_x",
+                    &format!(r"\sum_j\sum_i \mathrm{{{nx}}}(i, j)\, f(r + j, c + i)"),
+                    "selected_gx",
+                    px,
+                ))
                 .value("select_c", sc + 1)
                 .value("select_r", sr + 1)
                 .value("neighbourhood", Value::numbers(&px.values))
@@ -92,10 +143,12 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
                     "Gy at the selected pixel, written out",
                     &format!("The kernel {ny} on the same pixel."),
                 )
-                .formula(
-                    &format!(r"G_y(r, c) = \sum_j\sum_i \mathrm{{{ny}}}(i, j)\, f(r + j, c + i)"),
-                    written_sum("G_y", py),
-                )
+                .relations(written_sum(
+                    "G_y",
+                    &format!(r"\sum_j\sum_i \mathrm{{{ny}}}(i, j)\, f(r + j, c + i)"),
+                    "selected_gy",
+                    py,
+                ))
                 .value("selected_gy", py.value),
             );
             s.step(
@@ -103,15 +156,16 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
                     "Edge magnitude at the selected pixel",
                     "The length of the gradient vector (Gx, Gy).",
                 )
-                .formula(
-                    r"|G| = \sqrt{G_x^2 + G_y^2}",
-                    format!(
-                        r"|G|{} = \sqrt{{{}^2 + {}^2}} = {}",
-                        pixel_name(sc, sr),
-                        tex(px.value),
-                        tex(py.value),
-                        num(m)
-                    ),
+                .relation(Relation::new("|G|").sym(r"\sqrt{G_x^2 + G_y^2}"))
+                .relation(
+                    Relation::new(format!("|G|{}", pixel_name(sc, sr)))
+                        .key("selected_magnitude")
+                        .subst(format!(
+                            r"\sqrt{{{}^2 + {}^2}}",
+                            tex(px.value),
+                            tex(py.value)
+                        ))
+                        .value(m, ""),
                 )
                 .value("selected_magnitude", m),
             );
@@ -125,14 +179,14 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
     s.step(matrix_step(
         "Gx over the window",
         &format!("The response to {nx} at every pixel with an output."),
-        "G_x",
+        ("G_x", "Gx"),
         "gx",
         &g.gx,
     ));
     s.step(matrix_step(
         "Gy over the window",
         &format!("The response to {ny} at every pixel with an output."),
-        "G_y",
+        ("G_y", "Gy"),
         "gy",
         &g.gy,
     ));
@@ -140,7 +194,7 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
         matrix_step(
             "Edge magnitude over the window",
             "√(Gx² + Gy²) at every pixel with an output: large where the grey values change fast in any direction.",
-            "|G|",
+            ("|G|", "|G|"),
             "magnitude",
             &g.magnitude,
         )
@@ -156,18 +210,6 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
         .with("selected_magnitude", selected.map(|v| v.2))
         .with("output_first_c", g.region.c0 + 1)
         .with("output_first_r", g.region.r0 + 1);
-    for (k, l) in [
-        ("gx", "Gx: top row minus bottom row"),
-        ("gy", "Gy: right column minus left column"),
-        ("magnitude", "Edge magnitude √(Gx² + Gy²)"),
-        ("selected_gx", "Gx at the selected pixel"),
-        ("selected_gy", "Gy at the selected pixel"),
-        ("selected_magnitude", "Edge magnitude at the selected pixel"),
-        ("output_first_c", "Column of the output's first pixel"),
-        ("output_first_r", "Row of the output's first pixel"),
-    ] {
-        s.label(k, l, "");
-    }
     correlation_note(&mut s);
     s.note(
         NoteKind::Convention,
@@ -199,4 +241,81 @@ pub(super) fn edge_window(inputs: &Record) -> Result<Solution> {
         ).about(&["magnitude", "selected_magnitude"]);
     }
     Ok(s)
+}
+
+// ---------------------------------------------------------------------------
+// Practice
+
+/// The window's centre: the pixel the boxes ask for, written out in the
+/// steps (so each box's hint is its own pixel's sum).
+const CENTRE: f64 = 3.0;
+
+fn generate(rng: &mut Rng) -> Record {
+    Record::new()
+        .with("window", mat(&practice_window(rng)))
+        .with("operator", if rng.coin() { "prewitt" } else { "sobel" })
+        .with("select_c", CENTRE)
+        .with("select_r", CENTRE)
+}
+
+/// The sign flip of a gradient: the kernel mirrored.
+const KERNEL_FLIP: &str = "The size is right but the sign is not: apply the kernel as written, its positive side where it is printed.";
+
+fn boxes(_: &Record) -> Vec<BoxDef> {
+    vec![
+        BoxDef::new("selected_gx", "Gx at the centre", None, tol::GREY)
+            .nudge("The seed's x kernel: top row minus bottom row, applied as written.")
+            .sign_flip(KERNEL_FLIP),
+        BoxDef::new("selected_gy", "Gy at the centre", None, tol::GREY)
+            .nudge("The y kernel: right column minus left column.")
+            .sign_flip(KERNEL_FLIP),
+        BoxDef::new(
+            "selected_magnitude",
+            "Edge magnitude at the centre",
+            None,
+            tol::GREY,
+        )
+        .nudge("√(Gx² + Gy²)."),
+    ]
+}
+
+fn number(s: &Solution, key: &str) -> f64 {
+    s.result.number(key).unwrap_or(f64::NAN)
+}
+
+fn chain(i: &Record, g: &Record) -> Result<Record> {
+    let s = EXAMPLE.run(i)?;
+    let gx = or_given(g, "selected_gx", number(&s, "selected_gx"));
+    let gy = or_given(g, "selected_gy", number(&s, "selected_gy"));
+    Ok(Record::new()
+        .with("selected_gx", gx)
+        .with("selected_gy", gy)
+        .with("selected_magnitude", gx.hypot(gy)))
+}
+
+fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
+    let s = EXAMPLE.run(i)?;
+    let (gx, gy) = (number(&s, "selected_gx"), number(&s, "selected_gy"));
+    const SWAP: &str =
+        "The seed's Gx kernel differences top and bottom rows; Gy the right and left columns.";
+    let t = EXAMPLE.run(
+        &i.clone()
+            .with("window", mat(&transpose(&rows_of(i, "window")))),
+    )?;
+    Ok(vec![
+        Mistake::new("selected_gx", "x and y swapped", SWAP, gy),
+        Mistake::new("selected_gy", "x and y swapped", SWAP, gx),
+        Mistake::new(
+            "selected_gx",
+            "rows and columns swapped",
+            "The window's rows run down, its columns to the right.",
+            number(&t, "selected_gx"),
+        ),
+        Mistake::new(
+            "selected_magnitude",
+            "|Gx| + |Gy| instead of the root",
+            "The magnitude is the length of the gradient vector: √(Gx² + Gy²).",
+            gx.abs() + gy.abs(),
+        ),
+    ])
 }
