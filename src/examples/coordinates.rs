@@ -9,9 +9,10 @@ mod photo_to_pixel;
 mod pixel_to_photo;
 
 use super::drill::{BoxDef, Mistake, Rng, Tolerance};
-use super::fields::Field;
+use super::fields::{Field, Inputs};
 use super::{Example, Topic};
 use crate::coords::Frame;
+use crate::error::Result;
 use crate::solution::{exact_minus_printed_share, num, NoteKind, Record, Relation, Solution, Step};
 
 const TITLE: &str = "Coordinates";
@@ -73,6 +74,14 @@ fn frame_fields(columns: f64, rows: f64) -> [Field; 2] {
         size("columns", "Image width (columns)", columns),
         size("rows", "Image height (rows)", rows),
     ]
+}
+
+/// The image size of the inputs (validated, or drawn by practice).
+fn frame(i: &Inputs) -> Result<Frame> {
+    Ok(Frame {
+        columns: i.number("columns")?,
+        rows: i.number("rows")?,
+    })
 }
 
 fn centre_step(frame: Frame) -> Step {
@@ -159,14 +168,6 @@ const PIXEL_SIZE: Tolerance = Tolerance::rel(0.001);
 /// A drawn input (NaN when missing: the audit then finds it).
 fn n(inputs: &Record, key: &str) -> f64 {
     inputs.number(key).unwrap_or(f64::NAN)
-}
-
-/// The frame of drawn inputs.
-fn frame_of(inputs: &Record) -> Frame {
-    Frame {
-        columns: n(inputs, "columns"),
-        rows: n(inputs, "rows"),
-    }
 }
 
 /// The seed's habit: the pixel size rounded to 3 decimals.

@@ -5,7 +5,7 @@ use super::super::drill::{or_given, tol, BoxDef, Drill, Mistake, Rng, Tolerance}
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::*;
-use crate::coords::{self, Frame};
+use crate::coords;
 use crate::error::Result;
 use crate::solution::{exact_minus_printed, num, tex, Record, Relation, Solution, Step};
 
@@ -47,10 +47,7 @@ fn fields() -> Vec<Field> {
 fn solve(inputs: &Record) -> Result<Solution> {
     let i = Inputs(inputs);
     let (dpi, x, y) = (i.number("dpi")?, i.number("x_mm")?, i.number("y_mm")?);
-    let frame = Frame {
-        columns: i.number("columns")?,
-        rows: i.number("rows")?,
-    };
+    let frame = frame(&i)?;
     let o = coords::image_to_pixel(dpi, frame, x, y)?;
     let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     s.step(centre_step(frame));
@@ -200,7 +197,7 @@ fn boxes(_: &Record) -> Vec<BoxDef> {
 /// The boxes from the student's earlier answers: each stage of the
 /// solver's arithmetic on the values given so far.
 fn chain(i: &Record, g: &Record) -> Result<Record> {
-    let (c0, r0) = frame_of(i).centre();
+    let (c0, r0) = frame(&Inputs(i))?.centre();
     let c0 = or_given(g, "c0", c0);
     let r0 = or_given(g, "r0", r0);
     let p = or_given(g, "pixel_size_mm", coords::pixel_size_mm(n(i, "dpi"))?);
@@ -218,7 +215,7 @@ fn chain(i: &Record, g: &Record) -> Result<Record> {
 
 fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
     let (x, y) = (n(i, "x_mm"), n(i, "y_mm"));
-    let o = coords::image_to_pixel(n(i, "dpi"), frame_of(i), x, y)?;
+    let o = coords::image_to_pixel(n(i, "dpi"), frame(&Inputs(i))?, x, y)?;
     let p = o.pixel_size_mm;
     // the centre with rows and columns swapped
     let (swapped_c0, swapped_r0) = (o.r0, o.c0);

@@ -5,7 +5,7 @@ use super::super::drill::{or_given, tol, BoxDef, Drill, Mistake, Rng};
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::*;
-use crate::coords::{self, Frame};
+use crate::coords;
 use crate::error::Result;
 use crate::solution::{exact_minus_printed, fmt_sig, num, tex, Record, Relation, Solution, Step};
 
@@ -47,10 +47,7 @@ fn fields() -> Vec<Field> {
 fn solve(inputs: &Record) -> Result<Solution> {
     let i = Inputs(inputs);
     let (dpi, c, r) = (i.number("dpi")?, i.number("c")?, i.number("r")?);
-    let frame = Frame {
-        columns: i.number("columns")?,
-        rows: i.number("rows")?,
-    };
+    let frame = frame(&i)?;
     let o = coords::pixel_to_image(dpi, frame, c, r)?;
     let mut s = Solution::new(EXAMPLE.id, EXAMPLE.title, inputs.clone());
     s.step(centre_step(frame));
@@ -197,7 +194,7 @@ fn boxes(_: &Record) -> Vec<BoxDef> {
 /// The boxes from the student's earlier answers: each stage of the
 /// solver's arithmetic on the values given so far.
 fn chain(i: &Record, g: &Record) -> Result<Record> {
-    let (c0, r0) = frame_of(i).centre();
+    let (c0, r0) = frame(&Inputs(i))?.centre();
     let c0 = or_given(g, "c0", c0);
     let r0 = or_given(g, "r0", r0);
     let x_px = or_given(g, "x_px", n(i, "c") - c0);
@@ -214,7 +211,7 @@ fn chain(i: &Record, g: &Record) -> Result<Record> {
 }
 
 fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
-    let o = coords::pixel_to_image(n(i, "dpi"), frame_of(i), n(i, "c"), n(i, "r"))?;
+    let o = coords::pixel_to_image(n(i, "dpi"), frame(&Inputs(i))?, n(i, "c"), n(i, "r"))?;
     let (rows, c) = (n(i, "rows"), n(i, "c"));
     let p = o.pixel_size_mm;
     const FLIP: &str = "r counts down, y counts up: y = −(r − r₀).";
