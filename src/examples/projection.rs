@@ -58,7 +58,7 @@ fn ellipsoid(i: &Inputs) -> Result<Ellipsoid> {
     Ellipsoid::by_id(id).ok_or_else(|| Error::Internal(format!("no ellipsoid \"{id}\"")))
 }
 
-/// What the result keys of `utm` and `utm-inverse` mean.
+/// What the result keys of the forward and inverse examples mean.
 const LABELS: &[(&str, &str, &str)] = &[
     ("zone", "UTM zone", ""),
     ("band", "Latitude band", ""),
@@ -188,9 +188,7 @@ fn ellipsoid_step(ell: &Ellipsoid) -> Step {
         ),
     )
     .relation(
-        Relation::new("f")
-            .key("inverse_flattening")
-            .result(format!(r"\frac{{1}}{{{}}}", fmt_sig(ell.inv_f, 13))),
+        Relation::new("f").result(format!(r"\frac{{1}}{{{}}}", fmt_sig(ell.inv_f, 13))),
     )
     .relation(
         Relation::new("e^2")
@@ -319,7 +317,7 @@ fn central_meridian_relation(zone: u8, central_meridian: f64) -> Relation {
 }
 
 // ---------------------------------------------------------------------------
-// Practice: what the drills of `utm` and `utm-inverse` share.
+// Practice: what the drills of the forward and inverse examples share.
 //
 // Tolerances (a 10-digit calculator, intermediates kept to 10 significant
 // digits): zone and central meridian exact; angles in degrees ± 0.000001°
