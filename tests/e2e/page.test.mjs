@@ -132,7 +132,7 @@ describe("numbers before formulas", () => {
       assert.match(await page.locator(".answer-line, .answer").first().innerText(), /35\.649/);
       assert.equal(await page.locator(".steps .katex").count(), 0);
       assert.equal(await page.locator(".steps .formula-pending, .steps [aria-busy]").count(), 0, "no formula left waiting");
-      assert.match(await page.locator(".steps .formula-raw code").first().innerText(), /\\text\{GSD\}\s*=\s*p\s*\\cdot\s*m/);
+      assert.match((await page.locator(".steps .formula-raw code").allInnerTexts()).join("\n"), /\\text\{GSD\}\s*=\s*p\s*\\cdot\s*m/);
     } finally {
       await context.close();
     }
