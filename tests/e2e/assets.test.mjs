@@ -69,7 +69,7 @@ describe("the built dist/", () => {
     // outside assets/: the stable names, the saved answers, the lab's photos, vendor/ (KaTeX and
     // uqr as their authors built them: math.js and practice/sheets.js name them by a fixed URL),
     // and the page's modules by name (one-line re-exports of their builds, never loaded by the page)
-    const byName = (f) => /^export \* from "(\.\.\/)*(\.\/)?assets\/[\w-]+\.js";\n$/.test(read(f));
+    const byName = (f) => /^export \* from "(\.\.\/)*(\.\/)?assets\/([\w-]+\.js)";\n(export \{ default \} from "(\.\.\/)*(\.\/)?assets\/\3";\n)?$/.test(read(f));
     const elsewhere = served.filter((f) => /\.(m?js|wasm|css)$/.test(f) && !f.startsWith(`${ASSETS}/`) && !STABLE.includes(f) && !f.startsWith("vendor/") && !byName(f));
     assert.deepEqual(elsewhere, []);
     for (const f of ["core.js", "lab/lab.js", "figures/chains.js"]) assert.ok(onDisk.has(f) && byName(f), f);
