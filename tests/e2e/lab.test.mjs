@@ -140,7 +140,7 @@ test("the lab loads its own module only when it opens, and every sample opens", 
       assert.match(text, /Apache License\s+Version 2\.0, January 2004/);
     } else assert.equal(await licence.count(), 0, id);
   }
-  assert.ok(log.requests.some((u) => /photogrammetry_lab_bg(\.[0-9a-f]{8})?\.wasm$/.test(u)));
+  assert.ok(log.requests.some((u) => /photogrammetry_lab_bg(-\w{8})?\.wasm$/.test(u)));
   assert.deepEqual(log.pageErrors, []);
   await context.close();
 });
