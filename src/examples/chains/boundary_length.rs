@@ -1,7 +1,7 @@
 //! Seed 000, Example 18: the length of a boundary from its chain code.
 
 use super::*;
-use crate::examples::drill::{or_given, tol, value_in, BoxDef, Drill, Mistake, Tolerance};
+use crate::examples::drill::{drill, or_given, tol, value_in, BoxDef, Drill, Mistake, Tolerance};
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -17,7 +17,7 @@ pub const EXAMPLE: Example = Example {
         family: "boundaries",
         explains: &[],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate: gen_edge,
         boxes,
         chain: Some(chain),
@@ -75,11 +75,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         let [_, dcode] = differential_steps(&d, p.closed, conn);
         s.step(dcode);
         s.result.set("differential", digits_value(&d.code));
-        if p.closed {
-            let sh = chain::shape("pixels", &p.pixels)?;
-            s.step(shape_summary_step(&sh));
-            set_shape(&mut s.result, &sh);
-        }
+        closed_shape(&mut s, p)?;
     } else {
         s.step(broken_step(p));
         s.result.set("code", Value::Null);
@@ -87,11 +83,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
     }
     s.result.set("pixels", pixel_value(&p.pixels));
     s.result.set("closed", p.closed);
-    s.result.set("breaks", breaks_value(p));
-    s.result.set("branches", branches_value(p));
-    if e.given == Given::Region {
-        s.result.set("regions", e.regions.len());
-    }
+    path_results(&mut s.result, &e);
     problems(&mut s, p, conn);
     regions_note(&mut s, &e);
     conn_note(&mut s, conn);

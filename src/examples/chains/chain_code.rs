@@ -2,7 +2,7 @@
 //! its reverse and its differential code.
 
 use super::*;
-use crate::examples::drill::{or_given, tol, value_in, BoxDef, Drill, Mistake};
+use crate::examples::drill::{drill, or_given, tol, value_in, BoxDef, Drill, Mistake};
 use crate::examples::fields::Inputs;
 use crate::examples::Lab;
 
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
         family: "boundaries",
         explains: &["code"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate: gen_edge,
         boxes,
         chain: Some(chain),
@@ -89,20 +89,12 @@ fn solve(inputs: &Record) -> Result<Solution> {
         let l = chain::length(code, conn);
         s.step(length_step(&l, conn, p));
         s.result.set("length", l.length);
-        if p.closed {
-            let sh = chain::shape("pixels", &p.pixels)?;
-            s.step(shape_summary_step(&sh));
-            set_shape(&mut s.result, &sh);
-        }
+        closed_shape(&mut s, p)?;
     } else {
         s.step(broken_step(p));
         s.result.set("length", Value::Null);
     }
-    s.result.set("breaks", breaks_value(p));
-    s.result.set("branches", branches_value(p));
-    if e.given == Given::Region {
-        s.result.set("regions", e.regions.len());
-    }
+    path_results(&mut s.result, &e);
     label_code(&mut s, conn);
     problems(&mut s, p, conn);
     regions_note(&mut s, &e);

@@ -463,6 +463,26 @@ pub(super) fn set_shape(result: &mut Record, sh: &chain::Shape) {
     );
 }
 
+/// The descriptors of a closed boundary (one summary step and their
+/// result keys); nothing for an open edge.
+pub(super) fn closed_shape(s: &mut Solution, p: &Path) -> Result<()> {
+    if p.closed {
+        let sh = chain::shape("pixels", &p.pixels)?;
+        s.step(shape_summary_step(&sh));
+        set_shape(&mut s.result, &sh);
+    }
+    Ok(())
+}
+
+/// Where the path breaks or branches, and how many regions were traced.
+pub(super) fn path_results(result: &mut Record, e: &Edge) {
+    result.set("breaks", breaks_value(&e.path));
+    result.set("branches", branches_value(&e.path));
+    if e.given == Given::Region {
+        result.set("regions", e.regions.len());
+    }
+}
+
 /// One step with the descriptors of a closed boundary, for the examples
 /// whose subject is the code or the length (the boundary descriptors
 /// example has a step each).
