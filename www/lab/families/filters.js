@@ -59,7 +59,8 @@ const filters = {
     // the custom kernel checked by the lab's wasm module (ops::custom_kernel,
     // the rules run_filter reads it by) in the worker: { rows, divisor,
     // width, height } or { field, error }; null when a newer text is being
-    // checked or the worker was replaced meanwhile
+    // checked (a worker replaced meanwhile, by a cancel or a trap: asked
+    // again of the fresh one)
     let checks = 0;
     const check = async () => {
       const gen = ++checks;
@@ -69,7 +70,7 @@ const filters = {
         const rows = Array.from(r.rows, (row) => Array.from(row));
         k = { rows, divisor: r.divisor, width: rows[0].length, height: rows.length };
       } catch (e) {
-        if (e.cancelled || e.trapped) return null;
+        if (e.cancelled || e.trapped) return gen === checks ? check() : null;
         const m = /^(custom_kernel|custom_divisor): ([^]*)$/.exec(e.message);
         k = m ? { field: m[1], error: m[2] } : { field: "custom_kernel", error: e.message };
       }
