@@ -6,7 +6,7 @@
 //! Each entry of `examples::catalog()` without its `inputs` (the form's
 //! fields: most of the bytes), which come with the entry's module.
 
-use photogrammetry_playground::practice;
+use photogrammetry_playground::examples;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -14,7 +14,7 @@ fn main() -> ExitCode {
         eprintln!("usage: catalog_json <out.json>");
         return ExitCode::FAILURE;
     };
-    let mut entries = match serde_json::to_value(practice::catalog()) {
+    let mut entries = match serde_json::to_value(examples::catalog()) {
         Ok(serde_json::Value::Array(entries)) => entries,
         other => {
             eprintln!("catalog_json: the catalog is not a list ({other:?})");

@@ -130,7 +130,7 @@ pub fn catalog_of(topics: &'static [Topic]) -> Result<JsValue, JsError> {
 
 /// `catalog()` of the whole catalog (with `practice` and `module`).
 pub fn catalog_all() -> Result<JsValue, JsError> {
-    to_js(&crate::practice::catalog())
+    to_js(&examples::catalog())
 }
 
 /// `solve(id, inputs)` among `topics`.
@@ -164,8 +164,12 @@ extern "C" {
     fn math_random() -> f64;
 }
 
-/// `practice(id, code)`: see [`export_all!`].
-pub fn practice(id: &JsValue, code: &JsValue) -> Result<JsValue, JsError> {
+/// `practice(id, code)` among `topics`: see [`export_all!`].
+pub fn practice(
+    topics: &'static [Topic],
+    id: &JsValue,
+    code: &JsValue,
+) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
     let code = if code.is_undefined() || code.is_null() {
         None
@@ -173,23 +177,29 @@ pub fn practice(id: &JsValue, code: &JsValue) -> Result<JsValue, JsError> {
         Some(name_arg("code", CODE_MEANING, code)?)
     };
     let fresh = (math_random() * f64::from(crate::practice::VARIANTS)) as u32;
-    let p = crate::practice::practice(&id, code.as_deref(), fresh).map_err(js_error)?;
+    let p = crate::practice::practice_in(topics, &id, code.as_deref(), fresh).map_err(js_error)?;
     to_js(&p)
 }
 
 const CODE_MEANING: &str = "like \"1K7Q2\" (a practice variant's code)";
 
-/// `grade(id, code, answers)`: see [`export_all!`].
-pub fn grade(id: &JsValue, code: &JsValue, answers: JsValue) -> Result<JsValue, JsError> {
+/// `grade(id, code, answers)` among `topics`: see [`export_all!`].
+pub fn grade(
+    topics: &'static [Topic],
+    id: &JsValue,
+    code: &JsValue,
+    answers: JsValue,
+) -> Result<JsValue, JsError> {
     let id = id_arg(id)?;
     let code = name_arg("code", CODE_MEANING, code)?;
     let answers = record_from_js("answers", answers)?;
-    let g = crate::practice::grade(&id, &code, &answers).map_err(js_error)?;
+    let g = crate::practice::grade_in(topics, &id, &code, &answers).map_err(js_error)?;
     to_js(&g)
 }
 
 /// The exports of a topic module: `catalog`, `solve` and `parse_inputs` over
-/// the given topics (`examples::<topic>::TOPIC`), nothing else.
+/// the given topics (`examples::<topic>::TOPIC`), and, when the invoking
+/// crate has its `practice` feature on, `practice` and `grade` over them.
 /// The invoking crate depends on `wasm-bindgen` (the attribute names it).
 #[macro_export]
 macro_rules! export_examples {
@@ -220,6 +230,29 @@ macro_rules! export_examples {
             texts: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
             $crate::wasm::parse_inputs_in(TOPICS, &id, texts)
+        }
+
+        /// A practice variant of example `id` (this module's builds with
+        /// the `practice` feature only: `pkg/<topic>_practice.js`).
+        #[cfg(feature = "practice")]
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn practice(
+            id: ::wasm_bindgen::JsValue,
+            code: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::practice(TOPICS, &id, &code)
+        }
+
+        /// Grades `answers` for variant `code` of example `id` (with the
+        /// `practice` feature only).
+        #[cfg(feature = "practice")]
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn grade(
+            id: ::wasm_bindgen::JsValue,
+            code: ::wasm_bindgen::JsValue,
+            answers: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::grade(TOPICS, &id, &code, answers)
         }
     };
 }
@@ -265,7 +298,7 @@ macro_rules! export_all {
             id: ::wasm_bindgen::JsValue,
             code: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::practice(&id, &code)
+            $crate::wasm::practice(&$crate::examples::TOPICS, &id, &code)
         }
 
         /// Grades `answers` (`{ box key: text }`) for variant `code` of
@@ -277,7 +310,7 @@ macro_rules! export_all {
             code: ::wasm_bindgen::JsValue,
             answers: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::grade(&id, &code, answers)
+            $crate::wasm::grade(&$crate::examples::TOPICS, &id, &code, answers)
         }
     };
 }

@@ -4,7 +4,6 @@
 //! the descriptors.
 
 use photogrammetry_playground::examples::{self, TOPICS};
-use photogrammetry_playground::practice;
 use std::collections::BTreeSet;
 use std::path::Path;
 
@@ -31,7 +30,7 @@ fn every_example_is_in_exactly_one_topic_and_module() {
 
 #[test]
 fn the_catalog_is_the_descriptors_in_page_order() {
-    let catalog = practice::catalog();
+    let catalog = examples::catalog();
     let ids: Vec<_> = catalog.iter().map(|e| e.id).collect();
     let described: Vec<_> = examples::all().map(|e| e.id).collect();
     assert_eq!(ids, described);

@@ -428,7 +428,7 @@ fn every_ready_example_has_practice() {
         .iter()
         .all(|id| have.contains(id)));
     // the catalog says which examples have practice, so the page links only to those
-    for e in practice::catalog() {
+    for e in examples::catalog() {
         assert_eq!(e.practice, have.contains(&e.id), "{}", e.id);
     }
 }

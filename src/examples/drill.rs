@@ -10,6 +10,17 @@ pub use crate::rng::Rng;
 use crate::solution::{Record, Solution, Value};
 use serde::Serialize;
 
+/// An example's practice, as its descriptor declares it: `practice:
+/// drill(Drill { … })`. Without the `practice` feature (the page's topic
+/// modules) it is `None`, so none of the drill's code is linked into them.
+pub const fn drill(d: Drill) -> Option<Drill> {
+    if cfg!(feature = "practice") {
+        Some(d)
+    } else {
+        None
+    }
+}
+
 /// How one example is practised.
 #[derive(Clone, Copy)]
 pub struct Drill {
@@ -126,9 +137,11 @@ impl Mistake {
 /// answers (by box key) to use instead of the exact values.
 pub type Chain = fn(&Record, &Record) -> Result<Record>;
 
-/// How one example is practised (with its id: what the engine keeps).
+/// How one example is practised (with its example: what the engine keeps).
 pub struct Spec {
     pub id: &'static str,
+    /// The example it practises (its solver gives the expected values).
+    pub example: &'static super::Example,
     /// Draws the inputs (constructively: every draw is a good variant).
     pub generate: fn(&mut Rng) -> Record,
     /// The answer boxes for these inputs, in the order a student fills them.

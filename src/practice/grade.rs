@@ -6,11 +6,11 @@
 
 use super::read::{check_unit, read, UnitCheck};
 use super::{
-    boxes_of, decimals_of, decode, digits_needed, encode, inputs_of, round_sig, spec, value_in,
+    boxes_of, decimals_of, decode, digits_needed, encode, inputs_of, round_sig, spec_in, value_in,
     BoxDef, Mistake, Spec,
 };
 use crate::error::{Error, Result};
-use crate::examples;
+use crate::examples::{Topic, TOPICS};
 use crate::solution::{fmt_sig, Record, Value};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 
@@ -111,10 +111,20 @@ fn right(b: &BoxDef, exact: f64, a: &Answer) -> bool {
 
 /// Grades `answers` (`{ key: text }`) for variant `code` of example `id`.
 pub fn grade(id: &str, code: &str, answers: &Record) -> Result<Graded> {
-    let spec = spec(id)?;
+    grade_in(&TOPICS, id, code, answers)
+}
+
+/// [`grade`] among `topics` only (a topic module's).
+pub fn grade_in(
+    topics: &'static [Topic],
+    id: &str,
+    code: &str,
+    answers: &Record,
+) -> Result<Graded> {
+    let spec = spec_in(topics, id)?;
     let variant = decode(code)?;
     let inputs = inputs_of(&spec, variant);
-    let solution = examples::solve(id, &inputs)?;
+    let solution = spec.example.run(&inputs)?;
     let boxes = boxes_of(&spec, &inputs, &solution);
     for (k, _) in answers.iter() {
         if !boxes.iter().any(|b| b.key == k) {

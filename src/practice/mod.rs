@@ -15,11 +15,11 @@
 pub mod grade;
 
 use crate::error::{Error, Result};
-use crate::examples;
+use crate::examples::{self, Topic, TOPICS};
 use crate::solution::{Record, Solution};
 use serde::Serialize;
 
-pub use grade::{grade, Graded};
+pub use grade::{grade, grade_in, Graded};
 
 /// The version of the generators; part of every code.
 pub const VERSION: u32 = 1;
@@ -81,48 +81,42 @@ pub fn decode(code: &str) -> Result<u32> {
     Ok(v)
 }
 
-/// Every example that has practice, in catalog order: the drills of the
-/// descriptors, then the topic files' lists not yet moved into them.
+/// Every example that has practice, in catalog order (the descriptors'
+/// drills).
 pub fn specs() -> Vec<Spec> {
-    let mut all: Vec<Spec> = examples::all()
-        .filter_map(|e| {
-            e.practice.map(|d| Spec {
-                id: e.id,
-                generate: d.generate,
-                boxes: d.boxes,
-                chain: d.chain,
-                mistakes: d.mistakes,
-            })
-        })
-        .collect();
-    all
+    specs_in(&TOPICS)
 }
 
-/// Whether example `id` has practice variants.
-pub fn has(id: &str) -> bool {
-    specs().iter().any(|s| s.id == id)
+/// The practice of every example of `topics` that has one.
+pub fn specs_in(topics: &'static [Topic]) -> Vec<Spec> {
+    examples::of(topics)
+        .filter_map(|(_, e)| e.practice.map(|d| spec_of(e, d)))
+        .collect()
 }
 
-/// The catalog with each entry's practice flag joined from [`specs`] (the
-/// lists not yet in the descriptors included).
-pub fn catalog() -> Vec<examples::EntryInfo> {
-    let mut all = examples::catalog();
-    for e in &mut all {
-        e.practice |= has(e.id);
+fn spec_of(e: &'static examples::Example, d: examples::drill::Drill) -> Spec {
+    Spec {
+        id: e.id,
+        example: e,
+        generate: d.generate,
+        boxes: d.boxes,
+        chain: d.chain,
+        mistakes: d.mistakes,
     }
-    all
 }
 
+/// The practice of example `id` among `topics` (a topic module's own, or
+/// [`TOPICS`]).
+pub fn spec_in(topics: &'static [Topic], id: &str) -> Result<Spec> {
+    let e = examples::find(topics, id)?;
+    e.practice
+        .map(|d| spec_of(e, d))
+        .ok_or_else(|| Error::input("id", format!("\"{id}\" has no practice mode yet")))
+}
+
+/// [`spec_in`] over every topic.
 pub fn spec(id: &str) -> Result<Spec> {
-    // Unknown ids get the catalog's own message.
-    let known = examples::catalog().iter().any(|e| e.id == id);
-    specs().into_iter().find(|s| s.id == id).ok_or_else(|| {
-        if known {
-            Error::input("id", format!("\"{id}\" has no practice mode yet"))
-        } else {
-            Error::UnknownExample { id: id.to_string() }
-        }
-    })
+    spec_in(&TOPICS, id)
 }
 
 /// The seed of variant `variant` of example `id` (codes differ per example).
@@ -179,13 +173,23 @@ pub struct Practice {
 /// A practice variant of example `id`: the one of `code`, or variant
 /// `fresh` (any number, reduced to the code range) when `code` is `None`.
 pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
-    let spec = spec(id)?;
+    practice_in(&TOPICS, id, code, fresh)
+}
+
+/// [`practice`] among `topics` only (a topic module's).
+pub fn practice_in(
+    topics: &'static [Topic],
+    id: &str,
+    code: Option<&str>,
+    fresh: u32,
+) -> Result<Practice> {
+    let spec = spec_in(topics, id)?;
     let variant = match code {
         Some(c) => decode(c)?,
         None => fresh % VARIANTS,
     };
     let inputs = inputs_of(&spec, variant);
-    let solution = examples::solve(id, &inputs)?;
+    let solution = spec.example.run(&inputs)?;
     let boxes = boxes_of(&spec, &inputs, &solution)
         .into_iter()
         .map(|b| box_info(&b, &solution))
@@ -211,7 +215,7 @@ pub fn practice(id: &str, code: Option<&str>, fresh: u32) -> Result<Practice> {
 /// wrong.
 pub fn boxes_of(spec: &Spec, inputs: &Record, solution: &Solution) -> Vec<BoxDef> {
     let mut boxes = (spec.boxes)(inputs);
-    let Some(printed) = printed_values(spec.id) else {
+    let Some(printed) = printed_values(spec.example) else {
         return boxes;
     };
     for b in &mut boxes {
@@ -256,7 +260,7 @@ pub fn printed_half_at(p: f64, x: f64) -> Option<f64> {
 /// The values the course's worked example prints for example `id` (the
 /// seed's `textbook`), solved once per example and kept: `grade` runs on
 /// every keystroke.
-fn printed_values(id: &'static str) -> Option<Record> {
+fn printed_values(example: &'static examples::Example) -> Option<Record> {
     use std::cell::RefCell;
     use std::collections::HashMap;
     thread_local! {
@@ -265,12 +269,8 @@ fn printed_values(id: &'static str) -> Option<Record> {
     PRINTED.with(|cache| {
         cache
             .borrow_mut()
-            .entry(id)
-            .or_insert_with(|| {
-                examples::solve(id, &Record::new())
-                    .ok()
-                    .and_then(|s| s.textbook)
-            })
+            .entry(example.id)
+            .or_insert_with(|| example.run(&Record::new()).ok().and_then(|s| s.textbook))
             .clone()
     })
 }
@@ -331,31 +331,14 @@ fn hints_of(key: &str, s: &Solution, step: usize) -> (String, String) {
             };
             (formula, r.question_latex())
         }
-        None => legacy_hints(s, step, key),
+        None => (
+            s.steps
+                .get(step)
+                .map(|st| st.formula.clone())
+                .unwrap_or_default(),
+            String::new(),
+        ),
     }
-}
-
-/// The hints of a step built before its formula was data (no parts): read
-/// out of its LaTeX. Goes when every step has parts.
-fn legacy_hints(s: &Solution, step: usize, key: &str) -> (String, String) {
-    let formula = s
-        .steps
-        .get(step)
-        .map(|st| st.formula.clone())
-        .unwrap_or_default();
-    let answer = value_in(s, key).ok().map(crate::solution::num);
-    let gives_away = |t: &str| {
-        answer.as_ref().is_some_and(|a| {
-            a.len() >= 4 && (t.contains(a.as_str()) || t.contains(leading_digits(a, 5)))
-        })
-    };
-    let numbers = [step, step.wrapping_sub(1)]
-        .iter()
-        .filter_map(|&k| s.steps.get(k))
-        .map(|st| without_result(&st.substituted))
-        .find(|t| !t.is_empty() && !gives_away(t))
-        .unwrap_or_default();
-    (formula, numbers)
 }
 
 fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
@@ -382,21 +365,6 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
             step,
         },
     }
-}
-
-/// `text` (a number as printed) up to its `n`-th significant digit, or all
-/// of it when it has fewer: "-0.0056488" → "-0.0056488", "1.2796358" → "1.2796".
-fn leading_digits(text: &str, n: usize) -> &str {
-    let mut seen = 0;
-    for (i, ch) in text.char_indices() {
-        if ch.is_ascii_digit() && (seen > 0 || ch != '0') {
-            seen += 1;
-            if seen == n {
-                return &text[..i + ch.len_utf8()];
-            }
-        }
-    }
-    text
 }
 
 /// The tolerance in words.
@@ -428,40 +396,6 @@ pub fn tolerance_text(t: Tolerance, unit: Option<&str>) -> String {
         (true, false) => format!("± {abs}{u}"),
         (false, true) => format!("± {rel} %"),
         (false, false) => "exact".to_string(),
-    }
-}
-
-/// The substituted formula up to its first `left = numbers`, the rest (the
-/// result and any later forms of it) replaced by `= ?`, so the third hint
-/// shows the numbers but not the answer: `GSD = 0.028 × 9047 = 255 mm = 25 cm`
-/// becomes `GSD = 0.028 × 9047 = ?`.
-fn without_result(tex: &str) -> String {
-    let mut depth = 0i32;
-    let mut seen = 0;
-    for (i, ch) in tex.char_indices() {
-        match ch {
-            '{' => depth += 1,
-            '}' => depth -= 1,
-            '=' if depth == 0 => {
-                seen += 1;
-                if seen == 2 {
-                    return format!("{} = \\;?", tex[..i].trim_end());
-                }
-            }
-            _ => {}
-        }
-    }
-    match tex.find('=') {
-        // "x = 8.25": only the answer after the sign
-        Some(i)
-            if seen == 1
-                && tex[i + 1..]
-                    .chars()
-                    .all(|c| c.is_ascii_digit() || " .-+()".contains(c)) =>
-        {
-            format!("{} = \\;?", tex[..i].trim_end())
-        }
-        _ => tex.to_string(),
     }
 }
 
@@ -533,18 +467,5 @@ mod tests {
         assert_eq!(pick(&m, &[2, 1]), Some(3.0));
         assert_eq!(pick(&m, &[3, 1]), None);
         assert_eq!(pick(&m, &[0, 1]), None);
-        assert_eq!(
-            without_result("x = 2 \\cdot 3 = 6"),
-            "x = 2 \\cdot 3 = \\;?"
-        );
-        assert_eq!(
-            without_result("g = 2 \\cdot 3 = 6 = 0.6"),
-            "g = 2 \\cdot 3 = \\;?"
-        );
-        assert_eq!(without_result("x = (-8.25)"), "x = \\;?");
-        assert_eq!(leading_digits("1.2796358243", 5), "1.2796");
-        assert_eq!(leading_digits("-0.00564888", 5), "-0.0056488");
-        assert_eq!(leading_digits("12.5", 5), "12.5");
-        assert_eq!(without_result("x = a + b"), "x = a + b");
     }
 }

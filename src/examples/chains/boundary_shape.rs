@@ -2,7 +2,7 @@
 //! rectangle and eccentricity of the outer boundary of a drawn region.
 
 use super::*;
-use crate::examples::drill::{or_given, value_in, BoxDef, Drill, Mistake, Rng, Tolerance};
+use crate::examples::drill::{drill, or_given, value_in, BoxDef, Drill, Mistake, Rng, Tolerance};
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -18,7 +18,7 @@ pub const EXAMPLE: Example = Example {
         family: "boundaries",
         explains: &[],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -1,7 +1,7 @@
 //! Seed 000, Example 2: the ground sample distance of a scanned photo, and
 //! its practice.
 
-use super::super::drill::{or_given, BoxDef, Drill, Mistake, Rng, Tolerance};
+use super::super::drill::{drill, or_given, BoxDef, Drill, Mistake, Rng, Tolerance};
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::*;
@@ -22,7 +22,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["gsd_cm"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -1,7 +1,7 @@
 //! Seed 000, Example 3: from image coordinates in mm to the pixel's column
 //! and row, and its practice.
 
-use super::super::drill::{or_given, tol, BoxDef, Drill, Mistake, Rng, Tolerance};
+use super::super::drill::{drill, or_given, tol, BoxDef, Drill, Mistake, Rng, Tolerance};
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::*;
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["c", "r"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

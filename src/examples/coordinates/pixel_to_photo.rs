@@ -1,7 +1,7 @@
 //! Seed 000, Example 1: from a pixel's column and row to its image
 //! coordinates in mm, and its practice.
 
-use super::super::drill::{or_given, tol, BoxDef, Drill, Mistake, Rng};
+use super::super::drill::{drill, or_given, tol, BoxDef, Drill, Mistake, Rng};
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::*;
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["x_mm", "y_mm"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

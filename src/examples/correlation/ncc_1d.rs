@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::correlation::{correlate_1d, mean};
-use crate::examples::drill::{list, nums, or_given, tol, BoxDef, Drill, Mistake};
+use crate::examples::drill::{drill, list, nums, or_given, tol, BoxDef, Drill, Mistake};
 use crate::examples::fields::{is_seed, MAX_LEN};
 use crate::solution::{exact_minus_printed, fmt_sig, NoteKind, Solution};
 
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["best", "best_c"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -2,7 +2,9 @@
 
 use super::*;
 use crate::correlation::{mean, sums_about};
-use crate::examples::drill::{mat, or_given, rows_of, tol, transpose, BoxDef, Drill, Mistake};
+use crate::examples::drill::{
+    drill, mat, or_given, rows_of, tol, transpose, BoxDef, Drill, Mistake,
+};
 use crate::examples::fields::is_seed;
 use crate::solution::{fmt_sig, NoteKind, Solution};
 
@@ -19,7 +21,7 @@ pub const EXAMPLE: Example = Example {
         family: "correlation",
         explains: &["rho"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::correlation::{correlate_2d, mean, sums_about};
-use crate::examples::drill::{mat, or_given, rows_of, tol, BoxDef, Drill, Mistake};
+use crate::examples::drill::{drill, mat, or_given, rows_of, tol, BoxDef, Drill, Mistake};
 use crate::examples::fields::is_seed;
 use crate::solution::{fmt_sig, NoteKind, Solution};
 
@@ -27,7 +27,7 @@ pub const EXAMPLE: Example = Example {
         family: "correlation",
         explains: &[],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -3,7 +3,7 @@
 use super::*;
 use crate::correlation::{correlate_1d, parabola_peak, Extremum, Parabola};
 use crate::examples::drill::Tolerance;
-use crate::examples::drill::{list, nums, or_given, tol, value_in, BoxDef, Drill, Mistake};
+use crate::examples::drill::{drill, list, nums, or_given, tol, value_in, BoxDef, Drill, Mistake};
 use crate::examples::fields::is_seed;
 use crate::solution::{fmt_sig, NoteKind, Solution};
 
@@ -17,7 +17,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["c_max"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

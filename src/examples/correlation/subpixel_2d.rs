@@ -3,7 +3,7 @@
 use super::*;
 use crate::correlation::{correlate_2d, quadric_peak, stationary, Quadric};
 use crate::examples::drill::{
-    mat, nums, or_given, rows_of, transpose, value_in, BoxDef, Drill, Mistake, Tolerance,
+    drill, mat, nums, or_given, rows_of, transpose, value_in, BoxDef, Drill, Mistake, Tolerance,
 };
 use crate::examples::fields::is_seed;
 use crate::solution::{exact_minus_printed, fmt_sig, with_unit, NoteKind, Solution};
@@ -21,7 +21,7 @@ pub const EXAMPLE: Example = Example {
         family: "correlation",
         explains: &["subpixel"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -2,7 +2,9 @@
 //! gradient magnitude of one window, the selected pixel's sums written out;
 //! and its practice.
 
-use super::super::drill::{mat, or_given, rows_of, tol, transpose, BoxDef, Drill, Mistake, Rng};
+use super::super::drill::{
+    drill, mat, or_given, rows_of, tol, transpose, BoxDef, Drill, Mistake, Rng,
+};
 use super::super::{Example, Lab};
 use super::*;
 use crate::filter::Gradient;
@@ -29,7 +31,7 @@ pub const EXAMPLE: Example = Example {
         family: "edges",
         explains: &["window"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

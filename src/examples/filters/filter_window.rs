@@ -2,7 +2,9 @@
 //! median, Laplacian, LoG, sharpening, high-pass) applied to one window,
 //! sum by sum; and its practice.
 
-use super::super::drill::{mat, or_given, rows_of, tol, value_in, BoxDef, Drill, Mistake, Rng};
+use super::super::drill::{
+    drill, mat, or_given, rows_of, tol, value_in, BoxDef, Drill, Mistake, Rng,
+};
 use super::super::{Example, Lab};
 use super::*;
 use crate::filter::Filtered;
@@ -27,7 +29,7 @@ pub const EXAMPLE: Example = Example {
         family: "filters",
         explains: &["window"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

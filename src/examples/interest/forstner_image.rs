@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::error::Error;
-use crate::examples::drill::{Drill, Rng};
+use crate::examples::drill::{drill, Drill, Rng};
 use crate::examples::Lab;
 use crate::interest;
 
@@ -20,7 +20,7 @@ pub const EXAMPLE: Example = Example {
         family: "interest",
         explains: &[],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

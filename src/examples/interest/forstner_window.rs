@@ -3,7 +3,7 @@
 //! eigenvalues, the precision test and the error ellipse).
 
 use super::*;
-use crate::examples::drill::{mat as rows_value, Drill, Rng};
+use crate::examples::drill::{drill, mat as rows_value, Drill, Rng};
 use crate::examples::fields::is_seed;
 use crate::examples::Lab;
 use crate::interest;
@@ -21,7 +21,7 @@ pub const EXAMPLE: Example = Example {
         family: "interest",
         explains: &["forstner"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

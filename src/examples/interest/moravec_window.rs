@@ -2,7 +2,7 @@
 //! directional differences at each interior pixel and their mean.
 
 use super::*;
-use crate::examples::drill::{mat as rows_value, Drill, Rng};
+use crate::examples::drill::{drill, mat as rows_value, Drill, Rng};
 use crate::examples::fields::is_seed;
 use crate::examples::Lab;
 use crate::interest;
@@ -20,7 +20,7 @@ pub const EXAMPLE: Example = Example {
         family: "interest",
         explains: &["moravec"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

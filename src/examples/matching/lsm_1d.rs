@@ -3,7 +3,7 @@
 //! and the converged position.
 
 use super::*;
-use crate::examples::drill::{nums, or_given, tol, value_in, BoxDef, Drill, Mistake, Rng};
+use crate::examples::drill::{drill, nums, or_given, tol, value_in, BoxDef, Drill, Mistake, Rng};
 use crate::solution::exact_minus_printed;
 
 pub const EXAMPLE: Example = Example {
@@ -16,7 +16,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["c"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -2,7 +2,7 @@
 //! and its practice: the first shifts and the converged position.
 
 use super::*;
-use crate::examples::drill::{mat, or_given, value_in, BoxDef, Drill, Mistake, Rng};
+use crate::examples::drill::{drill, mat, or_given, value_in, BoxDef, Drill, Mistake, Rng};
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -18,7 +18,7 @@ pub const EXAMPLE: Example = Example {
         family: "correlation",
         explains: &["lsm"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

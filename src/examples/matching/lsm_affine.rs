@@ -3,7 +3,7 @@
 //! its practice: the converged affine part, its shifts, scale and rotation.
 
 use super::*;
-use crate::examples::drill::{or_given, value_in, BoxDef, Drill, Mistake, Rng};
+use crate::examples::drill::{drill, or_given, value_in, BoxDef, Drill, Mistake, Rng};
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
         family: "correlation",
         explains: &["affine-lsm"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

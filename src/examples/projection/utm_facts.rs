@@ -5,7 +5,7 @@
 //! ones and a note for every difference; and its practice on a drawn
 //! parallel.
 
-use super::super::drill::{or_given, value_in, BoxDef, Drill, Mistake, Rng, Tolerance};
+use super::super::drill::{drill, or_given, value_in, BoxDef, Drill, Mistake, Rng, Tolerance};
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::*;
@@ -24,7 +24,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["k1_distance_km", "latitude_max", "edge_distortion_ppm"],
     labels: FACT_LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -1,7 +1,7 @@
 //! Seed 004: UTM back to latitude and longitude step by step through the
 //! inverse Krüger series, with Snyder's inverse beside it, and its practice.
 
-use super::super::drill::{or_given, BoxDef, Drill, Mistake, Rng, Tolerance};
+use super::super::drill::{drill, or_given, BoxDef, Drill, Mistake, Rng, Tolerance};
 use super::super::fields::{is_seed, Field, Inputs};
 use super::super::Example;
 use super::figure::figure_step;
@@ -22,7 +22,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["latitude", "longitude"],
     labels: LABELS,
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

@@ -3,7 +3,9 @@
 //! interpolation (the seed's I1, I2 and I) and bicubic interpolation where
 //! its 4×4 neighbourhood lies inside the patch; and its practice.
 
-use super::super::drill::{mat, or_given, rows_of, tol, BoxDef, Drill, Mistake, Rng, Tolerance};
+use super::super::drill::{
+    drill, mat, or_given, rows_of, tol, BoxDef, Drill, Mistake, Rng, Tolerance,
+};
 use super::super::fields::{Field, Inputs};
 use super::super::{Example, Lab};
 use crate::error::{Error, Result};
@@ -40,7 +42,7 @@ pub const EXAMPLE: Example = Example {
         family: "resampling",
         explains: &["window"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(chain),

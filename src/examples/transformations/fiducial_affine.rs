@@ -3,7 +3,7 @@
 
 use super::fiducials::{printed_residual_note, rounding_notes};
 use super::*;
-use crate::examples::drill::Drill;
+use crate::examples::drill::{drill, Drill};
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
         family: "fiducials",
         explains: &["affine"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate: fiducials::generate,
         boxes: |_| {
             fiducials::boxes(&[

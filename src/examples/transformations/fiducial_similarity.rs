@@ -3,7 +3,7 @@
 
 use super::fiducials::{max_abs, printed_residual_note, rounding_notes};
 use super::*;
-use crate::examples::drill::Drill;
+use crate::examples::drill::{drill, Drill};
 use crate::examples::Lab;
 
 pub const EXAMPLE: Example = Example {
@@ -19,7 +19,7 @@ pub const EXAMPLE: Example = Example {
         family: "fiducials",
         explains: &["similarity"],
     }),
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate: fiducials::generate,
         boxes: |_| fiducials::boxes(&[("a", false), ("b", false), ("c", true), ("d", true)]),
         chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),

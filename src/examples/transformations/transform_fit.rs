@@ -2,7 +2,7 @@
 //! practice: a Helmert or affine fit to a few drawn points.
 
 use super::*;
-use crate::examples::drill::{Drill, Rng};
+use crate::examples::drill::{drill, Drill, Rng};
 
 pub const EXAMPLE: Example = Example {
     id: "transform-fit",
@@ -14,7 +14,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["parameters", "sigma0"],
     labels: &[],
     lab: None,
-    practice: Some(Drill {
+    practice: drill(Drill {
         generate,
         boxes,
         chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
