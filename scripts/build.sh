@@ -13,13 +13,15 @@ export PATH="$HOME/.cargo/bin:$PATH"
 # DIST=dir builds the site there instead of dist/ (e.g. a second copy to test against)
 DIST="${DIST:-dist}"
 
-# One cargo invocation links every wasm module (cargo runs them in parallel):
-# the core (the root crate) is compiled once, and each module is a thin crate
-# that links it: web/<topic>/ (one per topic of examples::MODULES), web/all/
-# (every example and practice mode), lab/ (the image lab).
+# Two cargo invocations link the wasm modules (cargo runs each one's links in parallel):
+# 1. every crate with its default features: web/<topic>/ (one per topic of examples::TOPICS)
+#    with practice mode (its practice and grade exports and the examples' drills), web/all/
+#    (every example and practice mode: the public API), lab/ (the image lab);
+# 2. the topic crates again without their 'practice' feature: the module an example's page
+#    loads (catalog, solve, parse_inputs; none of the drills' code linked in).
+topics=$(cd web && ls -d */ | tr -d / | grep -vx all)
 echo "build: cargo build --release --target wasm32-unknown-unknown --workspace --lib"
 cargo build --release --target wasm32-unknown-unknown --workspace --lib
-
 # The sources of the site, staged: www/ and what the build generates beside it (the
 # wasm-bindgen packages, catalog.json, vendor/); scripts/site.mjs builds dist/ from it.
 STAGE="target/site-stage/$(basename "$DIST")"
@@ -31,9 +33,16 @@ mkdir -p "$STAGE"/pkg "$STAGE"/lab/pkg "$STAGE"/lab/pkg-simd "$STAGE"/vendor/kat
 mv "$STAGE"/api/* "$STAGE"/pkg/ && rmdir "$STAGE"/api
 bindgen() { wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section "$@"; }
 export -f bindgen
-# wasm-bindgen for each module, two at a time: pkg/<name>.js + <name>_bg.wasm
+# wasm-bindgen for each module, two at a time: pkg/<name>.js + <name>_bg.wasm; the topics'
+# practice builds first, as pkg/<topic>_practice.js (invocation 2 then replaces their wasm)
 modules=$(cd web && ls -d */ | tr -d /)
 for name in $modules; do echo "$name"; done | xargs -P 2 -I{} bash -c \
+  "bindgen --out-dir '$STAGE/pkg' --out-name {}_practice target/wasm32-unknown-unknown/release/playground_{}.wasm"
+mv "$STAGE"/pkg/all_practice.js "$STAGE"/pkg/all.js
+mv "$STAGE"/pkg/all_practice_bg.wasm "$STAGE"/pkg/all_bg.wasm
+echo "build: cargo build --release --target wasm32-unknown-unknown --no-default-features (the topics' example modules)"
+cargo build --release --target wasm32-unknown-unknown --lib --no-default-features $(for t in $topics; do printf ' -p playground-%s' "$t"; done)
+for name in $topics; do echo "$name"; done | xargs -P 2 -I{} bash -c \
   "bindgen --out-dir '$STAGE/pkg' --out-name {} target/wasm32-unknown-unknown/release/playground_{}.wasm"
 # The image lab's own module (lab/), loaded only when #/lab opens.
 bindgen --out-dir "$STAGE"/lab/pkg target/wasm32-unknown-unknown/release/photogrammetry_lab.wasm
@@ -58,6 +67,7 @@ cp "$katex"/fonts/*.woff2 "$STAGE"/vendor/katex/fonts/
 npx --no-install esbuild node_modules/uqr/dist/index.mjs --bundle --format=esm --minify \
   --legal-comments=none --log-level=warning --outfile="$STAGE"/vendor/uqr.js
 sizes=$(for name in $modules; do printf ' %s %s' "$name" "$(gzip -9c "$STAGE/pkg/${name}_bg.wasm" | wc -c)"; done)
+sizes="$sizes; practice:$(for name in $topics; do printf ' %s %s' "$name" "$(gzip -9c "$STAGE/pkg/${name}_practice_bg.wasm" | wc -c)"; done)"
 lab="lab $(gzip -9c "$STAGE"/lab/pkg/photogrammetry_lab_bg.wasm | wc -c), lab SIMD $(gzip -9c "$STAGE"/lab/pkg-simd/photogrammetry_lab_bg.wasm | wc -c)"
 # esbuild: bundles, splits, minifies and hashes into dist/assets/, writes the HTML
 # (scripts/site.mjs); then each example's seed solution as the page renders it

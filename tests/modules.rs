@@ -86,5 +86,9 @@ fn each_module_has_its_crate_exporting_its_entries() {
             core.contains(&format!("import(\"./pkg/{name}.js\")")),
             "www/core.js loads {name}"
         );
+        assert!(
+            core.contains(&format!("import(\"./pkg/{name}_practice.js\")")),
+            "www/core.js loads {name}'s practice module"
+        );
     }
 }

@@ -566,8 +566,8 @@ async function route({ focus = false } = {}) {
   if (id === "practice" || params.some(([key]) => key === "practice")) {
     destroyView();
     setStatus("loading");
-    // practice mode's own module (every example and its generators), loaded when it opens
-    const [{ showPractice }] = await Promise.all([import("./practice/view.js"), core.loadPractice()]);
+    // practice mode: the example's topic module with practice (every example's for the worksheets)
+    const [{ showPractice }] = await Promise.all([import("./practice/view.js"), core.loadPractice(id === "practice" ? null : id)]);
     if (location.hash !== hash) return; // the reader moved on; that hashchange routes
     await showPractice({ root, core, entries, id, params, mode, setStatus });
     return;

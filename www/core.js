@@ -4,8 +4,10 @@
 // the page has the catalog (catalog.json, written by the build from the Rust
 // entries, and copied into the HTML by the build) and loads only the module of
 // the example on screen (preload-route.js starts its requests from the HTML); the others
-// are loaded when the browser is idle after the first solution. Practice mode
-// loads pkg/all.js (every example and the practice generators) when it opens.
+// are loaded when the browser is idle after the first solution. An example's
+// practice mode loads its topic's module with practice (pkg/<module>_practice.js,
+// the same crate built with the drills and the practice and grade exports); the
+// worksheets of several examples load pkg/all.js (every example and practice mode).
 //
 // Module URLs are literal strings (no template strings): a build step that
 // renames files can rewrite them, and an import map applies to them too.
@@ -29,7 +31,20 @@ const MODULES = Object.freeze({
   chains: () => import("./pkg/chains.js"),
   projection: () => import("./pkg/projection.js"),
   all: () => import("./pkg/all.js"),
+  // each topic's module with its practice mode (practice, grade): loaded by #/<id>?practice
+  coordinates_practice: () => import("./pkg/coordinates_practice.js"),
+  transformations_practice: () => import("./pkg/transformations_practice.js"),
+  correlation_practice: () => import("./pkg/correlation_practice.js"),
+  matching_practice: () => import("./pkg/matching_practice.js"),
+  resampling_practice: () => import("./pkg/resampling_practice.js"),
+  filters_practice: () => import("./pkg/filters_practice.js"),
+  interest_practice: () => import("./pkg/interest_practice.js"),
+  chains_practice: () => import("./pkg/chains_practice.js"),
+  projection_practice: () => import("./pkg/projection_practice.js"),
 });
+
+/** The module with practice mode of topic module `name`. */
+const practiceOf = (name) => `${name}_practice`;
 
 /**
  * The catalog's entries: from the page's own data block when it has one (the
@@ -132,17 +147,18 @@ export async function loadCore() {
     return name;
   }
 
-  /** The initialised package that solves `id` (its topic's, or the whole one). */
+  /** The initialised package that solves `id` (its topic's, with or without practice, or the whole one). */
   function packageFor(id) {
-    const mod = ready.get(moduleById.get(id)) ?? ready.get("all");
+    const name = moduleById.get(id);
+    const mod = ready.get(name) ?? ready.get(practiceOf(name)) ?? ready.get("all");
     if (mod) return mod;
     moduleOf(id); // an unknown id says so
     throw new Error(`${id}: its module is not loaded yet (await core.load("${id}") first)`);
   }
 
-  function practicePackage() {
-    const mod = ready.get("all");
-    if (!mod) throw new Error("practice mode is not loaded yet (await core.loadPractice() first)");
+  function practicePackage(id) {
+    const mod = ready.get(practiceOf(moduleById.get(id))) ?? ready.get("all");
+    if (!mod) throw new Error(`practice mode of ${id} is not loaded yet (await core.loadPractice("${id}") first)`);
     return mod;
   }
 
@@ -170,14 +186,16 @@ export async function loadCore() {
       if (ready.has("all")) return;
       await loadModule(moduleOf(id));
     },
-    loaded: (id) => ready.has(moduleById.get(id)) || ready.has("all"),
+    loaded: (id) => ready.has(moduleById.get(id)) || ready.has(practiceOf(moduleById.get(id))) || ready.has("all"),
     parseInputs: (id, texts) => packageFor(id).parse_inputs(id, texts),
     solve: (id, inputs) => packageFor(id).solve(id, inputs),
-    loadPractice: async () => {
-      await loadModule("all");
+    /** Practice mode of example `id` (its topic's practice module), or of every example (no id: worksheets). */
+    loadPractice: async (id) => {
+      if (ready.has("all")) return;
+      await loadModule(id ? practiceOf(moduleOf(id)) : "all");
     },
-    practice: (id, code) => practicePackage().practice(id, code ?? undefined),
-    grade: (id, code, answers) => practicePackage().grade(id, code, answers),
+    practice: (id, code) => practicePackage(id).practice(id, code ?? undefined),
+    grade: (id, code, answers) => practicePackage(id).grade(id, code, answers),
     prefetch,
     modulesLoaded: () => [...ready.keys()],
   };
