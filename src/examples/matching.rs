@@ -202,27 +202,20 @@ fn normal_step(it: &Iteration, syms: &[Sym]) -> Step {
                 .collect()
         })
         .collect();
+    let mut n = Relation::new(r"A^\mathsf{T}A").key("N");
+    let mut atl = Relation::new(r"A^\mathsf{T}d\mathbf{L}").key("AtL");
+    if syms.len() == 1 {
+        // one unknown: the sums by hand, Σ g² and Σ g·dL, as products
+        let at = Form::grid("bmatrix", &at, r"A^\mathsf{T}");
+        n = n.subst(at.clone().then(Form::grid("bmatrix", &it.a, "A")));
+        atl = atl.subst(at.then(Form::column(&it.dl, r"d\mathbf{L}")));
+    }
     let mut step = Step::new(
         "Normal equations and increments (iteration 1)",
         "N = AᵀA and AᵀdL; their solution is the first set of increments.",
     )
-    .relation(
-        Relation::new(r"A^\mathsf{T}A")
-            .key("N")
-            .subst(
-                Form::grid("bmatrix", &at, r"A^\mathsf{T}").then(Form::grid("bmatrix", &it.a, "A")),
-            )
-            .result(Form::grid("bmatrix", &adj.n, "N")),
-    )
-    .relation(
-        Relation::new(r"A^\mathsf{T}d\mathbf{L}")
-            .key("AtL")
-            .subst(
-                Form::grid("bmatrix", &at, r"A^\mathsf{T}")
-                    .then(Form::column(&it.dl, r"d\mathbf{L}")),
-            )
-            .result(Form::column(&adj.atl, r"A^\mathsf{T}d\mathbf{L}")),
-    );
+    .relation(n.result(Form::grid("bmatrix", &adj.n, "N")))
+    .relation(atl.result(Form::column(&adj.atl, r"A^\mathsf{T}d\mathbf{L}")));
     let first = |k: usize| it.increments.get(k).copied().unwrap_or(0.0);
     let n11 = adj
         .n
