@@ -209,7 +209,7 @@ fn plain_list(xs: &[f64]) -> String {
     format!("[{}]", cells.join(", "))
 }
 
-/// A list of LaTeX cells as a form `[x_1,\ x_2,\ …]` the page may break
+/// A list of LaTeX cells as a form `[x_1, x_2, …]` the page may break
 /// between elements (long ones abbreviated).
 fn list_form(cells: &[String]) -> Form {
     let picked: Vec<&str> = shown(cells.len())
@@ -218,8 +218,8 @@ fn list_form(cells: &[String]) -> Form {
         .collect();
     let last = picked.len().saturating_sub(1);
     Form::terms(picked.iter().enumerate().map(|(k, c)| {
-        let open = if k == 0 { "[" } else { r",\ " };
-        let close = if k == last { "]" } else { "" };
+        let open = if k == 0 { "[" } else { "" };
+        let close = if k == last { "]" } else { "," };
         format!("{open}{c}{close}")
     }))
 }

@@ -443,33 +443,56 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
     let det = Relation::new(r"\det")
         .key("det")
         .sym(r"4 a_4 a_5 - a_3^2")
-        .subst(format!(
-            r"4 \cdot {} \cdot {} - {}^2",
-            tex(a[4]),
-            tex(a[5]),
-            tex(a[3])
-        ))
+        .subst(Form::terms([
+            format!(r"4 \cdot {} \cdot {}", tex(a[4]), tex(a[5])),
+            format!("- {}^2", tex(a[3])),
+        ]))
         .value(q.det, "");
-    let slope_c = Relation::new(r"\frac{\partial \rho}{\partial c}")
-        .sym("a_1 + a_3 r + 2 a_4 c")
-        .sym("0")
-        .subst(format!(
-            "{} + {} r + 2 {} c",
+    let slope = |lhs: &str, sym: &str, terms: [String; 3]| {
+        Relation::new(lhs)
+            .sym(sym)
+            .sym("0")
+            .subst(Form::terms(terms))
+            .result("0")
+    };
+    let slope_c = slope(
+        r"\frac{\partial \rho}{\partial c}",
+        "a_1 + a_3 r + 2 a_4 c",
+        [
             num(a[1]),
-            tex(a[3]),
-            tex(a[4])
-        ))
-        .result("0");
-    let slope_r = Relation::new(r"\frac{\partial \rho}{\partial r}")
-        .sym("a_2 + a_3 c + 2 a_5 r")
-        .sym("0")
-        .subst(format!(
-            "{} + {} c + 2 {} r",
+            format!("+ {} r", tex(a[3])),
+            format!("+ 2 {} c", tex(a[4])),
+        ],
+    );
+    let slope_r = slope(
+        r"\frac{\partial \rho}{\partial r}",
+        "a_2 + a_3 c + 2 a_5 r",
+        [
             num(a[2]),
-            tex(a[3]),
-            tex(a[5])
-        ))
-        .result("0");
+            format!("+ {} c", tex(a[3])),
+            format!("+ 2 {} r", tex(a[5])),
+        ],
+    );
+    // c = N_c / det and r = N_r / det (Cramer's rule), the numerators first
+    // so that no long fraction has to fit a line
+    let n_c = a[2] * a[3] - 2.0 * a[1] * a[5];
+    let n_r = a[1] * a[3] - 2.0 * a[2] * a[4];
+    let numerators = [
+        Relation::new("N_c")
+            .sym("a_2 a_3 - 2 a_1 a_5")
+            .subst(Form::terms([
+                format!(r"{} \cdot {}", num(a[2]), tex(a[3])),
+                format!(r"- 2 \cdot {} \cdot {}", tex(a[1]), tex(a[5])),
+            ]))
+            .value(n_c, ""),
+        Relation::new("N_r")
+            .sym("a_1 a_3 - 2 a_2 a_4")
+            .subst(Form::terms([
+                format!(r"{} \cdot {}", num(a[1]), tex(a[3])),
+                format!(r"- 2 \cdot {} \cdot {}", tex(a[2]), tex(a[4])),
+            ]))
+            .value(n_r, ""),
+    ];
     let point = |c_name: &str, r_name: &str, at: [f64; 2], keyed: bool| {
         let (rc, rr) = (Relation::new(c_name), Relation::new(r_name));
         let (rc, rr) = if keyed {
@@ -477,42 +500,27 @@ fn quadric_steps(s: &mut Solution, c: [f64; 3], r: [f64; 3], q: &Quadric) {
         } else {
             (rc, rr)
         };
-        [
-            rc.sym(r"\frac{a_2 a_3 - 2 a_1 a_5}{4 a_4 a_5 - a_3^2}")
-                .subst(format!(
-                    r"\frac{{{} \cdot {} - 2 \cdot {} \cdot {}}}{{{}}}",
-                    num(a[2]),
-                    tex(a[3]),
-                    tex(a[1]),
-                    tex(a[5]),
-                    num(q.det)
-                ))
+        let quotient = |n: f64| format!(r"\frac{{{}}}{{{}}}", num(n), num(q.det));
+        numerators.clone().into_iter().chain([
+            rc.sym(r"\frac{N_c}{\det}")
+                .subst(quotient(n_c))
                 .value(at[0], "px"),
-            rr.sym(r"\frac{a_1 a_3 - 2 a_2 a_4}{4 a_4 a_5 - a_3^2}")
-                .subst(format!(
-                    r"\frac{{{} \cdot {} - 2 \cdot {} \cdot {}}}{{{}}}",
-                    num(a[1]),
-                    tex(a[3]),
-                    tex(a[2]),
-                    tex(a[4]),
-                    num(q.det)
-                ))
+            rr.sym(r"\frac{N_r}{\det}")
+                .subst(quotient(n_r))
                 .value(at[1], "px"),
-        ]
+        ])
     };
     let (text, rels): (&str, Vec<Relation>) = match q.extremum {
         Extremum::Maximum { at, value } => (
             "Both slopes are zero at the maximum. The surface is concave (a4 < 0 and 4·a4·a5 − a3² > 0), so the stationary point is a true maximum.",
-            point("c", "r", at, true)
-                .into_iter()
-                .chain([Relation::new(r"\rho_{\max}")
+            point("c", "r", at, true).chain([Relation::new(r"\rho_{\max}")
                     .key("rho_max")
                     .value(value, "")])
                 .collect(),
         ),
         Extremum::Minimum { at, .. } => (
             "The surface curves upward in every direction (a4 > 0 and 4·a4·a5 − a3² > 0): the stationary point is a minimum, so there is no subpixel maximum.",
-            point(r"c_{\min}", r"r_{\min}", at, false).to_vec(),
+            point(r"c_{\min}", r"r_{\min}", at, false).collect(),
         ),
         Extremum::Saddle { at, .. } => (
             "4·a4·a5 − a3² < 0: the surface curves down one way and up the other; the stationary point is a saddle, not a maximum, so there is no subpixel peak.",
