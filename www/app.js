@@ -503,32 +503,10 @@ function quoteKey(key) {
 
 let labModule = null;
 
-/**
- * The lab family an example opens in: the catalog's `lab` (from the core's
- * descriptors). LAB_FAMILY_BEFORE only serves a catalog written before the
- * core said it (to be removed once every build's catalog has `lab`).
- */
+/** The lab family an example opens in: the catalog's `lab` (from the core's descriptors). */
 function labFamily(entry) {
-  return entry.lab ?? LAB_FAMILY_BEFORE[entry.id] ?? null;
+  return entry.lab ?? null;
 }
-const LAB_FAMILY_BEFORE = Object.freeze({
-  "filter-window": "filters",
-  "edge-window": "edges",
-  "forstner-window": "interest",
-  "forstner-image": "interest",
-  "moravec-window": "interest",
-  "ncc-2d": "correlation",
-  "ncc-surface": "correlation",
-  "subpixel-2d": "correlation",
-  "lsm-2d": "correlation",
-  "lsm-affine": "correlation",
-  resample: "resampling",
-  "chain-code": "boundaries",
-  "boundary-length": "boundaries",
-  "boundary-shape": "boundaries",
-  "fiducial-similarity": "fiducials",
-  "fiducial-affine": "fiducials",
-});
 
 async function showLab(params = []) {
   destroyView();

@@ -12,13 +12,38 @@ use serde::Serialize;
 
 /// An example's practice, as its descriptor declares it: `practice:
 /// drill(Drill { … })`. Without the `practice` feature (the page's topic
-/// modules) it is `None`, so none of the drill's code is linked into them.
+/// modules, which have no practice exports) it is [`Drill::ELSEWHERE`]: the
+/// catalog still says the example has practice, and none of the drill's code
+/// is linked into the module.
 pub const fn drill(d: Drill) -> Option<Drill> {
     if cfg!(feature = "practice") {
         Some(d)
     } else {
-        None
+        Some(Drill::ELSEWHERE)
     }
+}
+
+fn elsewhere_inputs(_: &mut Rng) -> Record {
+    Record::new()
+}
+fn elsewhere_boxes(_: &Record) -> Vec<BoxDef> {
+    Vec::new()
+}
+fn elsewhere_mistakes(_: &Record) -> Result<Vec<Mistake>> {
+    Err(Error::input(
+        "id",
+        "practice mode is in this topic's practice module (pkg/<topic>_practice.js)",
+    ))
+}
+
+impl Drill {
+    /// The drill of a build without the `practice` feature: draws nothing.
+    pub const ELSEWHERE: Drill = Drill {
+        generate: elsewhere_inputs,
+        boxes: elsewhere_boxes,
+        chain: None,
+        mistakes: elsewhere_mistakes,
+    };
 }
 
 /// How one example is practised.

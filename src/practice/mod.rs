@@ -16,7 +16,7 @@ pub mod grade;
 
 use crate::error::{Error, Result};
 use crate::examples::{self, Topic, TOPICS};
-use crate::solution::{Record, Solution};
+use crate::solution::{Record, Relation, Solution};
 use serde::Serialize;
 
 pub use grade::{grade, grade_in, Graded};
@@ -151,6 +151,9 @@ pub struct BoxInfo {
     /// variant's numbers (LaTeX, the result left out), and the index of the
     /// worked step in `solve(id, inputs).steps`.
     pub hints: Hints,
+    /// The exact value of the box for this variant (what a worksheet's
+    /// answer key prints).
+    pub expected: Option<f64>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -159,6 +162,9 @@ pub struct Hints {
     pub formula: String,
     pub numbers: String,
     pub step: usize,
+    /// The relation the formula and numbers come from, for the page's
+    /// layout (its result is never shown with the numbers).
+    pub relation: Option<Relation>,
 }
 
 /// A practice variant: `{ code, inputs, boxes }`.
@@ -306,44 +312,46 @@ pub fn digits_needed(exact: f64, allowed: f64) -> String {
 /// with this variant's numbers but not what they come to. Read from the
 /// steps' parts: the relation that computes the box's value (its `key`),
 /// else the first relation of the box's step with numbers put in.
-fn hints_of(key: &str, s: &Solution, step: usize) -> (String, String) {
+fn hints_of(key: &str, s: &Solution, step: usize) -> (String, String, Option<Relation>) {
+    // the relation of the box's own element (`sums[1,2]`), else of its value (`sums`)
     let (base, _) = split_key(key);
-    let keyed = s
-        .steps
-        .iter()
-        .flat_map(|st| st.parts.iter())
-        .find(|r| r.key.as_deref() == Some(base));
+    let relations = || s.steps.iter().flat_map(|st| st.parts.iter());
+    let keyed = relations()
+        .find(|r| r.key.as_deref() == Some(key))
+        .or_else(|| relations().find(|r| r.key.as_deref() == Some(base)));
     let in_step = || {
         s.steps
             .get(step)
             .and_then(|st| st.parts.iter().find(|r| !r.substituted.is_empty()))
     };
     match keyed.or_else(in_step) {
-        Some(r) => {
-            let formula = r.symbolic_latex();
-            let formula = if formula.is_empty() {
-                s.steps
-                    .get(step)
-                    .map(|st| st.formula.clone())
-                    .unwrap_or_default()
-            } else {
-                formula
-            };
-            (formula, r.question_latex())
+        // a relation with symbols: both hints laid out from it
+        Some(r) if !r.symbolic.is_empty() => {
+            (r.symbolic_latex(), r.question_latex(), Some(r.clone()))
         }
+        // numbers only: the formula is the step's
+        Some(r) => (
+            s.steps
+                .get(step)
+                .map(|st| st.formula.clone())
+                .unwrap_or_default(),
+            r.question_latex(),
+            None,
+        ),
         None => (
             s.steps
                 .get(step)
                 .map(|st| st.formula.clone())
                 .unwrap_or_default(),
             String::new(),
+            None,
         ),
     }
 }
 
 fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
     let step = step_of(&b.key, s);
-    let (formula, numbers) = hints_of(&b.key, s, step);
+    let (formula, numbers, relation) = hints_of(&b.key, s, step);
     BoxInfo {
         key: b.key.clone(),
         label: b.label.clone(),
@@ -363,7 +371,9 @@ fn box_info(b: &BoxDef, s: &Solution) -> BoxInfo {
             formula,
             numbers,
             step,
+            relation,
         },
+        expected: value_in(s, &b.key).ok(),
     }
 }
 

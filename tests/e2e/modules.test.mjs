@@ -10,7 +10,7 @@
 //   numbers of the Rust solver, having fetched only its own module before
 //   the first solution, once, started from the address by preload-route.js
 //   (the other topics follow when the page is idle);
-// - practice loads pkg/all.js only when it opens;
+// - an example's practice loads its topic's practice module (pkg/<module>_practice.js) only when it opens;
 // - the one-package API (pkg/photogrammetry_playground.js) and the lighter
 //   pkg/examples.js both solve an example of every topic in a blank page.
 import { after, before, describe, test } from "node:test";
@@ -180,13 +180,14 @@ describe("a cold load of each example", () => {
     }
   });
 
-  test("practice loads pkg/all.js when it opens, and no topic module", { timeout: TEST_TIMEOUT }, async () => {
+  test("an example's practice loads its topic's practice module when it opens, not pkg/all.js", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page, log } = await open(env.browser);
     try {
       await page.goto(`${env.url}index.html#/gsd?practice=1K7Q2`);
       await page.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: 15_000 });
       const pkg = log.requests.map((u) => logical(new URL(u).pathname)).filter((p) => p.startsWith("/pkg/"));
-      assert.deepEqual(pkg.sort(), ["/pkg/all.js", "/pkg/all_bg.wasm"]);
+      const gsd = CATALOG.find((e) => e.id === "gsd").module;
+      assert.deepEqual(pkg.sort(), [`/pkg/${gsd}_practice.js`, `/pkg/${gsd}_practice_bg.wasm`]);
       assert.deepEqual(log.pageErrors, []);
     } finally {
       await context.close();

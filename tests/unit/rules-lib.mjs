@@ -331,13 +331,26 @@ export function literalsOfJs(text) {
  * The spread of each example id: { id, count, files } (files: where it is a
  * literal), plus the mean and the largest count over all examples.
  */
+/**
+ * The same word with another meaning: where an id is also the name of
+ * something else, the files that use it in that sense (each with why).
+ */
+export const OTHER_MEANINGS = Object.freeze({
+  resample: {
+    why: "the lab worker's operation (run_resample), not the worked example",
+    files: ["www/lab/families/resampling.js", "scripts/bench_lab.mjs"],
+  },
+});
+
 export function idSpread() {
   const ids = exampleIds();
   const files = sourceFiles(SOURCE_ROOTS, SOURCE_EXTS);
   const where = new Map(ids.map(({ id }) => [id, new Set()]));
   for (const file of files) {
     const literals = new Set(literalsOf(file));
-    for (const [id, set] of where) if (literals.has(id)) set.add(file);
+    for (const [id, set] of where) {
+      if (literals.has(id) && !OTHER_MEANINGS[id]?.files.includes(file)) set.add(file);
+    }
   }
   const rows = [...where].map(([id, set]) => ({ id, count: set.size, files: [...set].sort() }));
   const mean = rows.reduce((s, r) => s + r.count, 0) / Math.max(1, rows.length);

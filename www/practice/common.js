@@ -40,29 +40,6 @@ export function renderGivens(entry, inputs) {
   return list;
 }
 
-// The core reads a box's key path itself (src/practice/mod.rs split_key, pick,
-// value_in); practice() does not yet say a box's expected value, so the
-// answer key reads it here, from the solution, in the same way. When a box
-// carries `expected` (asked of the core: BoxInfo.expected) it is used instead
-// and these two go.
-
-/** Splits a box key: "n[1,2]" -> ["n", [1, 2]] (1-based). */
-export function splitKey(key) {
-  const m = /^([^[]+)\[([\d,\s]+)\]$/.exec(key);
-  if (!m) return [key, []];
-  return [m[1], m[2].split(",").map((s) => Number(s.trim()))];
-}
-
-/** The expected value of box `key` in a solution (its result, else a step's values). */
-export function expectedValue(solution, key) {
-  const [base, idx] = splitKey(key);
-  let v = solution.result?.[base];
-  if (v === undefined) v = (solution.steps ?? []).find((s) => s.values && base in s.values)?.values[base];
-  for (const i of idx) v = Array.isArray(v) ? v[i - 1] : undefined;
-  if (typeof v === "boolean") return v ? 1 : 0;
-  return typeof v === "number" ? v : null;
-}
-
 /**
  * An expected value for the answer key: 7 significant digits, or more when
  * the box's tolerance (`{ atol, rtol }`) asks for them (a UTM easting to the

@@ -5,7 +5,7 @@
 import { el } from "../dom.js";
 import { messageOf } from "../core.js";
 import { formulaSource, renderFormula } from "../math.js";
-import { expectedValue, keyNumber, renderGivens } from "./common.js";
+import { keyNumber, renderGivens } from "./common.js";
 import { allProgress } from "./store.js";
 import { siteTitle } from "../site.js";
 
@@ -220,7 +220,7 @@ export async function showWorksheet({ root, core, entries, setStatus }, what, nT
       el(
         "table",
         { class: "ws-key-table" },
-        el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(typeof b.expected === "number" ? b.expected : expectedValue(solution, b.key), b.tolerance)}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
+        el("tbody", {}, variant.boxes.map((b) => el("tr", {}, el("th", { scope: "row" }, b.label), el("td", {}, `${keyNumber(b.expected, b.tolerance)}${b.unit ? ` ${b.unit}` : ""}`), el("td", { class: "muted" }, b.tolerance_text)))),
       ),
       withSteps ? workedSteps(solution) : null,
     );
