@@ -24,8 +24,9 @@ function sidesOf(r, side) {
 
 /** Whether a relation shows in a side at all (as the core's LaTeX strings do). */
 function shown(r, side, sides) {
-  if (side === "symbolic" || side === "question") return sides.length > 0;
-  return sides.length > 0 || (r.lhs ?? []).length > 0;
+  // as the core's LaTeX: a side is shown when it has something on the right
+  // (a relation with symbols only has no numbers line)
+  return sides.length > 0;
 }
 
 const isGrid = (piece) => Boolean(piece && piece.grid);
