@@ -296,8 +296,9 @@ fn catalog_lists_every_catalog_md_entry_with_fields_for_the_built_ones() {
         "utm-inverse",
         "utm-facts",
     ];
+    // the ids of ../shared/CATALOG.md: each is in the catalog (which may have more)
     let cat = catalog();
-    assert_eq!(cat.len(), ids.len());
+    assert!(cat.len() >= ids.len());
     for id in ids {
         assert!(
             cat.iter().any(|e| e.id == id),
