@@ -52,10 +52,20 @@ pub fn steps_are_data_and_hints_are_keyed(topic: &Topic, variants: u32) -> usize
             let p = practice::practice(e.id, Some(&code), 0).unwrap();
             let s = e.run(&p.inputs).unwrap();
             for b in &p.boxes {
+                // the box's own element's relation (sums[1,2]), else its value's (sums)
                 let (base, _) = split_key(&b.key);
-                let r = keyed(&s, base)
+                let r = keyed(&s, &b.key)
+                    .or_else(|| keyed(&s, base))
                     .unwrap_or_else(|| panic!("{} {code}: no relation keyed {base}", e.id));
                 assert_eq!(b.hints.numbers, r.question_latex(), "{} {}", e.id, b.key);
+                // the page lays a hint out from its relation when it has symbols
+                assert_eq!(
+                    b.hints.relation.as_ref(),
+                    (!r.symbolic.is_empty()).then_some(r),
+                    "{} {}",
+                    e.id,
+                    b.key
+                );
                 if !r.symbolic.is_empty() {
                     assert_eq!(b.hints.formula, r.symbolic_latex(), "{} {}", e.id, b.key);
                 }
