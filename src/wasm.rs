@@ -128,11 +128,6 @@ pub fn catalog_of(topics: &'static [Topic]) -> Result<JsValue, JsError> {
     to_js(&examples::catalog_of(topics))
 }
 
-/// `catalog()` of the whole catalog (with `practice` and `module`).
-pub fn catalog_all() -> Result<JsValue, JsError> {
-    to_js(&examples::catalog())
-}
-
 /// `solve(id, inputs)` among `topics`.
 pub fn solve_in(
     topics: &'static [Topic],
@@ -203,8 +198,8 @@ pub fn grade(
 /// The invoking crate depends on `wasm-bindgen` (the attribute names it).
 #[macro_export]
 macro_rules! export_examples {
-    ($($topic:path),+ $(,)?) => {
-        const TOPICS: &[$crate::examples::Topic] = &[$($topic),+];
+    (@in $topics:expr) => {
+        const TOPICS: &[$crate::examples::Topic] = $topics;
 
         /// This module's worked examples: `[{ id, title, topic, source,
         /// document, summary, status, inputs }]`.
@@ -255,62 +250,18 @@ macro_rules! export_examples {
             $crate::wasm::grade(TOPICS, &id, &code, answers)
         }
     };
+    ($($topic:path),+ $(,)?) => {
+        $crate::export_examples!(@in &[$($topic),+]);
+    };
 }
 
-/// The exports of the whole catalog: `catalog` (with `practice` and
-/// `module`), `solve`, `parse_inputs`, and practice mode's `practice` and
-/// `grade` (which re-run every solver, so this module carries them all).
+/// The exports of the whole catalog ([`export_examples!`] over every topic
+/// of `examples::TOPICS`): `catalog`, `solve`, `parse_inputs`, and practice
+/// mode's `practice` and `grade` (with the invoking crate's `practice`
+/// feature): the one-package API (`pkg/photogrammetry_playground.js`).
 #[macro_export]
 macro_rules! export_all {
     () => {
-        /// Every worked example: `[{ id, title, topic, source, document,
-        /// summary, status, practice, module, inputs }]`.
-        #[::wasm_bindgen::prelude::wasm_bindgen]
-        pub fn catalog() -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError>
-        {
-            $crate::wasm::catalog_all()
-        }
-
-        /// Solves example `id` with typed `inputs`; throws an `Error` naming
-        /// the field on bad input.
-        #[::wasm_bindgen::prelude::wasm_bindgen]
-        pub fn solve(
-            id: ::wasm_bindgen::JsValue,
-            inputs: ::wasm_bindgen::JsValue,
-        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::solve_in(&$crate::examples::TOPICS, &id, inputs)
-        }
-
-        /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.
-        #[::wasm_bindgen::prelude::wasm_bindgen]
-        pub fn parse_inputs(
-            id: ::wasm_bindgen::JsValue,
-            texts: ::wasm_bindgen::JsValue,
-        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::parse_inputs_in(&$crate::examples::TOPICS, &id, texts)
-        }
-
-        /// A practice variant of example `id`: `{ id, code, inputs, boxes }`;
-        /// the variant of `code` when given (a string like `"1K7Q2"`), a new
-        /// one when `code` is `undefined` or `null`.
-        #[::wasm_bindgen::prelude::wasm_bindgen]
-        pub fn practice(
-            id: ::wasm_bindgen::JsValue,
-            code: ::wasm_bindgen::JsValue,
-        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::practice(&$crate::examples::TOPICS, &id, &code)
-        }
-
-        /// Grades `answers` (`{ box key: text }`) for variant `code` of
-        /// example `id`: `{ code, boxes: { key: { verdict, mistake?, message,
-        /// read, value, precision, unit, points } }, score, out_of }`.
-        #[::wasm_bindgen::prelude::wasm_bindgen]
-        pub fn grade(
-            id: ::wasm_bindgen::JsValue,
-            code: ::wasm_bindgen::JsValue,
-            answers: ::wasm_bindgen::JsValue,
-        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
-            $crate::wasm::grade(&$crate::examples::TOPICS, &id, &code, answers)
-        }
+        $crate::export_examples!(@in &$crate::examples::TOPICS);
     };
 }

@@ -35,8 +35,12 @@ fn the_catalog_is_the_topics_own() {
     for e in cat.iter() {
         assert_eq!(get(&e, "topic").as_string().as_deref(), Some("Coordinates"));
         assert_eq!(get(&e, "status").as_string().as_deref(), Some("ready"));
-        assert!(get(&e, "practice").is_undefined());
-        assert!(get(&e, "module").is_undefined());
+        // the catalog's flags come from the descriptors, in every module
+        assert_eq!(get(&e, "practice").as_bool(), Some(true));
+        assert_eq!(
+            get(&e, "module").as_string().as_deref(),
+            Some("coordinates")
+        );
     }
 }
 
