@@ -154,7 +154,7 @@ fn normalise(text: &str) -> String {
 
 /// A text quoted in a message: at most 24 characters (a pasted page is not
 /// echoed back whole).
-pub(crate) fn short(s: &str) -> String {
+pub fn short(s: &str) -> String {
     let mut out: String = s.chars().take(24).collect();
     if s.chars().count() > 24 {
         out.push('…');

@@ -514,13 +514,6 @@ impl Step {
             values: Record::new(),
         }
     }
-    /// The formula as two LaTeX strings (being replaced by
-    /// [`relation`](Self::relation): a step built this way has no parts).
-    pub fn formula(mut self, symbolic: &str, substituted: String) -> Self {
-        self.formula = symbolic.to_string();
-        self.substituted = substituted;
-        self
-    }
     /// Adds a relation; `formula` and `substituted` are made again from
     /// all the relations (the one place LaTeX of a step is put together).
     pub fn relation(mut self, r: Relation) -> Self {

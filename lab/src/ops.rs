@@ -10,6 +10,7 @@ use photogrammetry_playground::filter::{self, Kernel, Region};
 use photogrammetry_playground::interest::{self, Measures};
 use photogrammetry_playground::matching::{self, Gradients, Matching, Model, Params, Settings};
 use photogrammetry_playground::raster::{Border, Gray, Grid};
+use photogrammetry_playground::read::short;
 use photogrammetry_playground::resample::{self, Method};
 use photogrammetry_playground::solution::fmt_sig;
 use photogrammetry_playground::transform::{self, Fit, PointPair};
@@ -64,7 +65,10 @@ pub fn border(name: &str) -> Result<Border> {
         "crop" => Ok(Border::Crop),
         _ => Err(Error::input(
             "border",
-            format!("must be replicate, reflect, zero or crop (got \"{name}\")"),
+            format!(
+                "must be replicate, reflect, zero or crop (got \"{}\")",
+                short(name)
+            ),
         )),
     }
 }
@@ -247,7 +251,7 @@ pub fn edges(img: &Grid, operator: &str, border: Border) -> Result<Vec<Layer>> {
         _ => {
             return Err(Error::input(
                 "operator",
-                format!("must be prewitt or sobel (got \"{operator}\")"),
+                format!("must be prewitt or sobel (got \"{}\")", short(operator)),
             ))
         }
     };

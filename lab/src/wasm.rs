@@ -385,7 +385,8 @@ pub fn run_correlation(
         "affine" => Model::AffineRadiometric,
         _ => {
             return Err(JsError::new(&format!(
-                "model: must be shift, shift-radiometric or affine (got \"{model}\")"
+                "model: must be shift, shift-radiometric or affine (got \"{}\")",
+                photogrammetry_playground::read::short(&model)
             )))
         }
     };
@@ -531,7 +532,8 @@ fn resample_map(
             }))
         }
         _ => Err(JsError::new(&format!(
-            "kind: must be rotate or projective (got \"{kind}\")"
+            "kind: must be rotate or projective (got \"{}\")",
+            photogrammetry_playground::read::short(kind)
         ))),
     }
 }
