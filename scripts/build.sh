@@ -36,10 +36,9 @@ export -f bindgen
 # wasm-bindgen for each module, two at a time: pkg/<name>.js + <name>_bg.wasm; the topics'
 # practice builds first, as pkg/<topic>_practice.js (invocation 2 then replaces their wasm)
 modules=$(cd web && ls -d */ | tr -d /)
-for name in $modules; do echo "$name"; done | xargs -P 2 -I{} bash -c \
+for name in $topics; do echo "$name"; done | xargs -P 2 -I{} bash -c \
   "bindgen --out-dir '$STAGE/pkg' --out-name {}_practice target/wasm32-unknown-unknown/release/playground_{}.wasm"
-mv "$STAGE"/pkg/all_practice.js "$STAGE"/pkg/all.js
-mv "$STAGE"/pkg/all_practice_bg.wasm "$STAGE"/pkg/all_bg.wasm
+bindgen --out-dir "$STAGE"/pkg --out-name all target/wasm32-unknown-unknown/release/playground_all.wasm
 echo "build: cargo build --release --target wasm32-unknown-unknown --no-default-features (the topics' example modules)"
 cargo build --release --target wasm32-unknown-unknown --lib --no-default-features $(for t in $topics; do printf ' -p playground-%s' "$t"; done)
 for name in $topics; do echo "$name"; done | xargs -P 2 -I{} bash -c \
