@@ -428,7 +428,7 @@ test("an edge direction is atan2(gy, gx) of the gx and gy its edge-window comput
     assert.equal(e.gx[1][1], (await results(context, page.url(), href, ["selected_gx"])).selected_gx, "the selected pixel is the window's centre");
     // the link explain.js builds for a direction pixel: the same window, gx and gy
     const link = await page.evaluate(async ([h]) => {
-      const X = await import("./lab/explain.js");
+      const X = (await import("./lab/lab.js")).explain;
       const win = new URLSearchParams(h.split("?")[1]).get("window").split(";").flatMap((row) => row.split(",").map(Number));
       const l = X.edgeLink("sobel", win, "direction");
       return { same: `index.html${l.hash}` === h, derive: l.derive, dir: null };

@@ -261,7 +261,7 @@ test("the engine line: the SIMD128 build on one thread, or on several when the p
   assert.equal(await page.getAttribute("#lab-engine", "data-build"), "simd128");
   // the line is the worker's own answer
   const engine = await page.evaluate(async () => {
-    const { LabClient } = await import("./lab/client.js");
+    const { LabClient } = await import("./lab/lab.js");
     const c = new LabClient({ onRestart: async () => {} });
     const e = await c.call("engine");
     c.close();

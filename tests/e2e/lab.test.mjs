@@ -560,7 +560,7 @@ test("filters and edges run by bands of rows (for their progress) give the one c
     ...["sobel", "prewitt"].flatMap((operator) => ["reflect", "crop"].map((border) => ["edges", { operator, border }])),
   ];
   const out = await page.evaluate(async (requests) => {
-    const { LabClient } = await import("./lab/client.js");
+    const { LabClient } = await import("./lab/lab.js");
     const client = new LabClient({ onRestart: async () => {} });
     // 301 × 777 random bytes with flat runs: three bands of 259 rows
     const [w, h] = [301, 777];

@@ -29,7 +29,7 @@ async function withClient(url, body, arg) {
   page.on("pageerror", (e) => errors.push(e.message));
   await page.goto(`${url}index.html`);
   await page.evaluate(async () => {
-    const { LabClient } = await import("./lab/client.js");
+    const { LabClient } = await import("./lab/lab.js");
     const client = new LabClient({ onRestart: async () => {} });
     const [w, h] = [301, 257];
     const bytes = new Uint8Array(w * h);

@@ -9,6 +9,11 @@ import { buildHash, parseHash } from "../url.js";
 import { loadCatalog } from "../core.js";
 import { LabClient } from "./client.js";
 import { useCatalog } from "./explain.js";
+
+// for the tests and for pages that drive the lab: its worker client and its links,
+// reached through the lab module (the build bundles them into it)
+export { LabClient } from "./client.js";
+export * as explain from "./explain.js";
 import { Viewer, fmt } from "./view.js";
 import { testHook, testing } from "../test-hooks.js";
 import filters from "./families/filters.js";
