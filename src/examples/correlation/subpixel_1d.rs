@@ -255,14 +255,11 @@ fn parabola_steps(s: &mut Solution, x: [f64; 3], y: [f64; 3], p: &Parabola) {
                 Relation::new(r"\rho_{\max}")
                     .key("rho_max")
                     .sym(r"a_0 + a_1 c + a_2 c^2")
-                    .subst(format!(
-                        r"{} + {} \cdot {} + {} \cdot {}^2",
+                    .subst(Form::terms([
                         num(a0),
-                        tex(a1),
-                        num(c[0]),
-                        tex(a2),
-                        num(c[0])
-                    ))
+                        format!(r"+ {} \cdot {}", tex(a1), num(c[0])),
+                        format!(r"+ {} \cdot {}^2", tex(a2), num(c[0])),
+                    ]))
                     .value(value, ""),
             ],
         ),

@@ -239,10 +239,16 @@ fn solve(inputs: &Record) -> Result<Solution> {
                 "Design matrix and normal equations (iteration 1)",
                 "A has one row per template pixel and eight columns; N = AᵀA is 8×8.",
             )
-            .relation(
-                Relation::new("A_i")
-                    .sym(r"[a_7G_p u,\ a_7G_p v,\ a_7G_p,\ a_7G_q u,\ a_7G_q v,\ a_7G_q,\ G,\ 1]"),
-            )
+            .relation(Relation::new("A_i").sym(Form::terms([
+                r"[a_7G_p u,",
+                r"a_7G_p v,",
+                r"a_7G_p,",
+                r"a_7G_q u,",
+                r"a_7G_q v,",
+                r"a_7G_q,",
+                r"G,",
+                r"1]",
+            ])))
             .relation(Relation::new("A_1").subst(Form::grid(
                 "bmatrix",
                 &it.a[..it.a.len().min(1)],

@@ -202,11 +202,10 @@ fn solve(inputs: &Record) -> Result<Solution> {
             Relation::new(r"\tau'")
                 .key("tau_prime")
                 .sym(r"\tau\sqrt{1+\sigma^2} - \sigma\sqrt{1+\tau^2}")
-                .subst(format!(
-                    r"{} \sqrt{{1+{sg}^2}} - {sg} \sqrt{{1+{}^2}}",
-                    par(t.clone()),
-                    par(t.clone())
-                ))
+                .subst(Form::terms([
+                    format!(r"{} \sqrt{{1+{sg}^2}}", par(t.clone())),
+                    format!(r"- {sg} \sqrt{{1+{}^2}}", par(t.clone())),
+                ]))
                 .result(fmt_sig(tm.tau_prime, 14)),
         )
         .relation(Relation::new(r"\chi").result(deg(fmt_sig(tm.tau_prime.atan().to_degrees(), 12))))
