@@ -29,7 +29,7 @@ const TYPES = {
   ".txt": "text/plain; charset=utf-8",
 };
 
-/** The build's precompressed copies, best first (scripts/assets.mjs writes them). */
+/** The build's precompressed copies, best first (scripts/site.mjs writes them). */
 const ENCODINGS = [
   ["br", ".br"],
   ["gzip", ".gz"],

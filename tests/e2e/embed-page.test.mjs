@@ -264,7 +264,7 @@ describe("offline after the first visit", { timeout: TEST_TIMEOUT * 2 }, () => {
     const build = JSON.parse(/^const BUILD = (.*);$/m.exec(sw)[1]);
     assert.equal(build.version, version);
     assert.match(version, /^[0-9a-f]{16}$/);
-    // the names the page asks for: content-hashed where scripts/assets.mjs hashed them
+    // the names the page asks for: content-hashed where scripts/site.mjs hashed them
     const hashed = JSON.parse(fs.readFileSync(`${DIST}/assets.json`, "utf8"));
     for (const f of ["index.html", "embed.html", "embed.js", "catalog.json", "pkg/coordinates_bg.wasm", "pkg/projection_bg.wasm", "vendor/katex/katex.min.js"]) {
       assert.ok(build.files.includes(hashed[f] ?? f), f);

@@ -108,7 +108,7 @@ describe("network", () => {
       const outside = log.requests.filter((u) => !u.startsWith(`${origin}/`) && !u.startsWith("data:") && !u.startsWith("blob:"));
       assert.deepEqual(outside, []);
       // the wasm, KaTeX and its fonts came from here
-      // (content-hashed names: name.<8 hex>.ext, scripts/assets.mjs)
+      // (content-hashed names: name.<8 hex>.ext, scripts/site.mjs)
       assert.ok(log.requests.some((u) => /_bg(-\w{8})?\.wasm$/.test(u)));
       assert.ok(log.requests.some((u) => /\/vendor\/katex\/katex\.min(\.[0-9a-f]{8})?\.js$/.test(u)));
       assert.ok(log.requests.some((u) => u.includes("/vendor/katex/fonts/")));

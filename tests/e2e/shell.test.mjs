@@ -7,7 +7,7 @@ import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
 import { DIST, TEST_TIMEOUT, open, settled, start, visit } from "./harness.mjs";
-import { readDataBlock } from "../../scripts/assets.mjs";
+import { readDataBlock } from "../../scripts/site.mjs";
 
 const PHONE = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true };
 /**
