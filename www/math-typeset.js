@@ -404,5 +404,24 @@ export function fitAll(formulas, { reset = true, all = false } = {}) {
     });
     jobs = next;
   }
-  stuck.forEach(scrollable);
+  stuck.forEach(shrinkOrScroll);
+}
+
+/** The smallest font size a term that cannot be rearranged is shrunk to before it scrolls. */
+const MIN_SHRINK = 0.75;
+
+/**
+ * A term nothing can rearrange (one piece: a fraction, a long product): a
+ * little too wide, it is set a little smaller to fit its line; much too wide,
+ * it scrolls (read, then write: a few terms at most).
+ */
+function shrinkOrScroll(term) {
+  const room = term.clientWidth;
+  const width = term.scrollWidth;
+  if (room > 0 && width > room && room / width >= MIN_SHRINK) {
+    term.style.fontSize = `${Math.floor((room / width) * 980) / 10}%`;
+    term.classList.add("formula-refit"); // a later fit starts again from the rendering
+    return;
+  }
+  scrollable(term);
 }
