@@ -408,7 +408,7 @@ export function fitAll(formulas, { reset = true, all = false } = {}) {
 }
 
 /** The smallest font size a term that cannot be rearranged is shrunk to before it scrolls. */
-const MIN_SHRINK = 0.75;
+const MIN_SHRINK = 0.7;
 
 /**
  * A term nothing can rearrange (one piece: a fraction, a long product): a
