@@ -611,3 +611,253 @@ fn warps_hold_the_tolerance_where_weights_cancel() {
         }
     }
 }
+
+#[test]
+fn forstner_rows_give_the_window_operators_numbers_bit_for_bit() {
+    use photogrammetry_playground::interest::{self, fast::stream};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 900 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        for size in [3, 4, 5, 6, 7, 9] {
+            let Ok(map) = interest::forstner_map(&grid, size) else {
+                assert!(stream::forstner_rows(img, size, |_, _, _, _| {}).is_err());
+                continue;
+            };
+            let mut seen = vec![false; w * h];
+            let f = stream::forstner_rows(img, size, |r, xx, yy, xy| {
+                for (j, ((&a, &d), &b)) in xx.iter().zip(yy).zip(xy).enumerate() {
+                    let c = stream::fit(w, h, size).unwrap().c0 + j;
+                    let s = stream::Sums4 {
+                        xx: a,
+                        yy: d,
+                        xy: b,
+                    };
+                    let m = map.get(c, r).expect("the reference has this window");
+                    let (gw, gq) = s.w_q();
+                    let what = format!("{w}×{h} size {size} at ({c}, {r})");
+                    assert_eq!(gw.to_bits(), m.w.to_bits(), "w {what}");
+                    assert_eq!(gq.to_bits(), m.q.unwrap_or(f64::NAN).to_bits(), "q {what}");
+                    assert_eq!(
+                        s.lambda_min().to_bits(),
+                        m.lambda_min.to_bits(),
+                        "λmin {what}"
+                    );
+                    assert_eq!(s.measures(m.m), m, "measures {what}");
+                    seen[r * w + c] = true;
+                }
+            })
+            .unwrap();
+            assert_eq!(f.columns * f.rows, map.cells.iter().flatten().count());
+            for (i, s) in seen.iter().enumerate() {
+                assert_eq!(*s, map.cells[i].is_some(), "{w}×{h} size {size} cell {i}");
+            }
+        }
+    }
+}
+
+#[test]
+fn moravec_rows_give_the_window_means_bit_for_bit() {
+    use photogrammetry_playground::interest::{self, fast::stream};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 950 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        for size in [3, 4, 5, 8] {
+            let Ok(map) = interest::moravec_map(&grid, size) else {
+                assert!(stream::moravec_rows(img, size, |_, _| {}).is_err());
+                continue;
+            };
+            let n = ((size - 2) * (size - 2)) as f64;
+            let mut count = 0;
+            stream::moravec_rows(img, size, |r, sums| {
+                for (j, &s) in sums.iter().enumerate() {
+                    let c = interest::anchor(size) + j;
+                    let want = map.get(c, r).expect("the reference has this window");
+                    assert_eq!(f64::from(s) / n, want, "{w}×{h} size {size} at ({c}, {r})");
+                    count += 1;
+                }
+            })
+            .unwrap();
+            assert_eq!(count, map.cells.iter().flatten().count());
+        }
+    }
+}
+
+#[test]
+fn the_row_suppressor_keeps_what_suppress_keeps() {
+    use photogrammetry_playground::interest::{self, fast::stream::Suppressor};
+    let mut rng = Rng(5);
+    for &(w, h) in SIZES.iter().chain(&[(40, 3), (3, 40)]) {
+        for radius in 0..4 {
+            // few distinct values: ties everywhere; a third without a score
+            let scores: Vec<Option<f64>> = (0..w * h)
+                .map(|_| (rng.below(3) > 0).then(|| rng.below(6) as f64 - 2.0))
+                .collect();
+            let want = interest::suppress(&scores, w, h, radius);
+            let mut got = Vec::new();
+            let mut s = Suppressor::new(w, h, radius);
+            let mut keep = |c: usize, r: usize, v: f64, p: usize| {
+                assert_eq!(p, r * w + c);
+                assert_eq!(Some(v), scores[p]);
+                got.push(p);
+            };
+            for r in 0..h {
+                let row = (0..w).map(|c| (scores[r * w + c].unwrap_or(f64::NAN), r * w + c));
+                s.push(row, &mut keep);
+            }
+            s.finish(&mut keep);
+            assert_eq!(got, want, "{w}×{h} radius {radius}");
+        }
+    }
+}
+
+#[test]
+fn correlate_equals_the_reference_for_any_kernel() {
+    let mut rng = Rng(77);
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 1000 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        for (kw, kh) in [(1, 1), (3, 3), (5, 5), (3, 5), (7, 3), (15, 15)] {
+            for integer in [true, false] {
+                let taps: Vec<f64> = (0..kw * kh)
+                    .map(|_| {
+                        let v = rng.below(11) as f64 - 5.0;
+                        if integer {
+                            v
+                        } else {
+                            v / 7.0
+                        }
+                    })
+                    .collect();
+                let rows: Vec<Vec<f64>> = taps.chunks(kw).map(<[f64]>::to_vec).collect();
+                let divisor = if integer { 9.0 } else { 0.3 };
+                let kernel = Kernel::new("k", &rows, divisor).unwrap();
+                let k32: Vec<f32> = taps.iter().map(|&v| v as f32).collect();
+                let scale: f64 = taps.iter().map(|v| v.abs()).sum::<f64>() * 255.0 / divisor;
+                for border in BORDERS {
+                    let Ok(reference) = filter::correlate(&grid, &kernel, border) else {
+                        continue;
+                    };
+                    let mut out = vec![0.0f32; w * h];
+                    fast::correlate(img, &k32, (kw, kh), divisor as f32, border, &mut out).unwrap();
+                    let reg = reference.region;
+                    for r in reg.r0..reg.r0 + reg.height {
+                        for c in reg.c0..reg.c0 + reg.width {
+                            let want = reference.at_input(c, r).unwrap();
+                            let got = f64::from(out[r * w + c]);
+                            // integer taps: the f32 nearest the exact value
+                            // (one unit in the last place); others within
+                            // 1e-6 of the kernel's range
+                            let tol = if integer {
+                                f64::from(f32::EPSILON) * want.abs()
+                            } else {
+                                1e-6 * scale
+                            };
+                            assert!(
+                                (got - want).abs() <= tol,
+                                "{kw}×{kh} {w}×{h} {border:?} at ({c}, {r}): {got} vs {want}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn direction_is_atan2_in_degrees() {
+    let mut xs = vec![0.0f32, -0.0, 1.0, -1.0, 1020.0, -1020.0, 3.0, -3.0];
+    let mut rng = Rng(3);
+    xs.extend((0..300).map(|_| rng.below(2041) as f32 - 1020.0));
+    for &x in &xs {
+        let ys: Vec<f32> = xs.iter().step_by(3).copied().collect();
+        let gx = vec![x; ys.len()];
+        let mut out = vec![0.0f32; ys.len()];
+        fast::direction_deg(&gx, &ys, &mut out);
+        for (&y, &d) in ys.iter().zip(&out) {
+            let want = (f64::from(y) + 0.0).atan2(f64::from(x) + 0.0).to_degrees();
+            assert!(
+                (f64::from(d) - want).abs() <= 1e-4,
+                "atan2({y}, {x}): {d} vs {want}"
+            );
+        }
+    }
+}
+
+#[test]
+fn warps_by_the_references_own_positions_equal_resample_warp() {
+    use photogrammetry_playground::resample::{self, fast as rfast, Method};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 1100 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        let grid = img.to_grid();
+        let (mc, mr) = ((w as f64 - 1.0) / 2.0, (h as f64 - 1.0) / 2.0);
+        // the lab's rotation (an odd width and scale 2 put nearest
+        // neighbours on exact halves), and a homography
+        for (angle, scale) in [(0.0, 2.0), (7.0, 1.15), (90.0, 1.0), (-33.0, 0.6)] {
+            let (s, c) = f64::to_radians(angle).sin_cos();
+            let rot = |x: f64, y: f64| {
+                let (dx, dy) = (x - mc, y - mr);
+                (
+                    (c * dx + s * dy) / scale + mc,
+                    (-s * dx + c * dy) / scale + mr,
+                )
+            };
+            let (a, b) = (c / scale, s / scale);
+            let m = [[a, b, mc - a * mc - b * mr], [-b, a, mr + b * mc - a * mr]];
+            let hom = |x: f64, y: f64| {
+                let d = 1.0 + 0.01 * x - 0.02 * y;
+                (
+                    (0.9 * x + 0.1 * y + 0.5) / d,
+                    (-0.05 * x + 1.1 * y + 0.25) / d,
+                )
+            };
+            for method in [Method::Nearest, Method::Bilinear, Method::Bicubic] {
+                let (ow, oh) = (w + 2, h + 1);
+                let mut out = vec![0.0f32; ow * oh];
+                rfast::warp_affine_with(
+                    img,
+                    &m,
+                    &rot,
+                    method,
+                    resample::SEED_A,
+                    -1.0,
+                    (ow, oh),
+                    &mut out,
+                )
+                .unwrap();
+                let want = resample::warp(&grid, ow, oh, rot, method, -1.0);
+                let mut proj = vec![0.0f32; ow * oh];
+                rfast::warp_map(
+                    img,
+                    &hom,
+                    method,
+                    resample::SEED_A,
+                    -1.0,
+                    (ow, oh),
+                    &mut proj,
+                )
+                .unwrap();
+                let want_p = resample::warp(&grid, ow, oh, hom, method, -1.0);
+                for i in 0..ow * oh {
+                    let what = format!("{method:?} {w}×{h} {angle}° ×{scale} pixel {i}");
+                    if method == Method::Nearest {
+                        assert_eq!(f64::from(out[i]), want.data()[i], "{what}");
+                        assert_eq!(f64::from(proj[i]), want_p.data()[i], "{what} projective");
+                    } else {
+                        assert!(
+                            close(out[i], want.data()[i]),
+                            "{what}: {} vs {}",
+                            out[i],
+                            want.data()[i]
+                        );
+                        assert!(close(proj[i], want_p.data()[i]), "{what} projective");
+                    }
+                }
+            }
+        }
+    }
+}

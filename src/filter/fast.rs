@@ -320,6 +320,108 @@ pub fn separable(
     Ok(())
 }
 
+/// `out = Σ_j Σ_i k[j·kw + i] · I(c + i − kw/2, r + j − kh/2) / divisor`:
+/// any odd `kw × kh` kernel (row-major `k`) applied as written
+/// (correlation, [`super::correlate`]), one multiply-add pass along the row
+/// per non-zero tap over the rows of a ring, each row padded by the border
+/// once. Integer taps with `Σ|k|·255 < 2²⁴` keep every partial sum an
+/// exact integer (any order of adding gives the same `f32`), and a divisor
+/// exact in `f32` makes the output the `f32` nearest to the reference's
+/// value.
+pub fn correlate(
+    img: Gray,
+    k: &[f32],
+    (kw, kh): (usize, usize),
+    divisor: f32,
+    border: Border,
+    out: &mut [f32],
+) -> Result<()> {
+    if kw.is_multiple_of(2) || kh.is_multiple_of(2) || k.len() != kw * kh {
+        return Err(Error::input(
+            "kernel",
+            format!(
+                "needs an odd number of rows and of columns and {kw}×{kh} taps (got {})",
+                k.len()
+            ),
+        ));
+    }
+    if k.iter().any(|v| !v.is_finite()) {
+        return Err(Error::input("kernel", "needs finite taps"));
+    }
+    if !(divisor.is_finite() && divisor != 0.0) {
+        return Err(Error::input("divisor", "must be a finite non-zero number"));
+    }
+    let (w, h) = (img.width(), img.height());
+    check_len("output", out, w * h)?;
+    let (rx, ry) = (kw / 2, kh / 2);
+    let mut ring = RowRing::new(w, ry);
+    let mut padded = vec![0.0f32; w + 2 * rx];
+    let mut acc = vec![0.0f32; w];
+    for (r, o) in out.chunks_exact_mut(w).enumerate() {
+        let rows = ring.rows(&img, r, ry, border);
+        acc.fill(0.0);
+        for (row, taps) in rows.iter().zip(k.chunks_exact(kw)) {
+            if taps.iter().all(|&t| t == 0.0) {
+                continue;
+            }
+            if let Some(mid) = padded.get_mut(rx..rx + w) {
+                mid.copy_from_slice(row.get(..w).unwrap_or(&[]));
+            }
+            pad_row(&mut padded, w, rx, border, 0.0);
+            for (i, &t) in taps.iter().enumerate() {
+                if t != 0.0 {
+                    axpy(&mut acc, t, padded.get(i..i + w).unwrap_or(&[]));
+                }
+            }
+        }
+        for (d, a) in o.iter_mut().zip(&acc) {
+            *d = a / divisor;
+        }
+    }
+    Ok(())
+}
+
+/// `acc[x] += t · src[x]` (the loop the compiler turns into SIMD).
+fn axpy(acc: &mut [f32], t: f32, src: &[f32]) {
+    for (a, s) in acc.iter_mut().zip(src) {
+        *a += t * s;
+    }
+}
+
+/// `out = atan2(y, x)` in degrees, `(−180, 180]` as `f64::atan2` (of
+/// `+0` for `−0`): Cephes' `atanf` (the argument reduced to
+/// `[0, tan π/8]`, a degree-9 odd polynomial; relative error about
+/// 2·10⁻⁷) on `min(|x|, |y|) / max(|x|, |y|)`, then the octant; branch
+/// free, so the compiler vectorises it.
+pub fn direction_deg(x: &[f32], y: &[f32], out: &mut [f32]) {
+    use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+    const TAN_PI_8: f32 = 0.414_213_57;
+    for ((a, b), o) in x.iter().zip(y).zip(out.iter_mut()) {
+        let (gx, gy) = (a + 0.0, b + 0.0);
+        let (ax, ay) = (gx.abs(), gy.abs());
+        let (lo, hi) = (ax.min(ay), ax.max(ay));
+        let t = if hi > 0.0 { lo / hi } else { 0.0 };
+        let reduce = t > TAN_PI_8;
+        let u = if reduce { (t - 1.0) / (t + 1.0) } else { t };
+        let z = u * u;
+        let p = (((8.053_744_5e-2 * z - 1.387_768_6e-1) * z + 1.997_771_1e-1) * z - 3.333_295e-1)
+            * z
+            * u
+            + u;
+        let mut v = if reduce { FRAC_PI_4 + p } else { p };
+        if ay > ax {
+            v = FRAC_PI_2 - v;
+        }
+        if gx < 0.0 {
+            v = PI - v;
+        }
+        if gy < 0.0 {
+            v = -v;
+        }
+        *o = v * (180.0 / PI);
+    }
+}
+
 /// The 3×3 mean: `(1/9) · Σ` of the neighbourhood (sums exact in `f32`).
 /// With `+simd128` the sums run in integers (`u16`, at most 2295) 8
 /// pixels at a time: the same exact sums, divided by 9 in `f32`.

@@ -22,6 +22,8 @@
 use crate::error::{Error, Result};
 use crate::raster::{check_len, fold, Border, Gray};
 
+pub mod stream;
+
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 use core::arch::wasm32::*;
 

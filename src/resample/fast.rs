@@ -187,6 +187,26 @@ pub fn warp_affine(
     method: Method,
     a: f64,
     fill: f32,
+    size: (usize, usize),
+    out: &mut [f32],
+) -> Result<()> {
+    warp_affine_with(img, m, &|x, y| pos(m, x, y), method, a, fill, size, out)
+}
+
+/// [`warp_affine`], the positions of the checked columns (those outside
+/// the interior runs, and every column of `Nearest`) from `exact(x, y)`:
+/// the caller's own expression of the same map (the reference's closure),
+/// so that where a value exists and which pixel is nearest are decided on
+/// the reference's positions to the bit; `m` serves inside the runs,
+/// whose neighbourhoods lie inside with a column to spare.
+#[allow(clippy::too_many_arguments)]
+pub fn warp_affine_with(
+    img: Gray,
+    m: &Affine,
+    exact: &dyn Fn(f64, f64) -> (f64, f64),
+    method: Method,
+    a: f64,
+    fill: f32,
     (out_w, out_h): (usize, usize),
     out: &mut [f32],
 ) -> Result<()> {
@@ -203,7 +223,7 @@ pub fn warp_affine(
     for (y, row) in out.chunks_exact_mut(out_w.max(1)).enumerate() {
         let yf = y as f64;
         let checked = |x: usize| {
-            let (u, v) = pos(m, x as f64, yf);
+            let (u, v) = exact(x as f64, yf);
             rule.locate(u, v)
                 .map_or(fill, |loc| sample(src, w, method, a, loc))
         };
@@ -229,6 +249,41 @@ pub fn warp_affine(
                     *o = checked(c0 + k);
                 }
             }
+        }
+    }
+    Ok(())
+}
+
+/// Any output → input map (a projective one): output pixel `(x, y)` is
+/// the input at `map(x, y)` by `method`, with the reference's rules for
+/// where a value exists ([`super::warp`]), one checked sample per pixel
+/// from the 8-bit image (no allocation, no `f64` image).
+#[allow(clippy::too_many_arguments)]
+pub fn warp_map(
+    img: Gray,
+    map: &dyn Fn(f64, f64) -> (f64, f64),
+    method: Method,
+    a: f64,
+    fill: f32,
+    (out_w, out_h): (usize, usize),
+    out: &mut [f32],
+) -> Result<()> {
+    if !a.is_finite() {
+        return Err(Error::input("a", "must be a finite number"));
+    }
+    check_len("output", out, out_w * out_h)?;
+    let rule = Rule {
+        w: img.width(),
+        h: img.height(),
+        method,
+    };
+    let (src, w) = (img.data(), img.width());
+    for (y, row) in out.chunks_exact_mut(out_w.max(1)).enumerate() {
+        for (x, o) in row.iter_mut().enumerate() {
+            let (u, v) = map(x as f64, y as f64);
+            *o = rule
+                .locate(u, v)
+                .map_or(fill, |loc| sample(src, w, method, a, loc));
         }
     }
     Ok(())

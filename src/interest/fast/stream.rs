@@ -1,0 +1,381 @@
+//! The lab's interest maps over a whole 8-bit image, row by row, with the
+//! numbers of the window functions: the `size × size` windows of
+//! [`crate::interest::window_at`] (reference pixel at
+//! [`crate::interest::anchor`]), whose `(size − 2)²` interior pixels carry
+//! the gradients, summed as exact integers by running column sums over a
+//! ring of `size − 2` rows (no per-window work, no map of results kept).
+//!
+//! * [`forstner_rows`]: per window `Σdx²`, `Σdy²`, `Σdx·dy` of the central
+//!   differences `dx = I(c+1, r) − I(c−1, r)`, `dy = I(c, r+1) − I(c, r−1)`
+//!   ([`Sums4`]: four times the sums of `g′ = d/2` products, so
+//!   [`Sums4::sums`] are the reference's `f64` sums bit for bit — every
+//!   term `d²/4` and every partial sum is exact in `f64` — and
+//!   [`Sums4::w_q`], [`Sums4::lambda_min`], [`Sums4::measures`] are
+//!   [`crate::interest::Measures::from_sums`]'s numbers bit for bit).
+//! * [`moravec_rows`]: per window the sum of the four squared directional
+//!   differences of every interior pixel; `sum / (size − 2)²` in `f64` is
+//!   [`crate::interest::moravec`]'s mean bit for bit.
+//! * [`Suppressor`]: [`crate::interest::suppress`] fed one row of scores at
+//!   a time, deciding a row once the `radius` rows below it are in (a ring
+//!   of `2·radius + 1` rows).
+//!
+//! Windows that do not fit (the first `anchor` rows and columns, the last
+//! `size − 1 − anchor`) have no value, as in the reference's maps.
+//! `tests/web_fast.rs` ties all of it to the reference at every pixel.
+
+use crate::error::{Error, Result};
+use crate::interest::{anchor, Measures, Sums, MAX_WINDOW, MIN_WINDOW, SINGULAR_TOL};
+use crate::raster::Gray;
+
+/// Where the `size × size` windows fit in a `width × height` image:
+/// reference pixels `(c, r)` with `c0 ≤ c < c0 + columns`,
+/// `r0 ≤ r < r0 + rows` (`c0 = r0 = anchor(size)`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Fit {
+    pub c0: usize,
+    pub r0: usize,
+    pub columns: usize,
+    pub rows: usize,
+}
+
+/// The windows of `size` in `width × height` (error: a size outside
+/// [`MIN_WINDOW`] … [`MAX_WINDOW`], or an image smaller than the window).
+pub fn fit(width: usize, height: usize, size: usize) -> Result<Fit> {
+    if !(MIN_WINDOW..=MAX_WINDOW).contains(&size) {
+        return Err(Error::input(
+            "window_size",
+            format!("must be between {MIN_WINDOW} and {MAX_WINDOW} (got {size})"),
+        ));
+    }
+    if width < size || height < size {
+        return Err(Error::input(
+            "image",
+            format!("is {height}×{width}, smaller than the {size}×{size} window"),
+        ));
+    }
+    Ok(Fit {
+        c0: anchor(size),
+        r0: anchor(size),
+        columns: width - size + 1,
+        rows: height - size + 1,
+    })
+}
+
+/// Rows of real neighbours a window needs on each side of its reference
+/// pixel, at most: `size − 1 − anchor(size)` (below and right; the
+/// anchor above and left is never more).
+pub fn reach(size: usize) -> usize {
+    size.saturating_sub(1) - anchor(size)
+}
+
+/// Window sums of `channels` per-pixel integer values: `value(y, rows)`
+/// fills `rows[k][x]` for image row `y` (`1 ≤ y ≤ h − 2`, columns
+/// `1 … w − 2`; the others are not read), and `emit(r, sums)` gets, for
+/// every row `r` of the fit, `sums[k][j]` = the sum over the interior of
+/// the window whose reference pixel is `(fit.c0 + j, r)`.
+fn window_rows(
+    img: &Gray,
+    size: usize,
+    channels: usize,
+    mut value: impl FnMut(usize, &mut [Vec<i32>]),
+    mut emit: impl FnMut(usize, &[Vec<i32>]),
+) -> Result<Fit> {
+    let (w, h) = (img.width(), img.height());
+    let f = fit(w, h, size)?;
+    let k = size - 2;
+    // ring of k value rows (slot y % k), column sums over the k rows of
+    // the current windows, the window sums of one output row
+    let mut ring = vec![vec![vec![0i32; w]; channels]; k];
+    let mut col = vec![vec![0i32; w]; channels];
+    let mut out = vec![vec![0i32; f.columns]; channels];
+    let horizontal = |col: &[Vec<i32>], out: &mut [Vec<i32>]| {
+        for (cs, o) in col.iter().zip(out.iter_mut()) {
+            let mut s: i32 = cs.iter().skip(1).take(k).sum();
+            let mut it = o.iter_mut().enumerate().peekable();
+            while let Some((j, ov)) = it.next() {
+                *ov = s;
+                if it.peek().is_some() {
+                    s += cs.get(j + 1 + k).copied().unwrap_or(0)
+                        - cs.get(j + 1).copied().unwrap_or(0);
+                }
+            }
+        }
+    };
+    for y in 1..=k {
+        let slot = &mut ring[y % k];
+        value(y, slot);
+        for (c, s) in col.iter_mut().zip(slot.iter()) {
+            for (a, b) in c.iter_mut().zip(s) {
+                *a += b;
+            }
+        }
+    }
+    horizontal(&col, &mut out);
+    emit(f.r0, &out);
+    for i in 1..f.rows {
+        // the window of output row i covers value rows i + 1 … i + k: row i
+        // leaves (its slot is the new row's), row i + k enters
+        let y = i + k;
+        let slot = &mut ring[y % k];
+        for (c, s) in col.iter_mut().zip(slot.iter()) {
+            for (a, b) in c.iter_mut().zip(s) {
+                *a -= b;
+            }
+        }
+        value(y, slot);
+        for (c, s) in col.iter_mut().zip(slot.iter()) {
+            for (a, b) in c.iter_mut().zip(s) {
+                *a += b;
+            }
+        }
+        horizontal(&col, &mut out);
+        emit(f.r0 + i, &out);
+    }
+    Ok(f)
+}
+
+/// The three rows `y − 1`, `y`, `y + 1` of an image (`1 ≤ y ≤ h − 2`).
+fn three_rows<'a>(img: &Gray<'a>, y: usize) -> (&'a [u8], &'a [u8], &'a [u8]) {
+    let row = |i: usize| img.row(i).unwrap_or(&[]);
+    (row(y - 1), row(y), row(y + 1))
+}
+
+/// Four times the Förstner sums of one window: `Σdx²`, `Σdy²`, `Σdx·dy`
+/// of the central differences (integers; `g′ = d/2`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Sums4 {
+    pub xx: i32,
+    pub yy: i32,
+    pub xy: i32,
+}
+
+impl Sums4 {
+    /// `Σg′x²`, `Σg′y²`, `Σg′xg′y` exactly (`Σg′x`, `Σg′y` are not kept: 0).
+    pub fn sums(self) -> Sums {
+        Sums {
+            gx2: f64::from(self.xx) / 4.0,
+            gy2: f64::from(self.yy) / 4.0,
+            gxgy: f64::from(self.xy) / 4.0,
+            ..Sums::default()
+        }
+    }
+
+    /// `Measures::from_sums` of these sums over `m` gradient pixels.
+    pub fn measures(self, m: usize) -> Measures {
+        Measures::from_sums(&self.sums(), m)
+    }
+
+    /// `(trace, det, singular)` as `Measures::from_sums` computes them.
+    fn trace_det(self) -> (f64, f64, bool) {
+        let s = self.sums();
+        let (a, b, d) = (s.gx2, s.gxgy, s.gy2);
+        let trace = a + d;
+        let det_raw = a * d - b * b;
+        let singular = trace <= 0.0 || det_raw <= SINGULAR_TOL * trace * trace;
+        (trace, if singular { 0.0 } else { det_raw }, singular)
+    }
+
+    /// Förstner's `w` and `q` (`NaN` where `q` has none: `N = 0`), the
+    /// bits of `Measures::from_sums`'s `w` and `q`.
+    pub fn w_q(self) -> (f64, f64) {
+        let (trace, det, singular) = self.trace_det();
+        let w = if singular { 0.0 } else { det / trace };
+        let q = if trace > 0.0 {
+            4.0 * det / (trace * trace)
+        } else {
+            f64::NAN
+        };
+        (w, q)
+    }
+
+    /// `λmin(N)`, the bits of `Measures::from_sums`'s `lambda_min`.
+    pub fn lambda_min(self) -> f64 {
+        let (trace, det, singular) = self.trace_det();
+        let s = self.sums();
+        let root = ((s.gx2 - s.gy2) / 2.0).hypot(s.gxgy);
+        let lambda_max = trace / 2.0 + root;
+        if singular || lambda_max <= 0.0 {
+            0.0
+        } else {
+            det / lambda_max
+        }
+    }
+}
+
+/// Förstner's window sums for every `size × size` window of `img` that
+/// fits ([`fit`]): `emit(r, xx, yy, xy)` per row `r` of the fit, entry `j`
+/// for the window at column `fit.c0 + j` (see [`Sums4`]).
+pub fn forstner_rows(
+    img: Gray,
+    size: usize,
+    mut emit: impl FnMut(usize, &[i32], &[i32], &[i32]),
+) -> Result<Fit> {
+    window_rows(
+        &img,
+        size,
+        3,
+        |y, rows| {
+            let (up, mid, down) = three_rows(&img, y);
+            let n = mid.len().saturating_sub(2);
+            if let [xx, yy, xy] = rows {
+                let (xx, yy, xy) = (&mut xx[1..=n], &mut yy[1..=n], &mut xy[1..=n]);
+                let it = mid[2..]
+                    .iter()
+                    .zip(&mid[..n])
+                    .zip(down[1..=n].iter().zip(&up[1..=n]));
+                for (((((r, l), (d, u)), a), b), e) in it.zip(xx).zip(yy).zip(xy) {
+                    let dx = i32::from(*r) - i32::from(*l);
+                    let dy = i32::from(*d) - i32::from(*u);
+                    *a = dx * dx;
+                    *b = dy * dy;
+                    *e = dx * dy;
+                }
+            }
+        },
+        |r, s| {
+            if let [xx, yy, xy] = s {
+                emit(r, xx, yy, xy);
+            }
+        },
+    )
+}
+
+/// Moravec's window sums for every `size × size` window that fits: per
+/// interior pixel `Σ` of the four squared differences across it (row,
+/// column, both diagonals, as [`crate::interest::moravec`]), summed over
+/// the window's interior; `emit(r, sums)` as in [`forstner_rows`]. The
+/// reference's mean is `sum as f64 / ((size − 2)² as f64)`.
+pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32])) -> Result<Fit> {
+    window_rows(
+        &img,
+        size,
+        1,
+        |y, rows| {
+            let (up, mid, down) = three_rows(&img, y);
+            let n = mid.len().saturating_sub(2);
+            if let [s] = rows {
+                let s = &mut s[1..=n];
+                let sq = |a: u8, b: u8| {
+                    let d = i32::from(a) - i32::from(b);
+                    d * d
+                };
+                for (x, o) in s.iter_mut().enumerate() {
+                    // image column x + 1: its neighbours x, x + 1, x + 2
+                    let (l, c, r) = (x, x + 1, x + 2);
+                    *o = sq(mid[r], mid[l])
+                        + sq(down[c], up[c])
+                        + sq(down[r], up[l])
+                        + sq(down[l], up[r]);
+                }
+            }
+        },
+        |r, s| {
+            if let [s] = s {
+                emit(r, s);
+            }
+        },
+    )
+}
+
+/// [`crate::interest::suppress`] one row at a time: push the score rows
+/// `0, 1, 2, …` of a `width × height` map in order (`NaN`: no score), each
+/// with a payload per cell; a cell is kept when no cell of its
+/// `(2·radius + 1)²` neighbourhood scores higher, or the same and comes
+/// first in row-major order — the reference's rule. Kept cells are
+/// reported as `(c, r, score, payload)` in row-major order, each row once
+/// the `radius` rows below it are in ([`Suppressor::finish`] decides the
+/// last ones).
+pub struct Suppressor<P> {
+    width: usize,
+    height: usize,
+    radius: usize,
+    /// `(row, scores, payloads)` in slot `row % (2·radius + 1)`.
+    ring: Vec<(Option<usize>, Vec<f64>, Vec<P>)>,
+    pushed: usize,
+    decided: usize,
+}
+
+impl<P: Copy + Default> Suppressor<P> {
+    pub fn new(width: usize, height: usize, radius: usize) -> Self {
+        let n = 2 * radius + 1;
+        Suppressor {
+            width,
+            height,
+            radius,
+            ring: (0..n)
+                .map(|_| (None, vec![f64::NAN; width], vec![P::default(); width]))
+                .collect(),
+            pushed: 0,
+            decided: 0,
+        }
+    }
+
+    /// The next row's scores and payloads (`width` each; fewer are padded
+    /// with no score); rows past `height` are ignored.
+    pub fn push(
+        &mut self,
+        scores: impl IntoIterator<Item = (f64, P)>,
+        kept: &mut impl FnMut(usize, usize, f64, P),
+    ) {
+        if self.pushed >= self.height {
+            return;
+        }
+        let n = self.ring.len();
+        let (tag, s, p) = &mut self.ring[self.pushed % n];
+        *tag = Some(self.pushed);
+        s.fill(f64::NAN);
+        for ((sv, pv), (so, po)) in scores.into_iter().zip(s.iter_mut().zip(p.iter_mut())) {
+            *so = sv;
+            *po = pv;
+        }
+        self.pushed += 1;
+        while self.decided + self.radius < self.pushed {
+            self.decide(kept);
+        }
+    }
+
+    /// Decides the rows still open (after the last row is pushed; rows
+    /// never pushed have no scores).
+    pub fn finish(&mut self, kept: &mut impl FnMut(usize, usize, f64, P)) {
+        while self.decided < self.pushed {
+            self.decide(kept);
+        }
+    }
+
+    fn row(&self, r: usize) -> Option<(&[f64], &[P])> {
+        let (tag, s, p) = self.ring.get(r % self.ring.len())?;
+        (*tag == Some(r)).then_some((&s[..], &p[..]))
+    }
+
+    fn decide(&mut self, kept: &mut impl FnMut(usize, usize, f64, P)) {
+        let r = self.decided;
+        self.decided += 1;
+        let (w, rad) = (self.width, self.radius);
+        let Some((scores, payload)) = self.row(r) else {
+            return;
+        };
+        let (lo, hi) = (r.saturating_sub(rad), (r + rad + 1).min(self.pushed));
+        for (c, &s) in scores.iter().enumerate() {
+            if s.is_nan() {
+                continue;
+            }
+            let (c0, c1) = (c.saturating_sub(rad), (c + rad + 1).min(w));
+            let mut best = true;
+            'scan: for rr in lo..hi {
+                let Some((row, _)) = self.row(rr) else {
+                    continue;
+                };
+                for (cc, &t) in row.iter().enumerate().take(c1).skip(c0) {
+                    // higher, or the same and earlier in row-major order
+                    if t > s || (t == s && (rr < r || (rr == r && cc < c))) {
+                        best = false;
+                        break 'scan;
+                    }
+                }
+            }
+            if best {
+                kept(c, r, s, payload.get(c).copied().unwrap_or_default());
+            }
+        }
+    }
+}
