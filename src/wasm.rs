@@ -196,10 +196,19 @@ pub fn grade(
 /// the given topics (`examples::<topic>::TOPIC`), and, when the invoking
 /// crate has its `practice` feature on, `practice` and `grade` over them.
 /// The invoking crate depends on `wasm-bindgen` (the attribute names it).
+/// The allocator of the worked-example modules (see [`export_examples!`]).
+pub use talc;
+
 #[macro_export]
 macro_rules! export_examples {
     (@in $topics:expr) => {
         const TOPICS: &[$crate::examples::Topic] = $topics;
+
+        /// Talc, not the default dlmalloc: the same service in fewer bytes
+        /// of the module an example's page loads first.
+        #[global_allocator]
+        static ALLOCATOR: $crate::wasm::talc::wasm::WasmDynamicTalc =
+            $crate::wasm::talc::wasm::new_wasm_dynamic_allocator();
 
         /// This module's worked examples: `[{ id, title, topic, source,
         /// document, summary, status, inputs }]`.
