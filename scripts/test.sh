@@ -8,7 +8,10 @@ export PATH="$HOME/.cargo/bin:$PATH"
 bash scripts/setup.sh --test
 export CHROMEDRIVER=/usr/bin/chromedriver
 
-step() { printf '\n== %s\n' "$*"; }
+# each step says how long the one before took (where CI's time goes)
+last=$SECONDS
+step() { printf '\n== (%ss) %s\n' "$((SECONDS - last))" "$*"; last=$SECONDS; }
+trap 'printf "\n== npm test: %ss in all\n" "$SECONDS"' EXIT
 step "cargo fmt --check"
 cargo fmt --all -- --check
 step "cargo clippy (host and wasm32, the core and the lab) -D warnings"
