@@ -2,6 +2,7 @@
 //! calls doubtful, and why; Förstner's default threshold chosen per photo.
 
 use photogrammetry_lab::ops::{self, Rect};
+use photogrammetry_playground::interest;
 use photogrammetry_playground::matching::Model;
 use photogrammetry_playground::raster::Grid;
 
@@ -102,17 +103,22 @@ fn forstners_threshold_for_a_photo_keeps_its_strongest_pixels_and_about_the_ches
     let img = photogrammetry_lab::decode::decode("left01.jpg", &bytes)
         .unwrap()
         .grid;
-    let map = ops::forstner_maps(&img, 5).unwrap();
-    let auto = ops::auto_threshold(&map, 8.0).unwrap();
-    // w_min: the w that 0.1 % of the pixels reach
+    let mut kept = ops::ForstnerKept::new(&img, 5).unwrap();
+    let auto = kept.auto_threshold(8.0).unwrap();
+    // w_min: the w that 0.1 % of the pixels reach (the reference's map)
+    let map = interest::forstner_map(&img, 5).unwrap();
     let ws: Vec<f64> = map.cells.iter().flatten().map(|m| m.w).collect();
     let above = ws.iter().filter(|w| **w >= auto.w_min).count() as f64 / ws.len() as f64;
     assert!((above - ops::W_TOP_SHARE).abs() < 2e-4, "{above}");
+    // exactly the reference's 99.9th percentile
+    let mut sorted = ws.clone();
+    sorted.sort_by(f64::total_cmp);
+    let k = ((1.0 - ops::W_TOP_SHARE) * (ws.len() - 1) as f64).floor() as usize;
+    assert_eq!(auto.w_min, sorted[k]);
     assert!((auto.threshold_px - 8.0 / auto.w_min.sqrt()).abs() < 1e-12);
     // T scales with σn: the same pixels pass whatever σn
-    let twice = ops::auto_threshold(&map, 16.0).unwrap();
+    let twice = kept.auto_threshold(16.0).unwrap();
     assert!((twice.threshold_px - 2.0 * auto.threshold_px).abs() < 1e-12);
-    let mut kept = ops::ForstnerKept::new(map);
     let n = kept.points(8.0, auto.threshold_px, 0.5).unwrap().len();
     let n16 = kept.points(16.0, twice.threshold_px, 0.5).unwrap().len();
     assert_eq!(n, n16);
@@ -123,7 +129,9 @@ fn forstners_threshold_for_a_photo_keeps_its_strongest_pixels_and_about_the_ches
     // no textured pixel: no threshold
     let flat = Grid::new("image", 20, 20, vec![7.0; 400]).unwrap();
     assert_eq!(
-        ops::auto_threshold(&ops::forstner_maps(&flat, 5).unwrap(), 8.0),
+        ops::ForstnerKept::new(&flat, 5)
+            .unwrap()
+            .auto_threshold(8.0),
         None
     );
 }

@@ -56,7 +56,17 @@ fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
                     // the worked example's function for one window
                     match filter::pixel_sum(&img, &kernel, c, r, border) {
                         Some(p) => {
-                            assert_eq!(layer.at(c, r), Some(p.value), "{k} {b} ({c}, {r})");
+                            // the layer: the value rounded to f32; the
+                            // inspector's exact value: the example's
+                            let f = Some(f64::from(p.value as f32));
+                            assert_eq!(layer.at(c, r), f, "{k} {b} ({c}, {r})");
+                            let op = ops::Op::Filter {
+                                kernel: k.into(),
+                                border,
+                                custom: None,
+                            };
+                            let exact = ops::exact_at(&img, &img, &op, k, c, r).unwrap();
+                            assert_eq!(exact, Some(p.value), "{k} {b} ({c}, {r})");
                             covered += 1;
                         }
                         None => assert_eq!(layer.at(c, r), None, "{k} {b} ({c}, {r})"),
@@ -78,6 +88,13 @@ fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
                 let want =
                     neighbourhood(&img, c, r, 3, 3, border).and_then(|v| filter::median_of(&v));
                 assert_eq!(layer.at(c, r), want, "median {b} ({c}, {r})");
+                let op = ops::Op::Filter {
+                    kernel: "median".into(),
+                    border,
+                    custom: None,
+                };
+                let exact = ops::exact_at(&img, &img, &op, "median", c, r).unwrap();
+                assert_eq!(exact, want, "median {b} ({c}, {r})");
             }
         }
     }
@@ -97,14 +114,29 @@ fn edges_equal_the_kernel_sums_the_magnitude_and_the_direction() {
                 for c in 0..10 {
                     let gx = filter::pixel_sum(&img, &kx, c, r, border).map(|p| p.value);
                     let gy = filter::pixel_sum(&img, &ky, c, r, border).map(|p| p.value);
-                    assert_eq!(ls[0].at(c, r), gx);
-                    assert_eq!(ls[1].at(c, r), gy);
+                    let f32_of = |v: Option<f64>| v.map(|v| f64::from(v as f32));
+                    assert_eq!(ls[0].at(c, r), f32_of(gx));
+                    assert_eq!(ls[1].at(c, r), f32_of(gy));
                     let m = gx.zip(gy).map(|(x, y)| x.hypot(y));
-                    assert_eq!(ls[2].at(c, r), m, "{op} {b} ({c}, {r})");
+                    assert_eq!(ls[2].at(c, r), f32_of(m), "{op} {b} ({c}, {r})");
                     // direction: atan2(gy, gx) in degrees, −180° … 180°
                     let d = gx.zip(gy).map(|(x, y)| y.atan2(x).to_degrees());
                     assert_eq!(ls[3].name, "direction");
-                    assert_eq!(ls[3].at(c, r), d, "{op} {b} direction ({c}, {r})");
+                    match (ls[3].at(c, r), d) {
+                        (Some(x), Some(y)) => {
+                            assert!((x - y).abs() <= 1e-4, "{op} {b} ({c}, {r}): {x} vs {y}")
+                        }
+                        (x, y) => assert_eq!(x, y, "{op} {b} direction ({c}, {r})"),
+                    }
+                    // the inspector's exact values: the example's
+                    let eop = ops::Op::Edges {
+                        operator: op.into(),
+                        border,
+                    };
+                    for (l, want) in [("gx", gx), ("gy", gy), ("magnitude", m), ("direction", d)] {
+                        let exact = ops::exact_at(&img, &img, &eop, l, c, r).unwrap();
+                        assert_eq!(exact, want, "{op} {b} {l} ({c}, {r})");
+                    }
                     if let Some(d) = ls[3].at(c, r) {
                         assert!((-180.0..=180.0).contains(&d));
                     }
@@ -123,11 +155,21 @@ fn forstner_and_moravec_maps_equal_their_window_functions_at_every_pixel() {
         for c in 0..12 {
             let win = interest::window_at(&img, c, r, 5);
             let want = win.map(|w| interest::forstner(&w).unwrap().measures);
-            assert_eq!(ls[0].at(c, r), want.map(|m| m.w), "w ({c}, {r})");
-            assert_eq!(ls[1].at(c, r), want.and_then(|m| m.q));
+            let f32_of = |v: Option<f64>| v.map(|v| f64::from(v as f32));
+            assert_eq!(ls[0].at(c, r), f32_of(want.map(|m| m.w)), "w ({c}, {r})");
+            assert_eq!(ls[1].at(c, r), f32_of(want.and_then(|m| m.q)));
+            let op = ops::Op::Forstner { size: 5 };
+            let exact = |l| ops::exact_at(&img, &img, &op, l, c, r).unwrap();
+            assert_eq!(exact("w"), want.map(|m| m.w));
+            assert_eq!(exact("q"), want.and_then(|m| m.q));
             let win = interest::window_at(&img, c, r, 4);
             let want = win.map(|w| interest::moravec(&w).unwrap().mean);
-            assert_eq!(mor.at(c, r), want, "moravec ({c}, {r})");
+            assert_eq!(mor.at(c, r), f32_of(want), "moravec ({c}, {r})");
+            let op = ops::Op::Moravec { size: 4 };
+            assert_eq!(
+                ops::exact_at(&img, &img, &op, "moravec", c, r).unwrap(),
+                want
+            );
         }
     }
 }
@@ -606,7 +648,7 @@ fn a_handful_of_pixels_of_a_sample_photo_agree_with_an_independent_computation()
     ] {
         assert_eq!(img.get(c, r), Some(grey), "({c}, {r})");
         match (mean.at(c, r), m) {
-            (Some(a), Some(b)) => assert!((a - b).abs() < 1e-12, "({c}, {r}): {a} vs {b}"),
+            (Some(a), Some(b)) => assert_eq!(a, f64::from(b as f32), "({c}, {r}): {a} vs {b}"),
             (a, b) => assert_eq!(a, b, "({c}, {r})"),
         }
         assert_eq!(edges[0].at(c, r), gx, "({c}, {r})");
@@ -614,9 +656,9 @@ fn a_handful_of_pixels_of_a_sample_photo_agree_with_an_independent_computation()
 }
 
 /// The lab's fast routes (`ops::fast_filter`, `ops::fast_edges`: the core's
-/// `filter::fast` paths) give the reference's bits at every pixel — not
-/// only within 1e-4 — so "explain this pixel" shows the worked example's
-/// number: random 8-bit images of odd sizes from 1×1 up, every border.
+/// `filter::fast` paths) give the reference's value rounded to `f32` at
+/// every pixel (the bits of `value as f32`, not only within a tolerance):
+/// random 8-bit images of odd sizes from 1×1 up, every border.
 #[test]
 fn fast_routes_give_the_reference_bits_at_every_pixel() {
     for (name, kx, ky, d) in ["mean", "gaussian-3", "gaussian-5"]
@@ -645,7 +687,7 @@ fn fast_routes_give_the_reference_bits_at_every_pixel() {
         for (i, (g, w)) in got.data.iter().zip(want.data()).enumerate() {
             assert_eq!(
                 g.to_bits(),
-                w.to_bits(),
+                (*w as f32).to_bits(),
                 "{what} at {i}: fast {g}, reference {w}"
             );
         }
@@ -675,7 +717,7 @@ fn fast_routes_give_the_reference_bits_at_every_pixel() {
         for b in BORDERS {
             let border = ops::border(b).unwrap();
             for name in ["mean", "gaussian-3", "gaussian-5", "median"] {
-                let fast = ops::fast_filter(&img, name, border).unwrap();
+                let fast = ops::fast_filter(&(&img).into(), name, border, None).unwrap();
                 let want = match ops::kernel(name, None).unwrap() {
                     Some(k) => filter::correlate(&img, &k, border),
                     None => filter::median(&img, 3, 3, border),
@@ -700,7 +742,7 @@ fn fast_routes_give_the_reference_bits_at_every_pixel() {
                 ("prewitt", filter::prewitt_x(), filter::prewitt_y()),
                 ("sobel", filter::sobel_x(), filter::sobel_y()),
             ] {
-                let fast = ops::fast_edges(&img, op, border).unwrap();
+                let fast = ops::fast_edges(&(&img).into(), op, border).unwrap();
                 let Ok(g) = filter::gradient(&img, &kx, &ky, border) else {
                     assert!(fast.is_none(), "{op} {b} {w}×{h}");
                     continue;
@@ -719,7 +761,7 @@ fn fast_routes_give_the_reference_bits_at_every_pixel() {
     // not 8-bit: the reference path
     let frac = Grid::new("image", 3, 3, vec![0.5; 9]).unwrap();
     assert!(
-        ops::fast_filter(&frac, "mean", ops::border("zero").unwrap())
+        ops::fast_filter(&(&frac).into(), "mean", ops::border("zero").unwrap(), None)
             .unwrap()
             .is_none()
     );
@@ -794,7 +836,8 @@ fn a_custom_kernel_over_the_image_equals_filter_window_at_every_pixel() {
         for r in 0..11 {
             for c in 0..13 {
                 let want = filter::pixel_sum(&img, &kernel, c, r, border).map(|p| p.value);
-                assert_eq!(layer.at(c, r), want, "{b} ({c}, {r})");
+                let f32_of = want.map(|v| f64::from(v as f32));
+                assert_eq!(layer.at(c, r), f32_of, "{b} ({c}, {r})");
                 let Some(v) = want else { continue };
                 // the lab's "explain": the (k+2)-sized neighbourhood under the
                 // same border, solved by the worked example with the kernel
@@ -818,26 +861,27 @@ fn a_custom_kernel_over_the_image_equals_filter_window_at_every_pixel() {
 #[test]
 fn forstner_points_from_a_kept_map_equal_a_full_run_for_every_threshold() {
     let img = interest::test_pattern(64, 3.0, 5).unwrap();
-    let map = ops::forstner_maps(&img, 5).unwrap();
-    let layers = ops::forstner_layers(&map);
+    let mut kept = ops::ForstnerKept::new(&img, 5).unwrap();
     for (t, q) in [(0.3, 0.5), (0.5, 0.5), (1.0, 0.0), (2.0, 0.7)] {
         let (ls, ps) = ops::forstner(&img, 5, 8.0, t, q).unwrap();
-        let bits = |ls: &[ops::Layer]| -> Vec<Vec<u64>> {
+        let (rl, rp) = ops::forstner_reference(&img, 5, 8.0, t, q).unwrap();
+        // NaN where no window fits: compared by their bits
+        let bits = |ls: &[ops::Layer]| -> Vec<(String, Vec<u32>)> {
             ls.iter()
-                .map(|l| l.data.iter().map(|v| v.to_bits()).collect())
+                .map(|l| (l.name.clone(), l.data.iter().map(|v| v.to_bits()).collect()))
                 .collect()
         };
-        assert_eq!(bits(&ls), bits(&layers));
-        assert_eq!(
-            ops::forstner_detect(&map, 8.0, t, q).unwrap(),
-            ps,
-            "T = {t}"
-        );
+        assert_eq!(bits(&ls), bits(kept.layers()));
+        assert_eq!(bits(&ls), bits(&rl), "T = {t}");
+        assert_eq!(ps, rp, "T = {t}");
+        assert_eq!(kept.points(8.0, t, q).unwrap(), ps, "T = {t}");
     }
     // a lower threshold keeps no more points than a higher one
-    let n = |t| ops::forstner_detect(&map, 8.0, t, 0.0).unwrap().len();
-    assert!(n(0.3) <= n(1.0) && n(1.0) > 0, "{} {}", n(0.3), n(1.0));
-    assert!(ops::forstner_detect(&map, 8.0, 0.0, 0.5)
+    let mut n = |t| kept.points(8.0, t, 0.0).unwrap().len();
+    let (low, high) = (n(0.3), n(1.0));
+    assert!(low <= high && high > 0, "{low} {high}");
+    assert!(kept
+        .points(8.0, 0.0, 0.5)
         .unwrap_err()
         .to_string()
         .starts_with("threshold_px: "));
@@ -845,17 +889,20 @@ fn forstner_points_from_a_kept_map_equal_a_full_run_for_every_threshold() {
 
 #[test]
 fn the_kept_suppression_gives_seed_003s_points_for_every_threshold() {
-    // a noisy pattern (many candidates, ties of equal windows) and a random image
+    // a noisy pattern (many candidates, ties of equal windows), a random
+    // image, and one that is not 8-bit (the reference route)
+    let half = Grid::from_fn(30, 27, |c, r| ((c * 7 + r * 13) % 23) as f64 + 0.5);
     for img in [
         interest::test_pattern(64, 3.0, 9).unwrap(),
         random(40, 33, 11),
+        half,
     ] {
-        for size in [3, 5, 7] {
-            let map = ops::forstner_maps(&img, size).unwrap();
-            let mut kept = ops::ForstnerKept::new(map.clone());
+        for size in [3, 4, 5, 7] {
+            let mut kept = ops::ForstnerKept::new(&img, size).unwrap();
             for (sigma, q) in [(8.0, 0.5), (8.0, 0.0), (2.5, 0.75)] {
-                for t in [0.05, 0.2, 0.35, 0.5, 0.8, 1.0, 1.7, 3.0, 100.0] {
-                    let want = ops::forstner_detect(&map, sigma, t, q).unwrap();
+                // rising and falling T: the suppression re-used and redone
+                for t in [0.05, 0.2, 0.35, 0.5, 0.8, 1.0, 1.7, 3.0, 100.0, 0.4] {
+                    let (_, want) = ops::forstner_reference(&img, size, sigma, t, q).unwrap();
                     assert_eq!(
                         kept.points(sigma, t, q).unwrap(),
                         want,
@@ -865,7 +912,7 @@ fn the_kept_suppression_gives_seed_003s_points_for_every_threshold() {
             }
         }
     }
-    let mut kept = ops::ForstnerKept::new(ops::forstner_maps(&random(9, 9, 1), 3).unwrap());
+    let mut kept = ops::ForstnerKept::new(&random(9, 9, 1), 3).unwrap();
     assert!(kept
         .points(8.0, f64::NAN, 0.5)
         .unwrap_err()

@@ -2,7 +2,7 @@
 //! files) and one operator of each family, as the worker calls them.
 #![cfg(target_arch = "wasm32")]
 
-use js_sys::{Array, Float64Array, Reflect};
+use js_sys::{Array, Float32Array, Float64Array, Reflect};
 use photogrammetry_lab::wasm::*;
 use photogrammetry_playground::interest;
 use photogrammetry_playground::raster::Grid;
@@ -20,8 +20,11 @@ fn layer(v: &JsValue, i: u32) -> JsValue {
     Array::from(v).get(i)
 }
 
+/// A layer's values (a `Float32Array`) as numbers.
 fn data(l: &JsValue) -> Vec<f64> {
-    Float64Array::from(get(l, "data")).to_vec()
+    let v = get(l, "data");
+    assert!(v.is_instance_of::<Float32Array>(), "layers are Float32Arrays");
+    Float32Array::from(v).to_vec().into_iter().map(f64::from).collect()
 }
 
 fn message(e: wasm_bindgen::JsError) -> String {
@@ -146,7 +149,7 @@ fn one_operator_of_each_family_across_the_boundary() {
     let best = Float64Array::from(get(&out, "best")).to_vec();
     assert_eq!(best, vec![50.0, 500.0]);
     // resampling: scale 1, angle 0 reproduces the image by all three methods
-    let out = run_resample(&img, "rotate".into(), &[0.0, 1.0], 4, 3).unwrap();
+    let out = run_resample(&img, "rotate".into(), &[0.0, 1.0], 4, 3, None, None).unwrap();
     assert_eq!(data(&layer(&out, 0)), img.grey().to_vec());
     // boundaries: the whole 4×3 image above −1 is one region of 12 pixels
     let out = run_boundary(&img, -1.0, 0, 0).unwrap();
@@ -229,6 +232,7 @@ fn moravec_points_are_the_window_means_kept_by_the_rule() {
         for c in 0..64 {
             let want = interest::window_at(&grid, c, r, 4)
                 .map(|win| interest::moravec(&win).unwrap().mean);
+            // (the means of 2 × 2 sums are exact in the layer's f32)
             assert_eq!(at(c, r), want, "({c}, {r})");
             cells += usize::from(want.is_some());
         }
@@ -425,6 +429,83 @@ async fn after_a_trap_a_fresh_instance_of_the_module_works() {
     assert!((get(&out, "mean").as_f64().unwrap() - 50.0).abs() < 1e-12);
     // and this test's own instance is untouched
     assert!(decode_image("grey8.png".into(), GREY8).is_ok());
+}
+
+/// An object `{ key: value, … }` for a request's arguments.
+fn args(fields: &[(&str, JsValue)]) -> JsValue {
+    let o = js_sys::Object::new();
+    for (k, v) in fields {
+        Reflect::set(&o, &JsValue::from_str(k), v).unwrap();
+    }
+    o.into()
+}
+
+// op_halo and exact_at: the halo a band needs from the request's own
+// arguments, the exact (reference) number of one pixel; wrong arguments of
+// every kind are errors naming the field, never traps.
+#[wasm_bindgen_test]
+fn halos_and_exact_values_across_the_boundary() {
+    let filter = |k: &str| args(&[("kernel", k.into()), ("border", "crop".into())]);
+    assert_eq!(op_halo("filter".into(), filter("gaussian-5")).unwrap(), Some(2));
+    assert_eq!(op_halo("filter".into(), filter("median")).unwrap(), Some(1));
+    let custom = args(&[
+        ("kernel", "custom".into()),
+        ("border", "zero".into()),
+        ("custom", "1 1 1;1 1 1;1 1 1;1 1 1;1 1 1".into()),
+    ]);
+    assert_eq!(op_halo("filter".into(), custom).unwrap(), Some(2));
+    let edges = args(&[("operator", "sobel".into()), ("border", "crop".into())]);
+    assert_eq!(op_halo("edges".into(), edges.clone()).unwrap(), Some(1));
+    // Förstner 5×5: 2 rows below the anchor, plus the suppression's 2
+    let size = |n: f64| args(&[("size", n.into())]);
+    assert_eq!(op_halo("forstner".into(), size(5.0)).unwrap(), Some(4));
+    assert_eq!(op_halo("moravec".into(), size(4.0)).unwrap(), Some(4));
+    let rotate = args(&[
+        ("kind", "rotate".into()),
+        ("params", Array::of2(&0.0.into(), &1.0.into()).into()),
+        ("width", 4.into()),
+        ("height", 3.into()),
+    ]);
+    assert_eq!(op_halo("resample".into(), rotate.clone()).unwrap(), None);
+    // exact values on g = 10c + 40r: the mean at (1, 1) is 50, Sobel gx −320
+    let img = decode_image("grey8.png".into(), GREY8).unwrap();
+    let at = |op: &str, a: JsValue, layer: &str, c, r| {
+        exact_at(&img, &img, op.into(), a, layer.into(), c, r).unwrap()
+    };
+    assert_eq!(at("filter", filter("mean"), "mean", 1, 1), Some(50.0));
+    assert_eq!(at("filter", filter("mean"), "mean", 0, 0), None);
+    assert_eq!(at("edges", edges.clone(), "gx", 1, 1), Some(-320.0));
+    assert_eq!(at("edges", edges.clone(), "gy", 1, 1), Some(80.0));
+    // bicubic needs two pixels right of (2, 1): none there, 0 as the layer fills
+    assert_eq!(at("resample", rotate.clone(), "bicubic", 2, 1), Some(0.0));
+    assert_eq!(at("resample", rotate, "nearest", 2, 1), Some(60.0));
+    for (kind, v) in every_kind() {
+        for (name, r) in [
+            ("op", op_halo(v.clone(), size(5.0)).map(|_| ())),
+            (
+                "op",
+                exact_at(&img, &img, v.clone(), size(5.0), "w".into(), 1, 1).map(|_| ()),
+            ),
+            (
+                "layer",
+                exact_at(&img, &img, "edges".into(), edges.clone(), v.clone(), 1, 1)
+                    .map(|_| ()),
+            ),
+            (
+                "size",
+                op_halo("forstner".into(), args(&[("size", v.clone())])).map(|_| ()),
+            ),
+        ] {
+            let Err(e) = r else {
+                // a number is a size; a string names no operator
+                assert!(kind == "a number" && name == "size", "{name}({kind}) was taken");
+                continue;
+            };
+            let m = message(e);
+            assert!(m.starts_with(&format!("{name}: ")), "{name}({kind}): {m}");
+            assert!(m.len() <= 600, "{name}({kind}): {} characters", m.len());
+        }
+    }
 }
 
 // ---------------------------------------------------------------- the bench's fast exports

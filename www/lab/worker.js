@@ -118,7 +118,7 @@ function banded(id, progress, img, run) {
         rows.push(l.data.subarray(j * l.width, (j + 1) * l.width));
       }
     }
-    const data = new Float64Array(rows.length * first.width);
+    const data = new first.data.constructor(rows.length * first.width);
     rows.forEach((r, j) => data.set(r, j * first.width));
     // a reference-path layer is signed when any of its values is negative: in any band
     return { ...first, r0: top ?? 0, height: rows.length, signed: parts.some((p) => p.layers[li].signed), data };
@@ -202,6 +202,15 @@ const handlers = {
   },
   resamplePosition({ kind, params, width, height, c, r }) {
     return lab.resample_position(need("a"), kind, Float64Array.from(params), width, height, c, r);
+  },
+  /**
+   * The exact value of layer `layer` of operator `op` (its request's
+   * `args`) at pixel (c, r): the reference function on the pixel's window,
+   * the worked example's number (wasm exact_at); null where there is none.
+   */
+  exact({ op, args, layer, c, r }) {
+    const b = args?.sameImage || !images.b ? need("a") : images.b;
+    return lab.exact_at(need("a"), b, op, args, layer, c, r) ?? null;
   },
   boundary({ threshold, c, r }, transfer) {
     const out = lab.run_boundary(need("a"), threshold, c, r);

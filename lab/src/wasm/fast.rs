@@ -16,6 +16,9 @@ use photogrammetry_playground::filter::fast as filter_fast;
 use photogrammetry_playground::interest::fast as interest_fast;
 use photogrammetry_playground::raster::Gray;
 use photogrammetry_playground::resample::fast as warp_fast;
+use photogrammetry_playground::resample::Method;
+
+use super::run::rect;
 
 /// An 8-bit grey image and the buffers of the fast operators' outputs.
 #[wasm_bindgen]

@@ -5,6 +5,7 @@
 // { id, title, create(lab, box) }); lab.js lists them in the menu's order.
 
 import { el } from "../../dom.js";
+import { fmt } from "../view.js";
 
 /** The border rules of filters and edges (ops::border's names). */
 export const BORDERS = [["replicate", "replicate the edge"], ["reflect", "reflect at the edge"], ["zero", "zero outside"], ["crop", "crop (interior only)"]];
@@ -51,4 +52,27 @@ export function currentLayer(lab) {
 /** A link to a worked example (explain.js's { hash, key }) with `text`. */
 export function link(l, text) {
   return el("a", { href: `index.html${l.hash}`, "data-key": l.key }, text);
+}
+
+/**
+ * "Explain this pixel" with its number: the exact value — the reference
+ * function on the pixel's window, in the worker (wasm exact_at), the
+ * number the worked example computes — and beside it the layer's own value
+ * (`f32`: the fast path's result, rounded), so both are there to compare.
+ * `ask`: the worker's `exact` request, { op, args, layer, c, r } (`op` and
+ * `args` as the family asked for the layer). Without an exact value (an
+ * error, already shown), the layer's value alone.
+ */
+export async function showPixel(lab, text, value, ask, link) {
+  const exact = await lab.run("exact", ask, "Computing the exact value");
+  if (!Number.isFinite(exact)) {
+    lab.showExplain(text, value, link);
+    return;
+  }
+  lab.showExplain(text, exact, link);
+  lab.explain.querySelector("#lab-explain-value")?.after(
+    " ",
+    el("span", { class: "lab-layer-value muted", id: "lab-layer-value", "data-value": String(value) },
+      `exact · the layer (f32) holds ${value === exact ? "the same" : fmt(value, 8)}`),
+  );
 }

@@ -7,7 +7,7 @@ import { el } from "../../dom.js";
 import { Viewer, fmt } from "../view.js";
 import * as X from "../explain.js";
 import { testHook } from "../../test-hooks.js";
-import { link, needImage, number, select } from "./common.js";
+import { link, needImage, number, select, showPixel } from "./common.js";
 
 const correlation = {
   id: "correlation",
@@ -54,7 +54,7 @@ const correlation = {
       const half = (last.size - 1) / 2;
       const win = await lab.run("window", { slot: last.slot, c: c - half, r: r - half, w: last.size, h: last.size });
       if (!win) return;
-      lab.showExplain(`ρ with the template centred on column ${c}, row ${r}:`, l.data[i], X.nccLink(last.template, win, last.size));
+      await showPixel(lab, `ρ with the template centred on column ${c}, row ${r}:`, l.data[i], { op: "correlation", args: last.args, layer: l.name, c, r }, X.nccLink(last.template, win, last.size));
     };
     // where the box is (its centre), and the newest matching asked for
     let at = null;
@@ -139,11 +139,12 @@ const correlation = {
         const s0 = [Math.max(0, c - half - m), Math.max(0, r - half - m)];
         const s = [s0[0], s0[1], Math.min(bImage.width - s0[0], n + 2 * m), Math.min(bImage.height - s0[1], n + 2 * m)];
         lab.viewer.setShapes([{ kind: "rect", c0: t[0], r0: t[1], w: n, h: n, colour: "#ff8c00" }]);
-        const res = await lab.run("correlation", { template: t, search: s, model: model.value, sameImage: which === "same" }, "Correlating");
+        const args = { template: t, search: s, model: model.value, sameImage: which === "same" };
+        const res = await lab.run("correlation", args, "Correlating");
         if (!res || stale()) return;
         const template = await lab.run("window", { c: t[0], r: t[1], w: n, h: n });
         if (stale()) return;
-        last = { ...res, size: n, slot: which === "same" ? "a" : "b", template, model: model.value };
+        last = { ...res, size: n, slot: which === "same" ? "a" : "b", template, model: model.value, args };
         viewerB.setImage(bImage);
         viewerB.setLayer(res.layers[0]);
         viewerB.setOpacity(0.75);

@@ -3,7 +3,7 @@
 
 import { el } from "../../dom.js";
 import * as X from "../explain.js";
-import { BORDERS, currentLayer, layerValue, needImage, runButton, select } from "./common.js";
+import { BORDERS, currentLayer, layerValue, needImage, runButton, select, showPixel } from "./common.js";
 
 const edges = {
   id: "edges",
@@ -33,7 +33,7 @@ const edges = {
           const win = await lab.run("neighbourhood", { c, r, w: 5, h: 5, border: used.border }, "Reading the window");
           if (win) link = X.edgeLink(used.operator, win, layer.name);
         }
-        lab.showExplain(`${used.operator} ${layer.name} at column ${c}, row ${r}:`, v, link);
+        await showPixel(lab, `${used.operator} ${layer.name} at column ${c}, row ${r}:`, v, { op: "edges", args: used, layer: layer.name, c, r }, link);
       },
     };
   },

@@ -7,7 +7,7 @@ import { el } from "../../dom.js";
 import * as X from "../explain.js";
 import { Live } from "../live.js";
 import { testHook } from "../../test-hooks.js";
-import { BORDERS, currentLayer, layerValue, needImage, runButton, select } from "./common.js";
+import { BORDERS, currentLayer, layerValue, needImage, runButton, select, showPixel } from "./common.js";
 
 const KERNELS = [
   ["mean", "3×3 mean (1/9)"], ["weighted-mean", "3×3 weighted mean (1/10)"], ["gaussian-3", "3×3 Gaussian (1/16)"],
@@ -113,7 +113,7 @@ const filters = {
         label: `Filtering (${layerName})`,
         cancel: true,
         apply(r) {
-          used = { ...args, name, custom };
+          used = { ...args, name, custom, args };
           r.layers[0].name = layerName;
           lab.setLayers(r.layers);
           testHook("filterShown", layerName);
@@ -134,14 +134,14 @@ const filters = {
           const { rows, divisor: d, width, height } = used.custom;
           const win = await lab.run("neighbourhood", { c, r, w: width + 2, h: height + 2, border: used.border }, "Reading the window");
           const link = win ? X.customFilterLink(rows, d, win, width + 2) : null;
-          lab.showExplain(`${layer.name} at column ${c}, row ${r}:`, v, link);
+          await showPixel(lab, `${layer.name} at column ${c}, row ${r}:`, v, { op: "filter", args: used.args, layer: layer.name, c, r }, link);
           return;
         }
         const k = X.kernelSide(used.kernel);
         const side = k + 2;
         const win = await lab.run("neighbourhood", { c, r, w: side, h: side, border: used.border }, "Reading the window");
         const link = win ? X.filterLink(used.kernel, win, side) : null;
-        lab.showExplain(`${used.kernel} at column ${c}, row ${r}:`, v, link);
+        await showPixel(lab, `${used.kernel} at column ${c}, row ${r}:`, v, { op: "filter", args: used.args, layer: layer.name, c, r }, link);
       },
     };
   },

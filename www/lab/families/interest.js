@@ -7,7 +7,7 @@ import * as X from "../explain.js";
 import { fmt } from "../view.js";
 import { Live } from "../live.js";
 import { testHook } from "../../test-hooks.js";
-import { currentLayer, layerValue, needImage, number, runButton, select } from "./common.js";
+import { currentLayer, layerValue, needImage, number, runButton, select, showPixel } from "./common.js";
 
 const ELLIPSE_MAGNIFY = 10;
 
@@ -159,7 +159,7 @@ const interest = {
         const link = used.op === "forstner"
           ? X.forstnerLink(win, n, used.sigmaN, used.thresholdPx, layer.name)
           : X.moravecLink(win, n);
-        lab.showExplain(`${layer.name} of the ${n}×${n} window at column ${c}, row ${r}:`, v, link);
+        await showPixel(lab, `${layer.name} of the ${n}×${n} window at column ${c}, row ${r}:`, v, { op: used.op, args: { size: n }, layer: layer.name, c, r }, link);
       },
     };
   },

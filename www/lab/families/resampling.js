@@ -6,7 +6,7 @@ import { el } from "../../dom.js";
 import { Viewer, fmt } from "../view.js";
 import * as X from "../explain.js";
 import { testHook } from "../../test-hooks.js";
-import { needImage, number, runButton, select } from "./common.js";
+import { needImage, number, runButton, select, showPixel } from "./common.js";
 
 const resampling = {
   id: "resampling",
@@ -62,8 +62,8 @@ const resampling = {
       const fc = Math.floor(x) - 1;
       const fr = Math.floor(y) - 1;
       const patch = fc >= 0 && fr >= 0 ? await lab.run("window", { c: fc, r: fr, w: 4, h: 4 }) : null;
-      lab.showExplain(`${layer.name} at output column ${c}, row ${r} (input position ${fmt(x, 7)}, ${fmt(y, 7)}):`, v,
-        patch ? X.resampleLink(patch, fc, fr, x, y, layer.name) : null);
+      await showPixel(lab, `${layer.name} at output column ${c}, row ${r} (input position ${fmt(x, 7)}, ${fmt(y, 7)}):`, v,
+        { op: "resample", args: used, layer: layer.name, c, r }, patch ? X.resampleLink(patch, fc, fr, x, y, layer.name) : null);
     };
     run.addEventListener("click", () => {
       if (!needImage(lab)) return;

@@ -1,0 +1,139 @@
+//! Boundary tracing: threshold, the region at the picked pixel, its outer
+//! boundary with chain code, length and shape.
+//!
+//! On an 8-bit image: the region filled on bytes, its borders by the
+//! core's `chain::fast::contours` (Suzuki–Abe), the outer one walked the
+//! other way round from the same start — `chain::trace`'s boundary
+//! (`tests/web_fast.rs` ties the two). Otherwise `chain::region_at` and
+//! `chain::trace`.
+
+use super::*;
+use photogrammetry_playground::chain::{self, fast as cfast, Connectivity};
+
+/// A traced region: the region at the picked pixel (`chain::region_at`, as
+/// a layer of 1 inside, 0 outside), its outer boundary (`chain::trace`)
+/// with chain code, length and shape (`chain::length`, `chain::shape`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Traced {
+    pub region: Layer,
+    pub boundary: chain::Boundary,
+    pub length: chain::Length,
+    pub shape: Option<chain::Shape>,
+}
+
+/// Longest boundary (pixels) whose shape descriptors are computed:
+/// `chain::shape`'s diameter compares every pair of boundary pixels.
+pub const MAX_SHAPE_PIXELS: usize = 4000;
+
+fn outside(c: usize, r: usize, w: usize, h: usize) -> Error {
+    Error::input("pixel", format!("({c}, {r}) is outside the {w}×{h} image"))
+}
+
+/// Traces the region of `img` containing `(c, r)` after thresholding.
+pub fn boundary<'a>(
+    img: impl Into<Image<'a>>,
+    threshold: f64,
+    c: usize,
+    r: usize,
+) -> Result<Traced> {
+    if !threshold.is_finite() {
+        return Err(Error::input("threshold", "must be a finite number"));
+    }
+    let img = img.into();
+    let (w, h) = (img.width(), img.height());
+    let conn = Connectivity::Eight;
+    let (region, boundary) = match img.gray() {
+        Some(g) => {
+            let (mask, area) = fill(g, threshold, c, r).ok_or_else(|| outside(c, r, w, h))?;
+            let b = outer(&mask, w, h, area)?;
+            let data = mask.iter().map(|&m| f32::from(m)).collect();
+            (Layer::new("region", whole(w, h), data, false), b)
+        }
+        None => {
+            let mask = chain::region_at(img.grid, threshold, c, r, conn)
+                .ok_or_else(|| outside(c, r, w, h))?;
+            let b = chain::trace(&mask, conn)
+                .into_iter()
+                .next()
+                .ok_or_else(|| Error::Internal("a picked region has no boundary".into()))?;
+            (Layer::from_grid("region", &mask, whole(w, h), false), b)
+        }
+    };
+    let length = chain::length(&boundary.code, conn);
+    // the diameter compares every pair of boundary pixels: skipped for
+    // long boundaries
+    let shape = (boundary.pixels.len() <= MAX_SHAPE_PIXELS)
+        .then(|| chain::shape("boundary", &boundary.pixels).ok())
+        .flatten();
+    Ok(Traced {
+        region,
+        boundary,
+        length,
+        shape,
+    })
+}
+
+/// The 8-connected region of the pixels on `(c, r)`'s side of `threshold`
+/// (`v ≥ threshold` or not, as `chain::region_at`): a mask of 1 and 0, and
+/// its pixel count.
+fn fill(g: Gray, threshold: f64, c: usize, r: usize) -> Option<(Vec<u8>, usize)> {
+    let (w, h) = (g.width(), g.height());
+    let data = g.data();
+    let start = *data
+        .get(r.checked_mul(w)?.checked_add(c)?)
+        .filter(|_| c < w)?;
+    let side: Vec<bool> = (0..=255u8).map(|v| f64::from(v) >= threshold).collect();
+    let want = side[usize::from(start)];
+    let same: Vec<bool> = side.iter().map(|&s| s == want).collect();
+    let mut mask = vec![0u8; w * h];
+    let mut stack = vec![r * w + c];
+    mask[r * w + c] = 1;
+    let mut area = 0;
+    while let Some(i) = stack.pop() {
+        area += 1;
+        let (pc, pr) = (i % w, i / w);
+        for nr in pr.saturating_sub(1)..(pr + 2).min(h) {
+            for nc in pc.saturating_sub(1)..(pc + 2).min(w) {
+                let j = nr * w + nc;
+                if mask[j] == 0 && same[usize::from(data[j])] {
+                    mask[j] = 1;
+                    stack.push(j);
+                }
+            }
+        }
+    }
+    Some((mask, area))
+}
+
+/// The outer border of the one region of `mask` as `chain::trace` gives
+/// it: `chain::fast::contours`'s first border (the raster scan meets the
+/// outer one first), walked the other way round from the same start.
+fn outer(mask: &[u8], w: usize, h: usize, area: usize) -> Result<chain::Boundary> {
+    let borders = cfast::contours(Gray::new("region", mask, w, h)?)?;
+    let first = borders
+        .into_iter()
+        .find(|b| !b.hole)
+        .ok_or_else(|| Error::Internal("a picked region has no boundary".into()))?;
+    let mut pixels: Vec<chain::Pixel> = first
+        .points
+        .iter()
+        .map(|&(c, r)| [i64::from(c), i64::from(r)])
+        .collect();
+    if pixels.len() > 1 {
+        pixels[1..].reverse();
+    }
+    let n = pixels.len();
+    let code = if n > 1 {
+        (0..n)
+            .map(|k| {
+                let (a, b) = (pixels[k], pixels[(k + 1) % n]);
+                Connectivity::Eight
+                    .digit(b[0] - a[0], b[1] - a[1])
+                    .ok_or_else(|| Error::Internal("a border step between non-neighbours".into()))
+            })
+            .collect::<Result<Vec<u8>>>()?
+    } else {
+        Vec::new()
+    };
+    Ok(chain::Boundary { pixels, code, area })
+}

@@ -1,0 +1,241 @@
+//! Filters and edges over the whole image: on an 8-bit image the core's
+//! `filter::fast` paths (exact integer sums, divided in `f64` as the
+//! reference divides, then rounded to the layer's `f32`), otherwise
+//! `filter::correlate` / `filter::median` / `filter::gradient`.
+
+use super::*;
+use photogrammetry_playground::filter::fast;
+
+/// A filter over the whole image: `filter::correlate` with the named
+/// kernel (or the custom one), or `filter::median` 3×3.
+pub fn filter_image<'a>(
+    img: impl Into<Image<'a>>,
+    kernel_name: &str,
+    border: Border,
+    custom: Option<(&[Vec<f64>], f64)>,
+) -> Result<Layer> {
+    let img = img.into();
+    if let Some(layer) = fast_filter(&img, kernel_name, border, custom)? {
+        return Ok(layer);
+    }
+    let f = match kernel(kernel_name, custom)? {
+        Some(k) => filter::correlate(img.grid, &k, border)?,
+        None => filter::median(img.grid, 3, 3, border)?,
+    };
+    let signed = f.output.data().iter().any(|&v| v < 0.0);
+    Ok(Layer::from_grid(kernel_name, &f.output, f.region, signed))
+}
+
+/// The separable integer kernels of the menu as `(kx, ky, divisor)`:
+/// `kernel = ky ⊗ kx / divisor` entry by entry (lab/tests/operators.rs
+/// checks each against `filter::by_name`).
+pub fn separable_taps(name: &str) -> Option<(&'static [f32], &'static [f32], f64)> {
+    Some(match name {
+        "mean" => (&[1.0; 3], &[1.0; 3], 9.0),
+        "gaussian-3" => (&[1.0, 2.0, 1.0], &[1.0, 2.0, 1.0], 16.0),
+        "gaussian-5" => (
+            &[1.0, 4.0, 6.0, 4.0, 1.0],
+            &[1.0, 4.0, 6.0, 4.0, 1.0],
+            256.0,
+        ),
+        _ => return None,
+    })
+}
+
+/// `(kx, ky)` with `rows[j][i] = ky[j]·kx[i]` exactly, for a kernel of
+/// integers (a k×k mean, a custom Gaussian), else `None`.
+fn integer_factors(rows: &[Vec<f64>]) -> Option<(Vec<f32>, Vec<f32>)> {
+    if rows.iter().flatten().any(|v| v.fract() != 0.0) {
+        return None;
+    }
+    let base = rows.iter().find(|r| r.iter().any(|&v| v != 0.0))?;
+    let i0 = base.iter().position(|&v| v != 0.0)?;
+    let ky: Vec<f64> = rows.iter().map(|r| r[i0] / base[i0]).collect();
+    let exact = rows
+        .iter()
+        .zip(&ky)
+        .all(|(r, &y)| r.iter().zip(base).all(|(&v, &x)| y * x == v));
+    (exact && ky.iter().all(|v| v.fract() == 0.0)).then(|| {
+        (
+            base.iter().map(|&v| v as f32).collect(),
+            ky.iter().map(|&v| v as f32).collect(),
+        )
+    })
+}
+
+/// The part of a full-size fast output that `region` covers, through `f`
+/// (in place when the region is the whole image).
+fn finish(mut full: Vec<f32>, w: usize, region: Region, f: impl Fn(f32) -> f32) -> Vec<f32> {
+    if region.c0 == 0 && region.r0 == 0 && region.width == w {
+        full.truncate(region.width * region.height);
+        for v in &mut full {
+            *v = f(*v);
+        }
+        return full;
+    }
+    let mut out = Vec::with_capacity(region.width * region.height);
+    for r in region.r0..region.r0 + region.height {
+        let start = r * w + region.c0;
+        if let Some(row) = full.get(start..start + region.width) {
+            out.extend(row.iter().map(|&v| f(v)));
+        }
+    }
+    out
+}
+
+/// The integer-tap response `Σ n·f` of every pixel (`f32`, exact while
+/// `Σ|n|·255 < 2²⁴`), by the separable pass when the kernel factors.
+fn response(g: Gray, rows: &[Vec<f64>], border: Border) -> Result<Vec<f32>> {
+    let (w, h) = (g.width(), g.height());
+    let mut out = vec![0.0f32; w * h];
+    if let Some((kx, ky)) = integer_factors(rows) {
+        fast::separable(g, &kx, &ky, 1.0, border, &mut out)?;
+    } else {
+        let k: Vec<f32> = rows.iter().flatten().map(|&v| v as f32).collect();
+        let kw = rows.first().map_or(0, Vec::len);
+        fast::correlate(g, &k, (kw, rows.len()), 1.0, border, &mut out)?;
+    }
+    Ok(out)
+}
+
+/// `Σ n·f / divisor` as the reference divides it (`f64`; `+ 0.0` turns a
+/// `−0` sum into `0`), rounded to `f32`.
+fn divided(s: f32, divisor: f64) -> f32 {
+    ((f64::from(s) + 0.0) / divisor) as f32
+}
+
+/// The menu's filters on an 8-bit image by the core's fast paths: the 3×3
+/// median by `filter::fast::median3` (integers), every kernel by
+/// [`response`] then [`divided`]; `None` for other images (the reference
+/// path) or when `border` leaves no pixel. For kernels of integers with
+/// `Σ|n|·255 < 2²⁴` every value is the reference's rounded to `f32`
+/// (lab/tests/fast_layers.rs).
+pub fn fast_filter(
+    img: &Image,
+    kernel_name: &str,
+    border: Border,
+    custom: Option<(&[Vec<f64>], f64)>,
+) -> Result<Option<Layer>> {
+    let Some(g) = img.gray() else {
+        return Ok(None);
+    };
+    let (w, h) = (g.width(), g.height());
+    let k = kernel(kernel_name, custom)?;
+    let (hw, hh) = k
+        .as_ref()
+        .map_or((1, 1), |k| (k.half_width(), k.half_height()));
+    let Some(region) = filter::output_region(w, h, hw, hh, border) else {
+        return Ok(None);
+    };
+    let (data, signed) = match &k {
+        None => {
+            let mut out = vec![0u8; w * h];
+            fast::median3(g, border, &mut out)?;
+            let data = (region.r0..region.r0 + region.height)
+                .flat_map(|r| {
+                    let start = r * w + region.c0;
+                    out.get(start..start + region.width).unwrap_or(&[]).to_vec()
+                })
+                .map(f32::from)
+                .collect();
+            (data, false)
+        }
+        Some(k) => {
+            let rows = k.numerators().rows();
+            let d = k.divisor();
+            let full = match separable_taps(kernel_name) {
+                Some((kx, ky, _)) => {
+                    let mut out = vec![0.0f32; w * h];
+                    fast::separable(g, kx, ky, 1.0, border, &mut out)?;
+                    out
+                }
+                None => response(g, &rows, border)?,
+            };
+            let data = finish(full, w, region, |s| divided(s, d));
+            let signed = data.iter().any(|&v| v < 0.0);
+            (data, signed)
+        }
+    };
+    Ok(Some(Layer::new(kernel_name, region, data, signed)))
+}
+
+/// The edge kernels by name: `(kx, ky)` of `filter::gradient`, and their
+/// separable taps `((sx, [1 0 −1]), ([−1 0 1], sy))`: gx is top minus
+/// bottom, gy right minus left.
+pub fn edge_kernels(operator: &str) -> Result<(Kernel, Kernel)> {
+    match operator {
+        "prewitt" => Ok((filter::prewitt_x(), filter::prewitt_y())),
+        "sobel" => Ok((filter::sobel_x(), filter::sobel_y())),
+        _ => Err(Error::input(
+            "operator",
+            format!("must be prewitt or sobel (got \"{}\")", short(operator)),
+        )),
+    }
+}
+
+/// Prewitt or Sobel on an 8-bit image by the fast separable path: `gx`,
+/// `gy` exact integer sums, the magnitude `√(gx² + gy²)` in `f32` (the
+/// reference's `hypot` rounded to `f32`, checked for every pair of sums),
+/// the direction by `filter::fast::direction_deg` (within 1e-4°). `None`
+/// when the image is not 8-bit or `border` leaves no pixel.
+pub fn fast_edges(img: &Image, operator: &str, border: Border) -> Result<Option<Vec<Layer>>> {
+    edge_kernels(operator)?;
+    let sx: &[f32] = if operator == "sobel" {
+        &[1.0, 2.0, 1.0]
+    } else {
+        &[1.0, 1.0, 1.0]
+    };
+    let Some(g) = img.gray() else {
+        return Ok(None);
+    };
+    let (w, h) = (g.width(), g.height());
+    let Some(region) = filter::output_region(w, h, 1, 1, border) else {
+        return Ok(None);
+    };
+    let mut gx = vec![0.0f32; w * h];
+    let mut gy = vec![0.0f32; w * h];
+    fast::separable(g, sx, &[1.0, 0.0, -1.0], 1.0, border, &mut gx)?;
+    fast::separable(g, &[-1.0, 0.0, 1.0], sx, 1.0, border, &mut gy)?;
+    let gx = finish(gx, w, region, |v| v + 0.0);
+    let gy = finish(gy, w, region, |v| v + 0.0);
+    let mag = gx
+        .iter()
+        .zip(&gy)
+        .map(|(x, y)| (x * x + y * y).sqrt())
+        .collect();
+    let mut dir = vec![0.0f32; gx.len()];
+    fast::direction_deg(&gx, &gy, &mut dir);
+    Ok(Some(vec![
+        Layer::new("gx", region, gx, true),
+        Layer::new("gy", region, gy, true),
+        Layer::new("magnitude", region, mag, false),
+        Layer::new("direction", region, dir, true),
+    ]))
+}
+
+/// Prewitt or Sobel `gx`, `gy`, magnitude and direction (`atan2(gy, gx)`
+/// in degrees) over the whole image: `filter::gradient`.
+pub fn edges<'a>(img: impl Into<Image<'a>>, operator: &str, border: Border) -> Result<Vec<Layer>> {
+    let img = img.into();
+    if let Some(layers) = fast_edges(&img, operator, border)? {
+        return Ok(layers);
+    }
+    let (kx, ky) = edge_kernels(operator)?;
+    let g = filter::gradient(img.grid, &kx, &ky, border)?;
+    let dir = Grid::new(
+        "direction",
+        g.region.width,
+        g.region.height,
+        g.gx.data()
+            .iter()
+            .zip(g.gy.data())
+            .map(|(x, y)| y.atan2(*x).to_degrees())
+            .collect(),
+    )?;
+    Ok(vec![
+        Layer::from_grid("gx", &g.gx, g.region, true),
+        Layer::from_grid("gy", &g.gy, g.region, true),
+        Layer::from_grid("magnitude", &g.magnitude, g.region, false),
+        Layer::from_grid("direction", &dir, g.region, true),
+    ])
+}
