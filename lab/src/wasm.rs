@@ -42,13 +42,46 @@ pub struct LabImage {
     colour: String,
     bits: u32,
     max_value: f64,
+    photo: decode::Photo,
     /// The grey values as bytes when the image is 8-bit, found once (the
     /// operators' fast paths read them: `run::image`).
     bytes: std::cell::OnceCell<Option<Vec<u8>>>,
 }
 
+/// A photo's orientation and reduction as the page reads them (`photo()`,
+/// `probe_image`): `orientation` (1 … 8), `turned` (its words, or
+/// `undefined`), `photoWidth`, `photoHeight` (upright, before reduction),
+/// `factor` (1: not reduced), `width`, `height` (the lab's grid),
+/// `reduced` (the reduction in words, or `undefined`).
+fn photo_js(p: &decode::Photo) -> Result<JsValue, JsError> {
+    let words = |w: Option<String>| w.map_or(JsValue::UNDEFINED, |w| JsValue::from_str(&w));
+    obj(&[
+        ("orientation", num(f64::from(p.orientation))),
+        ("turned", words(p.turned())),
+        ("photoWidth", num(p.width as f64)),
+        ("photoHeight", num(p.height as f64)),
+        ("factor", num(p.factor as f64)),
+        ("width", num(p.work_width as f64)),
+        ("height", num(p.work_height as f64)),
+        ("reduced", words(p.reduced())),
+    ])
+}
+
 #[wasm_bindgen]
 impl LabImage {
+    /// The EXIF orientation applied at decoding, 1 … 8 (1: none).
+    pub fn orientation(&self) -> u8 {
+        self.photo.orientation
+    }
+    /// The reduction factor `k`: one pixel of this image is the area
+    /// average of `k × k` pixels of the photo (1: not reduced).
+    pub fn factor(&self) -> usize {
+        self.photo.factor
+    }
+    /// What decoding did (orientation, reduction), as `photo_js` says.
+    pub fn photo(&self) -> Result<JsValue, JsError> {
+        photo_js(&self.photo)
+    }
     pub fn width(&self) -> usize {
         self.grid.width()
     }
@@ -105,7 +138,16 @@ impl LabImage {
 }
 
 fn wrap(grid: Grid, format: &str, colour: &str, bits: u32, max_value: f64) -> LabImage {
+    let (w, h) = (grid.width(), grid.height());
     LabImage {
+        photo: decode::Photo {
+            orientation: 1,
+            width: w,
+            height: h,
+            factor: 1,
+            work_width: w,
+            work_height: h,
+        },
         grid,
         format: format.into(),
         colour: colour.into(),
@@ -115,12 +157,30 @@ fn wrap(grid: Grid, format: &str, colour: &str, bits: u32, max_value: f64) -> La
     }
 }
 
-/// Decodes a PNG, JPEG or TIFF file to grey values (BT.601 luma).
+/// Decodes a PNG, JPEG, TIFF, WebP, BMP or GIF file to grey values (BT.601
+/// luma), upright by its EXIF orientation and reduced to the working size
+/// when larger (`photo()` says what was done).
 #[wasm_bindgen]
 pub fn decode_image(name: JsValue, bytes: &[u8]) -> Result<LabImage, JsError> {
     let name = string_arg("name", "naming the file", &name)?;
     let d = decode::decode(&name, bytes).map_err(js_error)?;
-    Ok(wrap(d.grid, d.format, d.colour, d.bits, d.max_value))
+    let mut img = wrap(d.grid, d.format, d.colour, d.bits, d.max_value);
+    img.photo = d.photo;
+    Ok(img)
+}
+
+/// What `decode_image` would make of a file, from its header only:
+/// `{ format, orientation, turned, photoWidth, photoHeight, factor, width,
+/// height, reduced }` (`photo_js`), or the error `decode_image` would throw
+/// for a file the lab refuses. The page offers a reduction with it.
+#[wasm_bindgen]
+pub fn probe_image(name: JsValue, bytes: &[u8]) -> Result<JsValue, JsError> {
+    let name = string_arg("name", "naming the file", &name)?;
+    let (format, photo) = decode::probe(&name, bytes).map_err(js_error)?;
+    let o = photo_js(&photo)?;
+    Reflect::set(&o, &JsValue::from_str("format"), &JsValue::from_str(format))
+        .map_err(|_| JsError::new("internal error (please report): cannot build a result"))?;
+    Ok(o)
 }
 
 /// An image from raw 8-bit grey bytes (row-major), e.g. the benchmark's.

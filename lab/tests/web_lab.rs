@@ -111,9 +111,9 @@ fn bad_files_throw_errors_naming_the_file() {
             "PNG",
         ),
         (
-            "unsupported.gif",
-            &include_bytes!("corpus/unsupported.gif")[..],
-            "is a GIF image, a format the lab does not read",
+            "unsupported.qoi",
+            &include_bytes!("corpus/unsupported.qoi")[..],
+            "is a QOI image, a format the lab does not read",
         ),
     ] {
         let m = message(decode_image(name.into(), bytes).err().expect(name));

@@ -436,7 +436,7 @@ class Lab {
     this.sampleSelect = sampleSelect;
     const openSample = el("button", { type: "button", id: "lab-open-sample" }, "Open sample");
     openSample.addEventListener("click", () => this.openSample(sampleSelect.value));
-    const file = el("input", { type: "file", id: "lab-file", accept: ".png,.jpg,.jpeg,.tif,.tiff,image/png,image/jpeg,image/tiff" });
+    const file = el("input", { type: "file", id: "lab-file", accept: ".png,.jpg,.jpeg,.tif,.tiff,.webp,.bmp,.gif,image/png,image/jpeg,image/tiff,image/webp,image/bmp,image/gif" });
     file.addEventListener("change", () => {
       if (file.files[0]) this.openFile(file.files[0]);
       file.value = "";
@@ -480,7 +480,7 @@ class Lab {
       this.engine,
       el("div", { class: "lab-open" },
         el("label", {}, "Sample photo ", sampleSelect), " ", openSample, " ",
-        el("label", { class: "lab-file" }, "Your own PNG, JPEG or TIFF ", file),
+        el("label", { class: "lab-file" }, "Your own photo (JPEG, PNG, TIFF, WebP, BMP, GIF) ", file),
         el("span", { class: "muted" }, " (or drop a file here, or paste one)")),
       this.info, this.error, this.notice,
       el("div", { class: "lab-controls" }, el("label", {}, "Operator family ", this.familySelect), this.familyBox),
@@ -555,6 +555,9 @@ class Lab {
   hover(p) {
     if (!p) return;
     const parts = [`c ${p.c}, r ${p.r}`, `grey ${fmt(p.grey)}`];
+    // a reduced photo: the photo's own pixels this lab pixel averages
+    const k = this.image?.photo?.factor ?? 1;
+    if (k > 1) parts.push(`photo pixels c ${k * p.c}…${k * p.c + k - 1}, r ${k * p.r}…${k * p.r + k - 1}`);
     const t = this.image?.truth;
     if (t) {
       // the frame photo has a known pixel size: x, y in mm about the centre
@@ -697,11 +700,28 @@ class Lab {
       this.showError(`${file.name}: the file could not be read (${e.message}).`);
       return;
     }
-    await this.openBytes(file.name, bytes, null, { keep: true });
+    await this.openBytes(file.name, bytes, null, { keep: true, offer: true });
   }
 
-  /** `keep`: the student's own photo, kept for the session (memory, IndexedDB). */
-  async openBytes(name, bytes, sample, { gen = ++this.openGen, keep = false } = {}) {
+  /**
+   * `keep`: the student's own photo, kept for the session (memory, IndexedDB).
+   * `offer`: a photo larger than the lab's working size is not opened at
+   * once: its header is read in the worker (`probe`: format, orientation,
+   * reduction) and the photo offered reduced; the student's Open decodes it
+   * (decode.rs reduces it by the same factor). A restored or restarted photo
+   * opens reduced without asking again.
+   */
+  async openBytes(name, bytes, sample, { gen = ++this.openGen, keep = false, offer = false } = {}) {
+    this.clearOffer();
+    if (offer) {
+      const head = bytes.slice(0);
+      const p = await this.run("probe", { name, bytes: head }, `Reading ${name}`, [head]);
+      if (!p || gen !== this.openGen) return; // refused (the error names the file and why), or a newer open
+      if (p.factor > 1) {
+        this.offerReduced(name, bytes, p, keep);
+        return;
+      }
+    }
     // a copy stays here, so that a fresh worker can get the photo back
     const copy = bytes.slice(0);
     const r = await this.run("load", { name, bytes }, `Decoding ${name}`, [bytes]);
@@ -710,6 +730,27 @@ class Lab {
     this.source = { sample: sample?.id ?? null, name, bytes: copy };
     if (keep) await keepPhoto(name, copy);
     this.setImage({ ...r, name }, sample);
+  }
+
+  /** The offer of photo `name` (`p`: probe's answer) reduced to the working size: Open, or keep what is open. */
+  offerReduced(name, bytes, p, keep) {
+    const mp = ((p.photoWidth * p.photoHeight) / 1e6).toFixed(1);
+    const open = el("button", { type: "button", id: "lab-offer-open" }, `Open it reduced ${p.factor}×`);
+    const no = el("button", { type: "button", id: "lab-offer-cancel" }, this.image ? "Keep the current photo" : "Do not open it");
+    this.offer = el("div", { class: "notice lab-offer", id: "lab-offer", role: "group", "aria-label": `${name} is larger than the lab's working size` },
+      el("p", {}, `${name} is ${p.photoWidth} × ${p.photoHeight} pixels (${mp} megapixels)${p.turned ? `, ${p.turned}` : ""}: larger than the lab works on. `,
+        `The lab offers it ${p.reduced}. Coordinates, sizes, radii and shifts in the lab are then in lab pixels.`),
+      el("p", {}, open, " ", no));
+    open.addEventListener("click", () => this.openBytes(name, bytes, null, { keep }));
+    no.addEventListener("click", () => this.clearOffer());
+    this.info.after(this.offer);
+    open.focus();
+    testHook("offer", name);
+  }
+
+  clearOffer() {
+    this.offer?.remove();
+    this.offer = null;
   }
 
   /** Opens raw 8-bit grey bytes (`width × height`, row-major) as the photo. */
@@ -729,7 +770,12 @@ class Lab {
     this.picked = null;
     this.viewer.setImage(img);
     this.inspector.textContent = "Point at the image: column c, row r and grey value appear here.";
-    const what = `${img.name}: ${img.width} × ${img.height} pixels, ${img.format}, ${img.colour === "colour" ? "colour (shown as grey)" : "grey"}, ${img.bits}-bit`;
+    this.clearOffer();
+    // what decoding did to a photo (decode.rs's Photo): its EXIF orientation, its reduction
+    const k = img.photo?.factor ?? 1;
+    const done = [img.photo?.turned, img.photo?.reduced].filter(Boolean)
+      .concat(k > 1 ? [`coordinates, sizes, radii and shifts in the lab are in lab pixels (lab pixel c covers the photo's columns ${k}·c … ${k}·c + ${k - 1}; the inspector shows both)`] : []);
+    const what = `${img.name}: ${img.width} × ${img.height} pixels, ${img.format}, ${img.colour === "colour" ? "colour (shown as grey)" : "grey"}, ${img.bits}-bit${done.map((d) => `; ${d}`).join("")}`;
     const here = (f) => new URL(`./samples/${f}`, import.meta.url).href;
     this.info.replaceChildren(what, sample
       ? el("span", { class: "muted" }, ` — ${sample.source}`,

@@ -138,7 +138,12 @@ const handlers = {
   load({ slot = "a", name, bytes }, transfer) {
     const img = lab.decode_image(name, new Uint8Array(bytes));
     put(slot, img);
-    return imageInfo(img, transfer);
+    // what decoding did: the EXIF orientation and the reduction (decode.rs's Photo)
+    return { ...imageInfo(img, transfer), photo: img.photo() };
+  },
+  /** A file's format, orientation and reduction from its header alone (the lab offers a reduction with it). */
+  probe({ name, bytes }) {
+    return lab.probe_image(name, new Uint8Array(bytes));
   },
   frame({ slot = "a" }, transfer) {
     const img = lab.scanned_frame();

@@ -4,13 +4,20 @@
 Good files with known pixel values: grey 8-bit PNG, grey 16-bit PNG, RGB PNG,
 TIFF 8-bit grey (strips), TIFF 16-bit grey (strips), TIFF 8-bit RGB (tiles),
 TIFF 16-bit RGB (strips), TIFF 8-bit and 16-bit grey in several tiles,
-TIFF 8-bit grey compressed with Deflate; and a GIF, a format the lab does
-not read. The JPEGs are written by the lab's ignored test
-`write_jpegs` (flat 8×8 blocks, which baseline JPEG stores exactly).
+TIFF 8-bit grey compressed with Deflate, a 24-bit BMP, a two-frame GIF (the
+lab reads the first), a DNG whose first image is the full photo; and a QOI
+header, a format the lab does not read. The JPEGs (also the eight with an
+EXIF orientation) and the WebP are written by the lab's ignored test
+`write_encoded` (flat 8×8 blocks, which baseline JPEG stores exactly).
+Refused by their signature: a HEIC, an AVIF, a Canon CR3 (their `ftyp`
+boxes), a Fujifilm RAF, an Olympus ORF, a Panasonic RW2, and TIFFs that are
+RAW files (a Canon CR2, a Nikon NEF whose first image is a thumbnail, a DNG
+whose first image is a preview).
 Bad files: truncated PNG, PNG with a wrong CRC, zero-width PNG, a PNG header
-claiming 100000×100000, a decompression bomb (5000×5000 zeros in a few kB),
-a TIFF without its StripOffsets tag, a text file named .png, an empty file.
-The truncated JPEG is written by `write_jpegs` too.
+claiming 100000×100000, a decompression bomb (7200×7200 zeros, 51.8
+megapixels, in a few kB), a TIFF without its StripOffsets tag, a text file
+named .png, an empty file.
+The truncated JPEG is written by `write_encoded` too.
 
     python3 lab/tests/corpus/make_corpus.py
 """
@@ -72,10 +79,13 @@ def write(name, data):
         f.write(data)
 
 
-def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None, deflate=False):
+def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None, deflate=False, extra=(), cr2=False):
     """Little-endian baseline TIFF, uncompressed (or each strip or tile
     zlib-compressed: `deflate`, compression 8); strips (one per row) or
-    tiles (tile size `tiles`, padded)."""
+    tiles (tile size `tiles`, padded). `extra`: more IFD0 entries
+    (tag, type, count, value), a `bytes` value stored after the pixels
+    (an ASCII Make); `cr2`: Canon's CR2 header (`CR`, version 2.0 and a RAW
+    IFD offset after the TIFF header)."""
     entries = []
 
     def tag(t, typ, count, value):
@@ -100,8 +110,8 @@ def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None, deflat
             data_blobs.append(b"".join(pixel_bytes(c, r) for c in range(width)))
     if deflate:
         data_blobs = [zlib.compress(b, 9) for b in data_blobs]
-    # layout: header(8) | blobs | bits-per-sample array | offsets | counts | IFD
-    offset = 8
+    # layout: header(8; 16 for CR2) | blobs | bits-per-sample array | offsets | counts | extra data | IFD
+    offset = 16 if cr2 else 8
     offs = []
     for b in data_blobs:
         offs.append(offset)
@@ -115,6 +125,14 @@ def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None, deflat
     cnt_off = offset
     cnt_arr = struct.pack("<" + "I" * len(data_blobs), *[len(b) for b in data_blobs])
     offset += len(cnt_arr)
+    extra_data = b""
+    for t_, typ, count, value in extra:
+        if isinstance(value, bytes):
+            tag(t_, typ, count, offset + len(extra_data))
+            extra_data += value
+        else:
+            tag(t_, typ, count, value)
+    offset += len(extra_data)
     ifd_off = offset
     n = len(data_blobs)
 
@@ -154,7 +172,9 @@ def tiff(width, height, spp, bps, pixel_bytes, tiles=None, drop_tag=None, deflat
             ifd += struct.pack("<HHII", t_, typ, count, value)
     ifd += struct.pack("<I", 0)
     head = b"II" + struct.pack("<HI", 42, ifd_off)
-    return head + b"".join(data_blobs) + bps_arr + offs_arr + cnt_arr + ifd
+    if cr2:
+        head += b"CR\x02\x00" + struct.pack("<I", 0)
+    return head + b"".join(data_blobs) + bps_arr + offs_arr + cnt_arr + extra_data + ifd
 
 
 def main():
@@ -174,9 +194,13 @@ def main():
     write("grey16_tiles.tif", tiff(TW, TH, 1, 16, lambda c, r: struct.pack("<H", tile16(c, r)), tiles=(16, 16)))
     # compressed: Deflate (TIFF compression 8), one strip per row
     write("grey8_deflate.tif", tiff(TW, TH, 1, 8, lambda c, r: bytes([tile8(c, r)]), deflate=True))
-    # a format the lab does not read: a 1 × 1 GIF
-    write("unsupported.gif", b"GIF89a" + struct.pack("<HHBBB", 1, 1, 0x80, 0, 0) + b"\x00\x00\x00\xff\xff\xff"
-          + b"\x2c" + struct.pack("<HHHHB", 0, 0, 1, 1, 0) + b"\x02\x02\x44\x01\x00" + b"\x3b")
+    # a format the lab does not read: a QOI header
+    write("unsupported.qoi", b"qoif" + struct.pack(">IIBB", 4, 3, 3, 0) + b"\x00" * 7 + b"\x01")
+    # BMP (24-bit, bottom-up rows padded to 4 bytes) and GIF (grey palette,
+    # two frames: the lab reads the first) with the known pixels
+    write("rgb8.bmp", bmp(W, H, rgb8))
+    write("grey8.gif", gif(W, H, grey8))
+    photos()
     # bad files
     good = png(W, H, 8, 0, [bytes(grey8(c, r) for c in range(W)) for r in range(H)])
     write("truncated.png", good[: len(good) - 30])
@@ -186,16 +210,73 @@ def main():
     ihdr = struct.pack(">IIBBBBB", 100000, 100000, 8, 0, 0, 0, 0)
     write("huge_header.png", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr)
           + chunk(b"IDAT", zlib.compress(b"\x00" * 1000)) + chunk(b"IEND", b""))
-    # a decompression bomb: 5000 × 5000 zeros (25 MB of pixels) in a few kB
-    side = 5000
-    row = b"\x00" + b"\x00" * side
+    # a decompression bomb: 7200 × 7200 zeros (51.8 megapixels, over the
+    # lab's 48; 1 bit a pixel) in a few kB
+    side = 7200
+    row = b"\x00" + b"\x00" * (side // 8)
     comp = zlib.compressobj(9)
     idat = b"".join(comp.compress(row) for _ in range(side)) + comp.flush()
-    ihdr = struct.pack(">IIBBBBB", side, side, 8, 0, 0, 0, 0)
+    ihdr = struct.pack(">IIBBBBB", side, side, 1, 0, 0, 0, 0)
     write("bomb.png", b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", idat) + chunk(b"IEND", b""))
     write("missing_tag.tif", tiff(W, H, 1, 8, lambda c, r: bytes([grey8(c, r)]), drop_tag=273))
     write("text.png", b"This is a text file, not a picture.\nIt was only renamed to .png.\n")
     write("empty.png", b"")
+
+
+def bmp(width, height, rgb):
+    """A 24-bit BMP (BITMAPINFOHEADER, bottom-up, BGR, rows padded to 4 bytes)."""
+    row_len = (3 * width + 3) // 4 * 4
+    rows = b""
+    for r in reversed(range(height)):
+        row = b"".join(bytes(reversed(rgb(c, r))) for c in range(width))
+        rows += row + b"\x00" * (row_len - len(row))
+    info = struct.pack("<IiiHHIIiiII", 40, width, height, 1, 24, 0, len(rows), 2835, 2835, 0, 0)
+    return b"BM" + struct.pack("<IHHI", 14 + 40 + len(rows), 0, 0, 14 + 40) + info + rows
+
+
+def gif(width, height, grey):
+    """A GIF89a with a 256-entry grey palette (entry i is (i, i, i)) and two
+    frames: `grey(c, r)`, then all 255. LZW with 9-bit codes: a clear code,
+    one code per pixel, the end code (the table never reaches 512)."""
+    def frame(values):
+        bits, n = 0, 0
+        for code in [256] + values + [257]:
+            bits |= code << n
+            n += 9
+        data = bits.to_bytes((n + 7) // 8, "little")
+        blocks = b"".join(bytes([len(data[i:i + 255])]) + data[i:i + 255] for i in range(0, len(data), 255))
+        return (b"\x21\xf9\x04\x00\x00\x00\x00\x00"  # graphic control: no disposal, no delay
+                + b"\x2c" + struct.pack("<HHHHB", 0, 0, width, height, 0) + b"\x08" + blocks + b"\x00")
+    palette = b"".join(bytes([i, i, i]) for i in range(256))
+    first = [grey(c, r) for r in range(height) for c in range(width)]
+    return (b"GIF89a" + struct.pack("<HHBBB", width, height, 0xF7, 0, 0) + palette
+            + frame(first) + frame([255] * (width * height)) + b"\x3b")
+
+
+def iso(major, compatible):
+    """The first box of an ISO base media file: `ftyp` with its brands."""
+    body = major + b"\x00\x00\x00\x00" + b"".join(compatible)
+    return struct.pack(">I", 8 + len(body)) + b"ftyp" + body
+
+
+def photos():
+    """Files the lab refuses by their signature (HEIC, AVIF, camera RAW),
+    and TIFFs that are RAW files or a DNG that opens. Each TIFF here would
+    decode as a 4 × 3 image: refused, it is not opened as its thumbnail."""
+    write("iphone.heic", iso(b"heic", [b"mif1", b"heic"]) + struct.pack(">I", 8) + b"meta")
+    write("photo.avif", iso(b"avif", [b"avif", b"mif1", b"miaf"]) + struct.pack(">I", 8) + b"meta")
+    write("canon.cr3", iso(b"crx ", [b"crx ", b"isom"]) + struct.pack(">I", 8) + b"moov")
+    write("fuji.raf", b"FUJIFILMCCD-RAW 0201FF129502" + b"\x00" * 36)
+    write("olympus.orf", b"IIRO\x08\x00\x00\x00" + b"\x00" * 8)
+    write("panasonic.rw2", b"IIU\x00\x08\x00\x00\x00" + b"\x00" * 8)
+    px = lambda c, r: bytes(rgb8(c, r))
+    write("canon.cr2", tiff(W, H, 3, 8, px, cr2=True))
+    nikon = b"NIKON CORPORATION\x00"
+    # IFD0 a thumbnail (NewSubfileType 1) with the sensor data in a SubIFD
+    write("nikon.nef", tiff(W, H, 3, 8, px, extra=[(254, 4, 1, 1), (271, 2, len(nikon), nikon), (330, 4, 1, 8)]))
+    dng = [(50706, 1, 4, 0x00000401)]  # DNGVersion 1.4.0.0 (4 bytes held in the entry)
+    write("preview.dng", tiff(W, H, 3, 8, px, extra=[(254, 4, 1, 1)] + dng))
+    write("full.dng", tiff(W, H, 3, 8, px, extra=[(254, 4, 1, 0)] + dng))
 
 
 if __name__ == "__main__":
