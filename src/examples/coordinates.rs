@@ -8,7 +8,7 @@ mod gsd;
 mod photo_to_pixel;
 mod pixel_to_photo;
 
-use super::drill::{BoxDef, Mistake, Rng, Tolerance};
+use super::drill::{or_given, BoxDef, Mistake, Rng, Tolerance};
 use super::fields::{Field, Inputs};
 use super::{Example, Topic};
 use crate::coords::Frame;
@@ -74,6 +74,20 @@ fn frame_fields(columns: f64, rows: f64) -> [Field; 2] {
         size("columns", "Image width (columns)", columns),
         size("rows", "Image height (rows)", rows),
     ]
+}
+
+/// The fields of the two conversions: the scan resolution (the seed scans
+/// both at 600 dpi), the image size and the point's two coordinates.
+fn conversion_fields((columns, rows): (f64, f64), first: Field, second: Field) -> Vec<Field> {
+    let [columns, rows] = frame_fields(columns, rows);
+    vec![dpi(600.0), columns, rows, first, second]
+}
+
+/// A coordinate of the point (it may lie outside the image).
+fn coordinate(key: &'static str, label: &'static str, default: f64, unit: &'static str) -> Field {
+    Field::number(key, label, default)
+        .unit(unit)
+        .range(-MAX_COORD, MAX_COORD)
 }
 
 /// The image size of the inputs (validated, or drawn by practice).
@@ -183,6 +197,25 @@ fn sizes(rng: &mut Rng) -> (f64, f64) {
     let rows = (columns + delta).max(400);
     let rows = if rows == columns { columns + 200 } else { rows };
     (columns as f64, rows as f64)
+}
+
+/// A drawn scan of the two conversions: the inputs `dpi`, `columns` and
+/// `rows`, and the three numbers.
+fn draw_scan(rng: &mut Rng) -> (Record, f64, f64, f64) {
+    let dpi = rng.pick(&DPIS) as f64;
+    let (columns, rows) = sizes(rng);
+    let inputs = Record::new()
+        .with("dpi", dpi)
+        .with("columns", columns)
+        .with("rows", rows);
+    (inputs, dpi, columns, rows)
+}
+
+/// The image centre `(c₀, r₀)`, each as the student gave it where given
+/// (the first boxes of both conversions' chains).
+fn centre_or_given(i: &Record, g: &Record) -> Result<(f64, f64)> {
+    let (c0, r0) = frame(&Inputs(i))?.centre();
+    Ok((or_given(g, "c0", c0), or_given(g, "r0", r0)))
 }
 
 /// The swap of rows and columns, in the words of the boxes that show it.

@@ -9,12 +9,12 @@
 //! relation builders of means, sums and ρ.
 
 use super::drill::Rng;
-use super::fields::{Field, Inputs};
+use super::fields::{to_rows, Field, Inputs};
 use super::{Example, Lab, Topic};
 use crate::correlation::{self, Extremum, Flat, Ncc};
 use crate::error::{Error, Result};
 use crate::raster::Grid;
-use crate::solution::{num, tex, Form, Record, Relation, Step, Value};
+use crate::solution::{num, tex, Form, NoteKind, Record, Relation, Solution, Step, Value};
 
 pub mod ncc_1d;
 pub mod ncc_2d;
@@ -109,11 +109,6 @@ fn rho_from_field(help: &'static str) -> Field {
 /// The subpixel fields that only the "printed" mode uses.
 const PRINTED: &[&str] = &["printed"];
 
-/// A fixed-size array as rows.
-fn to_rows<const N: usize>(m: &[[f64; N]]) -> Vec<Vec<f64>> {
-    m.iter().map(|r| r.to_vec()).collect()
-}
-
 // ---------------------------------------------------------------- input access
 
 /// Matrix input `key` as a grid.
@@ -138,12 +133,17 @@ fn half(size: usize) -> f64 {
 
 /// True when any of `keys` differs from its default: fields a mode does
 /// not use were changed (worth a note).
-fn changed(fields: &[Field], inputs: &Record, keys: &[&str]) -> bool {
-    keys.iter().any(|k| {
+/// The warning of the subpixel examples' "exact" mode, which does not read
+/// the printed fields `keys`: given when any of them was changed.
+fn unused_note(s: &mut Solution, fields: &[Field], inputs: &Record, keys: &[&str], text: &str) {
+    let changed = keys.iter().any(|k| {
         fields
             .iter()
             .any(|f| f.key == *k && inputs.get(k) != Some(&f.default))
-    })
+    });
+    if changed {
+        s.note(NoteKind::Warning, text).about(keys);
+    }
 }
 
 fn extremum_name(e: &Extremum) -> &'static str {

@@ -11,7 +11,7 @@ use crate::solution::{Record, Solution, Value};
 use serde::Serialize;
 
 /// An example's practice, as its descriptor declares it: `practice:
-/// drill(Drill { … })`. Without the `practice` feature (the page's topic
+/// drill(Drill::new(generate, boxes, Some(chain), mistakes))`. Without the `practice` feature (the page's topic
 /// modules, which have no practice exports) it is [`Drill::ELSEWHERE`]: the
 /// catalog still says the example has practice, and none of the drill's code
 /// is linked into the module.
@@ -37,13 +37,25 @@ fn elsewhere_mistakes(_: &Record) -> Result<Vec<Mistake>> {
 }
 
 impl Drill {
+    /// A drill from its parts, in the order of the fields: the one-line
+    /// form every descriptor uses.
+    pub const fn new(
+        generate: fn(&mut Rng) -> Record,
+        boxes: fn(&Record) -> Vec<BoxDef>,
+        chain: Option<Chain>,
+        mistakes: fn(&Record) -> Result<Vec<Mistake>>,
+    ) -> Drill {
+        Drill {
+            generate,
+            boxes,
+            chain,
+            mistakes,
+        }
+    }
+
     /// The drill of a build without the `practice` feature: draws nothing.
-    pub const ELSEWHERE: Drill = Drill {
-        generate: elsewhere_inputs,
-        boxes: elsewhere_boxes,
-        chain: None,
-        mistakes: elsewhere_mistakes,
-    };
+    pub const ELSEWHERE: Drill =
+        Drill::new(elsewhere_inputs, elsewhere_boxes, None, elsewhere_mistakes);
 }
 
 /// How one example is practised.

@@ -642,6 +642,11 @@ fn number_rows(key: &str, v: &Value) -> Result<Vec<Vec<f64>>> {
     }
 }
 
+/// A fixed-size array as the rows a matrix field or value takes.
+pub fn to_rows<const N: usize>(m: &[[f64; N]]) -> Vec<Vec<f64>> {
+    m.iter().map(|r| r.to_vec()).collect()
+}
+
 /// Checks a whole input object against an example's fields: unknown keys are
 /// errors, missing keys take the seed's default. Returns the inputs as used.
 pub fn validate(fields: &[Field], raw: &Record) -> Result<Record> {

@@ -11,7 +11,7 @@ mod edge_window;
 mod filter_window;
 
 use super::drill::Rng;
-use super::fields::{Field, Inputs};
+use super::fields::{to_rows, Field, Inputs};
 use super::{Example, Topic};
 use crate::error::{Error, Result};
 use crate::filter::{self, Kernel, PixelSum};
@@ -44,6 +44,26 @@ const BORDERS: &[(&str, &str)] = &[
     ("zero", "Zero outside"),
 ];
 
+/// What the result keys of the two examples mean.
+const LABELS: &[(&str, &str, &str)] = &[
+    ("output", "Filtered window", ""),
+    ("selected", "Output at the selected pixel", ""),
+    ("kernel", "Kernel weights", ""),
+    ("kernel_sum", "Sum of the kernel weights", ""),
+    ("gx", "Gx: top row minus bottom row", ""),
+    ("gy", "Gy: right column minus left column", ""),
+    ("magnitude", "Edge magnitude √(Gx² + Gy²)", ""),
+    ("selected_gx", "Gx at the selected pixel", ""),
+    ("selected_gy", "Gy at the selected pixel", ""),
+    (
+        "selected_magnitude",
+        "Edge magnitude at the selected pixel",
+        "",
+    ),
+    ("output_first_c", "Column of the output's first pixel", ""),
+    ("output_first_r", "Row of the output's first pixel", ""),
+];
+
 /// The examples of this topic, in page order.
 pub const EXAMPLES: &[Example] = &[filter_window::EXAMPLE, edge_window::EXAMPLE];
 
@@ -53,10 +73,6 @@ pub const TOPIC: Topic = Topic {
     title: TITLE,
     examples: EXAMPLES,
 };
-
-fn to_rows<const N: usize>(m: &[[f64; N]]) -> Vec<Vec<f64>> {
-    m.iter().map(|r| r.to_vec()).collect()
-}
 
 // ---------------------------------------------------------------------------
 // Fields

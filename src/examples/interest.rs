@@ -5,7 +5,7 @@
 //! window can be moved and the whole image is thresholded and suppressed.
 
 use super::drill::{or_given, tol, value_in, BoxDef, Mistake, Tolerance};
-use super::fields::{Field, Inputs};
+use super::fields::{to_rows, Field, Inputs};
 use super::{Example, Topic};
 use crate::error::Result;
 use crate::interest::{Case, Forstner, Measures, Precision, Sums};
@@ -65,12 +65,8 @@ fn grid(inputs: &Record, key: &str) -> Result<Grid> {
     Grid::from_rows(key, &Inputs(inputs).rows(key)?)
 }
 
-fn rows2(m: &[[f64; 2]; 2]) -> Vec<Vec<f64>> {
-    m.iter().map(|r| r.to_vec()).collect()
-}
-
 fn mat(m: &[[f64; 2]; 2]) -> Value {
-    Value::matrix(&rows2(m))
+    Value::matrix(&to_rows(m))
 }
 
 fn opt_mat(m: Option<[[f64; 2]; 2]>) -> Value {
@@ -189,7 +185,7 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
             Relation::new("N")
                 .key("n")
                 .sym(Form::grid_tex("bmatrix", symbolic_n, ""))
-                .result(Form::grid("bmatrix", &rows2(&m.n), "N")),
+                .result(Form::grid("bmatrix", &to_rows(&m.n), "N")),
         )
         .value("n", mat(&m.n)),
     );
@@ -236,7 +232,7 @@ fn forstner_steps(s: &mut Solution, f: &Forstner, p: &Precision, sigma_n: f64, t
                             Form::from(format!(r"\frac{{1}}{{{}}}", num(m.det)))
                                 .then(Form::grid("bmatrix", &[vec![d, -b], vec![-b, a]], "")),
                         )
-                        .result(Form::grid("bmatrix", &rows2(&inv), "N^{-1}")),
+                        .result(Form::grid("bmatrix", &to_rows(&inv), "N^{-1}")),
                 )
                 .value("n_inverse", mat(&inv)),
             )

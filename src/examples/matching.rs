@@ -405,6 +405,43 @@ fn convergence_test(est: &[Param]) -> (Vec<Relation>, bool) {
     (out, radiometric)
 }
 
+/// The 1-D and 2-D examples' model: the shift, with gain and offset when
+/// `radiometric`.
+fn shift_model(radiometric: bool) -> Model {
+    if radiometric {
+        Model::ShiftRadiometric
+    } else {
+        Model::Shift
+    }
+}
+
+/// The design matrix of iteration 1: its entries worked (`rows`, LaTeX) and
+/// their values `a`.
+fn design_matrix(rows: Vec<Vec<String>>, a: &[Vec<f64>]) -> Relation {
+    Relation::new("A")
+        .key("A")
+        .subst(Form::grid_tex("bmatrix", rows, "A"))
+        .result(Form::grid("bmatrix", a, "A"))
+}
+
+/// Increment `k` of the first iteration (none when there was none).
+fn first_increment(m: &Matching, k: usize) -> Option<f64> {
+    m.iterations
+        .first()
+        .and_then(|it| it.increments.get(k).copied())
+}
+
+/// The results of the 1-D and 2-D examples after the position: gain,
+/// offset, and how the run ended.
+fn with_run(r: Record, m: &Matching) -> Record {
+    r.with("a", m.params.gain())
+        .with("b", m.params.offset())
+        .with("iterations", m.iterations.len())
+        .with("converged", m.converged())
+        .with("status", m.status.word())
+        .with("sigma0", m.sigma0())
+}
+
 fn status_step(s: &mut Solution, m: &Matching, syms: &[Sym], limit: usize) {
     let k = m.iterations.len();
     let last = m.iterations.last();

@@ -61,6 +61,13 @@ pub struct Lab {
     pub explains: &'static [&'static str],
 }
 
+impl Lab {
+    /// `lab: Some(Lab::new(family, explains))` in a descriptor.
+    pub const fn new(family: &'static str, explains: &'static [&'static str]) -> Lab {
+        Lab { family, explains }
+    }
+}
+
 /// Everything about one worked example, declared in one value: what the
 /// catalog, the solver, the answer line, the result tables, the lab and
 /// practice mode need. Every list the page or the tests keep of examples

@@ -10,7 +10,7 @@ mod utm;
 mod utm_facts;
 mod utm_inverse;
 
-use super::drill::{Rng, Tolerance};
+use super::drill::{Mistake, Rng, Tolerance};
 use super::fields::{Field, Inputs};
 use super::{Example, Topic};
 use crate::error::{Error, Result};
@@ -339,6 +339,31 @@ const EAST_WEST: &str = "The size is right but the sign is not: east of the cent
 const EDGE: &str = "6·zone − 180 is the zone's eastern edge; its central meridian is 6·zone − 183.";
 /// The sign flip of the meridian convergence.
 const CONVERGENCE_FLIP: &str = "The size is right but the sign is not: γ has the sign of Δλ·sin φ (east of the central meridian in the north, positive).";
+
+/// The wrong central meridians of `zone` (exactly `cm`) both projections'
+/// practice knows: its eastern edge 6·zone − 180 and the neighbouring
+/// zones' meridians (`off` says why in that example's words).
+fn meridian_mistakes(zone: f64, cm: f64, off: &'static str) -> [Mistake; 3] {
+    [
+        Mistake::new(
+            "central_meridian",
+            "6·zone − 180 without the −3",
+            EDGE,
+            6.0 * zone - 180.0,
+        ),
+        Mistake::new("central_meridian", "zone off by one", off, cm - 6.0),
+        Mistake::new("central_meridian", "zone off by one", off, cm + 6.0),
+    ]
+}
+
+/// The false northing of a point at latitude `lat` (0 counts as north).
+fn false_northing_at(lat: f64) -> f64 {
+    if lat >= 0.0 {
+        grid::Hemisphere::North.false_northing()
+    } else {
+        grid::Hemisphere::South.false_northing()
+    }
+}
 
 /// A number of a drawn variant (NaN when it has none).
 fn n(i: &crate::solution::Record, key: &str) -> f64 {

@@ -5,7 +5,7 @@
 //! they differ.
 
 use super::drill::{mat, or_given, value_in, BoxDef, Mistake, Tolerance};
-use super::fields::{Field, Inputs};
+use super::fields::{to_rows, Field, Inputs};
 use super::{Example, Topic};
 use crate::error::{Error, Result};
 use crate::lsq::ILL_CONDITIONED;
@@ -66,10 +66,6 @@ pub const TOPIC: Topic = Topic {
     title: TITLE,
     examples: EXAMPLES,
 };
-
-fn rows_of(points: &[[f64; 4]]) -> Vec<Vec<f64>> {
-    points.iter().map(|p| p.to_vec()).collect()
-}
 
 /// `[c, r, x, y]` to `[u, v, x, y]` with `u = c`, `v = −r`.
 fn row_axis_up(points: &[[f64; 4]]) -> Vec<Vec<f64>> {
@@ -357,10 +353,10 @@ fn adjustment_steps(s: &mut Solution, model: Model, fit: &Fit, src: &str) {
             .value("V", Value::numbers(&adj.v))
             .value(
                 "point_residuals",
-                Value::matrix(&pairs_to_rows(&fit.point_residuals)),
+                Value::matrix(&to_rows(&fit.point_residuals)),
             )
             .value("coordinate_residuals", Value::numbers(&pr))
-            .value("fitted", Value::matrix(&pairs_to_rows(&fit.fitted))),
+            .value("fitted", Value::matrix(&to_rows(&fit.fitted))),
     );
 
     let r = adj.redundancy;
@@ -509,10 +505,6 @@ fn denominators(fit: &Fit) -> (f64, f64) {
     }
 }
 
-fn pairs_to_rows(xs: &[[f64; 2]]) -> Vec<Vec<f64>> {
-    xs.iter().map(|p| p.to_vec()).collect()
-}
-
 fn names_value(names: &[String]) -> Value {
     Value::List(names.iter().map(|n| Value::Text(n.clone())).collect())
 }
@@ -604,7 +596,7 @@ fn common_result(s: &mut Solution, fit: &Fit, inverse: Option<Vec<f64>>) {
     );
     s.result.set(
         "point_residuals",
-        Value::matrix(&pairs_to_rows(&fit.point_residuals)),
+        Value::matrix(&to_rows(&fit.point_residuals)),
     );
     s.result.set(
         "inverse_parameters",

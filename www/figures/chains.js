@@ -16,7 +16,7 @@
 // an L-shape.
 
 import { stepValue } from "../values.js";
-import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, dot, finite, fmt, line, text, textWidth } from "./draw.js";
+import { COLORS, DASH, FONT_SIZE, FONT_SIZE_SMALL, LINE_HEIGHT, Labels, arrow, arrowStep, dot, finite, fmt, line, text, textWidth } from "./draw.js";
 
 /** Layout (CSS px) and the smallest grid shown (cells). */
 const LAYOUT = Object.freeze({ margin: 12, axis: 24, maxCell: 44, minCols: 13, minRows: 9, infoGap: 10, labelMinCell: 15, axisLabelMinPx: 18 });
@@ -510,7 +510,6 @@ function onPointer(x, y, width, height, solution) {
 /** Steps of the chain-code digits, [dc, dr] (r downward): 8-connectivity 1 = east counter-clockwise; 4-connectivity 1 east, 2 north, 3 west, 4 south. */
 const STEPS8 = [[1, 0], [1, -1], [0, -1], [-1, -1], [-1, 0], [-1, 1], [0, 1], [1, 1]];
 const STEPS4 = [[1, 0], [0, -1], [-1, 0], [0, 1]];
-const ARROWS = { ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowLeft: [-1, 0], ArrowDown: [0, 1] };
 
 /** A key on the focused grid: a code digit or an arrow adds a step to the path, Backspace takes the last one back. */
 function onKey(key, solution) {
@@ -526,7 +525,7 @@ function onKey(key, solution) {
   } else {
     const steps = m.four ? STEPS4 : STEPS8;
     const digit = /^[1-8]$/.test(key) ? Number(key) : 0;
-    const step = digit >= 1 && digit <= steps.length ? steps[digit - 1] : ARROWS[key];
+    const step = digit >= 1 && digit <= steps.length ? steps[digit - 1] : arrowStep(key);
     if (!step) return null;
     const [c, r] = path[path.length - 1];
     path.push([c + step[0], r + step[1]]);

@@ -709,6 +709,36 @@ export function fmt(v, digits = 4, none = "—") {
 }
 
 // ---------------------------------------------------------------------------
+// Figure specs and keys
+
+/**
+ * A figure spec for the registry (index.js) whose canvas is laid out from
+ * the solution's data: `data(solution)` (null when there is nothing to
+ * draw), `layout(width, d)` (with its `height`) and `draw(ctx, width, d)`;
+ * the other members (caption, describe, interact, …) are the spec's own.
+ */
+export function layoutSpec({ data, layout, draw, ...rest }) {
+  return {
+    ...rest,
+    height(width, solution) {
+      const d = data(solution);
+      return d ? layout(width, d).height : 120;
+    },
+    draw(ctx, width, height, solution) {
+      const d = data(solution);
+      if (d) draw(ctx, width, d);
+    },
+  };
+}
+
+const ARROW_STEPS = Object.freeze({ ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] });
+
+/** The step `[dc, dr]` of an arrow key (rows count downward), or null for any other key. */
+export function arrowStep(key) {
+  return Object.hasOwn(ARROW_STEPS, key) ? ARROW_STEPS[key] : null;
+}
+
+// ---------------------------------------------------------------------------
 // Grids of numbers: shaded cells with their values (filters, resampling, matching)
 
 /** Layout of grids of numbers (CSS px): the filter and resampling figures. */

@@ -9,7 +9,7 @@
 // keys move the selection.
 
 import { isMatrix, stepValue } from "../values.js";
-import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, GRID, LINE_HEIGHT, PLAIN_SHADE, cellAt, drawGrid, fmt, greyLegend, outline, shader, signedLegend, signedMatrix, text, textBlock, textWidth, wrapWords } from "./draw.js";
+import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, GRID, LINE_HEIGHT, PLAIN_SHADE, arrowStep, cellAt, drawGrid, fmt, greyLegend, layoutSpec, outline, shader, signedLegend, signedMatrix, text, textBlock, textWidth, wrapWords } from "./draw.js";
 
 // ---------------------------------------------------------------------------
 // What the figures read from a solution
@@ -276,9 +276,9 @@ function selectionInteract(dataOf) {
     key(key, solution) {
       const d = dataOf(solution);
       if (!d) return null;
-      const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
-      if (!Object.hasOwn(moves, key)) return null;
-      const [dc, dr] = moves[key];
+      const step = arrowStep(key);
+      if (!step) return null;
+      const [dc, dr] = step;
       const c = Math.min(Math.max(d.sel.c + dc, 1), d.window[0].length);
       const r = Math.min(Math.max(d.sel.r + dr, 1), d.window.length);
       return c === d.sel.c && r === d.sel.r ? null : { select_c: String(c), select_r: String(r) };
@@ -286,44 +286,34 @@ function selectionInteract(dataOf) {
   };
 }
 
-const filterSpec = {
+const filterSpec = layoutSpec({
   caption:
     "The window with the kernel laid over the selected pixel (orange frame, the kernel's weights in the corners of its cells), the kernel, and the output grid (shaded on a diverging scale, blue below 0 and orange above, when it has negative values; otherwise in grey, dark = low as in an image, with its legend). Below: the selected pixel's multiply-and-sum, one line per kernel row.",
-  height(width, solution) {
-    const d = filterData(solution);
-    return d ? layout(width, d).height : 120;
-  },
+  data: filterData,
+  layout,
+  draw: drawFigure,
   describe(solution) {
     const d = filterData(solution);
     if (!d) return "The window and its filtered output.";
     const k = d.median ? "the 3×3 median" : `a ${d.kernels[0]?.m.length}×${d.kernels[0]?.m[0].length} kernel`;
     return `A ${d.window.length}×${d.window[0].length} window filtered with ${k}; output ${d.output.length}×${d.output[0].length}. Selected pixel row ${d.sel.r}, column ${d.sel.c}: output ${fmt(d.selected, 6)}.`;
   },
-  draw(ctx, width, height, solution) {
-    const d = filterData(solution);
-    if (d) drawFigure(ctx, width, d);
-  },
   interact: selectionInteract(filterData),
-};
+});
 
-const edgeSpec = {
+const edgeSpec = layoutSpec({
   caption:
     "The window with the 3×3 neighbourhood of the selected pixel framed in orange, the two kernels, then Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude (grey, dark = low as in an image, with its legend). Below: the selected pixel's sums, one line per kernel row, and its magnitude.",
-  height(width, solution) {
-    const d = edgeData(solution);
-    return d ? layout(width, d).height : 120;
-  },
+  data: edgeData,
+  layout,
+  draw: drawFigure,
   describe(solution) {
     const d = edgeData(solution);
     if (!d) return "The window and its edge responses.";
     return `A ${d.window.length}×${d.window[0].length} window with its edge responses Gx, Gy and magnitude. Selected pixel row ${d.sel.r}, column ${d.sel.c}: Gx = ${fmt(d.kernels[0]?.value)}, Gy = ${fmt(d.kernels[1]?.value)}, magnitude ${fmt(d.magnitude, 6)}.`;
   },
-  draw(ctx, width, height, solution) {
-    const d = edgeData(solution);
-    if (d) drawFigure(ctx, width, d);
-  },
   interact: selectionInteract(edgeData),
-};
+});
 
 // Preset buttons: the seeds' windows with their kernels (the help texts list them too).
 const grid = (rows) => rows.map((r) => r.join(" ")).join("\n");

@@ -7,7 +7,7 @@
 //     and N as above.
 
 import { isMatrix, stepValue } from "../values.js";
-import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, Labels, arrow, dot, finite, fmt, greyLegend, greyScale, greyScaleOf, line, text, textBlock, textWidth } from "./draw.js";
+import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, Labels, arrow, arrowStep, dot, finite, fmt, greyLegend, greyScale, greyScaleOf, line, text, textBlock, textWidth } from "./draw.js";
 
 /** Layout constants (CSS px). */
 const GRID = Object.freeze({ maxCell: 58, minCell: 22, margin: 14, legend: 26, greyLegend: GREY_LEGEND.height + 8 });
@@ -321,7 +321,7 @@ const moravecSpec = {
   key(solution, key, state) {
     const m = moravecPixels(solution, state);
     if (!m.selected) return undefined;
-    const step = { ArrowRight: [1, 0], ArrowLeft: [-1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[key];
+    const step = arrowStep(key);
     if (!step) return undefined;
     const next = { c: m.selected.c + step[0], r: m.selected.r + step[1] };
     return m.all.some((p) => p.c === next.c && p.r === next.r) ? next : { c: m.selected.c, r: m.selected.r };
@@ -595,7 +595,7 @@ imageSpec.interact = {
     return moveWindow(solution, c, r);
   },
   key(key, solution) {
-    const step = { ArrowRight: [1, 0], ArrowLeft: [-1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[key];
+    const step = arrowStep(key);
     if (!step) return null;
     return moveWindow(solution, finite(solution.inputs?.c, 1) + step[0], finite(solution.inputs?.r, 1) + step[1]);
   },

@@ -5,7 +5,7 @@
 //     rows, and the sixteen pixels of the cubic convolution when they exist.
 
 import { isMatrix, stepValue } from "../values.js";
-import { COLORS, FONT_SIZE_SMALL, GRID, LINE_HEIGHT, Labels, dot, drawGrid, fmt, line, outline, text, textBlock, textWidth } from "./draw.js";
+import { COLORS, FONT_SIZE_SMALL, GRID, LINE_HEIGHT, Labels, arrowStep, dot, drawGrid, fmt, layoutSpec, line, outline, text, textBlock, textWidth } from "./draw.js";
 
 const R = Object.freeze({
   maxCell: 84,
@@ -213,22 +213,17 @@ function draw(ctx, width, d) {
   else withLabels(true).draw();
 }
 
-const spec = {
+const spec = layoutSpec({
   caption:
     "The patch at its image columns and rows (grey values above the pixel centres), the position (orange dot), the nearest pixel (blue dashed), the four pixels of the bilinear interpolation with their weights w (line width), I₁ and I₂ on the two rows, and the sixteen pixels of the cubic convolution when the patch holds them (purple dashed, each pixel's weight f(t)·f(s) at the bottom of its cell; some are negative).",
-  height(width, solution) {
-    const d = data(solution);
-    return d ? layout(width, d).height : 120;
-  },
+  data,
+  layout,
+  draw,
   describe(solution) {
     const d = data(solution);
     if (!d) return "The patch and the position.";
     const { res } = d;
     return `A ${d.patch.length}×${d.patch[0].length} patch; position c = ${fmt(d.c, 7)}, r = ${fmt(d.r, 7)}. Nearest pixel (${fmt(res.nearest_c)}, ${fmt(res.nearest_r)}) = ${fmt(res.nearest)}; I1 = ${fmt(res.i1, 6)}, I2 = ${fmt(res.i2, 6)}, bilinear ${fmt(res.bilinear, 6)}; bicubic ${res.bicubic == null ? "not available" : fmt(res.bicubic, 6)}.`;
-  },
-  draw(ctx, width, height, solution) {
-    const d = data(solution);
-    if (d) draw(ctx, width, d);
   },
   interact: {
     hint: "Drag the position over the patch (or click); with the figure focused, the arrow keys move it by 0.05 pixel.",
@@ -245,9 +240,9 @@ const spec = {
     key(key, solution) {
       const d = data(solution);
       if (!d) return null;
-      const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
-      if (!Object.hasOwn(moves, key)) return null;
-      const [dc, dr] = moves[key];
+      const step = arrowStep(key);
+      if (!step) return null;
+      const [dc, dr] = step;
       const cols = d.patch[0].length;
       const rows = d.patch.length;
       const c = Math.min(Math.max(d.c + dc * R.keyStep, d.fc), d.fc + cols - 1);
@@ -255,7 +250,7 @@ const spec = {
       return { c: String(Math.round(c * 100) / 100), r: String(Math.round(r * 100) / 100) };
     },
   },
-};
+});
 
 // Preset buttons: the seed's two patches with their positions (the help text lists them too).
 const grid = (rows) => rows.map((r) => r.join(" ")).join("\n");

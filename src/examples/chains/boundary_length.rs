@@ -13,16 +13,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["length"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "boundaries",
-        explains: &[],
-    }),
-    practice: drill(Drill {
-        generate: gen_edge,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("boundaries", &[])),
+    practice: drill(Drill::new(gen_edge, boxes, Some(chain), mistakes)),
 };
 
 /// Example 18 (a), rebuilt: a 4-connected edge of 24 pixels.

@@ -14,16 +14,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["diameter", "minor_axis_length", "eccentricity"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "boundaries",
-        explains: &[],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("boundaries", &[])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// The default region of `boundary-shape`: a tilted, filled ellipse.

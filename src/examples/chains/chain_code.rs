@@ -15,16 +15,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["code", "differential"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "boundaries",
-        explains: &["code"],
-    }),
-    practice: drill(Drill {
-        generate: gen_edge,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("boundaries", &["code"])),
+    practice: drill(Drill::new(gen_edge, boxes, Some(chain), mistakes)),
 };
 
 /// Example 17's edge, rebuilt from its printed code (the figure is lost).

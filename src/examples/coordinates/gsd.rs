@@ -22,12 +22,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["gsd_cm"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {

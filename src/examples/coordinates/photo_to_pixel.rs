@@ -19,29 +19,16 @@ pub const EXAMPLE: Example = Example {
     answer: &["c", "r"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {
-    let [columns, rows] = frame_fields(1800.0, 1500.0);
-    vec![
-        dpi(600.0),
-        columns,
-        rows,
-        Field::number("x_mm", "Image coordinate x", -12.42)
-            .unit("mm")
-            .range(-MAX_COORD, MAX_COORD)
+    conversion_fields(
+        (1800.0, 1500.0),
+        coordinate("x_mm", "Image coordinate x", -12.42, "mm")
             .help("To the right of the image centre."),
-        Field::number("y_mm", "Image coordinate y", -25.36)
-            .unit("mm")
-            .range(-MAX_COORD, MAX_COORD)
-            .help("Up from the image centre."),
-    ]
+        coordinate("y_mm", "Image coordinate y", -25.36, "mm").help("Up from the image centre."),
+    )
 }
 
 fn solve(inputs: &Record) -> Result<Solution> {
@@ -157,8 +144,7 @@ const OFFSET: Tolerance = Tolerance {
 };
 
 fn generate(rng: &mut Rng) -> Record {
-    let dpi = rng.pick(&DPIS) as f64;
-    let (columns, rows) = sizes(rng);
+    let (scan, dpi, columns, rows) = draw_scan(rng);
     let p = coords::MM_PER_INCH / dpi;
     // x, y in mm with 2 decimals, inside 90 % of the image half-size.
     let coord = |rng: &mut Rng, half_px: f64| {
@@ -168,12 +154,7 @@ fn generate(rng: &mut Rng) -> Record {
     };
     let x = coord(rng, columns / 2.0);
     let y = coord(rng, rows / 2.0);
-    Record::new()
-        .with("dpi", dpi)
-        .with("columns", columns)
-        .with("rows", rows)
-        .with("x_mm", x)
-        .with("y_mm", y)
+    scan.with("x_mm", x).with("y_mm", y)
 }
 
 fn boxes(_: &Record) -> Vec<BoxDef> {
@@ -197,9 +178,7 @@ fn boxes(_: &Record) -> Vec<BoxDef> {
 /// The boxes from the student's earlier answers: each stage of the
 /// solver's arithmetic on the values given so far.
 fn chain(i: &Record, g: &Record) -> Result<Record> {
-    let (c0, r0) = frame(&Inputs(i))?.centre();
-    let c0 = or_given(g, "c0", c0);
-    let r0 = or_given(g, "r0", r0);
+    let (c0, r0) = centre_or_given(i, g)?;
     let p = or_given(g, "pixel_size_mm", coords::pixel_size_mm(n(i, "dpi"))?);
     let dc = or_given(g, "dc_px", n(i, "x_mm") / p);
     let dr = or_given(g, "dr_px", -n(i, "y_mm") / p);

@@ -19,29 +19,17 @@ pub const EXAMPLE: Example = Example {
     answer: &["x_mm", "y_mm"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {
-    let [columns, rows] = frame_fields(1600.0, 1400.0);
-    vec![
-        dpi(600.0),
-        columns,
-        rows,
-        Field::number("c", "Column c of the point", 995.0)
-            .unit("px")
-            .range(-MAX_COORD, MAX_COORD)
+    conversion_fields(
+        (1600.0, 1400.0),
+        coordinate("c", "Column c of the point", 995.0, "px")
             .help("Pixel column, counted to the right from the left edge."),
-        Field::number("r", "Row r of the point", 480.0)
-            .unit("px")
-            .range(-MAX_COORD, MAX_COORD)
+        coordinate("r", "Row r of the point", 480.0, "px")
             .help("Pixel row, counted downward from the top edge."),
-    ]
+    )
 }
 
 fn solve(inputs: &Record) -> Result<Solution> {
@@ -153,20 +141,14 @@ fn offset(rng: &mut Rng, half: f64) -> f64 {
 }
 
 fn generate(rng: &mut Rng) -> Record {
-    let dpi = rng.pick(&DPIS) as f64;
-    let (columns, rows) = sizes(rng);
+    let (scan, _, columns, rows) = draw_scan(rng);
     let c = columns / 2.0 + offset(rng, columns / 2.0);
     let mut r = rows / 2.0 + offset(rng, rows / 2.0);
     // Keep the two offsets apart so each box has one answer.
     if (r - rows / 2.0).abs() == (c - columns / 2.0).abs() {
         r += 1.0;
     }
-    Record::new()
-        .with("dpi", dpi)
-        .with("columns", columns)
-        .with("rows", rows)
-        .with("c", c)
-        .with("r", r)
+    scan.with("c", c).with("r", r)
 }
 
 fn boxes(_: &Record) -> Vec<BoxDef> {
@@ -194,9 +176,7 @@ fn boxes(_: &Record) -> Vec<BoxDef> {
 /// The boxes from the student's earlier answers: each stage of the
 /// solver's arithmetic on the values given so far.
 fn chain(i: &Record, g: &Record) -> Result<Record> {
-    let (c0, r0) = frame(&Inputs(i))?.centre();
-    let c0 = or_given(g, "c0", c0);
-    let r0 = or_given(g, "r0", r0);
+    let (c0, r0) = centre_or_given(i, g)?;
     let x_px = or_given(g, "x_px", n(i, "c") - c0);
     let y_px = or_given(g, "y_px", -(n(i, "r") - r0));
     let p = or_given(g, "pixel_size_mm", coords::pixel_size_mm(n(i, "dpi"))?);

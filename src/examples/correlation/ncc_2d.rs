@@ -17,16 +17,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["rho"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "correlation",
-        explains: &["rho"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("correlation", &["rho"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {

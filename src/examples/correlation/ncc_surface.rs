@@ -23,16 +23,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["best_position", "best_c", "best_r"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "correlation",
-        explains: &[],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("correlation", &[])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {

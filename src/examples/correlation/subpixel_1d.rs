@@ -17,12 +17,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["c_max"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {
@@ -96,13 +91,13 @@ fn solve(inputs: &Record) -> Result<Solution> {
             .value("positions", Value::numbers(&x))
             .value("rho", Value::numbers(&y)),
         );
-        let changed = changed(&fields(), inputs, &["positions", "rho"]);
-        if changed {
-            s.note(
-                NoteKind::Warning,
-                "With ρ taken from Example 5 computed exactly, the positions and ρ fields are not used.",
-            ).about(&["positions", "rho"]);
-        }
+        unused_note(
+            &mut s,
+            &fields(),
+            inputs,
+            &["positions", "rho"],
+            "With ρ taken from Example 5 computed exactly, the positions and ρ fields are not used.",
+        );
         (x, y)
     } else {
         (

@@ -17,16 +17,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["c_max", "r_max"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "correlation",
-        explains: &["subpixel"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("correlation", &["subpixel"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {
@@ -130,14 +122,13 @@ fn solve(inputs: &Record) -> Result<Solution> {
             .value("r", Value::numbers(&r))
             .value("rho", Value::matrix(&to_rows(&rho))),
         );
-        let changed = changed(&fields(), inputs, &["c", "r", "rho"]);
-        if changed {
-            s.note(
-                NoteKind::Warning,
-                "With ρ taken from Example 7 computed exactly, the c, r and ρ fields are not used.",
-            )
-            .about(&["c", "r", "rho"]);
-        }
+        unused_note(
+            &mut s,
+            &fields(),
+            inputs,
+            &["c", "r", "rho"],
+            "With ρ taken from Example 7 computed exactly, the c, r and ρ fields are not used.",
+        );
         (c, r, rho)
     } else {
         let m = i.rows("rho")?;

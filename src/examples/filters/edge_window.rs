@@ -17,26 +17,9 @@ pub const EXAMPLE: Example = Example {
     fields,
     solve,
     answer: &["selected_gx", "selected_gy", "selected_magnitude"],
-    labels: &[
-        ("gx", "Gx: top row minus bottom row", ""),
-        ("gy", "Gy: right column minus left column", ""),
-        ("magnitude", "Edge magnitude √(Gx² + Gy²)", ""),
-        ("selected_gx", "Gx at the selected pixel", ""),
-        ("selected_gy", "Gy at the selected pixel", ""),
-        ("selected_magnitude", "Edge magnitude at the selected pixel", ""),
-        ("output_first_c", "Column of the output's first pixel", ""),
-        ("output_first_r", "Row of the output's first pixel", ""),
-    ],
-    lab: Some(Lab {
-        family: "edges",
-        explains: &["window"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    labels: LABELS,
+    lab: Some(Lab::new("edges", &["window"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 const OPERATORS: &[(&str, &str)] = &[("prewitt", "Prewitt"), ("sobel", "Sobel")];

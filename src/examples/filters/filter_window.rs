@@ -17,24 +17,9 @@ pub const EXAMPLE: Example = Example {
     fields,
     solve,
     answer: &["selected", "output"],
-    labels: &[
-        ("output", "Filtered window", ""),
-        ("selected", "Output at the selected pixel", ""),
-        ("kernel", "Kernel weights", ""),
-        ("kernel_sum", "Sum of the kernel weights", ""),
-        ("output_first_c", "Column of the output's first pixel", ""),
-        ("output_first_r", "Row of the output's first pixel", ""),
-    ],
-    lab: Some(Lab {
-        family: "filters",
-        explains: &["window"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    labels: LABELS,
+    lab: Some(Lab::new("filters", &["window"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 const KERNELS: &[(&str, &str)] = &[

@@ -16,16 +16,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["w", "q", "points"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "interest",
-        explains: &[],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("interest", &[])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// Fixed places of the test pattern, one for each of seed 003's cases

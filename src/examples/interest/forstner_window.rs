@@ -17,16 +17,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["w", "q", "accepted"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "interest",
-        explains: &["forstner"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("interest", &["forstner"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// Example 13's window.

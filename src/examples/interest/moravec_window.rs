@@ -16,16 +16,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["sums", "mean"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "interest",
-        explains: &["moravec"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("interest", &["moravec"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 fn fields() -> Vec<Field> {

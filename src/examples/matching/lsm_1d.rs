@@ -16,12 +16,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["c"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 const EX5_TEMPLATE: [f64; 7] = [1.0, 2.0, 9.0, 9.0, 8.0, 2.0, 1.0];
@@ -49,12 +44,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
     let sw = i.list("search")?;
     let c0 = i.number("c0")?;
     let radiometric = i.flag("radiometric")?;
-    let model = if radiometric {
-        Model::ShiftRadiometric
-    } else {
-        Model::Shift
-    };
-    let set = settings(model, Gradients::SearchWindow, inputs)?;
+    let set = settings(shift_model(radiometric), Gradients::SearchWindow, inputs)?;
     let m = matching::match_1d(&t, &sw, Params::shift(c0 - 1.0, 0.0, 1.0, 0.0), set)
         .map_err(|e| said_of(e, "c0"))?;
     let syms = symbols(&m.estimated, true);
@@ -109,19 +99,15 @@ fn solve(inputs: &Record) -> Result<Solution> {
     s.step(table_step(&m, &syms, -1.0, None));
     status_step(&mut s, &m, &syms, set.max_iterations);
 
-    let first = m.iterations.first();
-    let inc = |k: usize| first.and_then(|it| it.increments.get(k).copied());
-    s.result = Record::new()
-        .with("first_dc", inc(0))
-        .with("first_da", if radiometric { inc(1) } else { None })
-        .with("first_db", if radiometric { inc(2) } else { None })
-        .with("c", m.params.a[2] + 1.0)
-        .with("a", m.params.gain())
-        .with("b", m.params.offset())
-        .with("iterations", m.iterations.len())
-        .with("converged", m.converged())
-        .with("status", m.status.word())
-        .with("sigma0", m.sigma0());
+    let inc = |k: usize| first_increment(&m, k);
+    s.result = with_run(
+        Record::new()
+            .with("first_dc", inc(0))
+            .with("first_da", if radiometric { inc(1) } else { None })
+            .with("first_db", if radiometric { inc(2) } else { None })
+            .with("c", m.params.a[2] + 1.0),
+        &m,
+    );
     s.note(
         NoteKind::Convention,
         "Positions count from 1 as in the course notes; c is the search-window position of the template's centre pixel. dL + V = A·dX with V = A·dX − dL.",
@@ -170,12 +156,7 @@ fn first_iteration_1d(s: &mut Solution, it: &Iteration, t: &[f64], syms: &[Sym])
             Relation::new("A_{i,1}")
                 .sym(format!(r"{gain_note}\frac{{G_s(c_i+1) - G_s(c_i-1)}}{{2}}")),
         )
-        .relation(
-            Relation::new("A")
-                .key("A")
-                .subst(Form::grid_tex("bmatrix", rows, "A"))
-                .result(Form::grid("bmatrix", &it.a, "A")),
-        )
+        .relation(design_matrix(rows, &it.a))
         .value("A", Value::matrix(&it.a))
         .value("bordered", Value::numbers(b)),
     );

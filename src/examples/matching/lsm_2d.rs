@@ -14,16 +14,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["c", "r"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "correlation",
-        explains: &["lsm"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("correlation", &["lsm"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 pub(super) fn ex7_template() -> Vec<Vec<f64>> {
@@ -121,12 +113,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         _ => Gradients::SearchWindow,
     };
     let radiometric = i.flag("radiometric")?;
-    let model = if radiometric {
-        Model::ShiftRadiometric
-    } else {
-        Model::Shift
-    };
-    let set = settings(model, gradients, inputs)?;
+    let set = settings(shift_model(radiometric), gradients, inputs)?;
     let start = Params::shift(c0 - 1.0, r0 - 1.0, a0, b0);
     let m = matching::match_2d(&t, &sw, start, set).map_err(|e| said_of(e, "c0"))?;
     let syms = symbols(&m.estimated, true);
@@ -167,21 +154,17 @@ fn solve(inputs: &Record) -> Result<Solution> {
     }
     s.step(table_step(&m, &syms, -1.0, None));
     status_step(&mut s, &m, &syms, set.max_iterations);
-    let first = m.iterations.first();
-    let inc = |k: usize| first.and_then(|it| it.increments.get(k).copied());
-    s.result = Record::new()
-        .with("first_dc", inc(0))
-        .with("first_dr", inc(1))
-        .with("first_da", inc(2))
-        .with("first_db", inc(3))
-        .with("c", m.params.a[2] + 1.0)
-        .with("r", m.params.a[5] + 1.0)
-        .with("a", m.params.gain())
-        .with("b", m.params.offset())
-        .with("iterations", m.iterations.len())
-        .with("converged", m.converged())
-        .with("status", m.status.word())
-        .with("sigma0", m.sigma0());
+    let inc = |k: usize| first_increment(&m, k);
+    s.result = with_run(
+        Record::new()
+            .with("first_dc", inc(0))
+            .with("first_dr", inc(1))
+            .with("first_da", inc(2))
+            .with("first_db", inc(3))
+            .with("c", m.params.a[2] + 1.0)
+            .with("r", m.params.a[5] + 1.0),
+        &m,
+    );
     s.note(
         NoteKind::Convention,
         "Columns c (to the right) and rows r (downward) count from 1 as in the course notes; (c, r) is the search-window position of the template's centre pixel.",
@@ -270,12 +253,7 @@ fn first_iteration_2d(
             .relation(Relation::new("A_i").sym(format!(
                 r"[{gain}\tfrac{{G_s(c+1,r) - G_s(c-1,r)}}{{2}},\ {gain}\tfrac{{G_s(c,r+1) - G_s(c,r-1)}}{{2}}{tail}]"
             )))
-            .relation(
-                Relation::new("A")
-                    .key("A")
-                    .subst(Form::grid_tex("bmatrix", rows, "A"))
-                    .result(Form::grid("bmatrix", &it.a, "A")),
-            )
+            .relation(design_matrix(rows, &it.a))
             .value("A", Value::matrix(&it.a))
             .value("gc", Value::matrix(&it.gc.rows()))
             .value("gr", Value::matrix(&it.gr.rows()))

@@ -15,16 +15,8 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["parameters", "sigma0"],
     labels: LABELS,
-    lab: Some(Lab {
-        family: "correlation",
-        explains: &["affine-lsm"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    lab: Some(Lab::new("correlation", &["affine-lsm"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// The two kinds of pair this example matches: one generated with a known

@@ -22,12 +22,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["zone", "easting", "northing"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// The seed's default point: Bangkok (13°45′N, 100°30′E), in the zone the
@@ -528,11 +523,7 @@ fn chain(i: &Record, g: &Record) -> Result<Record> {
     let (a, b, p1, q) = krueger::sums(&s.alpha, xip, etap);
     let xi = or_given(g, "xi", xip + a);
     let eta = or_given(g, "eta", etap + b);
-    let false_northing = if lat >= 0.0 {
-        0.0
-    } else {
-        FALSE_NORTHING_SOUTH
-    };
+    let false_northing = false_northing_at(lat);
     let p = 1.0 + p1;
     let gamma = krueger::sphere_convergence(taup, lam) + q.atan2(p);
     let k =
@@ -581,16 +572,14 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
     const RAD: &str = "Degrees and radians mixed: trigonometric functions need Δλ in radians, the box asks for degrees.";
     const FE: &str = "The false easting: E = 500 000 m + x, so that eastings are never negative.";
     const K0_: &str = "k₀ = 0.9996 scales the whole projection: x = k₀·A·η, y = k₀·A·ξ.";
-    let mut out = vec![
-        Mistake::new("zone", "latitude and longitude swapped", SWAP, regular(lat)),
-        Mistake::new(
-            "central_meridian",
-            "6·zone − 180 without the −3",
-            EDGE,
-            6.0 * zone - 180.0,
-        ),
-        Mistake::new("central_meridian", "zone off by one", OFF, cm - 6.0),
-        Mistake::new("central_meridian", "zone off by one", OFF, cm + 6.0),
+    let mut out = vec![Mistake::new(
+        "zone",
+        "latitude and longitude swapped",
+        SWAP,
+        regular(lat),
+    )];
+    out.extend(meridian_mistakes(zone, cm, OFF));
+    out.extend([
         Mistake::new("dlon", "degrees vs radians", RAD, v("dlon").to_radians()),
         Mistake::new(
             "dlon",
@@ -604,7 +593,7 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
             "τ′ is tan of the conformal latitude χ, not tan φ: apply the σ correction.",
             lat.to_radians().tan(),
         ),
-    ];
+    ]);
     if rule != ZoneRule::Regular {
         out.insert(
             0,
@@ -644,11 +633,7 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
     }
     let a = Series::new(&ell).rectifying_radius;
     let (xi, eta) = (v("xi"), v("eta"));
-    let false_northing = if lat >= 0.0 {
-        0.0
-    } else {
-        FALSE_NORTHING_SOUTH
-    };
+    let false_northing = false_northing_at(lat);
     out.extend([
         Mistake::new("easting", "false easting forgotten", FE, K0 * a * eta),
         Mistake::new(

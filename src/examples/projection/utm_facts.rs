@@ -24,12 +24,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["k1_distance_km", "latitude_max", "edge_distortion_ppm"],
     labels: FACT_LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// Longitude extents of the countries the seed names (degrees east), from

@@ -22,12 +22,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["latitude", "longitude"],
     labels: LABELS,
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
 
 /// `hemisphere`: a hemisphere, or a latitude band letter (which names the
@@ -495,10 +490,8 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
     const RAD: &str = "That is the angle in radians; the box asks for degrees (× 180/π).";
     const K0_: &str = "k₀ = 0.9996 scales the whole projection: divide by k₀·A, not by A.";
     const SWAP: &str = "Latitude is north–south, longitude east–west.";
-    let mut out = vec![
-        Mistake::new("central_meridian", "6·zone − 180 without the −3", EDGE, 6.0 * zone - 180.0),
-        Mistake::new("central_meridian", "zone off by one", OFF, v("central_meridian") - 6.0),
-        Mistake::new("central_meridian", "zone off by one", OFF, v("central_meridian") + 6.0),
+    let mut out = meridian_mistakes(zone, v("central_meridian"), OFF).to_vec();
+    out.extend([
         Mistake::new(
             "x",
             "false easting forgotten",
@@ -525,7 +518,7 @@ fn mistakes(i: &Record) -> Result<Vec<Mistake>> {
         Mistake::new("longitude", "latitude and longitude swapped", SWAP, v("latitude")),
         Mistake::new("scale_factor", "k₀ = 0.9996 forgotten", K0_, v("scale_factor") / K0),
         Mistake::new("convergence", "degrees vs radians", RAD, v("convergence").to_radians()),
-    ];
+    ]);
     out.push(if south {
         Mistake::new(
             "y",

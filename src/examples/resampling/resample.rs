@@ -6,7 +6,7 @@
 use super::super::drill::{
     drill, mat, or_given, rows_of, tol, BoxDef, Drill, Mistake, Rng, Tolerance,
 };
-use super::super::fields::{Field, Inputs};
+use super::super::fields::{to_rows, Field, Inputs};
 use super::super::{Example, Lab};
 use crate::error::{Error, Result};
 use crate::raster::Grid;
@@ -26,29 +26,24 @@ pub const EXAMPLE: Example = Example {
     fields,
     solve,
     answer: &["nearest", "bilinear", "bicubic"],
-    labels: &[
-        ("nearest_c", "Nearest pixel: column", "px"),
-        ("nearest_r", "Nearest pixel: row", "px"),
-        ("nearest", "Nearest neighbour value", ""),
-        ("i1", "I₁: along the upper row", ""),
-        ("i2", "I₂: along the lower row", ""),
-        ("bilinear", "Bilinear value I", ""),
-        ("bicubic", "Bicubic value (cubic convolution)", ""),
-        ("bilinear_rounded", "Bilinear value, whole grey value", ""),
-        ("dc", "Column fraction dc", "px"),
-        ("dr", "Row fraction dr", "px"),
-    ],
-    lab: Some(Lab {
-        family: "resampling",
-        explains: &["window"],
-    }),
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(chain),
-        mistakes,
-    }),
+    labels: LABELS,
+    lab: Some(Lab::new("resampling", &["window"])),
+    practice: drill(Drill::new(generate, boxes, Some(chain), mistakes)),
 };
+
+/// What the result keys mean.
+const LABELS: &[(&str, &str, &str)] = &[
+    ("nearest_c", "Nearest pixel: column", "px"),
+    ("nearest_r", "Nearest pixel: row", "px"),
+    ("nearest", "Nearest neighbour value", ""),
+    ("i1", "I₁: along the upper row", ""),
+    ("i2", "I₂: along the lower row", ""),
+    ("bilinear", "Bilinear value I", ""),
+    ("bicubic", "Bicubic value (cubic convolution)", ""),
+    ("bilinear_rounded", "Bilinear value, whole grey value", ""),
+    ("dc", "Column fraction dc", "px"),
+    ("dr", "Row fraction dr", "px"),
+];
 
 /// Example 12a's patch (seed 000): columns 545…548, rows 817…820.
 const EXAMPLE_12A: [[f64; 4]; 4] = [
@@ -369,7 +364,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
     match &bc {
         Some(b) => {
             let (bc0, br0) = (fc + b.c as f64, fr + b.r as f64);
-            let p: Vec<Vec<f64>> = b.p.iter().map(|r| r.to_vec()).collect();
+            let p = to_rows(&b.p);
             let w = |v: &[f64; 4]| Value::numbers(v);
             s.step(
                 Step::new(
@@ -537,10 +532,6 @@ fn lerp_tex(a: f64, t: f64, b: f64) -> String {
 fn vector_tex(xs: &[f64]) -> String {
     let cells: Vec<String> = xs.iter().map(|x| num(*x)).collect();
     format!("[{}]", cells.join(r",\,"))
-}
-
-fn to_rows(m: &[[f64; 4]; 4]) -> Vec<Vec<f64>> {
-    m.iter().map(|r| r.to_vec()).collect()
 }
 
 // ---------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 //! Example 4(a): the similarity transformation from the four fiducials
 //! (pixels to photo millimetres), with the seed's printed values.
 
-use super::fiducials::{max_abs, printed_residual_note, rounding_notes};
+use super::fiducials::{max_abs, rounding_notes, Printed};
 use super::*;
 use crate::examples::drill::{drill, Drill};
 use crate::examples::Lab;
@@ -15,28 +15,29 @@ pub const EXAMPLE: Example = Example {
     solve,
     answer: &["parameters", "sigma0"],
     labels: &[],
-    lab: Some(Lab {
-        family: "fiducials",
-        explains: &["similarity"],
-    }),
-    practice: drill(Drill {
-        generate: fiducials::generate,
-        boxes: |_| fiducials::boxes(&[("a", false), ("b", false), ("c", true), ("d", true)]),
-        chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
-        mistakes: |i| fiducials::mistakes(&EXAMPLE, i, 4),
-    }),
+    lab: Some(Lab::new("fiducials", &["similarity"])),
+    practice: drill(Drill::new(
+        fiducials::generate,
+        |_| fiducials::boxes(PARAMETERS),
+        Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
+        |i| fiducials::mistakes(&EXAMPLE, i, PARAMETERS.len()),
+    )),
 };
 
+/// The parameters in the order of X: `(name, is a shift)`.
+const PARAMETERS: &[(&str, bool)] = &[("a", false), ("b", false), ("c", true), ("d", true)];
+
 fn solve(inputs: &Record) -> Result<Solution> {
-    fiducials::example4(&EXAMPLE, inputs, Model::Similarity, seed_notes)
+    fiducials::example4(&EXAMPLE, inputs, Model::Similarity, &PRINTED)
 }
 
+const PRINTED: Printed = Printed {
+    x: &SIM_PRINTED_X,
+    v: &SIM_PRINTED_V,
+    notes: seed_notes,
+};
+
 fn seed_notes(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
-    s.textbook = Some(
-        Record::new()
-            .with("parameters", Value::numbers(&SIM_PRINTED_X))
-            .with("residuals", Value::numbers(&SIM_PRINTED_V)),
-    );
     // The stated equations with y' = r literally, as the table header says.
     let literal: Vec<PointPair> = cr.to_vec();
     let lit = transform::fit(Model::Similarity, &literal)?;
@@ -66,12 +67,5 @@ fn seed_notes(s: &mut Solution, fit: &Fit, cr: &[PointPair]) -> Result<()> {
             ),
         ).about(&["parameters", "rotation_deg"]);
     }
-    printed_residual_note(s, fit, &SIM_PRINTED_X);
-    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
-    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, &SIM_PRINTED_V);
-    s.note(
-        NoteKind::Convention,
-        "The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − 4 = 4).",
-    ).about(&["sigma0", "std_devs"]);
     Ok(())
 }

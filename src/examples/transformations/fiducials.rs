@@ -14,21 +14,32 @@ pub(super) fn fields() -> Vec<Field> {
         "Fiducials [c, r, x, y]",
         4,
         MAX_POINTS,
-        &rows_of(&FIDUCIALS),
+        &to_rows(&FIDUCIALS),
     )
     .columns(&["c (px)", "r (px)", "x (mm)", "y (mm)"])
     .help("One row per fiducial: measured column c and row r (pixels, r downward), calibrated x and y (mm). The solver uses x′ = c, y′ = −r.")]
 }
 
+/// What the course notes print for Example 4(a) or (b), and the example's
+/// own notes on it.
+pub(super) struct Printed {
+    /// The printed parameters X.
+    pub x: &'static [f64],
+    /// The printed residuals V.
+    pub v: &'static [f64],
+    /// The example's own notes (from the fit and the points as given,
+    /// `[c, r, x, y]`), the rounding of its parameters among them: they
+    /// come before the notes both examples share.
+    pub notes: fn(&mut Solution, &Fit, &[PointPair]) -> Result<()>,
+}
+
 /// Example 4(a) or (b): `model` fitted to the fiducials with the row axis
-/// turned up.
-/// With the seed's fiducials, `seed_notes` adds the example's own notes
-/// (from the fit and the points as given, `[c, r, x, y]`).
+/// turned up; with the seed's fiducials, the notes on what is printed.
 pub(super) fn example4(
     ex: &Example,
     inputs: &Record,
     model: Model,
-    seed_notes: fn(&mut Solution, &Fit, &[PointPair]) -> Result<()>,
+    printed: &Printed,
 ) -> Result<Solution> {
     let rows = Inputs(inputs).rows("points")?;
     let cr = pairs(&rows)?;
@@ -87,9 +98,36 @@ pub(super) fn example4(
     );
     condition_note(&mut s, &fit);
     if is_seed(&fields(), inputs) {
-        seed_notes(&mut s, &fit, &cr)?;
+        printed_notes(&mut s, &fit, &cr, model, printed)?;
     }
     Ok(s)
+}
+
+/// The seed's printed values beside the computed ones: the example's own
+/// notes, then the residuals' (from the rounded parameters and rounded
+/// themselves) and where σ0 comes from.
+fn printed_notes(
+    s: &mut Solution,
+    fit: &Fit,
+    cr: &[PointPair],
+    model: Model,
+    printed: &Printed,
+) -> Result<()> {
+    s.textbook = Some(
+        Record::new()
+            .with("parameters", Value::numbers(printed.x))
+            .with("residuals", Value::numbers(printed.v)),
+    );
+    (printed.notes)(s, fit, cr)?;
+    printed_residual_note(s, fit, printed.x);
+    let vnames: Vec<String> = (1..=8).map(|i| format!("v{i}")).collect();
+    rounding_notes(s, "residuals", &vnames, &fit.adjustment.v, printed.v);
+    let n = model.param_names().len();
+    s.note(
+        NoteKind::Convention,
+        format!("The course notes print neither σ0 nor the parameters' precision; they are computed here from the same adjustment (r = 8 − {n} = {}).", 8 - n),
+    ).about(&["sigma0", "std_devs"]);
+    Ok(())
 }
 
 pub(super) fn max_abs(xs: &[f64]) -> f64 {
@@ -160,7 +198,7 @@ pub(super) fn rounding_notes(
     }
 }
 
-pub(super) fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f64]) {
+fn printed_residual_note(s: &mut Solution, fit: &Fit, printed_x: &[f64]) {
     let v = residuals(&fit.a, &fit.l, printed_x);
     let a = fit.adjustment.x.first().copied().unwrap_or(0.0);
     s.note(

@@ -14,12 +14,7 @@ pub const EXAMPLE: Example = Example {
     answer: &["parameters", "sigma0"],
     labels: &[],
     lab: None,
-    practice: drill(Drill {
-        generate,
-        boxes,
-        chain: Some(|i, g| chain_sigma0(&EXAMPLE, i, g)),
-        mistakes,
-    }),
+    practice: drill(Drill::new(generate, boxes, Some(|i, g| chain_sigma0(&EXAMPLE, i, g)), mistakes)),
 };
 
 const MODELS: &[(&str, &str)] = &[
@@ -127,8 +122,7 @@ fn solve(inputs: &Record) -> Result<Solution> {
         s.result.set("scale", scale);
         s.result.set("rotation_deg", rot);
     }
-    s.result
-        .set("fitted", Value::matrix(&pairs_to_rows(&fit.fitted)));
+    s.result.set("fitted", Value::matrix(&to_rows(&fit.fitted)));
     label_results(&mut s, &model.param_names(), "");
 
     s.note(
