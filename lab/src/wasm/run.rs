@@ -522,7 +522,7 @@ fn numbers_arg(args: &JsValue, key: &str) -> Result<Vec<f64>, JsError> {
 }
 
 fn str_arg(args: &JsValue, key: &str, what: &str) -> Result<String, JsError> {
-    Ok(string_arg(key, what, &field(args, key))?)
+    string_arg(key, what, &field(args, key))
 }
 
 /// An operator by the worker's request name (`filter`, `edges`,
