@@ -7,10 +7,12 @@
 //! - [`sample`]: the generated scanned frame photo with Example 4's fiducials.
 //! - [`ops`]: the lab's operator menu: names and parameters → the core's
 //!   whole-image functions → layers.
+//! - [`paint`]: layers and photos to RGBA (the page's colour scales).
 //! - `wasm`: the thin wasm-bindgen exports; the only file that knows JS.
 
 pub mod decode;
 pub mod ops;
+pub mod paint;
 pub mod sample;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

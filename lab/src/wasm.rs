@@ -245,6 +245,12 @@ pub fn trap_for_tests() {
     core::arch::wasm32::unreachable()
 }
 
+// Layers and photos painted to RGBA in the worker (crate::paint).
+mod paint;
+
+// The pool's bands (www/lab/tiles.js): Förstner's threshold over the whole photo.
+mod bands;
+
 // The operators' exports: run_*, ForstnerMaps, op_halo, exact_at (crate::ops).
 mod run;
 pub use run::*;

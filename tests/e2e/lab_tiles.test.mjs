@@ -1,95 +1,322 @@
-// The lab's engine in Chromium: the worker loads the SIMD128 build (every
-// current browser validates SIMD), and on a cross-origin isolated page
-// (serve.mjs `isolate`) filters and edges run over row tiles on several
-// workers (www/lab/tiles.js) with the single worker's numbers at every
-// pixel; without the isolation headers the lab stays on one worker.
+// The lab's engine in Chromium, on a page without the cross-origin isolation
+// headers (as GitHub Pages and course platforms serve it): the image-wide
+// operators run by bands of rows over a pool of workers (www/lab/tiles.js)
+// with the single worker's numbers at every pixel, layers and photos are
+// painted by the wasm (lab/src/paint.rs through web-sys) with the pixels the
+// page's JavaScript painted before, and a lab visit fetches one of the two
+// wasm builds.
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
+import fs from "node:fs";
 import { startServer } from "../../scripts/serve.mjs";
 import { DIST, launchChromium, TEST_TIMEOUT } from "./harness.mjs";
 
-let isolated, plain, browser;
+let server, browser, context, page;
+const errors = [];
 before(async () => {
-  isolated = await startServer({ dir: DIST, port: 0, isolate: true });
-  plain = await startServer({ dir: DIST, port: 0 });
+  server = await startServer({ dir: DIST, port: 0 });
   browser = await launchChromium();
+  // one page for the whole file
+  context = await browser.newContext({ serviceWorkers: "block" });
+  page = await context.newPage();
+  page.on("pageerror", (e) => errors.push(e.message));
+  await page.goto(`${server.url}index.html`);
 });
 after(async () => {
+  await context?.close().catch(() => {});
   await browser?.close().catch(() => {});
-  await isolated?.close();
-  await plain?.close();
+  await server?.close();
 });
 
-/** Opens the page with a fresh LabClient (`window.client`) holding a random 8-bit image, then `body(arg)` in the page. */
-async function withClient(url, body, arg) {
-  const context = await browser.newContext({ serviceWorkers: "block" });
-  const page = await context.newPage();
-  const errors = [];
-  page.on("pageerror", (e) => errors.push(e.message));
-  await page.goto(`${url}index.html`);
-  await page.evaluate(async () => {
+/**
+ * A LabClient with a pool of `workers` (window.client) holding a random
+ * 8-bit `w × h` image with flat runs, banded however small (minPixels 0).
+ */
+async function client(workers, [w, h]) {
+  await page.evaluate(async ({ workers, w, h }) => {
+    window.client?.close();
     const { LabClient } = await import("./lab/lab.js");
-    const client = new LabClient({ onRestart: async () => {} });
-    const [w, h] = [301, 257];
+    const client = new LabClient({ onRestart: async () => {} }, { workers, minPixels: 0, minRows: 8 });
     const bytes = new Uint8Array(w * h);
     let s = 12345;
     for (let i = 0; i < bytes.length; i++) {
       s = (Math.imul(s, 1103515245) + 12345) >>> 0;
-      // flat runs and noise
-      bytes[i] = i % 7 < 2 ? 90 : s >>> 24;
+      // flat runs (ties for the suppression, zero gradients) and noise; a brighter disc (corners, edges)
+      const [c, r] = [i % w, Math.floor(i / w)];
+      const disc = (c - w / 2) ** 2 + (r - h / 3) ** 2 < (h / 5) ** 2 ? 80 : 0;
+      bytes[i] = Math.min(255, (i % 7 < 2 ? 90 : s >>> 25) + disc);
     }
     await client.call("raw", { width: w, height: h, bytes: bytes.buffer }, [bytes.buffer]);
     window.client = client;
-  });
-  const out = await page.evaluate(body, arg);
-  await page.evaluate(() => window.client.close());
-  await context.close();
-  assert.deepEqual(errors, []);
-  return out;
+  }, { workers, w, h });
 }
 
+const CUSTOM = Array.from({ length: 15 }, (_, j) => Array.from({ length: 13 }, (_, i) => ((i * 7 + j * 3) % 11) - 5).join(" ")).join("\n");
+const BORDERS = ["replicate", "reflect", "zero", "crop"];
+/** Every request the pool runs by bands, with the parameters that change its halo. */
 const REQUESTS = [
-  ...["mean", "gaussian-5", "median", "laplacian-8", "log", "weighted-mean"].flatMap((kernel) =>
-    ["replicate", "reflect", "zero", "crop"].map((border) => ["filter", { kernel, border }])),
-  ...["sobel", "prewitt"].flatMap((operator) => ["replicate", "crop"].map((border) => ["edges", { operator, border }])),
+  ...["mean", "weighted-mean", "gaussian-3", "gaussian-5", "laplacian-4", "laplacian-8", "log", "sharpen", "high-pass", "median"].flatMap((kernel) =>
+    BORDERS.map((border) => ["filter", { kernel, border }])),
+  ...BORDERS.map((border) => ["filter", { kernel: "custom", border, custom: CUSTOM, divisor: 1 }]),
+  ["filter", { kernel: "custom", border: "reflect", custom: Array(9).fill("1 1 1 1 1 1 1 1 1").join("\n"), divisor: 81 }],
+  ...["sobel", "prewitt"].flatMap((operator) => BORDERS.map((border) => ["edges", { operator, border }])),
+  ...[3, 5, 7, 9].map((size) => ["forstner", { size, sigmaN: 8, thresholdPx: 0.9, qMin: 0.5 }]),
+  ["forstner", { size: 5, sigmaN: 8, thresholdPx: 3, qMin: 0 }],
+  ...[3, 4, 8].map((size) => ["moravec", { size, threshold: 300 }]),
 ];
 
-test("cross-origin isolated: tiled filters and edges equal the single worker at every pixel", { timeout: TEST_TIMEOUT * 3 }, async () => {
-  const r = await withClient(isolated.url, async (requests) => {
+/** In the page: each request by bands and on the one main worker (untiled), every layer value and point compared. */
+async function compare(requests) {
+  return page.evaluate(async (requests) => {
     const client = window.client;
-    const report = { isolated: crossOriginIsolated, threads: client.threads, engine: await client.call("engine"), diffs: [] };
+    const out = { diffs: [], steps: [], bands: [], points: 0 };
     for (const [type, args] of requests) {
-      const tiled = await client.call(type, args);
-      const single = await client.call(type, { ...args, untiled: true });
-      const tag = `${type} ${JSON.stringify(args)}`;
-      if (tiled.layers.length !== single.layers.length) report.diffs.push(`${tag}: ${tiled.layers.length} layers`);
-      single.layers.forEach((s, i) => {
-        const t = tiled.layers[i];
-        for (const k of ["name", "width", "height", "c0", "r0", "signed"]) if (t[k] !== s[k]) report.diffs.push(`${tag} ${s.name}.${k}: ${t[k]} vs ${s[k]}`);
-        let bad = 0;
-        for (let j = 0; j < s.data.length; j++) if (!Object.is(t.data[j], s.data[j])) bad++;
-        if (bad || t.data.length !== s.data.length) report.diffs.push(`${tag} ${s.name}: ${bad} pixels differ`);
+      const tag = `${type} ${JSON.stringify(args).slice(0, 70)}`;
+      const steps = [];
+      const bands = await client.call(type, args, [], (p) => steps.push(p.rows));
+      const one = await client.call(type, { ...args, untiled: true });
+      if (!bands.bands) out.diffs.push(`${tag}: did not run by bands`);
+      out.bands.push(bands.bands?.bands ?? 0);
+      out.steps.push(steps.length === (bands.bands?.bands ?? -1) && steps.every((r, i) => i === 0 || r !== steps[i - 1]));
+      if (one.layers.length !== bands.layers.length) out.diffs.push(`${tag}: ${bands.layers.length} layers, not ${one.layers.length}`);
+      one.layers.forEach((l, i) => {
+        const b = bands.layers[i];
+        for (const k of ["name", "width", "height", "c0", "r0", "signed"]) if (l[k] !== b[k]) out.diffs.push(`${tag} ${l.name}.${k}: ${b[k]}, not ${l[k]}`);
+        let n = 0;
+        for (let j = 0; j < l.data.length; j++) if (!Object.is(l.data[j], b.data[j])) n++;
+        if (n || l.data.length !== b.data.length) out.diffs.push(`${tag} ${l.name}: ${n} pixels differ`);
       });
+      if (one.points || bands.points) {
+        const [p, q] = [Array.from(one.points ?? []), Array.from(bands.points ?? [])];
+        if (p.length !== q.length || p.some((v, j) => !Object.is(v, q[j]))) out.diffs.push(`${tag}: points ${q.length / 6}, not the one call's ${p.length / 6} (or differ)`);
+        out.points += p.length / 6;
+      }
     }
-    report.tileWorkers = client.tiles ? client.tiles.workers.length : 0;
-    return report;
-  }, REQUESTS);
-  assert.equal(r.isolated, true, "the isolation headers make the page cross-origin isolated");
-  assert.ok(r.threads >= 2, `several workers (${r.threads})`);
-  assert.equal(r.tileWorkers, r.threads, "the tiles ran on their own workers");
+    out.poolWorkers = client.tiles.workers.filter(Boolean).length;
+    return out;
+  }, requests);
+}
+
+test("without isolation headers, every banded operator over 3 workers equals the one worker at every pixel", { timeout: TEST_TIMEOUT * 4 }, async () => {
+  assert.equal(await page.evaluate(() => crossOriginIsolated), false);
+  await client(3, [301, 257]);
+  const r = await compare(REQUESTS);
   assert.deepEqual(r.diffs, []);
-  assert.deepEqual(r.engine, { build: "simd128", simd: true });
+  // several bands a worker (minRows 8, at least 2·halo + … rows each), progress after each band
+  assert.ok(r.bands.every((n) => n >= 3), `bands: ${r.bands}`);
+  assert.ok(r.steps.every(Boolean), "a progress message after each band, rows growing");
+  assert.equal(r.poolWorkers, 3);
+  assert.ok(r.points > 20, `${r.points} interest points compared`);
+  assert.deepEqual(errors, []);
 });
 
-test("without the isolation headers the lab stays on one worker", { timeout: TEST_TIMEOUT }, async () => {
-  const r = await withClient(plain.url, async () => {
+test("Förstner's kept map by bands: its layers, the photo's own threshold and the points of every threshold equal the one worker's", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  await client(3, [301, 257]);
+  const r = await page.evaluate(async () => {
     const client = window.client;
-    const layers = (await client.call("filter", { kernel: "mean", border: "replicate" })).layers;
-    return { isolated: crossOriginIsolated, threads: client.threads, tiles: client.tiles === null, height: layers[0].height };
+    const out = { diffs: [], points: [] };
+    for (const [size, sigmaN, qMin] of [[5, 8, 0.5], [7, 3, 0], [3, 8, 0.7]]) {
+      const tag = `size ${size}, σn ${sigmaN}, q ${qMin}`;
+      const bands = await client.call("forstnerMaps", { size, sigmaN });
+      if (!bands.bands) out.diffs.push(`${tag}: did not run by bands`);
+      // thresholds below and above the first (the kept suppression serves T up to twice it, then is redone)
+      const ts = [bands.auto?.thresholdPx ?? 0.5, 0.3, 0.9, 2.5, 0.05];
+      const banded = [];
+      for (const t of ts) banded.push(await client.call("forstnerPoints", { sigmaN, thresholdPx: t, qMin }));
+      const one = await client.call("forstnerMaps", { size, sigmaN, untiled: true });
+      if (JSON.stringify(one.auto) !== JSON.stringify(bands.auto)) out.diffs.push(`${tag}: threshold ${JSON.stringify(bands.auto)}, not ${JSON.stringify(one.auto)}`);
+      one.layers.forEach((l, i) => {
+        const b = bands.layers[i];
+        for (const k of ["name", "width", "height", "c0", "r0", "signed"]) if (l[k] !== b[k]) out.diffs.push(`${tag} ${l.name}.${k}`);
+        let n = 0;
+        for (let j = 0; j < l.data.length; j++) if (!Object.is(l.data[j], b.data[j])) n++;
+        if (n) out.diffs.push(`${tag} ${l.name}: ${n} pixels differ`);
+      });
+      for (const [i, t] of ts.entries()) {
+        const p = await client.call("forstnerPoints", { sigmaN, thresholdPx: t, qMin, untiled: true });
+        const [a, b] = [Array.from(p.points), Array.from(banded[i].points)];
+        if (a.length !== b.length || a.some((v, j) => !Object.is(v, b[j]))) out.diffs.push(`${tag}, T ${t}: ${b.length / 6} points, not ${a.length / 6} (or differ)`);
+        out.points.push(a.length / 6);
+      }
+    }
+    return out;
   });
-  assert.equal(r.isolated, false);
-  assert.equal(r.threads, 1);
-  assert.equal(r.tiles, true, "no tiles");
-  assert.equal(r.height, 257);
+  assert.deepEqual(r.diffs, []);
+  assert.ok(r.points.some((n) => n > 10) && r.points.some((n) => n < r.points[0]), `points: ${r.points}`);
+  assert.deepEqual(errors, []);
+});
+
+test("resampling by bands of output rows equals the one worker at every pixel", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  await client(2, [301, 257]);
+  const r = await page.evaluate(async () => {
+    const client = window.client;
+    const diffs = [];
+    const requests = [
+      { kind: "rotate", params: [7, 1.15], width: 301, height: 257 },
+      { kind: "rotate", params: [-33, 0.6], width: 180, height: 333 },
+      { kind: "projective", params: [20, 10, 280, 30, 290, 240, 5, 220], width: 200, height: 150 },
+    ];
+    let bandsRun = 0;
+    for (const args of requests) {
+      const bands = await client.call("resample", args);
+      const one = await client.call("resample", { ...args, untiled: true });
+      bandsRun += bands.bands?.bands ?? 0;
+      one.layers.forEach((l, i) => {
+        const b = bands.layers[i];
+        for (const k of ["name", "width", "height", "c0", "r0"]) if (l[k] !== b[k]) diffs.push(`${args.kind} ${l.name}.${k}: ${b[k]}, not ${l[k]}`);
+        let n = 0;
+        for (let j = 0; j < l.data.length; j++) if (!Object.is(l.data[j], b.data[j])) n++;
+        if (n) diffs.push(`${args.kind} ${JSON.stringify(args.params)} ${l.name}: ${n} pixels differ`);
+      });
+    }
+    return { diffs, bandsRun };
+  });
+  assert.deepEqual(r.diffs, []);
+  assert.ok(r.bandsRun >= 6, `${r.bandsRun} bands`);
+  assert.deepEqual(errors, []);
+});
+
+test("bands equal the one worker on a tall thin and a wide flat image (bands of a few rows, halos over several bands)", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const some = REQUESTS.filter(([type, a]) => (type === "filter" && ["custom", "median", "log"].includes(a.kernel) && a.border !== "zero") || type === "forstner" || (type === "moravec" && a.size === 8));
+  for (const size of [[23, 400], [517, 40]]) {
+    await client(2, size);
+    const r = await compare(some);
+    assert.deepEqual(r.diffs, [], `${size.join(" × ")}`);
+  }
+  assert.deepEqual(errors, []);
+});
+
+test("a cancel stops the bands, not the main worker: the photo stays, and the next run is whole", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  await client(2, [640, 600]);
+  const r = await page.evaluate(async (custom) => {
+    const client = window.client;
+    const args = { kernel: "custom", border: "reflect", custom, divisor: 1 };
+    let cancelled = null;
+    const running = client.call("filter", args, [], () => {
+      // at the first band done: the others are still to come
+      if (!cancelled) cancelled = client.cancel() ?? true;
+    }).then(() => "finished", (e) => (e.cancelled ? "cancelled" : e.message));
+    const outcome = await running;
+    const after = await client.call("filter", args);
+    const one = await client.call("filter", { ...args, untiled: true });
+    let differ = 0;
+    for (let j = 0; j < one.layers[0].data.length; j++) if (!Object.is(one.layers[0].data[j], after.layers[0].data[j])) differ++;
+    return { outcome, sent: client.sent, differ, height: after.layers[0].height, busy: client.busy };
+  }, CUSTOM);
+  assert.equal(r.outcome, "cancelled");
+  assert.equal(r.sent.raw, 1, "the photo never had to be sent again");
+  assert.equal(r.differ, 0);
+  assert.equal(r.height, 600);
+  assert.equal(r.busy, false);
+  assert.deepEqual(errors, []);
+});
+
+test("layers and photos are painted by the wasm (web-sys ImageData) with the pixels of the page's old JavaScript painting", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const toml = fs.readFileSync(new URL("../../lab/Cargo.toml", import.meta.url), "utf8");
+  assert.match(toml, /^web-sys = \{ version = "0\.3", features = \["ImageData"\] \}$/m);
+  await client(2, [64, 48]);
+  // layers as the operators give them: grey (0 … 255, halves, a flat one), signed with NaN and ±∞, f32, and two of over a megapixel (painted part by part)
+  const specs = [
+    { w: 97, h: 61, signed: false, kind: "grey", type: "Float64Array" },
+    { w: 50, h: 40, signed: false, kind: "halves", type: "Float64Array" },
+    { w: 33, h: 17, signed: false, kind: "flat", type: "Float64Array" },
+    { w: 89, h: 73, signed: true, kind: "signed", type: "Float64Array" },
+    { w: 64, h: 64, signed: true, kind: "signed", type: "Float32Array" },
+    { w: 71, h: 3, signed: true, kind: "nan", type: "Float64Array" },
+    { w: 71, h: 5, signed: false, kind: "nan", type: "Float32Array" },
+    { w: 1201, h: 1003, signed: false, kind: "grey", type: "Float32Array" },
+    { w: 1100, h: 1000, signed: true, kind: "signed", type: "Float64Array" },
+  ];
+  const r = await page.evaluate(async (specs) => {
+    const { SIGNED_NEGATIVE, SIGNED_POSITIVE } = await import("./colour-scales.js");
+    // the page's painting before the wasm (view.js's scaleOf and paint): the reference
+    const reference = (data, signed) => {
+      let [lo, hi] = [Infinity, -Infinity];
+      for (const v of data) if (Number.isFinite(v)) [lo, hi] = [Math.min(lo, v), Math.max(hi, v)];
+      if (!(lo <= hi)) [lo, hi] = [0, 0];
+      const m = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
+      const s = signed ? { lo: -m, hi: m, min: lo, max: hi } : { lo, hi: hi > lo ? hi : lo + 1, min: lo, max: hi };
+      const out = new Uint8ClampedArray(data.length * 4);
+      for (let i = 0; i < data.length; i++) {
+        const v = data[i];
+        if (!Number.isFinite(v)) continue;
+        let rgb;
+        if (signed) {
+          const u = Math.max(-1, Math.min(1, v / s.hi));
+          const end = u < 0 ? SIGNED_NEGATIVE : SIGNED_POSITIVE;
+          rgb = end.map((e) => Math.round(255 - Math.abs(u) * (255 - e)));
+        } else {
+          const g = Math.round(((v - s.lo) / (s.hi - s.lo)) * 255);
+          rgb = [g, g, g];
+        }
+        out.set([...rgb, 255], i * 4);
+      }
+      return { scale: s, rgba: out };
+    };
+    let seed = 99;
+    const rnd = () => ((seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32);
+    const layers = specs.map(({ w, h, signed, kind, type }) => {
+      const data = new globalThis[type](w * h);
+      for (let i = 0; i < data.length; i++) {
+        const x = rnd();
+        data[i] = kind === "flat" ? 7 : kind === "halves" ? (i % 3) * 0.5 : kind === "nan" && x < 0.3 ? [NaN, Infinity, -Infinity][i % 3] : signed ? (x - 0.4) * 1e3 : x * 255 + 3;
+      }
+      return { data, width: w, height: h, signed };
+    });
+    // all at once: several paintings interleave in each worker (each one's pixels must be its own)
+    const paintings = await Promise.all(layers.map((l) => window.client.paint(l)));
+    const report = [];
+    for (const [i, { w, h, signed, kind, type }] of specs.entries()) {
+      const { data } = layers[i];
+      const p = paintings[i];
+      const ctx = new OffscreenCanvas(w, h).getContext("2d");
+      ctx.drawImage(p.bitmap, 0, 0);
+      const got = ctx.getImageData(0, 0, w, h).data;
+      const want = reference(data, signed);
+      let bad = 0;
+      let first = null;
+      for (let j = 0; j < got.length; j++) {
+        if (got[j] !== want.rgba[j]) {
+          bad++;
+          first ??= `pixel ${j >> 2} (${data[j >> 2]}): ${got.slice(j & ~3, (j & ~3) + 4)}, not ${want.rgba.slice(j & ~3, (j & ~3) + 4)}`;
+        }
+      }
+      report.push({ tag: `${kind} ${type} ${w} × ${h}`, size: [p.bitmap.width, p.bitmap.height], scale: p.scale, want: { ...want.scale, signed }, bad, first });
+    }
+    return report;
+  }, specs);
+  for (const [i, x] of r.entries()) {
+    assert.deepEqual(x.size, [specs[i].w, specs[i].h], x.tag);
+    assert.deepEqual(x.scale, x.want, `${x.tag}: the scale`);
+    assert.equal(x.bad, 0, `${x.tag}: ${x.bad} bytes differ (${x.first})`);
+  }
+  // the ends of the signed scale are colour-scales.js's, white at 0
+  const ends = await page.evaluate(async () => {
+    const p = await window.client.paint({ data: Float64Array.from([-2, 0, 2]), width: 3, height: 1, signed: true });
+    const ctx = new OffscreenCanvas(3, 1).getContext("2d");
+    ctx.drawImage(p.bitmap, 0, 0);
+    const { SIGNED_NEGATIVE, SIGNED_POSITIVE } = await import("./colour-scales.js");
+    return { got: Array.from(ctx.getImageData(0, 0, 3, 1).data), want: [...SIGNED_NEGATIVE, 255, 255, 255, 255, 255, ...SIGNED_POSITIVE, 255] };
+  });
+  assert.deepEqual(ends.got, ends.want);
+  assert.deepEqual(errors, []);
+});
+
+test("a lab visit fetches one lab wasm (the SIMD build), the pool's workers from the browser's cache", { timeout: TEST_TIMEOUT }, async () => {
+  const ctx = await browser.newContext({ serviceWorkers: "block" });
+  const p = await ctx.newPage();
+  const fetched = [];
+  p.on("request", (req) => fetched.push(new URL(req.url()).pathname));
+  await p.goto(`${server.url}index.html#/lab`);
+  await p.waitForFunction(() => /threads?\.$/.test(document.getElementById("lab-engine")?.textContent ?? ""), null, { timeout: 30_000 });
+  const cores = await p.evaluate(() => navigator.hardwareConcurrency);
+  const engine = await p.textContent("#lab-engine");
+  const assets = JSON.parse(fs.readFileSync(`${DIST}/assets.json`, "utf8"));
+  const simd = `/${assets["lab/pkg-simd/photogrammetry_lab_bg.wasm"]}`;
+  const scalar = `/${assets["lab/pkg/photogrammetry_lab_bg.wasm"]}`;
+  await ctx.close();
+  assert.equal(engine, `Engine: fast (SIMD), ${Math.min(8, cores)} thread${Math.min(8, cores) > 1 ? "s" : ""}.`);
+  assert.ok(fetched.includes(simd), "the SIMD build is fetched");
+  assert.ok(!fetched.includes(scalar), "the scalar build is not fetched");
 });

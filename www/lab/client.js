@@ -1,23 +1,34 @@
-// The page's side of the lab worker: requests as promises, cancel, and
-// recovery. The worker is replaced (a fresh wasm instance) when its wasm
-// traps, when it dies, or when a long request is cancelled; `restore()`
-// (given by the lab) then puts the student's image back into the new one.
-// Cross-origin isolated pages split filters and edges over several workers
-// by row tiles (tiles.js); `threads` says how many run (1: single-threaded).
+// The page's side of the lab's workers: requests as promises, cancel, and
+// recovery. The main worker holds the photo and answers every request; the
+// image-wide operators run by bands of rows on a pool of workers instead
+// (tiles.js: up to navigator.hardwareConcurrency, at most 8, on any host),
+// which also paints the layers (`paint`). `threads` says how many the pool
+// has. The main worker is replaced (a fresh wasm instance) when its wasm
+// traps, when it dies, or when a long request of its own is cancelled;
+// `restore()` (given by the lab) then puts the student's image back into
+// the new one. A cancel of banded work stops only the pool's bands.
 
 import { Tiles } from "./tiles.js";
+
+/** Requests that open the photo (slot "a"): the pool's bands are cut from its bytes. */
+const OPENS = new Set(["load", "frame", "raw"]);
+/** Requests a cancel lets finish on the main worker (short, and not the computation being cancelled). */
+const QUICK = new Set(["preview", "size", "engine", "memory"]);
 
 export class LabClient {
   /**
    * @param {{ onRestart: (why: string) => Promise<void> }} hooks
+   * @param {{ workers?: number, minPixels?: number, minRows?: number }} pool
+   *   the pool's size (default: the cores, at most 8) and when bands apply (tiles.js)
    */
-  constructor(hooks) {
+  constructor(hooks, pool = {}) {
     this.hooks = hooks;
     this.nextId = 1;
     this.pending = new Map();
-    this.tiles = Tiles.available() ? new Tiles(Math.min(4, navigator.hardwareConcurrency)) : null;
-    this.threads = this.tiles ? this.tiles.n : 1;
+    this.tiles = new Tiles(pool.workers ?? (navigator.hardwareConcurrency || 1), pool, (type, args) => this.call(type, args));
+    this.threads = this.tiles.n;
     this.sent = {};
+    this.tiling = 0;
     this.start();
   }
 
@@ -30,13 +41,9 @@ export class LabClient {
     };
   }
 
-  answer({ id, ok, result, error, trapped, progress, rows, of }) {
+  answer({ id, ok, result, error, trapped }) {
     const p = this.pending.get(id);
-    if (!p) return;
-    if (ok === undefined && progress !== undefined) {
-      p.onProgress?.({ progress, rows, of });
-      return;
-    }
+    if (!p || ok === undefined) return;
     this.pending.delete(id);
     if (ok) {
       p.resolve(result);
@@ -50,21 +57,35 @@ export class LabClient {
 
   /**
    * Sends a request; resolves with its result, rejects with an Error naming
-   * the field. `onProgress({ progress, rows, of })`: the rows done so far,
-   * where the worker can say (filters and edges on an 8-bit image).
+   * the field. `onProgress({ progress, rows, of })`: the bands done so far,
+   * where the request runs by bands (tiles.js).
    */
   call(type, args = {}, transfer = [], onProgress = null) {
-    if (this.tiles?.handles(type, args)) {
-      this.tiling = (this.tiling || 0) + 1;
-      return this.tiles.run(this, type, args).finally(() => this.tiling--);
-    }
-    const id = this.nextId++;
-    // requests sent, by type (the live slider's tests count them)
+    // requests asked for, by type (the live slider's tests count them)
     this.sent[type] = (this.sent[type] ?? 0) + 1;
-    return new Promise((resolve, reject) => {
-      this.pending.set(id, { resolve, reject, type, onProgress });
-      this.worker.postMessage({ id, type, ...args, ...(onProgress ? { progress: true } : {}) }, transfer);
+    if (this.tiles.handles(type, args)) {
+      this.tiling++;
+      return this.tiles.run(type, args, onProgress).finally(() => this.tiling--);
+    }
+    const opens = OPENS.has(type) && (args.slot ?? "a") === "a";
+    if (opens) this.tiles.setImage(null);
+    // a map the main worker keeps: its points are the main worker's too
+    if (type === "forstnerMaps") this.tiles.kept = null;
+    const id = this.nextId++;
+    const p = new Promise((resolve, reject) => {
+      this.pending.set(id, { resolve, reject, type });
+      this.worker.postMessage({ id, type, ...args }, transfer);
     });
+    if (!opens) return p;
+    return p.then((r) => {
+      this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes });
+      return r;
+    });
+  }
+
+  /** `layer` painted in a pool worker: { bitmap: ImageBitmap, scale }. */
+  paint(layer) {
+    return this.tiles.paint(layer);
   }
 
   /** Whether a request is running. */
@@ -72,13 +93,13 @@ export class LabClient {
     return this.pending.size > 0 || this.tiling > 0;
   }
 
-  /** Stops whatever runs: the worker is replaced and the image restored. */
+  /** Stops whatever runs: the pool's bands; the main worker (replaced, the image restored) when it runs a long request. */
   cancel() {
-    this.replace("cancelled");
+    this.tiles.cancel();
+    if ([...this.pending.values()].some((p) => !QUICK.has(p.type))) this.replace("cancelled");
   }
 
   replace(why) {
-    this.tiles?.reset();
     this.worker.terminate();
     const err = new Error(why === "cancelled" ? "Cancelled." : why);
     err.cancelled = why === "cancelled";
@@ -95,7 +116,7 @@ export class LabClient {
   }
 
   close() {
-    this.tiles?.reset();
+    this.tiles.reset();
     this.worker.terminate();
     this.pending.clear();
   }

@@ -14,7 +14,7 @@ import { useCatalog } from "./explain.js";
 // reached through the lab module (the build bundles them into it)
 export { LabClient } from "./client.js";
 export * as explain from "./explain.js";
-import { Viewer, fmt } from "./view.js";
+import { Viewer, fmt, paintOf, setPainter } from "./view.js";
 import { testHook, testing } from "../test-hooks.js";
 import filters from "./families/filters.js";
 import edges from "./families/edges.js";
@@ -55,10 +55,10 @@ export function startSample(family) {
   return family === "correlation" ? "aero1.jpg" : family === "fiducials" ? "frame" : "left01.jpg";
 }
 
-/** The engine line's words: "fast (SIMD), 1 thread" (the build and the workers filters and edges run on). */
+/** The engine line's words: "fast (SIMD), 2 threads" (the build, and the workers the image-wide operators run on by bands). */
 export function engineWords(build, threads) {
   const speed = build === "simd128" ? "fast (SIMD)" : "standard (no SIMD)";
-  return threads > 1 ? `${speed}, ${threads} threads for filters and edges` : `${speed}, 1 thread`;
+  return threads > 1 ? `${speed}, ${threads} threads` : `${speed}, 1 thread`;
 }
 
 /** Families whose clicked pixel is part of the state (it is explained; the others' clicks are points of a construction). */
@@ -151,6 +151,9 @@ export async function keptPhoto() {
 
 /** Sample bytes fetched once per page (the lab opened again after Back decodes them again, without a request). */
 const sampleBytes = new Map();
+
+/** Layers of at most this many pixels are all painted when a result arrives (larger ones when shown). */
+const PREPAINT = 1 << 22;
 
 /** A request slower than this shows progress and a Cancel button. */
 const SLOW_MS = 150;
@@ -284,6 +287,8 @@ class Lab {
     this.layers = [];
     this.points = [];
     this.client = new LabClient({ onRestart: (why) => this.restart(why) });
+    // layers and photos are painted by the worker pool (wasm), and the lab is busy until they are on screen
+    setPainter((layer) => this.busyWhile(this.client.paint(layer)));
     this.build();
     this.showEngine();
     this.onPaste = (ev) => {
@@ -631,14 +636,30 @@ class Lab {
     } finally {
       clearTimeout(timer);
       if (this.client.restarting) await this.client.restarting;
-      this.active--;
-      if (this.active === 0) {
-        for (const w of (this.idleWaiters ?? []).splice(0)) w();
-        this.cancelledByUser = false;
-        this.progress.hidden = true;
-        this.progress.replaceChildren();
-        testHook("lab", "idle");
-      }
+      this.ended();
+    }
+  }
+
+  /** `promise`, with the lab busy until it settles (the tests' idle waits for it). */
+  async busyWhile(promise) {
+    this.active = (this.active ?? 0) + 1;
+    testHook("lab", "busy");
+    try {
+      return await promise;
+    } finally {
+      this.ended();
+    }
+  }
+
+  /** A request or a painting has ended: idle when it was the last. */
+  ended() {
+    this.active--;
+    if (this.active === 0) {
+      for (const w of (this.idleWaiters ?? []).splice(0)) w();
+      this.cancelledByUser = false;
+      this.progress.hidden = true;
+      this.progress.replaceChildren();
+      testHook("lab", "idle");
     }
   }
 
@@ -802,19 +823,22 @@ class Lab {
     this.viewer?.setMark(null);
   }
 
-  /** Shows result layers (the first, or the one named `show`). */
+  /** Shows result layers (the first, or the one named `show`); all of them painted now (the pool), so that another is shown at once. */
   setLayers(layers, show = 0) {
     this.layers = layers;
+    for (const l of layers) if (l.width * l.height <= PREPAINT) paintOf(l);
     if (layers.length) this.ran = true;
     this.layerSelect.replaceChildren(...layers.map((l, i) => el("option", { value: String(i) }, l.name)));
     this.layerBar.hidden = layers.length === 0;
     if (layers.length) this.showLayer(show);
   }
 
-  showLayer(i) {
+  async showLayer(i) {
     this.layerSelect.value = String(i);
     const layer = this.layers[i];
-    const scale = this.viewer.setLayer(layer);
+    const scale = await this.viewer.setLayer(layer);
+    // a newer layer (or result) was shown meanwhile
+    if (this.layers[Number(this.layerSelect.value)] !== layer) return;
     this.legend.replaceChildren();
     if (!scale) {
       this.legend.hidden = true;

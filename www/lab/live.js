@@ -1,22 +1,33 @@
-// Live parameters (a slider being dragged): the newest value wins.
+// Live parameters (a slider being dragged): the newest value wins, and a
+// preview comes first.
 //
-// The worker runs one wasm call at a time and cannot be interrupted from
-// inside, so a computation that is no longer wanted is stopped by
-// terminating the worker (LabClient.cancel): a fresh one starts at once and
-// gets the photo back (the lab keeps its bytes), and the new request goes
-// right behind that. This was chosen over cutting the work into row bands
-// with a cancel check between them: it needs no change in any operator,
-// stops a run at once instead of at the end of a band. Its price is the
-// restart: a new wasm instance and the photo copied back before the new run
-// starts (2 s for a 2048² photo measured on the shared 2-core machine at a
-// load of 30, where the runs it cancels took 10–60 s; the e2e test prints
-// it). Cheap requests (a new threshold on a kept Förstner map) are
+// A new value first paints a preview (worker.js `preview`, on the main
+// worker while the pool computes the whole image): the operator on the
+// part of the photo in view, with its halo, when that part is small, else
+// on the whole photo reduced (area average); drawn over the photo until the
+// whole result arrives. Only on photos big enough for the whole result to
+// take longer than a frame or so (PREVIEW_FROM).
+//
+// A running computation that is no longer wanted is stopped: by bands on
+// the pool (tiles.js), no band starts after the cancel and the running ones
+// are stopped, and the photo stays in the main worker; a request of the main
+// worker itself cannot be interrupted from inside, so the worker is
+// terminated (LabClient.cancel): a fresh one starts at once and gets the
+// photo back (the lab keeps its bytes), and the new request goes right
+// behind that. Cheap requests (a new threshold on a kept Förstner map) are
 // not cancelled but coalesced: while one runs, only the newest waiting one
 // is kept. A result older than the one on screen is never drawn.
 //
 //   live.request({ type, args, label, cancel, apply })
 
 import { testHook } from "../test-hooks.js";
+
+/** Photos with fewer pixels get no preview (their whole result comes about as soon). */
+export const PREVIEW_FROM = 1 << 20;
+/** A preview has at most this many pixels (a part in view, or the photo reduced). */
+const PREVIEW_PIXELS = 1 << 18;
+/** The requests that have a preview (worker.js OPS). */
+const PREVIEWS = new Set(["filter", "edges", "forstner", "forstnerMaps", "moravec"]);
 
 export class Live {
   constructor(lab, name) {
@@ -40,7 +51,7 @@ export class Live {
    * waits for it, replacing any older waiting one).
    */
   request({ type, args, label, cancel = false, apply }) {
-    const req = { type, args, label, apply, gen: ++this.gen };
+    const req = { type, args, label, apply, gen: ++this.gen, t0: performance.now() };
     if (this.running) {
       if (!cancel) {
         this.queued = req;
@@ -59,8 +70,11 @@ export class Live {
   async start(req) {
     this.running = req;
     testHook(`${this.name}Live`, "busy");
+    this.preview(req);
     const r = await this.lab.run(req.type, req.args, req.label, [], { quietCancel: true });
     if (this.running === req) this.running = null;
+    // a failed run leaves no preview behind (a newer one draws its own)
+    if (!r && !this.running && !this.queued) this.lab.viewer.setPreview(null);
     if (this.lab.client.lastRestartMs !== undefined) testHook("restartMs", this.lab.client.lastRestartMs.toFixed(0));
     if (r && req.gen > this.shown) {
       this.shown = req.gen;
@@ -73,5 +87,32 @@ export class Live {
     }
     if (!this.running) testHook(`${this.name}Live`, "idle");
     return undefined;
+  }
+
+  /**
+   * Paints the preview of `req` while it runs: the part of the photo in
+   * view (with the operator's halo: the worker asks op_halo) when it has at most PREVIEW_PIXELS,
+   * else the whole photo reduced k × k to about as many; the layer shown
+   * now (by name), else the result's first.
+   */
+  preview(req) {
+    const lab = this.lab;
+    const img = lab.image;
+    const view = lab.viewer.visible();
+    const from = lab.previewFrom ?? PREVIEW_FROM;
+    if (!PREVIEWS.has(req.type) || !img || !view || img.width * img.height < from) return;
+    const where = view[2] * view[3] <= PREVIEW_PIXELS
+      ? { rect: view }
+      : { factor: Math.ceil(Math.sqrt((img.width * img.height) / PREVIEW_PIXELS)) };
+    const name = lab.layers[Number(lab.layerSelect.value)]?.name ?? null;
+    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, ...where }))
+      .then((p) => {
+        if (!p || this.running !== req || req.gen <= this.shown) return;
+        lab.viewer.setPreview(p);
+        // ms from the new value to its preview on screen (npm run bench -- --lab)
+        testHook("previewMs", (performance.now() - req.t0).toFixed(1));
+        testHook(`${this.name}Preview`, where.factor ? `reduced ${where.factor}` : `part ${view.join(",")}`);
+      })
+      .catch(() => {});
   }
 }

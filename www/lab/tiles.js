@@ -1,129 +1,298 @@
-// Image-wide operators over several workers, by row tiles with halos, when
-// the page is cross-origin isolated (npm start -- --isolate); otherwise the
-// lab stays on its one worker. Each tile worker gets its rows plus HALO rows
-// above and below (real neighbours, so the border policy acts only at the
-// image's own edges), runs the same request as the single worker, and the
-// rows each tile owns are put together into the single worker's layers:
-// the same numbers at every pixel (tests/e2e/lab_tiles.test.mjs).
+// Image-wide operators over several workers by bands of rows, on any host
+// (no cross-origin isolation, no shared memory): the page keeps the open
+// photo's 8-bit bytes, cuts them into bands with their halo (rows of real
+// neighbours above and below, as many as the operator needs: the wasm's
+// op_halo; so the border policy acts only at the image's own edges and a
+// window near a band's edge sees what it sees in the whole image),
+// transfers each band's bytes to a pool worker (www/lab/worker.js,
+// `region`), and puts the rows each band owns together into the single
+// worker's layers and points: the same numbers at every pixel
+// (tests/e2e/lab_tiles.test.mjs).
+//  - Förstner's map (the live threshold): each band keeps its own map in its
+//    worker, a new threshold asks every band for the points in its rows,
+//    and the photo's own threshold is found once over the whole w layer on
+//    the main worker (forstner_auto_threshold).
+//  - Resampling: bands of output rows; each pool worker holds the whole
+//    photo (sent once per photo).
+// More bands than workers: a worker that is done takes the next band
+// (progress after each; a cancel drops the bands not yet started and stops
+// the running ones at once, without touching the lab's main worker and its
+// photo). The pool paints layers too, and previews run on the main worker
+// meanwhile.
 
-/** Rows of real neighbours above and below a tile: enough for every 5×5 kernel. */
-const HALO = 2;
-/** Tiles thinner than this are not worth a message. */
-const MIN_ROWS = 64;
+/** A band has about this many pixels (several bands a worker: progress, balance, a quick cancel). */
+const BAND_PIXELS = 1 << 21;
+/** Images with fewer pixels run on the main worker whole (bands would cost more than they save). */
+export const MIN_PIXELS = 1 << 19;
 
-/** Requests that can be tiled (filters of a named kernel, edges). */
-function tileable(type, args) {
-  if (type === "edges") return true;
-  return type === "filter" && args.kernel !== "custom";
+/** Requests the pool runs by bands of input rows (the others are one call on the main worker). */
+const BANDED = new Set(["filter", "edges", "forstner", "forstnerMaps", "moravec"]);
+
+/**
+ * The bands of `height` rows for `n` workers: [start, end) row ranges,
+ * about BAND_PIXELS each (`width` a row), at least `n`, each at least
+ * `minRows` rows.
+ */
+export function bandsOf(width, height, n, minRows = 16) {
+  const want = Math.max(n, Math.ceil((width * height) / BAND_PIXELS));
+  const k = Math.max(1, Math.min(want, Math.floor(height / minRows)));
+  return Array.from({ length: k }, (_, i) => [Math.floor((i * height) / k), Math.floor(((i + 1) * height) / k)]);
+}
+
+function cancelled() {
+  const err = new Error("Cancelled.");
+  err.cancelled = true;
+  return err;
 }
 
 export class Tiles {
-  /** Whether this page may use several workers (cross-origin isolated, more than one core). */
-  static available() {
-    return globalThis.crossOriginIsolated === true && (navigator.hardwareConcurrency || 1) > 1;
-  }
-
-  constructor(n) {
-    this.n = n;
+  /**
+   * @param {number} n workers (navigator.hardwareConcurrency, at most 8)
+   * @param {{ minPixels?: number, minRows?: number }} opts (the tests band small images)
+   * @param {(type: string, args: object) => Promise<any>} main a request to the lab's main worker
+   */
+  constructor(n, { minPixels = MIN_PIXELS, minRows = 16 } = {}, main = null) {
+    this.n = Math.max(1, Math.min(8, n));
+    this.minPixels = minPixels;
+    this.minRows = minRows;
+    this.main = main;
     this.workers = [];
     this.nextId = 1;
+    this.image = null; // { width, height, bytes: Uint8Array }
+    this.running = new Set();
+    this.halos = new Map();
+    this.kept = null; // the bands' Förstner maps: { job, size, holders: Map(band → slot), bands }
+    this.jobs = 0;
+    this.mapRuns = 0;
+  }
+
+  /** The open photo's 8-bit bytes (null: not 8-bit or none: the main worker runs everything). */
+  setImage(img) {
+    this.image = img && img.bytes ? img : null;
+    this.kept = null;
   }
 
   handles(type, args) {
-    return this.n > 1 && tileable(type, args) && !args.untiled;
+    const img = this.image;
+    if (!img || args.untiled || img.width * img.height < this.minPixels) return false;
+    if (type === "forstnerPoints") return this.kept !== null;
+    return BANDED.has(type) || type === "resample";
   }
 
+  /** Pool worker `i`, started when first needed. */
   worker(i) {
     if (!this.workers[i]) {
       const w = new Worker(new URL("./worker.js", import.meta.url), { type: "module" });
       const pending = new Map();
-      w.onmessage = ({ data }) => {
-        const p = pending.get(data.id);
-        if (!p) return;
-        pending.delete(data.id);
-        if (data.ok) p.resolve(data.result);
-        else p.reject(new Error(data.error));
-      };
-      this.workers[i] = {
+      const slot = {
+        busy: 0,
+        image: null,
         ask: (type, args, transfer = []) => new Promise((resolve, reject) => {
           const id = this.nextId++;
           pending.set(id, { resolve, reject });
+          slot.busy++;
           w.postMessage({ id, type, ...args }, transfer);
         }),
-        terminate: () => {
+        terminate: (why = "Cancelled.") => {
           w.terminate();
-          const err = new Error("Cancelled.");
-          err.cancelled = true;
+          const err = new Error(why);
+          err.cancelled = why === "Cancelled.";
+          err.trapped = !err.cancelled;
           for (const p of pending.values()) p.reject(err);
           pending.clear();
         },
       };
+      w.onmessage = ({ data }) => {
+        const p = pending.get(data.id);
+        if (!p || data.ok === undefined) return;
+        pending.delete(data.id);
+        slot.busy--;
+        if (data.ok) p.resolve(data.result);
+        else {
+          const err = new Error(data.error);
+          err.trapped = Boolean(data.trapped);
+          p.reject(err);
+          // a trapped instance is not used again
+          if (data.trapped) this.drop(slot);
+        }
+      };
+      w.onerror = (ev) => {
+        ev.preventDefault?.();
+        this.drop(slot, `the lab's engine stopped (${ev.message || "worker error"})`);
+      };
+      this.workers[i] = slot;
     }
     return this.workers[i];
   }
 
-  /** Stops every tile worker (cancel, restart); they are started again when needed. */
+  drop(slot, why) {
+    const i = this.workers.indexOf(slot);
+    if (i >= 0) this.workers[i] = undefined;
+    // its bands of a kept Förstner map are gone with it
+    if (this.kept && [...this.kept.holders.values()].includes(slot)) this.kept = null;
+    slot.terminate(why);
+  }
+
+  /** An idle pool worker (the least busy). */
+  idle() {
+    let best = 0;
+    for (let i = 0; i < this.n; i++) if ((this.workers[i]?.busy ?? 0) < (this.workers[best]?.busy ?? 0)) best = i;
+    return this.worker(best);
+  }
+
+  /** Stops every running band (cancel): no band starts after it, and the workers running one are stopped (started again when needed). */
+  cancel() {
+    for (const job of this.running) job.cancelled = true;
+    this.running.clear();
+    for (const w of this.workers) if (w?.band?.cancelled) this.drop(w);
+  }
+
+  /** Stops every pool worker (the lab closes). */
   reset() {
+    this.cancel();
     for (const w of this.workers) w?.terminate();
     this.workers = [];
+    this.kept = null;
+  }
+
+  /** Rows of real neighbours `type` with `args` needs (wasm op_halo, asked once per parameters). */
+  async halo(type, args) {
+    const key = `${type} ${JSON.stringify(args)}`;
+    if (!this.halos.has(key)) this.halos.set(key, await this.idle().ask("halo", { op: type, args }));
+    return this.halos.get(key);
   }
 
   /**
-   * Runs `type` over row tiles; `client.call` serves the open image's size
-   * and rows, and the single-worker request when tiling does not apply (not
-   * an 8-bit image, too few rows).
+   * Runs `type` by bands: resolves with what the main worker answers for
+   * the whole image (layers; points for the interest operators; the
+   * threshold's fields for Förstner's kept map). `onProgress({ progress,
+   * rows, of })` after each band.
    */
-  async run(client, type, args) {
-    const single = () => client.call(type, { ...args, untiled: true });
-    const { width, height } = await client.call("size", {});
-    const n = Math.min(this.n, Math.floor(height / MIN_ROWS));
-    if (n < 2) return single();
-    const bounds = Array.from({ length: n }, (_, k) => [Math.floor((k * height) / n), Math.floor(((k + 1) * height) / n)]);
-    const windows = [];
-    for (const [start, end] of bounds) {
-      const r0 = Math.max(0, start - HALO);
-      const r1 = Math.min(height, end + HALO);
-      const values = await client.call("window", { c: 0, r: r0, w: width, h: r1 - r0 });
-      // the fast paths (and image_from_u8) take 8-bit images: anything else runs on one worker
-      if (!values.every((v) => Number.isInteger(v) && v >= 0 && v <= 255)) return single();
-      windows.push({ r0, rows: r1 - r0, bytes: Uint8Array.from(values) });
-    }
-    let results;
+  async run(type, args, onProgress = null) {
+    if (type === "forstnerPoints") return this.points(args);
+    if (type === "resample") return this.resample(args, onProgress);
+    const { width, height, bytes } = this.image;
+    const halo = await this.halo(type, args);
+    const bands = bandsOf(width, height, this.n, Math.max(this.minRows, 2 * halo));
+    const job = ++this.jobs;
+    const keep = type === "forstnerMaps";
+    const holders = new Map();
+    const parts = await this.lanes(bands, height, onProgress, async (w, k, [start, end]) => {
+      const [r0, r1] = [Math.max(0, start - halo), Math.min(height, end + halo)];
+      // a copy of the band's rows: its buffer is transferred
+      const b = bytes.slice(r0 * width, r1 * width);
+      const own = [0, start - r0, width, end - start];
+      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, bytes: b.buffer, own, at: [0, r0], keep: keep ? { job, band: k } : null }, [b.buffer]);
+      holders.set(k, w);
+      return part;
+    });
+    const out = stitch(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
+    if (!keep) return out;
+    this.kept = { job, size: args.size, holders, bands: bands.length };
+    const auto = await this.main("forstnerAuto", { size: args.size, sigmaN: args.sigmaN, w: out.layers[0].data });
+    return { ...out, size: args.size, mapRuns: ++this.mapRuns, auto };
+  }
+
+  /**
+   * `bands` run on the pool, a worker taking the next band when it is done:
+   * `one(worker, k, band)` → the band's answer; the answers in band order.
+   * Progress counts the rows of `of` done.
+   */
+  async lanes(bands, of, onProgress, one) {
+    const job = { cancelled: false };
+    this.running.add(job);
+    const parts = new Array(bands.length);
+    let next = 0;
+    let rowsDone = 0;
+    const lane = async (w) => {
+      while (next < bands.length && !job.cancelled) {
+        const k = next++;
+        w.band = job;
+        parts[k] = await one(w, k, bands[k]);
+        w.band = null;
+        rowsDone += bands[k][1] - bands[k][0];
+        if (!job.cancelled) onProgress?.({ progress: rowsDone / of, rows: rowsDone, of });
+      }
+    };
     try {
-      results = await Promise.all(windows.map(async (t, k) => {
-        const w = this.worker(k);
-        await w.ask("raw", { width, height: t.rows, bytes: t.bytes.buffer }, [t.bytes.buffer]);
-        return w.ask(type, args);
-      }));
+      await Promise.all(Array.from({ length: Math.min(this.n, bands.length) }, (_, i) => lane(this.worker(i))));
     } catch (e) {
-      if (e.cancelled) throw e;
-      // a refused request or a trapped tile worker: fresh workers next time, the answer from one worker now
-      this.reset();
-      return single();
+      throw job.cancelled ? cancelled() : e;
+    } finally {
+      this.running.delete(job);
     }
-    return { layers: stitch(results.map((r) => r.layers), windows, bounds) };
+    if (job.cancelled) throw cancelled();
+    return parts;
+  }
+
+  /** Förstner's points for a threshold from the bands' kept maps, in band order (row-major, as one map gives them). */
+  async points(args) {
+    const kept = this.kept;
+    const t0 = performance.now();
+    const slots = [...new Set(kept.holders.values())];
+    const answers = (await Promise.all(slots.map((w) => w.ask("keptPoints", { job: kept.job, ...args })))).flat();
+    if (answers.length !== kept.bands) throw new Error("threshold_px: the kept Förstner map is incomplete (press Run again)");
+    answers.sort((a, b) => a.band - b.band);
+    const points = new Float64Array(answers.reduce((s, a) => s + a.points.length, 0));
+    let at = 0;
+    for (const a of answers) {
+      points.set(a.points, at);
+      at += a.points.length;
+    }
+    return { points, thresholdPx: args.thresholdPx, size: kept.size, mapRuns: this.mapRuns, pointsMs: performance.now() - t0 };
+  }
+
+  /** Resampling by bands of output rows; each worker gets the whole photo once. */
+  async resample(args, onProgress) {
+    const img = this.image;
+    const bands = bandsOf(args.width, args.height, this.n, this.minRows);
+    const parts = await this.lanes(bands, args.height, onProgress, async (w, k, [row0, row1]) => {
+      if (w.image !== img) {
+        const b = img.bytes.slice();
+        await w.ask("raw", { width: img.width, height: img.height, bytes: b.buffer }, [b.buffer]);
+        w.image = img;
+      }
+      return w.ask("resample", { ...args, row0, row1 });
+    });
+    return stitch(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
+  }
+
+  /** Paints `layer` on a pool worker: { bitmap, scale } (worker.js `paint`). */
+  paint(layer) {
+    // a copy of the values: the page keeps its own (the inspector, the explained pixel read them)
+    return this.idle().ask("paint", { data: layer.data, width: layer.width, signed: Boolean(layer.signed) });
   }
 }
 
-/** The rows each tile owns, from its layers, as the whole image's layers. */
-function stitch(tileLayers, windows, bounds) {
-  return tileLayers[0].map((first, li) => {
-    const rows = [];
-    let r0 = null;
-    tileLayers.forEach((layers, k) => {
-      const l = layers[li];
-      const [start, end] = bounds[k];
-      for (let j = 0; j < l.height; j++) {
-        const row = windows[k].r0 + l.r0 + j;
-        if (row < start || row >= end) continue;
-        if (r0 === null) r0 = row;
-        rows.push(l.data.subarray(j * l.width, (j + 1) * l.width));
-      }
-    });
-    const data = new Float64Array(rows.length * first.width);
-    rows.forEach((r, j) => data.set(r, j * first.width));
-    // a reference-path layer is signed when any of its values is negative: in any tile
-    const signed = tileLayers.some((layers) => layers[li].signed);
-    return { ...first, r0: r0 ?? 0, height: rows.length, signed, data };
+/**
+ * The bands' answers as the whole image's: layers of the rows each band
+ * owns (the worker cut them to its own rows and placed them in the image),
+ * points in band order (row-major, as one call finds them).
+ */
+export function stitch(parts, info) {
+  const first = parts[0];
+  const layers = first.layers.map((l0, li) => {
+    const pieces = parts.map((p) => p.layers[li]).filter((l) => l.height > 0);
+    const top = pieces.length ? pieces[0].r0 : l0.r0;
+    const height = pieces.reduce((s, l) => s + l.height, 0);
+    const data = new l0.data.constructor(height * l0.width);
+    let at = 0;
+    for (const l of pieces) {
+      data.set(l.data, at);
+      at += l.data.length;
+    }
+    // a reference-path layer is signed when any of its values is negative: in any band
+    return { ...l0, r0: top, height, signed: parts.some((p) => p.layers[li].signed), data };
   });
+  const out = { ...first, layers, bands: info };
+  if (first.points) {
+    const points = new Float64Array(parts.reduce((s, p) => s + p.points.length, 0));
+    let at = 0;
+    for (const p of parts) {
+      points.set(p.points, at);
+      at += p.points.length;
+    }
+    out.points = points;
+  }
+  return out;
 }

@@ -2,9 +2,10 @@
 // opacity) or beside it, zoom and pan by mouse wheel / drag, touch (drag,
 // pinch) and keyboard (+ − arrows 0), a pixel inspector, grey values written
 // into the pixels when zoomed in far enough, and shapes drawn on top
-// (points with ellipses, boxes, outlines) in image coordinates.
-
-import { SIGNED_NEGATIVE, SIGNED_POSITIVE } from "../colour-scales.js";
+// (points with ellipses, boxes, outlines) in image coordinates. The photo
+// and the layers are painted by the lab's workers (wasm, ImageBitmaps); a
+// preview (a part or a reduced image of a result still being computed) is
+// drawn over them until the result arrives.
 
 /** Pixels of screen per image pixel from which grey values are written in. */
 const LABEL_ZOOM = 28;
@@ -27,61 +28,38 @@ export function fmt(v, digits = 5) {
   return String(s);
 }
 
-/** min and max of the finite values. */
-export function rangeOf(data) {
-  let lo = Infinity;
-  let hi = -Infinity;
-  for (const v of data) {
-    if (Number.isFinite(v)) {
-      if (v < lo) lo = v;
-      if (v > hi) hi = v;
-    }
+/**
+ * Who paints layers and photos to pixels: `(layer) → Promise<{ bitmap,
+ * scale }>` (the lab's worker pool: wasm's paint_layer, www/lab/worker.js),
+ * set by the lab. `layer`: { data, width, signed }; `scale`: { signed, lo,
+ * hi, min, max } (the colours of colour-scales.js: grey dark = low, signed
+ * blue − white 0 orange +).
+ */
+let painter = null;
+export function setPainter(p) {
+  painter = p;
+}
+
+/** Paintings by layer (and photo) object: a layer shown again is drawn at once. */
+const painted = new WeakMap();
+
+/**
+ * `layer` painted, once per layer object (null when no painter is set or
+ * the painting failed: a cancel, a stopped worker; asked again next time).
+ * The lab paints every layer of a result as it arrives (prepaint), so
+ * that switching layers draws at once.
+ */
+export function paintOf(layer) {
+  if (!painter) return Promise.resolve(null);
+  let p = painted.get(layer);
+  if (!p) {
+    p = painter(layer).catch(() => {
+      painted.delete(layer);
+      return null;
+    });
+    painted.set(layer, p);
   }
-  return lo <= hi ? [lo, hi] : [0, 0];
-}
-
-/** The diverging scale: blue (−) through white (0) to orange (+), t in [−1, 1] (colour-scales.js). */
-export function diverging(t) {
-  const u = Math.max(-1, Math.min(1, t));
-  const end = u < 0 ? SIGNED_NEGATIVE : SIGNED_POSITIVE;
-  const a = Math.abs(u);
-  return end.map((e) => Math.round(255 - a * (255 - e)));
-}
-
-/** How a layer maps to colours: signed → symmetric diverging, else grey stretch. */
-export function scaleOf(layer) {
-  const [lo, hi] = rangeOf(layer.data);
-  if (layer.signed) {
-    const m = Math.max(Math.abs(lo), Math.abs(hi)) || 1;
-    return { signed: true, lo: -m, hi: m, min: lo, max: hi };
-  }
-  return { signed: false, lo, hi: hi > lo ? hi : lo + 1, min: lo, max: hi };
-}
-
-/** RGBA pixels of a layer (NaN transparent). */
-export function paint(layer, scale) {
-  const out = new Uint8ClampedArray(layer.width * layer.height * 4);
-  const { lo, hi } = scale;
-  for (let i = 0; i < layer.data.length; i++) {
-    const v = layer.data[i];
-    if (!Number.isFinite(v)) continue;
-    let rgb;
-    if (scale.signed) rgb = diverging(v / hi);
-    else {
-      const g = Math.round(((v - lo) / (hi - lo)) * 255);
-      rgb = [g, g, g];
-    }
-    out.set([rgb[0], rgb[1], rgb[2], 255], i * 4);
-  }
-  return out;
-}
-
-function canvasOf(width, height, rgba) {
-  const c = document.createElement("canvas");
-  c.width = width;
-  c.height = height;
-  c.getContext("2d").putImageData(new ImageData(rgba, width, height), 0, 0);
-  return c;
+  return p;
 }
 
 export class Viewer {
@@ -121,39 +99,65 @@ export class Viewer {
     this.canvas.remove();
   }
 
-  /** @param {{ width, height, grey: Float64Array, maxValue }} img */
+  /** @param {{ width, height, grey: Float64Array, maxValue, bitmap?: ImageBitmap }} img (painted when it has no bitmap) */
   setImage(img) {
     this.image = img;
-    const rgba = new Uint8ClampedArray(img.width * img.height * 4);
-    const [lo, hi] = rangeOf(img.grey);
-    // the full range of the sample depth, stretched when the image uses little of it
-    const top = hi > lo ? hi : lo + 1;
-    this.baseRange = [lo, top];
-    for (let i = 0; i < img.grey.length; i++) {
-      const g = Math.round(((img.grey[i] - lo) / (top - lo)) * 255);
-      rgba[i * 4] = rgba[i * 4 + 1] = rgba[i * 4 + 2] = g;
-      rgba[i * 4 + 3] = 255;
-    }
-    this.base = canvasOf(img.width, img.height, rgba);
+    const gen = (this.imageGen = (this.imageGen ?? 0) + 1);
+    this.base = img.bitmap ?? null;
     this.layer = null;
     this.layerCanvas = null;
+    this.preview = null;
     this.shapes = [];
     this.fitted = false;
     this.resize();
+    if (this.base) return Promise.resolve();
+    // the full range of the values, stretched (the grey scale: dark = low)
+    return paintOf({ data: img.grey, width: img.width, signed: false }).then((p) => {
+      if (!p || gen !== this.imageGen) return;
+      this.base = p.bitmap;
+      this.draw();
+    });
   }
 
-  /** Shows `layer` (or none) over or beside the image; returns its colour scale. */
+  /** Shows `layer` (or none) over or beside the image; resolves with its colour scale once it is painted. */
   setLayer(layer) {
+    const gen = (this.layerGen = (this.layerGen ?? 0) + 1);
     this.layer = layer;
     if (!layer) {
       this.layerCanvas = null;
       this.draw();
-      return null;
+      return Promise.resolve(null);
     }
-    this.scale = scaleOf(layer);
-    this.layerCanvas = canvasOf(layer.width, layer.height, paint(layer, this.scale));
+    return paintOf(layer).then((p) => {
+      if (gen !== this.layerGen) return null;
+      this.preview = null;
+      this.scale = p?.scale ?? null;
+      this.layerCanvas = p?.bitmap ?? null;
+      this.draw();
+      return this.scale;
+    });
+  }
+
+  /**
+   * A preview of the result being computed ({ bitmap, rect: [c, r, w, h]
+   * image pixels it covers }), drawn over the photo and the layer until the
+   * next layer is shown; null: none.
+   */
+  setPreview(p) {
+    this.preview = p;
     this.draw();
-    return this.scale;
+  }
+
+  /** The image pixels in view (the first panel): [c, r, w, h], clipped to the image. */
+  visible() {
+    if (!this.image) return null;
+    const panels = this.mode === "beside" && this.layer ? 2 : 1;
+    const w = this.canvas.width / panels;
+    const c0 = Math.max(0, Math.floor(-this.ox / this.zoom));
+    const r0 = Math.max(0, Math.floor(-this.oy / this.zoom));
+    const c1 = Math.min(this.image.width, Math.ceil((w - this.ox) / this.zoom));
+    const r1 = Math.min(this.image.height, Math.ceil((this.canvas.height - this.oy) / this.zoom));
+    return c1 > c0 && r1 > r0 ? [c0, r0, c1 - c0, r1 - r0] : null;
   }
 
   setOpacity(o) {
@@ -410,6 +414,12 @@ export class Viewer {
         ctx.drawImage(this.layerCanvas, this.layer.c0, this.layer.r0);
         ctx.globalAlpha = 1;
       }
+      if (this.preview && (onlyLayer || panels === 1)) {
+        const [c, r, pw, ph] = this.preview.rect;
+        ctx.globalAlpha = onlyLayer ? 1 : this.opacity;
+        ctx.drawImage(this.preview.bitmap, c, r, pw, ph);
+        ctx.globalAlpha = 1;
+      }
       if (this.zoom >= LABEL_ZOOM) this.labels(ctx, p * w, w, onlyLayer);
       this.drawShapes(ctx);
       this.drawMark(ctx);
@@ -424,11 +434,12 @@ export class Viewer {
     const r0 = Math.max(0, Math.floor(-this.oy / this.zoom));
     const c1 = Math.min(img.width - 1, Math.ceil((w - this.ox) / this.zoom));
     const r1 = Math.min(img.height - 1, Math.ceil((this.canvas.height - this.oy) / this.zoom));
+    if (c1 < c0 || r1 < r0) return;
     ctx.font = `${0.3}px sans-serif`;
     ctx.textAlign = "center";
     ctx.textBaseline = "middle";
     const l = this.layer;
-    const [lo, top] = this.baseRange;
+    const drawn = this.drawnPixels(c0, r0, c1 - c0 + 1, r1 - r0 + 1, layerOnly);
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
         const grey = img.grey[r * img.width + c];
@@ -436,21 +447,31 @@ export class Viewer {
         const lv = inside ? l.data[(r - l.r0) * l.width + (c - l.c0)] : NaN;
         const v = layerOnly ? lv : grey;
         if (!Number.isFinite(v)) continue;
-        // the colour the pixel is drawn in: the photo's grey, the layer's colour over it
-        const g = ((grey - lo) / (top - lo)) * 255;
-        let rgb = layerOnly ? [0, 0, 0] : [g, g, g];
-        if (Number.isFinite(lv) && this.layerCanvas) {
-          const s = this.scale;
-          const lc = s.signed ? diverging(lv / s.hi) : Array(3).fill(((lv - s.lo) / (s.hi - s.lo)) * 255);
-          const a = layerOnly ? 1 : this.opacity;
-          rgb = rgb.map((x, k) => a * lc[k] + (1 - a) * x);
-        }
-        // dark text on light pixels, light on dark ones
-        ctx.fillStyle = 0.299 * rgb[0] + 0.587 * rgb[1] + 0.114 * rgb[2] > 140 ? "#000" : "#fff";
+        // dark text on light pixels, light on dark ones (the colour the pixel is drawn in)
+        const i = 4 * ((r - r0) * (c1 - c0 + 1) + (c - c0));
+        ctx.fillStyle = 0.299 * drawn[i] + 0.587 * drawn[i + 1] + 0.114 * drawn[i + 2] > 140 ? "#000" : "#fff";
         const text = Number.isInteger(v) ? String(v) : v.toFixed(Math.abs(v) < 10 ? 2 : 1);
         ctx.fillText(text, c + 0.5, r + 0.5, 0.95);
       }
     }
+  }
+
+  /**
+   * The RGBA the view draws at image pixels [c0, c0 + w) × [r0, r0 + h):
+   * the painted photo with the layer over it at the view's opacity (or the
+   * layer alone on black), read back from a canvas of that size.
+   */
+  drawnPixels(c0, r0, w, h, layerOnly) {
+    const cv = typeof OffscreenCanvas === "undefined" ? Object.assign(document.createElement("canvas"), { width: w, height: h }) : new OffscreenCanvas(w, h);
+    const ctx = cv.getContext("2d", { willReadFrequently: true });
+    ctx.fillStyle = "#000";
+    ctx.fillRect(0, 0, w, h);
+    if (!layerOnly && this.base) ctx.drawImage(this.base, -c0, -r0);
+    if (this.layerCanvas) {
+      ctx.globalAlpha = layerOnly ? 1 : this.opacity;
+      ctx.drawImage(this.layerCanvas, this.layer.c0 - c0, this.layer.r0 - r0);
+    }
+    return ctx.getImageData(0, 0, w, h).data;
   }
 
   /**

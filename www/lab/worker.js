@@ -3,10 +3,13 @@
 // big arrays are transferred (not copied) to the page.
 //   request  { id, type, ...args }
 //   answer   { id, ok: true, result } | { id, ok: false, error, trapped }
-//   (filters and edges asked with `progress: true` also send
-//   { id, progress, rows, of } while they run)
+// The same file runs as the lab's main worker (the photo, every request)
+// and as the pool's workers (tiles.js: `region`, one band of an operator;
+// `paint`), and the main worker paints the previews (`preview`).
 // A wasm trap (WebAssembly.RuntimeError) is reported as `trapped`: the page
 // then drops this worker and starts a fresh one.
+
+import { SIGNED_NEGATIVE, SIGNED_POSITIVE } from "../colour-scales.js";
 
 // The SIMD128 build (pkg-simd/, profile `fast`) where the browser validates
 // a tiny SIMD module (every current one does), the scalar build (pkg/)
@@ -16,9 +19,10 @@ const SIMD_PROBE = new Uint8Array([
 ]);
 const simd = WebAssembly.validate(SIMD_PROBE);
 let lab;
+let wasm;
 let build = "scalar";
 async function init(m) {
-  await m.default();
+  wasm = await m.default();
   return m;
 }
 // literal import() specifiers: the build (scripts/assets.mjs) rewrites them to hashed names
@@ -39,9 +43,16 @@ function layersOut(layers, transfer) {
   return layers;
 }
 
-function imageInfo(img, transfer) {
+/**
+ * What the page gets of an opened image: its size and kind, its grey
+ * values, its bytes when it is 8-bit (the pool's bands are cut from them:
+ * tiles.js), and the image painted (the grey stretch) as an ImageBitmap.
+ */
+async function imageInfo(img, transfer) {
   const grey = img.grey();
-  transfer.push(grey.buffer);
+  const bytes = eightBit(img, grey);
+  const base = await painted(grey, img.width(), false);
+  transfer.push(grey.buffer, base.bitmap);
   return {
     width: img.width(),
     height: img.height(),
@@ -50,7 +61,15 @@ function imageInfo(img, transfer) {
     bits: img.bits(),
     maxValue: img.max_value(),
     grey,
+    bytes: bytes && bytes.slice(),
+    bitmap: base.bitmap,
   };
+}
+
+/** Keeps the image's values as bytes with it when they are 8-bit (`grey`: its values); returns them or null. */
+function eightBit(img, grey) {
+  if (img.u8 === undefined) img.u8 = grey.every((v) => Number.isInteger(v) && v >= 0 && v <= 255) ? Uint8Array.from(grey) : null;
+  return img.u8;
 }
 
 function need(slot) {
@@ -60,70 +79,137 @@ function need(slot) {
 }
 
 function put(slot, img) {
+  images[slot]?.reduced?.img.free();
   images[slot]?.free();
   images[slot] = img;
   if (slot === "a") dropForstner();
 }
 
-// Progress of the row-wise operators (filters, edges): when the page asks
-// for it (`progress: true`), an 8-bit image is run in bands of rows, each
-// with HALO rows of real neighbours above and below (the border policy acts
-// only at the image's own edges), a { id, progress, rows, of } message after
-// each band, and the rows each band owns put together: the numbers of one
-// call over the whole image (tests/e2e/lab.test.mjs compares them at every
-// pixel). Other images, and small ones, run in one call.
+/** The operators that run by bands and previews, by request type: (image, args) → { layers, points? }. */
+const OPS = {
+  filter: (img, a) => ({ layers: lab.run_filter(img, a.kernel, a.border, a.custom, a.divisor) }),
+  edges: (img, a) => ({ layers: lab.run_edges(img, a.operator, a.border) }),
+  forstner: (img, a) => lab.run_forstner(img, a.size, a.sigmaN, a.thresholdPx, a.qMin),
+  moravec: (img, a) => lab.run_moravec(img, a.size, a.threshold),
+  // (the map's layers only: previews; the kept map of the live threshold is the main worker's)
+  forstnerMaps: (img, a) => {
+    const kept = lab.forstner_maps(img, a.size);
+    try {
+      return { layers: kept.layers() };
+    } finally {
+      kept.free();
+    }
+  },
+};
 
-/** Rows of real neighbours above and below a band: enough for the largest kernel (15×15). */
-const HALO = 7;
-/** Rows a band has at least. */
-const BAND_ROWS = 256;
+/** A result whose layers' buffers are transferred. */
+function out(r, transfer) {
+  layersOut(r.layers, transfer);
+  return r;
+}
 
-/** The image's values as bytes when it is 8-bit (cached on it), else null. */
-function bytesOf(img) {
-  if (img.u8 === undefined) {
-    const g = img.grey();
-    img.u8 = g.every((v) => Number.isInteger(v) && v >= 0 && v <= 255) ? Uint8Array.from(g) : null;
+/**
+ * A result of an image part cut to `own` [c, r, w, h] (the part's
+ * coordinates) and placed at `at` [c, r] in the image: each layer's pixels
+ * inside `own`, the points inside `own` (6 numbers each: c, r, …).
+ */
+function cut(r, own, at) {
+  const [oc, or, ow, oh] = own;
+  const layers = r.layers.map((l) => {
+    const [c0, r0] = [Math.max(l.c0, oc), Math.max(l.r0, or)];
+    const [c1, r1] = [Math.min(l.c0 + l.width, oc + ow), Math.min(l.r0 + l.height, or + oh)];
+    const [w, h] = [Math.max(0, c1 - c0), Math.max(0, r1 - r0)];
+    const data = new l.data.constructor(w * h);
+    for (let j = 0; j < h; j++) {
+      const from = (r0 + j - l.r0) * l.width + (c0 - l.c0);
+      data.set(l.data.subarray(from, from + w), j * w);
+    }
+    return { ...l, c0: c0 + at[0], r0: r0 + at[1], width: w, height: h, data };
+  });
+  if (!r.points) return { ...r, layers };
+  const kept = [];
+  for (let i = 0; i < r.points.length; i += 6) {
+    const [c, rr] = [r.points[i], r.points[i + 1]];
+    if (c >= oc && c < oc + ow && rr >= or && rr < or + oh) kept.push(c + at[0], rr + at[1], ...r.points.subarray(i + 2, i + 6));
   }
+  return { ...r, layers, points: Float64Array.from(kept) };
+}
+
+/** The image's values as bytes when it is 8-bit (kept with it), else null. */
+function bytesOf(img) {
+  if (!eightBit(img, img.u8 === undefined ? img.grey() : null)) throw new Error("image: previews and bands need an 8-bit image");
   return img.u8;
 }
 
-/** `run(image)` (→ layers) over `img`, by bands with progress messages when asked and possible. */
-function banded(id, progress, img, run) {
-  const [width, height] = [img.width(), img.height()];
-  const n = Math.min(16, Math.floor(height / BAND_ROWS));
-  const bytes = progress && n >= 2 ? bytesOf(img) : null;
-  if (!bytes) return run(img);
-  const parts = [];
-  for (let k = 0; k < n; k++) {
-    const [start, end] = [Math.floor((k * height) / n), Math.floor(((k + 1) * height) / n)];
-    const [r0, r1] = [Math.max(0, start - HALO), Math.min(height, end + HALO)];
-    const band = lab.image_from_u8(width, r1 - r0, bytes.subarray(r0 * width, r1 * width));
-    try {
-      parts.push({ start, end, r0, layers: run(band) });
-    } finally {
-      band.free();
-    }
-    self.postMessage({ id, progress: (k + 1) / n, rows: end, of: height });
-  }
-  // the rows each band owns, as the whole image's layers
-  return parts[0].layers.map((first, li) => {
-    const rows = [];
-    let top = null;
-    for (const p of parts) {
-      const l = p.layers[li];
-      for (let j = 0; j < l.height; j++) {
-        const row = p.r0 + l.r0 + j;
-        if (row < p.start || row >= p.end) continue;
-        top ??= row;
-        rows.push(l.data.subarray(j * l.width, (j + 1) * l.width));
+/** The `w × h` box of `bytes` (`width` a row) from (c, r). */
+function crop(bytes, width, c, r, w, h) {
+  const outBytes = new Uint8Array(w * h);
+  for (let j = 0; j < h; j++) outBytes.set(bytes.subarray((r + j) * width + c, (r + j) * width + c + w), j * w);
+  return outBytes;
+}
+
+/**
+ * Image `img` reduced `k × k` (each pixel the mean of a k × k block,
+ * rounded; the last partial blocks left out), kept with it for the next
+ * preview.
+ */
+function reduced(img, k) {
+  if (img.reduced?.k === k) return img.reduced.img;
+  img.reduced?.img.free();
+  const bytes = bytesOf(img);
+  const [W, H] = [img.width(), img.height()];
+  const [w, h] = [Math.max(1, Math.floor(W / k)), Math.max(1, Math.floor(H / k))];
+  const sums = new Uint32Array(w);
+  const small = new Uint8Array(w * h);
+  const n = k * k;
+  for (let r = 0; r < h; r++) {
+    sums.fill(0);
+    for (let y = r * k; y < Math.min(H, (r + 1) * k); y++) {
+      const row = y * W;
+      for (let c = 0; c < w; c++) {
+        let s = 0;
+        for (let x = c * k; x < (c + 1) * k; x++) s += bytes[row + x];
+        sums[c] += s;
       }
     }
-    const data = new first.data.constructor(rows.length * first.width);
-    rows.forEach((r, j) => data.set(r, j * first.width));
-    // a reference-path layer is signed when any of its values is negative: in any band
-    return { ...first, r0: top ?? 0, height: rows.length, signed: parts.some((p) => p.layers[li].signed), data };
-  });
+    for (let c = 0; c < w; c++) small[r * w + c] = Math.round(sums[c] / n);
+  }
+  img.reduced = { k, img: lab.image_from_u8(w, h, small) };
+  return img.reduced.img;
 }
+
+/** The signed scale's end colours as paint_layer takes them (colour-scales.js). */
+const ENDS = Uint8Array.from([...SIGNED_NEGATIVE, ...SIGNED_POSITIVE]);
+/** Rows a painting puts into its canvas at a time (the RGBA of one part in wasm memory). */
+const PAINT_PIXELS = 1 << 20;
+
+/**
+ * Values painted by the wasm (paint_layer): an ImageBitmap and the scale.
+ * Large layers part by part (on the whole layer's scale) into an
+ * OffscreenCanvas, so that their RGBA is never whole in wasm memory.
+ */
+async function painted(data, width, signed) {
+  const height = data.length / width;
+  if (typeof OffscreenCanvas === "undefined" || data.length <= PAINT_PIXELS) {
+    const { image, scale } = lab.paint_layer(data, width, Boolean(signed), ENDS);
+    return { bitmap: await createImageBitmap(image), scale };
+  }
+  const range = lab.layer_range(data);
+  const canvas = new OffscreenCanvas(width, height);
+  const ctx = canvas.getContext("2d");
+  const rows = Math.max(1, Math.floor(PAINT_PIXELS / width));
+  let scale = null;
+  for (let r = 0; r < height; r += rows) {
+    const part = data.subarray(r * width, Math.min(height, r + rows) * width);
+    const p = lab.paint_layer(part, width, Boolean(signed), ENDS, range);
+    ctx.putImageData(p.image, 0, r);
+    scale = p.scale;
+  }
+  return { bitmap: canvas.transferToImageBitmap(), scale };
+}
+
+/** The pool's bands of Förstner maps kept for the live threshold, by band: { job, kept, own, at }. */
+const keptBands = new Map();
 
 /** Förstner's map of image "a", kept so that a new threshold re-uses it. */
 let forstnerKept = null;
@@ -135,20 +221,20 @@ function dropForstner() {
 }
 
 const handlers = {
-  load({ slot = "a", name, bytes }, transfer) {
+  async load({ slot = "a", name, bytes }, transfer) {
     const img = lab.decode_image(name, new Uint8Array(bytes));
     put(slot, img);
     // what decoding did: the EXIF orientation and the reduction (decode.rs's Photo)
-    return { ...imageInfo(img, transfer), photo: img.photo() };
+    return { ...(await imageInfo(img, transfer)), photo: img.photo() };
   },
   /** A file's format, orientation and reduction from its header alone (the lab offers a reduction with it). */
   probe({ name, bytes }) {
     return lab.probe_image(name, new Uint8Array(bytes));
   },
-  frame({ slot = "a" }, transfer) {
+  async frame({ slot = "a" }, transfer) {
     const img = lab.scanned_frame();
     put(slot, img);
-    return { ...imageInfo(img, transfer), truth: lab.scanned_frame_truth() };
+    return { ...(await imageInfo(img, transfer)), truth: lab.scanned_frame_truth() };
   },
   neighbourhood({ slot = "a", c, r, w, h, border }) {
     return need(slot).neighbourhood(c, r, w, h, border);
@@ -160,9 +246,8 @@ const handlers = {
   window({ slot = "a", c, r, w, h }) {
     return need(slot).window(c, r, w, h);
   },
-  filter({ kernel, border, custom, divisor, progress }, transfer, id) {
-    const layers = banded(id, progress, need("a"), (img) => lab.run_filter(img, kernel, border, custom, divisor));
-    return { layers: layersOut(layers, transfer) };
+  filter(args, transfer) {
+    return out(OPS.filter(need("a"), args), transfer);
   },
   checkKernel({ custom, divisor }) {
     return lab.check_custom_kernel(custom, divisor);
@@ -183,18 +268,116 @@ const handlers = {
     const points = forstnerKept.points(sigmaN, thresholdPx, qMin);
     return { points, thresholdPx, size: forstnerKept.size(), mapRuns: forstnerMapRuns, pointsMs: performance.now() - t0 };
   },
-  edges({ operator, border, progress }, transfer, id) {
-    return { layers: layersOut(banded(id, progress, need("a"), (img) => lab.run_edges(img, operator, border)), transfer) };
+  edges(args, transfer) {
+    return out(OPS.edges(need("a"), args), transfer);
   },
-  forstner({ size, sigmaN, thresholdPx, qMin }, transfer) {
-    const r = lab.run_forstner(need("a"), size, sigmaN, thresholdPx, qMin);
-    layersOut(r.layers, transfer);
-    return r;
+  forstner(args, transfer) {
+    return out(OPS.forstner(need("a"), args), transfer);
   },
-  moravec({ size, threshold }, transfer) {
-    const r = lab.run_moravec(need("a"), size, threshold);
-    layersOut(r.layers, transfer);
-    return r;
+  moravec(args, transfer) {
+    return out(OPS.moravec(need("a"), args), transfer);
+  },
+  /**
+   * One band of an operator (tiles.js): `bytes` (8-bit, `width × height`)
+   * are the band with its halo, `own` [c, r, w, h] the part of it whose
+   * pixels this band answers for, `at` [c, r] where the band lies in the
+   * image. Answers as `type` does for the whole image, cut to `own` and
+   * placed in the image.
+   */
+  region({ op, args, width, height, bytes, own, at, keep = null }, transfer) {
+    const img = lab.image_from_u8(width, height, new Uint8Array(bytes));
+    try {
+      if (op === "forstnerMaps" && keep) {
+        // the band's map kept for the live threshold (keptPoints), the older jobs' dropped
+        for (const [k, b] of keptBands) {
+          if (b.job !== keep.job) {
+            b.kept.free();
+            keptBands.delete(k);
+          }
+        }
+        const kept = lab.forstner_maps(img, args.size);
+        keptBands.get(keep.band)?.kept.free();
+        keptBands.set(keep.band, { job: keep.job, kept, own, at });
+        return out(cut({ layers: kept.layers() }, own, at), transfer);
+      }
+      const run = OPS[op];
+      if (!run) throw new Error(`op: "${String(op).slice(0, 40)}" does not run by bands`);
+      return out(cut(run(img, args), own, at), transfer);
+    } finally {
+      img.free();
+    }
+  },
+  /**
+   * Points for a threshold from the bands' kept maps of Förstner job `job`
+   * (region with `keep`): `[{ band, points }]`, each band's points in its
+   * own rows, placed in the image.
+   */
+  keptPoints({ job, sigmaN, thresholdPx, qMin }) {
+    const out = [];
+    for (const [band, b] of keptBands) {
+      if (b.job !== job) continue;
+      out.push({ band, points: cut({ layers: [], points: b.kept.points(sigmaN, thresholdPx, qMin) }, b.own, b.at).points });
+    }
+    return out;
+  },
+  /** The photo's own Förstner threshold from its whole `w` layer (bands: forstner_auto_threshold). */
+  forstnerAuto({ size, sigmaN, w }) {
+    return sigmaN > 0 ? lab.forstner_auto_threshold(need("a"), size, w, sigmaN) : null;
+  },
+  /**
+   * A layer painted (wasm: paint_layer) as an ImageBitmap: `{ bitmap,
+   * scale }`; `data` its values (Float32Array or Float64Array), `width`
+   * values a row; `signed`: the diverging scale.
+   */
+  async paint({ data, width, signed }, transfer) {
+    const p = await painted(data, width, signed);
+    transfer.push(p.bitmap);
+    return p;
+  },
+  /**
+   * A preview of `op` (a band type of OPS) on image "a": on the box `rect`
+   * [c, r, w, h] at full resolution (read with the operator's halo of real
+   * neighbours around it: op_halo), or, with `factor` k > 1, on the whole image
+   * reduced k × k (area average). Answers the layer named `name` (else the
+   * first) painted: `{ bitmap, scale, name, rect }`, `rect` the image
+   * pixels it covers.
+   */
+  async preview({ op, args, rect, factor = 1, name = null }, transfer) {
+    const run = OPS[op];
+    if (!run) throw new Error(`op: "${String(op).slice(0, 40)}" has no preview`);
+    const a = need("a");
+    const [W, H] = [a.width(), a.height()];
+    let img;
+    let own;
+    let at;
+    if (factor > 1) {
+      img = reduced(a, factor);
+      own = [0, 0, img.width(), img.height()];
+      at = [0, 0];
+    } else {
+      const halo = lab.op_halo(op, args) ?? 0;
+      const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
+      const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
+      img = lab.image_from_u8(c1 - c0, r1 - r0, crop(bytesOf(a), W, c0, r0, c1 - c0, r1 - r0));
+      own = [rect[0] - c0, rect[1] - r0, rect[2], rect[3]];
+      at = [c0, r0];
+    }
+    try {
+      const r = cut(run(img, args), own, at);
+      const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];
+      if (!layer || !layer.width || !layer.height) return null;
+      const p = await painted(layer.data, layer.width, layer.signed);
+      transfer.push(p.bitmap);
+      // the reduced image's pixel (c, r) covers the photo's k × k block from (k·c, k·r)
+      const k = factor > 1 ? factor : 1;
+      return { ...p, name: layer.name, rect: [layer.c0 * k, layer.r0 * k, layer.width * k, layer.height * k] };
+    } finally {
+      if (factor <= 1) img.free();
+    }
+  },
+  /** Bytes of wasm memory this worker's instance holds now. */
+  memory() {
+    return { bytes: wasm?.memory?.buffer?.byteLength ?? 0 };
   },
   correlation({ template, search, model, sameImage }, transfer) {
     const b = sameImage || !images.b ? need("a") : images.b;
@@ -202,8 +385,13 @@ const handlers = {
     layersOut(r.layers, transfer);
     return r;
   },
-  resample({ kind, params, width, height }, transfer) {
-    return { layers: layersOut(lab.run_resample(need("a"), kind, Float64Array.from(params), width, height), transfer) };
+  /** `row0`, `row1`: a band of the output's rows (the pool's bands: tiles.js), else all. */
+  resample({ kind, params, width, height, row0, row1 }, transfer) {
+    return { layers: layersOut(lab.run_resample(need("a"), kind, Float64Array.from(params), width, height, row0, row1), transfer) };
+  },
+  /** Rows of real neighbours a band of `op` needs (wasm op_halo; null: it does not run by bands of input rows). */
+  halo({ op, args }) {
+    return lab.op_halo(op, args) ?? null;
   },
   resamplePosition({ kind, params, width, height, c, r }) {
     return lab.resample_position(need("a"), kind, Float64Array.from(params), width, height, c, r);
@@ -232,8 +420,10 @@ const handlers = {
     return lab.fit_fiducial_marks(Float64Array.from(measured));
   },
   raw({ slot = "a", width, height, bytes }) {
-    put(slot, lab.image_from_u8(width, height, new Uint8Array(bytes)));
-    return { width, height };
+    const img = lab.image_from_u8(width, height, new Uint8Array(bytes));
+    img.u8 = new Uint8Array(bytes);
+    put(slot, img);
+    return { width, height, bytes: img.u8.slice() };
   },
   /**
    * The tests' trap (lab.js trapForTests): a wasm `unreachable` executed in
@@ -260,7 +450,7 @@ self.onmessage = async (ev) => {
     if (!handler) throw new Error(`unknown request "${type}"`);
     const transfer = [];
     const t0 = performance.now();
-    const result = handler(args, transfer, id);
+    const result = await handler(args, transfer, id);
     // ms: the time inside the worker (for npm run bench -- --lab)
     self.postMessage({ id, ok: true, result, ms: performance.now() - t0 }, transfer);
   } catch (e) {

@@ -127,6 +127,63 @@ fn top_rank(n: usize) -> usize {
     ((1.0 - W_TOP_SHARE) * (n - 1) as f64).floor() as usize
 }
 
+/// The exact `w` of rank [`top_rank`] among the `size × size` windows of
+/// the 8-bit `bytes` (`width × height`) that `fit` places, from their `w`
+/// layer `wl` (full size, `f32`): found on the layer (rounding keeps the
+/// order), then the windows whose `f32` is that value recomputed exactly
+/// (their own sums). The lab's pool computes `wl` by bands and this on the
+/// whole photo (the same `w_min` as one [`ForstnerKept`]).
+pub fn exact_w_min(
+    bytes: &[u8],
+    width: usize,
+    height: usize,
+    size: usize,
+    wl: &[f32],
+    fit: stream::Fit,
+) -> Option<f64> {
+    let cells = |r: usize| {
+        let start = r * width + fit.c0;
+        wl.get(start..start + fit.columns).unwrap_or(&[])
+    };
+    let mut all: Vec<f32> = (fit.r0..fit.r0 + fit.rows)
+        .flat_map(cells)
+        .copied()
+        .collect();
+    if all.is_empty() {
+        return None;
+    }
+    let k = top_rank(all.len());
+    let v = *all.select_nth_unstable_by(k, f32::total_cmp).1;
+    if v == 0.0 {
+        // a w rounds to 0 only when it is 0 (no w is that small)
+        return Some(0.0);
+    }
+    let below = all.iter().filter(|&&x| x < v).count();
+    drop(all);
+    let g = Gray::new("image", bytes, width, height).ok()?;
+    let mut group = Vec::new();
+    stream::forstner_rows(g, size, |r, xx, yy, xy| {
+        let row = cells(r);
+        for (j, &x) in row.iter().enumerate() {
+            if x == v {
+                group.push(
+                    Sums4 {
+                        xx: xx[j],
+                        yy: yy[j],
+                        xy: xy[j],
+                    }
+                    .w_q()
+                    .0,
+                );
+            }
+        }
+    })
+    .ok()?;
+    let rank = k.checked_sub(below)?;
+    group.sort_by(f64::total_cmp);
+    group.get(rank).copied()
+}
+
 /// Where the image lives for a new suppression.
 #[derive(Debug, Clone)]
 enum Source {
@@ -260,9 +317,8 @@ impl ForstnerKept {
         })
     }
 
-    /// The exact `w` of rank [`top_rank`] among the windows of `fit`: found
-    /// on the `f32` layer (rounding keeps the order), then the windows
-    /// whose `f32` is that value recomputed exactly (their own sums).
+    /// The exact `w` of rank [`top_rank`] among the windows of `fit`
+    /// ([`exact_w_min`] on this map's own image and `w` layer).
     fn exact_w_min(&self, fit: stream::Fit) -> Option<f64> {
         let Source::Fast {
             bytes,
@@ -272,48 +328,14 @@ impl ForstnerKept {
         else {
             return None;
         };
-        let wl = &self.layers.first()?.data;
-        let cells = |r: usize| {
-            let start = r * width + fit.c0;
-            wl.get(start..start + fit.columns).unwrap_or(&[])
-        };
-        let mut all: Vec<f32> = (fit.r0..fit.r0 + fit.rows)
-            .flat_map(cells)
-            .copied()
-            .collect();
-        if all.is_empty() {
-            return None;
-        }
-        let k = top_rank(all.len());
-        let v = *all.select_nth_unstable_by(k, f32::total_cmp).1;
-        if v == 0.0 {
-            // a w rounds to 0 only when it is 0 (no w is that small)
-            return Some(0.0);
-        }
-        let below = all.iter().filter(|&&x| x < v).count();
-        drop(all);
-        let g = Gray::new("image", bytes, *width, *height).ok()?;
-        let mut group = Vec::new();
-        stream::forstner_rows(g, self.size, |r, xx, yy, xy| {
-            let row = cells(r);
-            for (j, &x) in row.iter().enumerate() {
-                if x == v {
-                    group.push(
-                        Sums4 {
-                            xx: xx[j],
-                            yy: yy[j],
-                            xy: xy[j],
-                        }
-                        .w_q()
-                        .0,
-                    );
-                }
-            }
-        })
-        .ok()?;
-        let rank = k.checked_sub(below)?;
-        group.sort_by(f64::total_cmp);
-        group.get(rank).copied()
+        exact_w_min(
+            bytes,
+            *width,
+            *height,
+            self.size,
+            &self.layers.first()?.data,
+            fit,
+        )
     }
 
     /// Suppression for `σn`, `q_min` among the round pixels with
