@@ -2,11 +2,14 @@
 // preview comes first.
 //
 // A new value first paints a preview (worker.js `preview`, on the main
-// worker while the pool computes the whole image): the operator on the
-// part of the photo in view, with its halo, when that part is small, else
-// on the whole photo reduced (area average); drawn over the photo until the
-// whole result arrives. Only on photos big enough for the whole result to
-// take longer than a frame or so (PREVIEW_FROM).
+// worker while the pool computes the whole image): the operator at full
+// resolution on the part of the photo in view (its middle, when the view
+// shows more than PREVIEW_PIXELS), with its halo, so that its pixels are
+// already the result's; drawn over the photo until the whole result
+// arrives. (A reduced photo was tried: window sizes then cover k times more
+// of the photo, and Förstner's 15 × 15 windows showed blobs the result has
+// not.) Only on photos big enough for the whole result to take longer than
+// a frame or so (PREVIEW_FROM).
 //
 // A running computation that is no longer wanted is stopped: by bands on
 // the pool (tiles.js), no band starts after the cancel and the running ones
@@ -24,7 +27,7 @@ import { testHook } from "../test-hooks.js";
 
 /** Photos with fewer pixels get no preview (their whole result comes about as soon). */
 export const PREVIEW_FROM = 1 << 20;
-/** A preview has at most this many pixels (a part in view, or the photo reduced). */
+/** A preview has at most this many pixels (the part in view, or its middle). */
 const PREVIEW_PIXELS = 1 << 18;
 /** The requests that have a preview (worker.js OPS). */
 const PREVIEWS = new Set(["filter", "edges", "forstner", "forstnerMaps", "moravec"]);
@@ -91,9 +94,10 @@ export class Live {
 
   /**
    * Paints the preview of `req` while it runs: the part of the photo in
-   * view (with the operator's halo: the worker asks op_halo) when it has at most PREVIEW_PIXELS,
-   * else the whole photo reduced k × k to about as many; the layer shown
-   * now (by name), else the result's first.
+   * view, or its middle when that has more than PREVIEW_PIXELS, at full
+   * resolution (with the operator's halo: the worker asks op_halo, so its
+   * pixels are the whole result's); the layer shown now (by name), else
+   * the result's first.
    */
   preview(req) {
     const lab = this.lab;
@@ -101,18 +105,28 @@ export class Live {
     const view = lab.viewer.visible();
     const from = lab.previewFrom ?? PREVIEW_FROM;
     if (!PREVIEWS.has(req.type) || !img || !view || img.width * img.height < from) return;
-    const where = view[2] * view[3] <= PREVIEW_PIXELS
-      ? { rect: view }
-      : { factor: Math.ceil(Math.sqrt((img.width * img.height) / PREVIEW_PIXELS)) };
+    const rect = previewRect(view, PREVIEW_PIXELS);
     const name = lab.layers[Number(lab.layerSelect.value)]?.name ?? null;
-    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, ...where }))
+    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, rect }))
       .then((p) => {
         if (!p || this.running !== req || req.gen <= this.shown) return;
         lab.viewer.setPreview(p);
         // ms from the new value to its preview on screen (npm run bench -- --lab)
         testHook("previewMs", (performance.now() - req.t0).toFixed(1));
-        testHook(`${this.name}Preview`, where.factor ? `reduced ${where.factor}` : `part ${view.join(",")}`);
+        testHook(`${this.name}Preview`, rect.join(","));
       })
       .catch(() => {});
   }
+}
+
+/**
+ * The box of a preview: `view` [c, r, w, h] when it has at most `most`
+ * pixels, else its middle, of the same shape, with about `most`.
+ */
+export function previewRect(view, most) {
+  const [c, r, w, h] = view;
+  if (w * h <= most) return view;
+  const pw = Math.max(1, Math.min(w, Math.round(Math.sqrt((most * w) / h))));
+  const ph = Math.max(1, Math.min(h, Math.floor(most / pw)));
+  return [c + ((w - pw) >> 1), r + ((h - ph) >> 1), pw, ph];
 }

@@ -419,6 +419,16 @@ export class Viewer {
         ctx.globalAlpha = onlyLayer ? 1 : this.opacity;
         ctx.drawImage(this.preview.bitmap, c, r, pw, ph);
         ctx.globalAlpha = 1;
+        // its outline, dashed (the part already computed; the rest follows)
+        const px = (this.dpr || 1) / this.zoom;
+        ctx.lineWidth = 2 * px;
+        for (const [colour, offset] of [["#fff", 0], ["#d6336c", 6 * px]]) {
+          ctx.strokeStyle = colour;
+          ctx.setLineDash([6 * px, 6 * px]);
+          ctx.lineDashOffset = offset;
+          ctx.strokeRect(c, r, pw, ph);
+        }
+        ctx.setLineDash([]);
       }
       if (this.zoom >= LABEL_ZOOM) this.labels(ctx, p * w, w, onlyLayer);
       this.drawShapes(ctx);

@@ -79,7 +79,6 @@ function need(slot) {
 }
 
 function put(slot, img) {
-  images[slot]?.reduced?.img.free();
   images[slot]?.free();
   images[slot] = img;
   if (slot === "a") dropForstner();
@@ -146,36 +145,6 @@ function crop(bytes, width, c, r, w, h) {
   const outBytes = new Uint8Array(w * h);
   for (let j = 0; j < h; j++) outBytes.set(bytes.subarray((r + j) * width + c, (r + j) * width + c + w), j * w);
   return outBytes;
-}
-
-/**
- * Image `img` reduced `k × k` (each pixel the mean of a k × k block,
- * rounded; the last partial blocks left out), kept with it for the next
- * preview.
- */
-function reduced(img, k) {
-  if (img.reduced?.k === k) return img.reduced.img;
-  img.reduced?.img.free();
-  const bytes = bytesOf(img);
-  const [W, H] = [img.width(), img.height()];
-  const [w, h] = [Math.max(1, Math.floor(W / k)), Math.max(1, Math.floor(H / k))];
-  const sums = new Uint32Array(w);
-  const small = new Uint8Array(w * h);
-  const n = k * k;
-  for (let r = 0; r < h; r++) {
-    sums.fill(0);
-    for (let y = r * k; y < Math.min(H, (r + 1) * k); y++) {
-      const row = y * W;
-      for (let c = 0; c < w; c++) {
-        let s = 0;
-        for (let x = c * k; x < (c + 1) * k; x++) s += bytes[row + x];
-        sums[c] += s;
-      }
-    }
-    for (let c = 0; c < w; c++) small[r * w + c] = Math.round(sums[c] / n);
-  }
-  img.reduced = { k, img: lab.image_from_u8(w, h, small) };
-  return img.reduced.img;
 }
 
 /** The signed scale's end colours as paint_layer takes them (colour-scales.js). */
@@ -335,44 +304,30 @@ const handlers = {
     return p;
   },
   /**
-   * A preview of `op` (a band type of OPS) on image "a": on the box `rect`
-   * [c, r, w, h] at full resolution (read with the operator's halo of real
-   * neighbours around it: op_halo), or, with `factor` k > 1, on the whole image
-   * reduced k × k (area average). Answers the layer named `name` (else the
-   * first) painted: `{ bitmap, scale, name, rect }`, `rect` the image
-   * pixels it covers.
+   * A preview of `op` (a band type of OPS) on image "a": the box `rect`
+   * [c, r, w, h] at full resolution, read with the operator's halo of real
+   * neighbours around it (op_halo), so its pixels are the whole result's.
+   * Answers the layer named `name` (else the first) painted: `{ bitmap,
+   * scale, name, rect }`, `rect` the image pixels it covers.
    */
-  async preview({ op, args, rect, factor = 1, name = null }, transfer) {
+  async preview({ op, args, rect, name = null }, transfer) {
     const run = OPS[op];
     if (!run) throw new Error(`op: "${String(op).slice(0, 40)}" has no preview`);
     const a = need("a");
     const [W, H] = [a.width(), a.height()];
-    let img;
-    let own;
-    let at;
-    if (factor > 1) {
-      img = reduced(a, factor);
-      own = [0, 0, img.width(), img.height()];
-      at = [0, 0];
-    } else {
-      const halo = lab.op_halo(op, args) ?? 0;
-      const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
-      const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
-      img = lab.image_from_u8(c1 - c0, r1 - r0, crop(bytesOf(a), W, c0, r0, c1 - c0, r1 - r0));
-      own = [rect[0] - c0, rect[1] - r0, rect[2], rect[3]];
-      at = [c0, r0];
-    }
+    const halo = lab.op_halo(op, args) ?? 0;
+    const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
+    const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
+    const img = lab.image_from_u8(c1 - c0, r1 - r0, crop(bytesOf(a), W, c0, r0, c1 - c0, r1 - r0));
     try {
-      const r = cut(run(img, args), own, at);
+      const r = cut(run(img, args), [rect[0] - c0, rect[1] - r0, rect[2], rect[3]], [c0, r0]);
       const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];
       if (!layer || !layer.width || !layer.height) return null;
       const p = await painted(layer.data, layer.width, layer.signed);
       transfer.push(p.bitmap);
-      // the reduced image's pixel (c, r) covers the photo's k × k block from (k·c, k·r)
-      const k = factor > 1 ? factor : 1;
-      return { ...p, name: layer.name, rect: [layer.c0 * k, layer.r0 * k, layer.width * k, layer.height * k] };
+      return { ...p, name: layer.name, rect: [layer.c0, layer.r0, layer.width, layer.height] };
     } finally {
-      if (factor <= 1) img.free();
+      img.free();
     }
   },
   /** Bytes of wasm memory this worker's instance holds now. */
