@@ -2,8 +2,10 @@
 //! image, results out as layers. A second wasm module beside the worked
 //! examples' one, loaded only when the lab opens (in a Web Worker).
 //!
-//! - [`decode`]: PNG, JPEG, TIFF → grey [`Grid`](photogrammetry_playground::raster::Grid)
-//!   under `image::Limits`.
+//! - [`decode`]: JPEG, PNG, TIFF, WebP, BMP, GIF → grey
+//!   [`Grid`](photogrammetry_playground::raster::Grid) under `image::Limits`,
+//!   upright by the EXIF orientation and reduced to the working size (HEIC,
+//!   AVIF and RAW refused by their signatures).
 //! - [`sample`]: the generated scanned frame photo with Example 4's fiducials.
 //! - [`ops`]: the lab's operator menu: names and parameters → the core's
 //!   whole-image functions → layers.

@@ -593,3 +593,41 @@ fn the_fast_exports_name_every_wrong_string_argument() {
         before[9]
     );
 }
+
+#[wasm_bindgen_test]
+fn photos_upright_and_probed_across_the_boundary() {
+    // EXIF orientation 6: the 24 × 16 photo is upright 16 × 24
+    let six = include_bytes!("corpus/orient_6.jpg");
+    let img = decode_image("orient_6.jpg".into(), six).unwrap();
+    assert_eq!(
+        (img.width(), img.height(), img.orientation(), img.factor()),
+        (16, 24, 6, 1)
+    );
+    // the stored top-left block (20) is at the top right
+    assert_eq!(
+        (img.value(15, 0), img.value(0, 0)),
+        (Some(20.0), Some(140.0))
+    );
+    let p = img.photo().unwrap();
+    assert_eq!(
+        get(&p, "turned").as_string().as_deref(),
+        Some("turned 90° clockwise by its EXIF orientation (6)")
+    );
+    assert!(get(&p, "reduced").is_undefined());
+    // the header alone: the same, without decoding
+    let p = probe_image("orient_6.jpg".into(), six).unwrap();
+    assert_eq!(get(&p, "format").as_string().as_deref(), Some("JPEG"));
+    let size =
+        ["photoWidth", "photoHeight", "width", "height", "factor"].map(|k| get(&p, k).as_f64());
+    assert_eq!(size, [16.0, 24.0, 16.0, 24.0, 1.0].map(Some));
+    // refused by its signature, by both
+    let heic = include_bytes!("corpus/iphone.heic");
+    for m in [
+        message(probe_image("iphone.heic".into(), heic).err().unwrap()),
+        message(decode_image("iphone.heic".into(), heic).err().unwrap()),
+    ] {
+        assert!(m.starts_with("iphone.heic: is a HEIC/HEIF photo"), "{m}");
+    }
+    // a name of the wrong type is an error, not a trap
+    assert!(probe_image(JsValue::from_f64(1.0), six).is_err());
+}
