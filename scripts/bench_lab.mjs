@@ -1,22 +1,31 @@
-// npm run bench -- --lab: the image lab's operators on a 2048 × 2048 image,
-// milliseconds per call in Node and in Chromium's Web Worker (the lab's own
-// worker.js, timed inside the worker), and the lab module's gzipped size.
-// Benchmarks, not tests. Timing rules of ../shared/bench/TASKS.md for every
-// operator: BENCH_WARMUP (2) untimed calls on the same image (the second
-// lets V8 tier the wasm up), then n = clamp(floor(BENCH_BUDGET_S (1.5) /
-// t_last_warmup), BENCH_MIN_REPS (5), BENCH_MAX_REPS (25)) timed calls;
-// median [min–max]. BENCH_SIZE (2048) sets the image side. Every operator
-// family of the worker is timed: filters, edges, Förstner (whole, and the
-// live threshold: the kept map, then points only), Moravec, correlation
-// (+ LSM), resampling, boundary, fiducials (on the scanned frame).
+// npm run bench -- --lab: the image lab as a student meets it, on a 12 MP
+// generated texture (4000 × 3000, BENCH_LAB_SIZE=WxH to change it), in
+// Chromium, printed as one table:
+//  - every lab operator through the lab's own client (www/lab/client.js:
+//    the main worker, the pool's bands, tiles.js) with a pool of 1 worker
+//    and of BENCH_LAB_WORKERS (default: the cores, at most 8): ms from the
+//    request to the whole result on the page (painting not included),
+//    beside the bench's fast path on the same image (the FastImage exports
+//    of `npm run bench -- ops`, in Node, one call) where there is one;
+//  - a 12 MP JPEG picked → photo on screen (decoded, painted, drawn);
+//  - a slider change → its preview painted (the k × k mean's size, the
+//    Förstner window);
+//  - peak wasm memory of the main worker and of a pool worker;
+//  - what a lab visit downloads (lab JS + wasm, gzip -9), against 350 KB.
+// Benchmarks, not tests. Timing rules of ../shared/bench/TASKS.md: BENCH_WARMUP
+// (1) untimed calls, then n = clamp(floor(BENCH_BUDGET_S (3) / t_last_warmup),
+// BENCH_MIN_REPS (3), BENCH_MAX_REPS (15)) timed calls; the median.
 import fs from "node:fs";
+import path from "node:path";
 import zlib from "node:zlib";
+import { execFileSync } from "node:child_process";
+import { pathToFileURL } from "node:url";
 import { launchChromium } from "./chromium.mjs";
 import { startServer } from "./serve.mjs";
 
-const N = Number(process.env.BENCH_SIZE || 2048);
+const [W, H] = (process.env.BENCH_LAB_SIZE || "4000x3000").split("x").map(Number);
 const env = (k, d) => (process.env[k] !== undefined ? Number(process.env[k]) : d);
-const RULES = { budget: env("BENCH_BUDGET_S", 1.5), min: env("BENCH_MIN_REPS", 5), max: env("BENCH_MAX_REPS", 25), warm: env("BENCH_WARMUP", 2) };
+const RULES = { budget: env("BENCH_BUDGET_S", 3), min: env("BENCH_MIN_REPS", 3), max: env("BENCH_MAX_REPS", 15), warm: env("BENCH_WARMUP", 1) };
 /** TASKS.md's rule: warm-ups, then n timed calls; median, min, max (ms). `run` returns the ms of one call. */
 async function timed(run, rules) {
   let last = 0;
@@ -28,146 +37,261 @@ async function timed(run, rules) {
   return { median: ts[Math.floor(n / 2)], min: ts[0], max: ts[n - 1], n };
 }
 
-/** A deterministic test image: smooth ramps, blocks and discs, hash noise (0…255). */
-function image(n) {
-  const out = new Uint8Array(n * n);
-  for (let r = 0; r < n; r++) {
-    for (let c = 0; c < n; c++) {
-      let v = 60 + (100 * c) / n + 40 * Math.sin(r / 37);
+/** A deterministic texture (as ../shared/bench/gen_images.py's): smooth ramps, blocks, discs, hash noise (0…255). */
+function texture(w, h) {
+  const out = new Uint8Array(w * h);
+  for (let r = 0; r < h; r++) {
+    for (let c = 0; c < w; c++) {
+      let v = 70 + (70 * c) / w + (40 * r) / h + 25 * Math.sin(2 * Math.PI * ((1.5 * c) / w + (0.7 * r) / h));
       if (((c >> 6) + (r >> 6)) % 3 === 0) v += 50;
       const dx = (c % 128) - 64;
       const dy = (r % 128) - 64;
       if (dx * dx + dy * dy < 400) v -= 40;
-      let h = Math.imul(c, 0x9e3779b1) ^ Math.imul(r, 0x85ebca77);
-      h ^= h >>> 15;
-      h = Math.imul(h, 0x2c1b3c6d);
-      h ^= h >>> 12;
-      v += ((h >>> 0) % 33) - 16;
-      out[r * n + c] = Math.max(0, Math.min(255, Math.round(v)));
+      let x = Math.imul(c, 0x9e3779b1) ^ Math.imul(r, 0x85ebca77);
+      x ^= x >>> 15;
+      x = Math.imul(x, 0x2c1b3c6d);
+      x ^= x >>> 12;
+      v += ((x >>> 0) % 33) - 16;
+      out[r * w + c] = Math.max(0, Math.min(255, Math.round(v)));
     }
   }
   return out;
 }
 
-const half = N / 2;
-/** The operators, as [name, worker request type, arguments]; "frame" ones run on the scanned frame. */
+const [hc, hr] = [W >> 1, H >> 1];
+/** The operators, as [name, worker request type, arguments, the bench's fast path (FastImage) or null]; "frame" ones run on the scanned frame. */
 const OPS = [
-  ["filter mean 3×3", "filter", { kernel: "mean", border: "replicate" }],
-  ["filter Gaussian 3×3", "filter", { kernel: "gaussian-3", border: "replicate" }],
-  ["filter Gaussian 5×5", "filter", { kernel: "gaussian-5", border: "replicate" }],
-  ["filter median 3×3", "filter", { kernel: "median", border: "replicate" }],
-  ["filter LoG 5×5", "filter", { kernel: "log", border: "replicate" }],
-  ["edges Sobel (gx, gy, magnitude, direction)", "edges", { operator: "sobel", border: "replicate" }],
-  ["edges Prewitt (gx, gy, magnitude, direction)", "edges", { operator: "prewitt", border: "replicate" }],
-  ["Förstner w, q + points (5×5)", "forstner", { size: 5, sigmaN: 8, thresholdPx: 0.5, qMin: 0.5 }],
-  ["Förstner map kept (slider: once per size)", "forstnerMaps", { size: 5 }],
-  ["Förstner points from the kept map (threshold slider)", "forstnerPoints", { sigmaN: 8, thresholdPx: 0.5, qMin: 0.5 }],
-  ["Moravec map + points (4×4)", "moravec", { size: 4, threshold: 2000 }],
-  ["NCC 21×21 over 121×121 + subpixel + LSM", "correlation", { template: [half - 10, half - 10, 21, 21], search: [half - 60, half - 60, 121, 121], model: "shift-radiometric", sameImage: true }],
-  ["resample rotate 7°, scale 1.15 (nearest, bilinear, bicubic)", "resample", { kind: "rotate", params: [7, 1.15], width: N, height: N }],
-  ["boundary: threshold 128, region at the centre, trace", "boundary", { threshold: 128, c: half, r: half }],
-  ["fiducials: four marks + similarity and affine fits (scanned frame)", "fiducials", { frame: true }],
+  ["filter mean 3×3", "filter", { kernel: "mean", border: "replicate" }, (f) => f.mean3("replicate")],
+  ["filter Gaussian 3×3", "filter", { kernel: "gaussian-3", border: "replicate" }, (f) => f.gaussian(0.85, 1, "replicate")],
+  ["filter Gaussian 5×5", "filter", { kernel: "gaussian-5", border: "replicate" }, (f) => f.gaussian(1.0, 2, "replicate")],
+  ["filter median 3×3", "filter", { kernel: "median", border: "replicate" }, (f) => f.median3("replicate")],
+  ["filter LoG 5×5", "filter", { kernel: "log", border: "replicate" }, null],
+  ["filter custom 7×7 (k × k mean slider)", "filter", { kernel: "custom", border: "replicate", custom: Array(7).fill("1 1 1 1 1 1 1").join("\n"), divisor: 49 }, null],
+  ["edges Sobel (gx, gy, magnitude, direction)", "edges", { operator: "sobel", border: "replicate" }, (f) => f.sobel("replicate")],
+  ["edges Prewitt (gx, gy, magnitude, direction)", "edges", { operator: "prewitt", border: "replicate" }, null],
+  ["Förstner w, q + points (5×5)", "forstner", { size: 5, sigmaN: 8, thresholdPx: 0.5, qMin: 0.5 }, (f) => f.forstner(5)],
+  ["Förstner map kept (live threshold)", "forstnerMaps", { size: 5, sigmaN: 8 }, (f) => f.forstner(5)],
+  ["Förstner points from the kept map", "forstnerPoints", { sigmaN: 8, thresholdPx: 0.5, qMin: 0.5 }, null],
+  ["Moravec map + points (4×4)", "moravec", { size: 4, threshold: 2000 }, null],
+  ["NCC 21×21 over 121×121 + subpixel + LSM", "correlation", { template: [hc - 10, hr - 10, 21, 21], search: [hc - 60, hr - 60, 121, 121], model: "shift-radiometric", sameImage: true }, null],
+  ["resample rotate 7°, ×1.15 (nearest, bilinear, bicubic)", "resample", { kind: "rotate", params: [7, 1.15], width: W, height: H }, null],
+  ["boundary: threshold 128, region at the centre, trace", "boundary", { threshold: 128, c: hc, r: hr }, null],
+  ["fiducials: four marks + fits (scanned frame)", "fiducials", { frame: true }, null],
 ];
 
-// ------------------------------------------------------------------ Node
-// the build names files by their content: dist/assets.json maps logical names to them
-const ASSETS = fs.existsSync("dist/assets.json") ? JSON.parse(fs.readFileSync("dist/assets.json", "utf8")) : {};
+/** The built site (BENCH_DIST: another build of it). */
+const DIST = process.env.BENCH_DIST || "dist";
+const ASSETS = JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8"));
 const built = (f) => ASSETS[f] ?? f;
-// the build the worker loads where there is SIMD (pkg-simd), else the scalar one
-// (looked up through assets.json: the built file names carry content hashes)
-const hasSimd = fs.existsSync(new URL(`../dist/${built("lab/pkg-simd/photogrammetry_lab.js")}`, import.meta.url));
-const pkg = hasSimd && process.env.BENCH_LAB_SCALAR !== "1" ? "pkg-simd" : "pkg";
-const lab = await import(new URL(`../dist/${built(`lab/${pkg}/photogrammetry_lab.js`)}`, import.meta.url));
-lab.initSync({ module: fs.readFileSync(new URL(`../dist/${built(`lab/${pkg}/photogrammetry_lab_bg.wasm`)}`, import.meta.url)) });
-const frame = lab.scanned_frame();
-const approx = Array.from(lab.scanned_frame_truth().marks, Math.round);
-let kept = null;
-const call = (img, type, a) => {
-  switch (type) {
-    case "filter": return lab.run_filter(img, a.kernel, a.border);
-    case "edges": return lab.run_edges(img, a.operator, a.border);
-    case "forstner": return lab.run_forstner(img, a.size, a.sigmaN, a.thresholdPx, a.qMin);
-    case "forstnerMaps": kept?.free(); kept = lab.forstner_maps(img, a.size); return kept;
-    case "forstnerPoints": return kept.points(a.sigmaN, a.thresholdPx, a.qMin);
-    case "moravec": return lab.run_moravec(img, a.size, a.threshold);
-    case "correlation": return lab.run_correlation(img, Float64Array.from(a.template), img, Float64Array.from(a.search), a.model);
-    case "resample": return lab.run_resample(img, a.kind, Float64Array.from(a.params), a.width, a.height);
-    case "boundary": return lab.run_boundary(img, a.threshold, a.c, a.r);
-    case "fiducials": return lab.run_fiducials(frame, Float64Array.from(approx));
-    default: throw new Error(type);
+const bytes = texture(W, H);
+
+// ------------------------------------------------------------------ the bench's fast paths (Node)
+// FastImage: the lab's +simd128 build with the `bench` feature, as `npm run bench -- ops` builds it
+const pkg = path.resolve(process.env.BENCH_PKG || "target/bench-simd/pkg");
+if (!fs.existsSync(path.join(pkg, "photogrammetry_lab.js")) || process.env.BENCH_LAB_REBUILD === "1") {
+  console.error("bench lab: building the lab's FastImage (--features bench, +simd128, profile fast) for the fast-path column");
+  execFileSync("cargo", ["build", "-p", "photogrammetry-lab", "--features", "bench", "--profile", "fast", "--target", "wasm32-unknown-unknown", "--target-dir", "target/bench-simd"], { stdio: "inherit", env: { ...process.env, RUSTFLAGS: "-C target-feature=+simd128" } });
+  execFileSync("wasm-bindgen", ["--target", "web", "--no-typescript", "--out-dir", pkg, "target/bench-simd/wasm32-unknown-unknown/fast/photogrammetry_lab.wasm"], { stdio: "inherit" });
+}
+const fastMs = {};
+{
+  const lab = await import(pathToFileURL(path.join(pkg, "photogrammetry_lab.js")).href);
+  lab.initSync({ module: fs.readFileSync(path.join(pkg, "photogrammetry_lab_bg.wasm")) });
+  const img = new lab.FastImage(W, H, bytes);
+  for (const [name, , , fast] of OPS) {
+    if (!fast) continue;
+    try {
+      fastMs[name] = await timed(() => {
+        const t0 = performance.now();
+        fast(img);
+        return performance.now() - t0;
+      }, RULES);
+    } catch (e) {
+      fastMs[name] = null;
+      console.error(`bench lab: fast path for ${name}: ${e.message}`);
+    }
   }
-};
-const big = lab.image_from_u8(N, N, image(N));
-const fmt = (t) => `${t.median.toFixed(t.median < 10 ? 1 : 0)} [${t.min.toFixed(t.min < 10 ? 1 : 0)}–${t.max.toFixed(t.max < 10 ? 1 : 0)}]`;
-const node = {};
-for (const [name, type, a] of OPS) {
-  node[name] = await timed(() => {
-    const t0 = performance.now();
-    call(big, type, a);
-    return performance.now() - t0;
-  }, RULES);
-  console.error(`node: ${name}: ${fmt(node[name])} ms (n = ${node[name].n})`);
+  img.free();
 }
 
-// ------------------------------------------------------------------ Chromium worker
-const server = await startServer({ dir: "dist", port: 0 });
+// ------------------------------------------------------------------ Chromium
+const server = await startServer({ dir: DIST, port: 0 });
 const browser = await launchChromium();
 const chrome = {};
 try {
-  const page = await (await browser.newContext()).newPage();
+  const context = await browser.newContext({ serviceWorkers: "block" });
+  await context.addInitScript(() => {
+    globalThis.__playgroundTest = true;
+  });
+  const page = await context.newPage();
+  page.on("pageerror", (e) => console.error(`bench lab: page error: ${e.message}`));
   await page.goto(`${server.url}index.html`);
-  const bytesBig = Array.from(image(N));
-  const result = await page.evaluate(async ({ OPS, N, RULES, bytesBig, approx, WORKER, timedSrc }) => {
-    const timed = new Function(`return ${timedSrc}`)();
-    const w = new Worker(WORKER, { type: "module" });
-    let id = 0;
-    const ask = (type, args, transfer = []) => new Promise((resolve, reject) => {
-      const my = ++id;
-      const on = (ev) => {
-        if (ev.data.id !== my) return;
-        w.removeEventListener("message", on);
-        if (ev.data.ok) resolve(ev.data.ms);
-        else reject(new Error(ev.data.error));
-      };
-      w.addEventListener("message", on);
-      w.postMessage({ id: my, type, ...args }, transfer);
-    });
-    const out = {};
-    let loaded = null;
+  const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+  const many = env("BENCH_LAB_WORKERS", Math.min(8, cores));
+  chrome.cores = cores;
+  chrome.counts = [...new Set([1, many])];
+  chrome.ops = {};
+  chrome.memory = {};
+  await page.evaluate(({ W, H, bytes }) => {
+    window.benchBytes = Uint8Array.from(atob(bytes), (ch) => ch.charCodeAt(0));
+    window.benchSize = [W, H];
+  }, { W, H, bytes: Buffer.from(bytes).toString("base64") });
+  for (const n of chrome.counts) {
+    console.error(`bench lab: ${n} worker${n > 1 ? "s" : ""} …`);
+    chrome.ops[n] = {};
     for (const [name, type, a] of OPS) {
-      const want = a.frame ? "frame" : "big";
-      if (loaded !== want) {
-        if (want === "frame") await ask("frame", {});
-        else {
-          const b = Uint8Array.from(bytesBig);
-          await ask("raw", { width: N, height: N, bytes: b.buffer }, [b.buffer]);
+      const r = await page.evaluate(async ({ n, name, type, a, RULES, timedSrc }) => {
+        const timed = new Function(`return ${timedSrc}`)();
+        if (!window.benchClient || window.benchClient.threads !== n) {
+          window.benchClient?.close();
+          const { LabClient } = await import("./lab/lab.js");
+          window.benchClient = new LabClient({ onRestart: async () => {} }, { workers: n });
+          window.benchLoaded = null;
         }
-        loaded = want;
-      }
-      // the worker times each call itself (ms inside the worker)
-      out[name] = await timed(() => ask(type, a.frame ? { approx } : a), RULES);
+        const client = window.benchClient;
+        const want = a.frame ? "frame" : "big";
+        if (window.benchLoaded !== want) {
+          if (want === "frame") await client.call("frame");
+          else {
+            const [w, h] = window.benchSize;
+            const b = window.benchBytes.slice();
+            await client.call("raw", { width: w, height: h, bytes: b.buffer }, [b.buffer]);
+          }
+          window.benchLoaded = want;
+        }
+        const args = a.frame ? { approx: window.benchApprox ??= Array.from((await client.call("frame")).truth.marks, Math.round) } : a;
+        try {
+          // the kept map first, for the points from it
+          if (type === "forstnerPoints") await client.call("forstnerMaps", { size: 5, sigmaN: 8 });
+          const t = await timed(async () => {
+            const t0 = performance.now();
+            await client.call(type, args);
+            return performance.now() - t0;
+          }, RULES);
+          return t;
+        } catch (e) {
+          return { error: e.message };
+        }
+      }, { n, name, type, a, RULES, timedSrc: timed.toString() });
+      chrome.ops[n][name] = r;
+      console.error(`  ${name}: ${r.error ?? `${r.median.toFixed(0)} ms (n = ${r.n})`}`);
     }
-    out.engine = await new Promise((resolve) => {
-      w.addEventListener("message", (ev) => ev.data.id === -1 && resolve(ev.data.ok ? ev.data.result.build : "unknown (no engine request)"));
-      w.postMessage({ id: -1, type: "engine" });
+    chrome.memory[n] = await page.evaluate(async () => {
+      const client = window.benchClient;
+      const main = (await client.call("memory")).bytes;
+      const pool = await Promise.all(client.tiles.workers.filter(Boolean).map((w) => w.ask("memory", {}).then((m) => m.bytes)));
+      return { main, pool: Math.max(0, ...pool), instances: 1 + pool.length };
     });
-    w.terminate();
-    return out;
-  }, { OPS, N, RULES, bytesBig, approx, WORKER: `./${built("lab/worker.js")}`, timedSrc: timed.toString() });
-  Object.assign(chrome, result);
+  }
+  await page.evaluate(() => window.benchClient?.close());
+
+  // a 12 MP JPEG picked → on screen; slider → preview painted
+  const jpeg = Buffer.from(await page.evaluate(async () => {
+    const [w, h] = window.benchSize;
+    const rgba = new Uint8ClampedArray(w * h * 4);
+    const g = window.benchBytes;
+    for (let i = 0; i < g.length; i++) {
+      rgba[4 * i] = g[i];
+      rgba[4 * i + 1] = 255 - g[i];
+      rgba[4 * i + 2] = (g[i] * 3) & 255;
+      rgba[4 * i + 3] = 255;
+    }
+    const cv = new OffscreenCanvas(w, h);
+    cv.getContext("2d").putImageData(new ImageData(rgba, w, h), 0, 0);
+    const blob = await cv.convertToBlob({ type: "image/jpeg", quality: 0.9 });
+    const b = new Uint8Array(await blob.arrayBuffer());
+    let s = "";
+    for (let i = 0; i < b.length; i += 0x8000) s += String.fromCharCode(...b.subarray(i, i + 0x8000));
+    return btoa(s);
+  }), "base64");
+  chrome.jpegBytes = jpeg.length;
+  const shown = [];
+  const previews = { mean: [], forstner: [] };
+  for (let run = 0; run < 3; run++) {
+    const lab = await context.newPage();
+    lab.on("pageerror", (e) => console.error(`bench lab: page error: ${e.message}`));
+    await lab.setViewportSize({ width: 1280, height: 900 });
+    await lab.goto(`${server.url}index.html#/lab`);
+    await lab.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+    await lab.evaluate(() => {
+      const input = document.getElementById("lab-file");
+      input.addEventListener("change", () => {
+        window.benchT0 = performance.now();
+      }, { capture: true });
+      new MutationObserver(() => {
+        if (document.body.dataset.image === "texture.jpg" && document.body.dataset.lab === "idle" && !window.benchShown) window.benchShown = performance.now();
+      }).observe(document.body, { attributes: true });
+    });
+    await lab.setInputFiles("#lab-file", { name: "texture.jpg", mimeType: "image/jpeg", buffer: jpeg });
+    await lab.waitForFunction(() => window.benchShown, null, { timeout: 120_000 });
+    // one frame more: the drawn canvas on screen
+    shown.push(await lab.evaluate(() => new Promise((res) => requestAnimationFrame(() => res(window.benchShown - window.benchT0)))));
+    const previewOf = async (selector, value) => lab.evaluate(async ({ selector, value }) => {
+      delete document.body.dataset.previewMs;
+      const input = document.querySelector(selector);
+      input.value = String(value);
+      input.dispatchEvent(new Event(input.type === "range" ? "input" : "change", { bubbles: true }));
+      for (let i = 0; i < 600 && !document.body.dataset.previewMs; i++) await new Promise((res) => setTimeout(res, 5));
+      const ms = Number(document.body.dataset.previewMs);
+      const { settledForTests } = await import("./lab/lab.js");
+      await settledForTests();
+      return ms;
+    }, { selector, value });
+    await lab.selectOption("#lab-family", "filters");
+    await lab.selectOption("#lab-kernel", "mean-k");
+    for (const k of [5, 7, 9]) previews.mean.push(await previewOf("#lab-size", k));
+    await lab.selectOption("#lab-family", "interest");
+    await lab.click("#lab-run");
+    await lab.evaluate(async () => (await import("./lab/lab.js")).settledForTests());
+    for (const s of [7, 5]) previews.forstner.push(await previewOf("#lab-window", s));
+    await lab.close();
+  }
+  const med = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
+  chrome.shown = med(shown);
+  const ok = { mean: previews.mean.filter(Number.isFinite), forstner: previews.forstner.filter(Number.isFinite) };
+  chrome.preview = { mean: med(ok.mean), forstner: med(ok.forstner), n: { mean: `${ok.mean.length} of ${previews.mean.length}`, forstner: `${ok.forstner.length} of ${previews.forstner.length}` } };
+
+  // what a lab visit downloads
+  const visit = await context.newPage();
+  const fetched = [];
+  visit.on("request", (req) => fetched.push(new URL(req.url()).pathname.slice(1)));
+  await visit.goto(`${server.url}index.html`);
+  await visit.waitForLoadState("networkidle");
+  const before = fetched.length;
+  await visit.goto(`${server.url}index.html#/lab`);
+  await visit.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+  await visit.waitForLoadState("networkidle");
+  chrome.visit = [...new Set(fetched.slice(before))].filter((f) => /\.(js|wasm)$/.test(f));
+  await context.close();
 } finally {
   await browser.close();
   await server.close();
 }
 
-console.log(`\nThe image lab's operators on a ${N} × ${N} image (ms per call: median [min–max] of n timed calls after ${RULES.warm} warm-ups, n = clamp(${RULES.budget} s / last warm-up, ${RULES.min}, ${RULES.max})):`);
-console.log(`  Node: dist/lab/${pkg}; Chromium worker: the ${chrome.engine} build (timed inside the worker); fiducials on the scanned frame`);
-console.log(`  ${"operator".padEnd(66)} ${"Node".padStart(16)} ${"Chromium worker".padStart(18)}`);
-for (const [name] of OPS) console.log(`  ${name.padEnd(66)} ${fmt(node[name]).padStart(16)} ${fmt(chrome[name]).padStart(18)}`);
-
-const gz = (f) => zlib.gzipSync(fs.readFileSync(f), { level: 9 }).length;
-const files = [`dist/${built("lab/pkg/photogrammetry_lab_bg.wasm")}`, ...(fs.existsSync("dist/lab/pkg-simd") ? [`dist/${built("lab/pkg-simd/photogrammetry_lab_bg.wasm")}`] : []), "dist/lab/pkg/photogrammetry_lab.js", ...fs.readdirSync("dist/lab").filter((f) => /\.(js|css)$/.test(f)).map((f) => `dist/lab/${f}`)];
-const total = files.filter((f) => !f.includes("pkg-simd")).reduce((s, f) => s + gz(f), 0);
-console.log(`\nThe lab module, gzip -9 (loaded only when #/lab opens; one of the two wasm builds):`);
-for (const f of files) console.log(`  ${(gz(f) / 1024).toFixed(1).padStart(7)} KiB  ${f}`);
-console.log(`  ${(total / 1024).toFixed(1).padStart(7)} KiB  in all with the scalar wasm`);
+const ms = (t) => (!t ? "—" : t.error ? "error" : t.median.toFixed(t.median < 10 ? 1 : 0));
+const [one, many] = [chrome.counts[0], chrome.counts.at(-1)];
+console.log(`\nThe image lab on a ${W} × ${H} texture (${((W * H) / 1e6).toFixed(1)} MP) in Chromium, ${chrome.cores} cores: ms from the request to the whole result on the page,`);
+console.log(`median of n calls after ${RULES.warm} warm-up (n = clamp(${RULES.budget} s / last warm-up, ${RULES.min}, ${RULES.max})); the fast path: FastImage in Node, one call, same image`);
+const cols = [["operator", 58], ["fast path", 10], [`1 worker`, 10], [`${many} workers`, 10], [`${many} vs 1`, 8], ["1 w / fast", 10]];
+console.log(`  ${cols.map(([t, n], i) => (i ? t.padStart(n) : t.padEnd(n))).join(" ")}`);
+for (const [name] of OPS) {
+  const [f, a, b] = [fastMs[name], chrome.ops[one]?.[name], chrome.ops[many]?.[name]];
+  const ratio = (x, y) => (x?.median && y?.median ? `${(x.median / y.median).toFixed(2)}×` : "—");
+  console.log(`  ${name.padEnd(58)} ${ms(f).padStart(10)} ${ms(a).padStart(10)} ${ms(b).padStart(10)} ${ratio(a, b).padStart(8)} ${ratio(a, f).padStart(10)}`);
+}
+const num = (v, d = 0) => (Number.isFinite(v) ? v.toFixed(d) : "—");
+console.log(`  ${"12 MP colour JPEG picked → photo on screen".padEnd(58)} ${"".padStart(10)} ${num(chrome.shown).padStart(10)}   (median of 3; JPEG ${(chrome.jpegBytes / 1e6).toFixed(1)} MB)`);
+console.log(`  ${"slider change → preview painted: k × k mean size".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.mean, 1).padStart(10)}   (median of ${chrome.preview.n.mean})`);
+console.log(`  ${"slider change → preview painted: Förstner window".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.forstner, 1).padStart(10)}   (median of ${chrome.preview.n.forstner})`);
+const mib = (b) => `${(b / 2 ** 20).toFixed(0)} MiB`;
+for (const n of chrome.counts) {
+  const m = chrome.memory[n];
+  console.log(`  peak wasm memory, pool of ${n}: main worker ${mib(m.main)}, a pool worker ${mib(m.pool)} (${m.instances} instances)`);
+}
+const gz = (f) => zlib.gzipSync(fs.readFileSync(path.join(DIST, f)), { level: 9 }).length;
+const total = chrome.visit.reduce((s, f) => s + gz(f), 0);
+console.log(`\nA lab visit (#/lab after the home page) fetched these JS and wasm files (gzip -9):`);
+for (const f of chrome.visit) console.log(`  ${(gz(f) / 1024).toFixed(1).padStart(7)} KiB  ${f}`);
+console.log(`  ${(total / 1024).toFixed(1).padStart(7)} KiB  in all (aim: ≤ 350 KB = ${(350000 / 1024).toFixed(1)} KiB)`);
+const wasm = chrome.visit.filter((f) => f.endsWith(".wasm"));
+console.log(`  lab wasm builds fetched: ${wasm.length} (${wasm.map((f) => (f === built("lab/pkg-simd/photogrammetry_lab_bg.wasm") ? "SIMD" : f === built("lab/pkg/photogrammetry_lab_bg.wasm") ? "scalar" : f)).join(", ")})`);

@@ -193,7 +193,10 @@ pub fn image_from_u8(width: usize, height: usize, data: &[u8]) -> Result<LabImag
         data.iter().map(|&v| f64::from(v)).collect(),
     )
     .map_err(js_error)?;
-    Ok(wrap(g, "raw", "grey", 8, 255.0))
+    let img = wrap(g, "raw", "grey", 8, 255.0);
+    // its bytes are these (the fast paths read them: no pass over the grid to find them)
+    let _ = img.bytes.set(Some(data.to_vec()));
+    Ok(img)
 }
 
 /// The generated scanned frame photo with Example 4's fiducials.

@@ -177,6 +177,42 @@ test("resampling by bands of output rows equals the one worker at every pixel", 
   assert.deepEqual(errors, []);
 });
 
+test("a colour photo (its BT.601 greys are not 8-bit) runs by bands of its grey values, equal to the one worker at every pixel", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  await client(2, [8, 8]);
+  // a colour PNG made here (lossless), opened as the photo
+  await page.evaluate(async () => {
+    const [w, h] = [203, 151];
+    const cv = new OffscreenCanvas(w, h);
+    const ctx = cv.getContext("2d");
+    const img = ctx.createImageData(w, h);
+    let s = 7;
+    for (let i = 0; i < w * h; i++) {
+      s = (Math.imul(s, 1103515245) + 12345) >>> 0;
+      const [c, r] = [i % w, Math.floor(i / w)];
+      const v = ((c >> 4) + (r >> 4)) % 2 ? 180 : 60;
+      img.data.set([v + (s >>> 28), (s >>> 24) & 255, 255 - v, 255], 4 * i);
+    }
+    ctx.putImageData(img, 0, 0);
+    const bytes = await (await cv.convertToBlob({ type: "image/png" })).arrayBuffer();
+    const r = await window.client.call("load", { name: "colour.png", bytes }, [bytes]);
+    if (r.colour !== "colour" || r.bytes) throw new Error(`not a colour photo of fractional greys: ${r.colour}, ${Boolean(r.bytes)}`);
+  });
+  const some = REQUESTS.filter(([type, a]) => (type === "filter" && ["custom", "median", "gaussian-5", "laplacian-8"].includes(a.kernel)) || type === "edges" || (type === "forstner" && a.size !== 9) || (type === "moravec" && a.size === 4));
+  const r = await compare(some);
+  assert.deepEqual(r.diffs, []);
+  assert.ok(r.points > 5, `${r.points} points`);
+  const rs = await page.evaluate(async () => {
+    const args = { kind: "rotate", params: [11, 0.9], width: 180, height: 140 };
+    const [b, one] = [await window.client.call("resample", args), await window.client.call("resample", { ...args, untiled: true })];
+    let n = 0;
+    one.layers.forEach((l, i) => l.data.forEach((v, j) => (n += Object.is(v, b.layers[i].data[j]) ? 0 : 1)));
+    return { n, bands: b.bands?.bands ?? 0 };
+  });
+  assert.equal(rs.n, 0, "resampled pixels differ");
+  assert.ok(rs.bands >= 2);
+  assert.deepEqual(errors, []);
+});
+
 test("bands equal the one worker on a tall thin and a wide flat image (bands of a few rows, halos over several bands)", { timeout: TEST_TIMEOUT * 2 }, async () => {
   const some = REQUESTS.filter(([type, a]) => (type === "filter" && ["custom", "median", "log"].includes(a.kernel) && a.border !== "zero") || type === "forstner" || (type === "moravec" && a.size === 8));
   for (const size of [[23, 400], [517, 40]]) {

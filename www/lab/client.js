@@ -78,7 +78,7 @@ export class LabClient {
     });
     if (!opens) return p;
     return p.then((r) => {
-      this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes });
+      this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes, grey: r.grey, bits: r.bits ?? 8, maxValue: r.maxValue ?? 255 });
       return r;
     });
   }

@@ -1,6 +1,7 @@
 // Image-wide operators over several workers by bands of rows, on any host
 // (no cross-origin isolation, no shared memory): the page keeps the open
-// photo's 8-bit bytes, cuts them into bands with their halo (rows of real
+// photo's 8-bit bytes (or its grey values, when it is not 8-bit: a colour
+// photo's BT.601 greys), cuts them into bands with their halo (rows of real
 // neighbours above and below, as many as the operator needs: the wasm's
 // op_halo; so the border policy acts only at the image's own edges and a
 // window near a band's edge sees what it sees in the whole image),
@@ -66,9 +67,13 @@ export class Tiles {
     this.mapRuns = 0;
   }
 
-  /** The open photo's 8-bit bytes (null: not 8-bit or none: the main worker runs everything). */
+  /**
+   * The open photo: { width, height, bytes } when it is 8-bit, else
+   * { width, height, grey, bits, maxValue } (its grey values); null: none
+   * (the main worker runs everything).
+   */
   setImage(img) {
-    this.image = img && img.bytes ? img : null;
+    this.image = img && (img.bytes || img.grey) ? img : null;
     this.kept = null;
   }
 
@@ -76,7 +81,23 @@ export class Tiles {
     const img = this.image;
     if (!img || args.untiled || img.width * img.height < this.minPixels) return false;
     if (type === "forstnerPoints") return this.kept !== null;
+    // the photo's own threshold is found on an 8-bit photo's bytes (exact_w_min)
+    if (type === "forstnerMaps") return Boolean(img.bytes);
     return BANDED.has(type) || type === "resample";
+  }
+
+  /**
+   * Rows [r0, r1) of the photo as a band request's fields, a copy whose
+   * buffer is transferred: `bytes`, or `values` with the sample depth.
+   */
+  rows(r0, r1) {
+    const { width, bytes, grey, bits, maxValue } = this.image;
+    if (bytes) {
+      const b = bytes.slice(r0 * width, r1 * width);
+      return [{ bytes: b.buffer }, [b.buffer]];
+    }
+    const v = grey.slice(r0 * width, r1 * width);
+    return [{ values: v.buffer, bits, maxValue }, [v.buffer]];
   }
 
   /** Pool worker `i`, started when first needed. */
@@ -171,7 +192,7 @@ export class Tiles {
   async run(type, args, onProgress = null) {
     if (type === "forstnerPoints") return this.points(args);
     if (type === "resample") return this.resample(args, onProgress);
-    const { width, height, bytes } = this.image;
+    const { width, height } = this.image;
     const halo = await this.halo(type, args);
     const bands = bandsOf(width, height, this.n, Math.max(this.minRows, 2 * halo));
     const job = ++this.jobs;
@@ -179,10 +200,9 @@ export class Tiles {
     const holders = new Map();
     const parts = await this.lanes(bands, height, onProgress, async (w, k, [start, end]) => {
       const [r0, r1] = [Math.max(0, start - halo), Math.min(height, end + halo)];
-      // a copy of the band's rows: its buffer is transferred
-      const b = bytes.slice(r0 * width, r1 * width);
+      const [data, transfer] = this.rows(r0, r1);
       const own = [0, start - r0, width, end - start];
-      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, bytes: b.buffer, own, at: [0, r0], keep: keep ? { job, band: k } : null }, [b.buffer]);
+      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, ...data, own, at: [0, r0], keep: keep ? { job, band: k } : null }, transfer);
       holders.set(k, w);
       return part;
     });
@@ -248,8 +268,8 @@ export class Tiles {
     const bands = bandsOf(args.width, args.height, this.n, this.minRows);
     const parts = await this.lanes(bands, args.height, onProgress, async (w, k, [row0, row1]) => {
       if (w.image !== img) {
-        const b = img.bytes.slice();
-        await w.ask("raw", { width: img.width, height: img.height, bytes: b.buffer }, [b.buffer]);
+        const [data, transfer] = this.rows(0, img.height);
+        await w.ask(img.bytes ? "raw" : "grey", { width: img.width, height: img.height, ...data }, transfer);
         w.image = img;
       }
       return w.ask("resample", { ...args, row0, row1 });

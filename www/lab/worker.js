@@ -134,19 +134,6 @@ function cut(r, own, at) {
   return { ...r, layers, points: Float64Array.from(kept) };
 }
 
-/** The image's values as bytes when it is 8-bit (kept with it), else null. */
-function bytesOf(img) {
-  if (!eightBit(img, img.u8 === undefined ? img.grey() : null)) throw new Error("image: previews and bands need an 8-bit image");
-  return img.u8;
-}
-
-/** The `w × h` box of `bytes` (`width` a row) from (c, r). */
-function crop(bytes, width, c, r, w, h) {
-  const outBytes = new Uint8Array(w * h);
-  for (let j = 0; j < h; j++) outBytes.set(bytes.subarray((r + j) * width + c, (r + j) * width + c + w), j * w);
-  return outBytes;
-}
-
 /** The signed scale's end colours as paint_layer takes them (colour-scales.js). */
 const ENDS = Uint8Array.from([...SIGNED_NEGATIVE, ...SIGNED_POSITIVE]);
 /** Rows a painting puts into its canvas at a time (the RGBA of one part in wasm memory). */
@@ -247,14 +234,15 @@ const handlers = {
     return out(OPS.moravec(need("a"), args), transfer);
   },
   /**
-   * One band of an operator (tiles.js): `bytes` (8-bit, `width × height`)
-   * are the band with its halo, `own` [c, r, w, h] the part of it whose
+   * One band of an operator (tiles.js): `bytes` (8-bit, `width × height`),
+   * or `values` (grey values of a photo with `bits`, `maxValue` that is not
+   * 8-bit), are the band with its halo, `own` [c, r, w, h] the part of it whose
    * pixels this band answers for, `at` [c, r] where the band lies in the
    * image. Answers as `type` does for the whole image, cut to `own` and
    * placed in the image.
    */
-  region({ op, args, width, height, bytes, own, at, keep = null }, transfer) {
-    const img = lab.image_from_u8(width, height, new Uint8Array(bytes));
+  region({ op, args, width, height, bytes, values, bits, maxValue, own, at, keep = null }, transfer) {
+    const img = bytes ? lab.image_from_u8(width, height, new Uint8Array(bytes)) : lab.image_from_grey(width, height, new Float64Array(values), bits, maxValue);
     try {
       if (op === "forstnerMaps" && keep) {
         // the band's map kept for the live threshold (keptPoints), the older jobs' dropped
@@ -318,7 +306,7 @@ const handlers = {
     const halo = lab.op_halo(op, args) ?? 0;
     const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
     const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
-    const img = lab.image_from_u8(c1 - c0, r1 - r0, crop(bytesOf(a), W, c0, r0, c1 - c0, r1 - r0));
+    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0);
     try {
       const r = cut(run(img, args), [rect[0] - c0, rect[1] - r0, rect[2], rect[3]], [c0, r0]);
       const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];
@@ -373,6 +361,11 @@ const handlers = {
   },
   fitMarks({ measured }) {
     return lab.fit_fiducial_marks(Float64Array.from(measured));
+  },
+  /** A photo that is not 8-bit as image "a" of a pool worker (its resampling bands: tiles.js). */
+  grey({ width, height, values, bits, maxValue }) {
+    put("a", lab.image_from_grey(width, height, new Float64Array(values), bits, maxValue));
+    return { width, height };
   },
   raw({ slot = "a", width, height, bytes }) {
     const img = lab.image_from_u8(width, height, new Uint8Array(bytes));

@@ -44,3 +44,53 @@ pub fn forstner_auto_threshold(
         _ => Ok(JsValue::NULL),
     }
 }
+
+/// A grey image of `width × height` `values` (row-major) with the sample
+/// depth of the photo it comes from (`bits`, `max_value`): a band of a
+/// photo that is not 8-bit (a colour photo's BT.601 greys, 16-bit values),
+/// which the pool's workers run as the main worker runs the whole photo.
+#[wasm_bindgen]
+pub fn image_from_grey(
+    width: usize,
+    height: usize,
+    values: &[f64],
+    bits: u32,
+    max_value: f64,
+) -> Result<LabImage, JsError> {
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(JsError::new("values: must be finite numbers"));
+    }
+    if !(max_value.is_finite() && max_value > 0.0 && (1..=32).contains(&bits)) {
+        return Err(JsError::new(
+            "bits: must be 1 to 32, and max_value a number above 0",
+        ));
+    }
+    let g = Grid::new("image", width, height, values.to_vec()).map_err(js_error)?;
+    Ok(wrap(g, "raw", "grey", bits, max_value))
+}
+
+/// The `w × h` box of `img` from `(c, r)` as an image of its own (a
+/// preview's part with its halo), its bytes with it when it is 8-bit.
+#[wasm_bindgen]
+pub fn crop_image(
+    img: &LabImage,
+    c: usize,
+    r: usize,
+    w: usize,
+    h: usize,
+) -> Result<LabImage, JsError> {
+    let g = img
+        .grid
+        .window(c, r, w, h)
+        .filter(|g| g.width() > 0 && g.height() > 0)
+        .ok_or_else(|| JsError::new("crop: the box must lie inside the image"))?;
+    let out = wrap(g, &img.format, &img.colour, img.bits, img.max_value);
+    if let Some(Some(bytes)) = img.bytes.get() {
+        let width = img.grid.width();
+        let part: Vec<u8> = (r..r + h)
+            .flat_map(|y| bytes[y * width + c..y * width + c + w].iter().copied())
+            .collect();
+        let _ = out.bytes.set(Some(part));
+    }
+    Ok(out)
+}
