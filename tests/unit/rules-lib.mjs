@@ -338,7 +338,7 @@ export function literalsOfJs(text) {
 export const OTHER_MEANINGS = Object.freeze({
   resample: {
     why: "the lab worker's operation (run_resample), not the worked example",
-    files: ["www/lab/families/resampling.js", "scripts/bench_lab.mjs"],
+    files: ["www/lab/families/resampling.js", "scripts/bench_lab.mjs", "www/lab/tiles.js", "lab/src/wasm/run.rs"],
   },
 });
 
