@@ -52,10 +52,12 @@ echo "build: cargo run --example catalog_json (catalog.json)"
 cargo run --quiet --example catalog_json -- "$STAGE"/catalog.json
 node scripts/catalog-json.mjs "$STAGE"
 # ... and its SIMD128 build (profile `fast`, the target dir `npm run bench -- ops`
-# also uses), which the lab's worker loads where the browser has SIMD.
-echo "build: cargo build --profile fast --target wasm32-unknown-unknown -p photogrammetry-lab (+simd128)"
+# also uses), which the lab's worker loads where the browser has SIMD: without the
+# `formats` feature (JPEG its only decoder; the worker has the scalar build above
+# decode the other formats), so that a lab visit downloads one build.
+echo "build: cargo build --profile fast --target wasm32-unknown-unknown -p photogrammetry-lab --no-default-features (+simd128)"
 RUSTFLAGS="-C target-feature=+simd128" cargo build --profile fast --target wasm32-unknown-unknown \
-  -p photogrammetry-lab --lib --target-dir target/bench-simd
+  -p photogrammetry-lab --lib --no-default-features --target-dir target/bench-simd
 bindgen --out-dir "$STAGE"/lab/pkg-simd target/bench-simd/wasm32-unknown-unknown/fast/photogrammetry_lab.wasm
 # KaTeX (loaded by math.js after the first numbers) as its authors minified it, and the QR
 # encoder of the printed worksheets (uqr, MIT, no dependencies: practice/sheets.js imports it

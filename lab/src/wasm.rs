@@ -254,6 +254,9 @@ mod paint;
 // The pool's bands (www/lab/tiles.js): Förstner's threshold over the whole photo.
 mod bands;
 
+// The page's SIMD build decodes JPEG only; the others come decoded from the scalar build.
+mod formats;
+
 // The operators' exports: run_*, ForstnerMaps, op_halo, exact_at (crate::ops).
 mod run;
 pub use run::*;

@@ -4,11 +4,13 @@
 // with the single worker's numbers at every pixel, layers and photos are
 // painted by the wasm (lab/src/paint.rs through web-sys) with the pixels the
 // page's JavaScript painted before, and a lab visit fetches one of the two
-// wasm builds.
+// wasm builds (the SIMD one, JPEG its only decoder: the scalar build comes
+// as the decoders when a photo of another format opens), within 350 KB gz.
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import fs from "node:fs";
+import zlib from "node:zlib";
 import { startServer } from "../../scripts/serve.mjs";
 import { DIST, launchChromium, TEST_TIMEOUT } from "./harness.mjs";
 
@@ -339,20 +341,36 @@ test("layers and photos are painted by the wasm (web-sys ImageData) with the pix
   assert.deepEqual(errors, []);
 });
 
-test("a lab visit fetches one lab wasm (the SIMD build), the pool's workers from the browser's cache", { timeout: TEST_TIMEOUT }, async () => {
+test("a lab visit fetches one lab wasm (the SIMD build, JPEG its only decoder) and at most 350 KB gz of lab JS and wasm; a PNG then brings the decoders", { timeout: TEST_TIMEOUT }, async () => {
   const ctx = await browser.newContext({ serviceWorkers: "block" });
+  await ctx.addInitScript(() => {
+    globalThis.__playgroundTest = true;
+  });
   const p = await ctx.newPage();
   const fetched = [];
-  p.on("request", (req) => fetched.push(new URL(req.url()).pathname));
+  p.on("request", (req) => fetched.push(new URL(req.url()).pathname.slice(1)));
+  await p.goto(`${server.url}index.html`);
+  await p.waitForLoadState("networkidle");
+  const home = fetched.length;
   await p.goto(`${server.url}index.html#/lab`);
-  await p.waitForFunction(() => /threads?\.$/.test(document.getElementById("lab-engine")?.textContent ?? ""), null, { timeout: 30_000 });
+  await p.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle" && /threads?\.$/.test(document.getElementById("lab-engine").textContent), null, { timeout: 30_000 });
   const cores = await p.evaluate(() => navigator.hardwareConcurrency);
   const engine = await p.textContent("#lab-engine");
-  const assets = JSON.parse(fs.readFileSync(`${DIST}/assets.json`, "utf8"));
-  const simd = `/${assets["lab/pkg-simd/photogrammetry_lab_bg.wasm"]}`;
-  const scalar = `/${assets["lab/pkg/photogrammetry_lab_bg.wasm"]}`;
+  const visit = [...new Set(fetched.slice(home))].filter((f) => /\.(js|wasm)$/.test(f));
+  // a PNG sample: the scalar build comes as the decoders
+  await p.selectOption("#lab-sample", "camera.png");
+  await p.click("#lab-open-sample");
+  await p.waitForFunction(() => (document.body.dataset.image || "").startsWith("camera.png") && document.body.dataset.lab === "idle", null, { timeout: 30_000 });
+  const info = await p.textContent("#lab-info");
+  const after = [...new Set(fetched)];
   await ctx.close();
+  const assets = JSON.parse(fs.readFileSync(`${DIST}/assets.json`, "utf8"));
+  const [simd, scalar] = ["lab/pkg-simd/photogrammetry_lab_bg.wasm", "lab/pkg/photogrammetry_lab_bg.wasm"].map((f) => assets[f]);
   assert.equal(engine, `Engine: fast (SIMD), ${Math.min(8, cores)} thread${Math.min(8, cores) > 1 ? "s" : ""}.`);
-  assert.ok(fetched.includes(simd), "the SIMD build is fetched");
-  assert.ok(!fetched.includes(scalar), "the scalar build is not fetched");
+  assert.deepEqual(visit.filter((f) => f.endsWith(".wasm")), [simd], "the visit fetches the SIMD build only");
+  const gz = (f) => zlib.gzipSync(fs.readFileSync(`${DIST}/${f}`), { level: 9 }).length;
+  const bytes = visit.reduce((s, f) => s + gz(f), 0);
+  assert.ok(bytes <= 350_000, `a lab visit: ${bytes} B gz of JS and wasm (${visit.join(", ")})`);
+  assert.match(info, /^camera\.png: 512 × 512 pixels, PNG, grey, 8-bit/);
+  assert.ok(after.includes(scalar), "the PNG was decoded by the scalar build");
 });

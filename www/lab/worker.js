@@ -11,9 +11,11 @@
 
 import { SIGNED_NEGATIVE, SIGNED_POSITIVE } from "../colour-scales.js";
 
-// The SIMD128 build (pkg-simd/, profile `fast`) where the browser validates
-// a tiny SIMD module (every current one does), the scalar build (pkg/)
-// otherwise or when pkg-simd/ is missing; scripts/build.sh writes both.
+// The SIMD128 build (pkg-simd/, profile `fast`, JPEG its only decoder)
+// where the browser validates a tiny SIMD module (every current one does),
+// the scalar build (pkg/, every decoder) otherwise or when pkg-simd/ is
+// missing; scripts/build.sh writes both. The SIMD build has the scalar
+// build decode the other formats (decoders()).
 const SIMD_PROBE = new Uint8Array([
   0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11,
 ]);
@@ -31,6 +33,34 @@ const ready = (simd ? import("./pkg-simd/photogrammetry_lab.js").then(init).then
   .then((m) => {
     lab = m;
   });
+/**
+ * The scalar build as the decoders of the SIMD build, which decodes JPEG
+ * only (scripts/build.sh): loaded when a photo of another format is first
+ * opened (a lab visit downloads them only then).
+ */
+let decoderModule = null;
+function decoders() {
+  decoderModule ??= import("./pkg/photogrammetry_lab.js").then(async (m) => {
+    await m.default();
+    return m;
+  });
+  return decoderModule;
+}
+
+/** File `bytes` decoded as image "a" or "b" of this build (by the decoders' build when this one has not the format's decoder). */
+async function decoded(name, bytes) {
+  if (lab.decodes_here(bytes)) return lab.decode_image(name, bytes);
+  const d = await decoders();
+  const img = d.decode_image(name, bytes);
+  try {
+    const p = img.photo();
+    return lab.image_from_decoded(img.width(), img.height(), img.grey(), img.format(), img.colour(), img.bits(), img.max_value(),
+      Float64Array.from([p.orientation, p.photoWidth, p.photoHeight, p.factor]));
+  } finally {
+    img.free();
+  }
+}
+
 /** A wasm module whose one export, `trap`, executes `unreachable`. */
 const UNREACHABLE = new Uint8Array([
   0, 97, 115, 109, 1, 0, 0, 0, 1, 4, 1, 96, 0, 0, 3, 2, 1, 0, 7, 8, 1, 4, 116, 114, 97, 112, 0, 0, 10, 5, 1, 3, 0, 0, 11,
@@ -178,14 +208,15 @@ function dropForstner() {
 
 const handlers = {
   async load({ slot = "a", name, bytes }, transfer) {
-    const img = lab.decode_image(name, new Uint8Array(bytes));
+    const img = await decoded(name, new Uint8Array(bytes));
     put(slot, img);
     // what decoding did: the EXIF orientation and the reduction (decode.rs's Photo)
     return { ...(await imageInfo(img, transfer)), photo: img.photo() };
   },
   /** A file's format, orientation and reduction from its header alone (the lab offers a reduction with it). */
-  probe({ name, bytes }) {
-    return lab.probe_image(name, new Uint8Array(bytes));
+  async probe({ name, bytes }) {
+    const b = new Uint8Array(bytes);
+    return (lab.decodes_here(b) ? lab : await decoders()).probe_image(name, b);
   },
   async frame({ slot = "a" }, transfer) {
     const img = lab.scanned_frame();
