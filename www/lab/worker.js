@@ -148,20 +148,32 @@ function cut(r, own, at) {
     const [c0, r0] = [Math.max(l.c0, oc), Math.max(l.r0, or)];
     const [c1, r1] = [Math.min(l.c0 + l.width, oc + ow), Math.min(l.r0 + l.height, or + oh)];
     const [w, h] = [Math.max(0, c1 - c0), Math.max(0, r1 - r0)];
-    const data = new l.data.constructor(w * h);
-    for (let j = 0; j < h; j++) {
-      const from = (r0 + j - l.r0) * l.width + (c0 - l.c0);
-      data.set(l.data.subarray(from, from + w), j * w);
+    let data;
+    if (w === l.width) {
+      // whole rows (a band): a view of them, no copy (its buffer is transferred)
+      data = l.data.subarray((r0 - l.r0) * l.width, (r0 - l.r0 + h) * l.width);
+    } else {
+      data = new l.data.constructor(w * h);
+      for (let j = 0; j < h; j++) {
+        const from = (r0 + j - l.r0) * l.width + (c0 - l.c0);
+        data.set(l.data.subarray(from, from + w), j * w);
+      }
     }
     return { ...l, c0: c0 + at[0], r0: r0 + at[1], width: w, height: h, data };
   });
   if (!r.points) return { ...r, layers };
-  const kept = [];
-  for (let i = 0; i < r.points.length; i += 6) {
-    const [c, rr] = [r.points[i], r.points[i + 1]];
-    if (c >= oc && c < oc + ow && rr >= or && rr < or + oh) kept.push(c + at[0], rr + at[1], ...r.points.subarray(i + 2, i + 6));
+  const p = r.points;
+  const points = new Float64Array(p.length);
+  let n = 0;
+  for (let i = 0; i < p.length; i += 6) {
+    const [c, rr] = [p[i], p[i + 1]];
+    if (c < oc || c >= oc + ow || rr < or || rr >= or + oh) continue;
+    points.set(p.subarray(i, i + 6), n);
+    points[n] += at[0];
+    points[n + 1] += at[1];
+    n += 6;
   }
-  return { ...r, layers, points: Float64Array.from(kept) };
+  return { ...r, layers, points: points.slice(0, n) };
 }
 
 /** The signed scale's end colours as paint_layer takes them (colour-scales.js). */
