@@ -861,3 +861,106 @@ fn warps_by_the_references_own_positions_equal_resample_warp() {
         }
     }
 }
+
+#[test]
+fn a_refined_suppressor_decides_on_the_exact_scores() {
+    use photogrammetry_playground::interest::{self, fast::stream::Suppressor};
+    let mut rng = Rng(11);
+    for &(w, h) in &[(40usize, 30usize), (7, 5), (1, 9)] {
+        for radius in 1..4 {
+            // exact scores with many ties and near-ties, pushed perturbed by
+            // up to 2.5·10⁻¹³ (relative): the refinement sorts them out
+            let exact: Vec<Option<f64>> = (0..w * h)
+                .map(|_| (rng.below(4) > 0).then(|| 1.0 + rng.below(5) as f64 * 1e-13))
+                .collect();
+            let want = interest::suppress(&exact, w, h, radius);
+            let ex = exact.clone();
+            let mut s = Suppressor::new(w, h, radius)
+                .refined(1e-12, move |&i: &usize| ex[i].unwrap_or(f64::NAN));
+            let mut got = Vec::new();
+            let mut keep = |c: usize, r: usize, _: f64, p: usize| {
+                assert_eq!(p, r * w + c);
+                got.push(p);
+            };
+            for r in 0..h {
+                let row: Vec<(f64, usize)> = (0..w)
+                    .map(|c| {
+                        let i = r * w + c;
+                        let noise = (rng.below(11) as f64 - 5.0) * 5e-14;
+                        (exact[i].map_or(f64::NAN, |v| v * (1.0 + noise)), i)
+                    })
+                    .collect();
+                s.push(row, &mut keep);
+            }
+            s.finish(&mut keep);
+            assert_eq!(got, want, "{w}×{h} radius {radius}");
+        }
+    }
+}
+
+#[test]
+fn one_windows_sums_and_the_approximate_lambda_min() {
+    use photogrammetry_playground::interest::fast::stream::{self, Sums4};
+    for (k, &(w, h)) in SIZES.iter().enumerate() {
+        let bytes = random_image(w, h, 1300 + k as u64);
+        let img = Gray::new("img", &bytes, w, h).unwrap();
+        for size in [3, 4, 5, 8] {
+            let _ = stream::forstner_rows(img, size, |r, xx, yy, xy| {
+                for j in 0..xx.len() {
+                    let c = stream::fit(w, h, size).unwrap().c0 + j;
+                    let s = Sums4 {
+                        xx: xx[j],
+                        yy: yy[j],
+                        xy: xy[j],
+                    };
+                    assert_eq!(
+                        Sums4::at(&img, size, c, r),
+                        Some(s),
+                        "{w}×{h} size {size} ({c}, {r})"
+                    );
+                    let (e, a) = (s.lambda_min(), s.lambda_min_approx());
+                    assert!((e - a).abs() <= 1e-14 * e.abs(), "{e} vs {a}");
+                }
+            });
+            assert_eq!(Sums4::at(&img, size, w, 0), None);
+        }
+    }
+}
+
+#[test]
+fn the_w_q_rows_are_w_q_rounded() {
+    use photogrammetry_playground::interest::fast::stream::{w_q_row, Sums4};
+    let mut rng = Rng(21);
+    let n = 4000;
+    // random sums, and the edge cases: N = 0, straight edges (det 0), tiny
+    let mut xx: Vec<i32> = (0..n).map(|_| rng.below(60_000_000) as i32).collect();
+    let mut yy: Vec<i32> = (0..n).map(|_| rng.below(60_000_000) as i32).collect();
+    let mut xy: Vec<i32> = (0..n)
+        .map(|_| rng.below(60_000_000) as i32 - 30_000_000)
+        .collect();
+    for (i, (a, d, b)) in [
+        (0, 0, 0),
+        (4, 9, 6),
+        (4, 9, -6),
+        (1, 0, 0),
+        (25, 16, 20),
+        (3, 3, 3),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        (xx[i], yy[i], xy[i]) = (a, d, b);
+    }
+    let (mut w, mut q) = (vec![0.0f32; n], vec![0.0f32; n]);
+    w_q_row(&xx, &yy, &xy, &mut w, &mut q);
+    for i in 0..n {
+        let (ew, eq) = Sums4 {
+            xx: xx[i],
+            yy: yy[i],
+            xy: xy[i],
+        }
+        .w_q();
+        assert_eq!(w[i].to_bits(), (ew as f32).to_bits(), "w {i}");
+        assert_eq!(q[i].to_bits(), (eq as f32).to_bits(), "q {i}");
+    }
+}

@@ -303,6 +303,18 @@ fn interest_maps_and_points_equal_the_reference() {
                 nf += ps.len();
             }
         }
+        // the photo's automatic threshold: the reference's 99.9th percentile of w
+        for size in [3, 5, 7] {
+            let Ok(map) = photogrammetry_playground::interest::forstner_map(&img, size) else {
+                continue;
+            };
+            let mut ws: Vec<f64> = map.cells.iter().flatten().map(|m| m.w).collect();
+            ws.sort_by(f64::total_cmp);
+            let k = ((1.0 - ops::W_TOP_SHARE) * (ws.len() - 1) as f64).floor() as usize;
+            let kept = ops::ForstnerKept::new(&img, size).unwrap();
+            let got = kept.auto_threshold(8.0).map(|a| a.w_min);
+            assert_eq!(got, (ws[k] > 0.0).then_some(ws[k]), "w_min {size} {name}");
+        }
         for size in [3, 4, 5, 8] {
             for threshold in [0.0, 500.0, 4000.0] {
                 let fast = ops::moravec(&img, size, threshold);
@@ -440,6 +452,32 @@ fn ncc_surfaces_and_best_positions_equal_the_reference() {
             }
         }
     }
+}
+
+#[test]
+fn boundaries_equal_the_reference() {
+    use photogrammetry_playground::chain::{self, Connectivity};
+    let mut traced = 0;
+    for (name, img) in images() {
+        let (w, h) = (img.width(), img.height());
+        for threshold in [-1.0, 100.0, 128.0, 128.5, 300.0] {
+            for (c, r) in [(0, 0), (w / 2, h / 2), (w - 1, h / 3), (w / 5, h - 1)] {
+                let t = ops::boundary(&img, threshold, c, r).unwrap();
+                let mask = chain::region_at(&img, threshold, c, r, Connectivity::Eight).unwrap();
+                let want = chain::trace(&mask, Connectivity::Eight).remove(0);
+                let what = format!("{name} threshold {threshold} at ({c}, {r})");
+                check(&what, &t.region, w, h, |cc, rr| mask.get(cc, rr), rounded);
+                assert_eq!(t.boundary, want, "{what}");
+                assert_eq!(
+                    t.length,
+                    chain::length(&want.code, Connectivity::Eight),
+                    "{what}"
+                );
+                traced += want.pixels.len();
+            }
+        }
+    }
+    assert!(traced > 1000, "{traced} boundary pixels");
 }
 
 /// The rows `start … end` of a band run on `img`'s rows `start − halo …

@@ -23,8 +23,15 @@ fn layer(v: &JsValue, i: u32) -> JsValue {
 /// A layer's values (a `Float32Array`) as numbers.
 fn data(l: &JsValue) -> Vec<f64> {
     let v = get(l, "data");
-    assert!(v.is_instance_of::<Float32Array>(), "layers are Float32Arrays");
-    Float32Array::from(v).to_vec().into_iter().map(f64::from).collect()
+    assert!(
+        v.is_instance_of::<Float32Array>(),
+        "layers are Float32Arrays"
+    );
+    Float32Array::from(v)
+        .to_vec()
+        .into_iter()
+        .map(f64::from)
+        .collect()
 }
 
 fn message(e: wasm_bindgen::JsError) -> String {
@@ -446,7 +453,10 @@ fn args(fields: &[(&str, JsValue)]) -> JsValue {
 #[wasm_bindgen_test]
 fn halos_and_exact_values_across_the_boundary() {
     let filter = |k: &str| args(&[("kernel", k.into()), ("border", "crop".into())]);
-    assert_eq!(op_halo("filter".into(), filter("gaussian-5")).unwrap(), Some(2));
+    assert_eq!(
+        op_halo("filter".into(), filter("gaussian-5")).unwrap(),
+        Some(2)
+    );
     assert_eq!(op_halo("filter".into(), filter("median")).unwrap(), Some(1));
     let custom = args(&[
         ("kernel", "custom".into()),
@@ -488,8 +498,7 @@ fn halos_and_exact_values_across_the_boundary() {
             ),
             (
                 "layer",
-                exact_at(&img, &img, "edges".into(), edges.clone(), v.clone(), 1, 1)
-                    .map(|_| ()),
+                exact_at(&img, &img, "edges".into(), edges.clone(), v.clone(), 1, 1).map(|_| ()),
             ),
             (
                 "size",
@@ -498,7 +507,10 @@ fn halos_and_exact_values_across_the_boundary() {
         ] {
             let Err(e) = r else {
                 // a number is a size; a string names no operator
-                assert!(kind == "a number" && name == "size", "{name}({kind}) was taken");
+                assert!(
+                    kind == "a number" && name == "size",
+                    "{name}({kind}) was taken"
+                );
                 continue;
             };
             let m = message(e);

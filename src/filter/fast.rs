@@ -396,11 +396,16 @@ fn axpy(acc: &mut [f32], t: f32, src: &[f32]) {
 pub fn direction_deg(x: &[f32], y: &[f32], out: &mut [f32]) {
     use std::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
     const TAN_PI_8: f32 = 0.414_213_57;
-    for ((a, b), o) in x.iter().zip(y).zip(out.iter_mut()) {
-        let (gx, gy) = (a + 0.0, b + 0.0);
+    let n = out.len().min(x.len()).min(y.len());
+    let (x, y, out) = (&x[..n], &y[..n], &mut out[..n]);
+    // selects, not f32::min/max (libm calls in wasm): the loop vectorises
+    for i in 0..n {
+        let (gx, gy) = (x[i] + 0.0, y[i] + 0.0);
         let (ax, ay) = (gx.abs(), gy.abs());
-        let (lo, hi) = (ax.min(ay), ax.max(ay));
-        let t = if hi > 0.0 { lo / hi } else { 0.0 };
+        let swap = ay > ax;
+        let lo = if swap { ax } else { ay };
+        let hi = if swap { ay } else { ax };
+        let t = lo / if hi > 0.0 { hi } else { 1.0 };
         let reduce = t > TAN_PI_8;
         let u = if reduce { (t - 1.0) / (t + 1.0) } else { t };
         let z = u * u;
@@ -408,17 +413,11 @@ pub fn direction_deg(x: &[f32], y: &[f32], out: &mut [f32]) {
             * z
             * u
             + u;
-        let mut v = if reduce { FRAC_PI_4 + p } else { p };
-        if ay > ax {
-            v = FRAC_PI_2 - v;
-        }
-        if gx < 0.0 {
-            v = PI - v;
-        }
-        if gy < 0.0 {
-            v = -v;
-        }
-        *o = v * (180.0 / PI);
+        let v = if reduce { FRAC_PI_4 + p } else { p };
+        let v = if swap { FRAC_PI_2 - v } else { v };
+        let v = if gx < 0.0 { PI - v } else { v };
+        let v = if gy < 0.0 { -v } else { v };
+        out[i] = v * (180.0 / PI);
     }
 }
 

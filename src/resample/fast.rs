@@ -227,6 +227,10 @@ pub fn warp_affine_with(
             rule.locate(u, v)
                 .map_or(fill, |loc| sample(src, w, method, a, loc))
         };
+        if method == Method::Nearest {
+            nearest_row(img, m, yf, row, checked);
+            continue;
+        }
         let Some((c0, c1)) = interior_run(rule, m, yf, out_w) else {
             for (x, o) in row.iter_mut().enumerate() {
                 *o = checked(x);
@@ -252,6 +256,30 @@ pub fn warp_affine_with(
         }
     }
     Ok(())
+}
+
+/// Nearest neighbours of one output row: the affine position along the
+/// row rounded where it lies more than 10⁻⁹ px from a rounding edge and
+/// inside (the caller's own position is within 10⁻¹² px of it there, so
+/// both round alike); `checked(x)` (the caller's position, the reference's
+/// rules) elsewhere.
+fn nearest_row(img: Gray, m: &Affine, y: f64, row: &mut [f32], checked: impl Fn(usize) -> f32) {
+    const EDGE: f64 = 1e-9;
+    let (src, w, h) = (img.data(), img.width() as f64, img.height() as f64);
+    let base = row_base(m, y);
+    for (x, o) in row.iter_mut().enumerate() {
+        let (u, v) = along(m, base, x as f64);
+        let (fu, fv) = (u + 0.5, v + 0.5);
+        let (cu, cv) = (fu.floor(), fv.floor());
+        let (du, dv) = (fu - cu, fv - cv);
+        let clear = du > EDGE && du < 1.0 - EDGE && dv > EDGE && dv < 1.0 - EDGE;
+        *o = if clear && cu >= 0.0 && cv >= 0.0 && cu < w && cv < h {
+            let i = cv as usize * img.width() + cu as usize;
+            src.get(i).map_or(0.0, |&b| f32::from(b))
+        } else {
+            checked(x)
+        };
+    }
 }
 
 /// Any output → input map (a projective one): output pixel `(x, y)` is

@@ -75,30 +75,48 @@ pub fn boundary<'a>(
 
 /// The 8-connected region of the pixels on `(c, r)`'s side of `threshold`
 /// (`v ≥ threshold` or not, as `chain::region_at`): a mask of 1 and 0, and
-/// its pixel count.
+/// its pixel count. A scan-line fill: each seed is widened to its whole run
+/// of the row, then the rows above and below are searched over that run
+/// and one more pixel on each side (the diagonal neighbours).
 fn fill(g: Gray, threshold: f64, c: usize, r: usize) -> Option<(Vec<u8>, usize)> {
     let (w, h) = (g.width(), g.height());
     let data = g.data();
-    let start = *data
-        .get(r.checked_mul(w)?.checked_add(c)?)
-        .filter(|_| c < w)?;
+    if c >= w || r >= h {
+        return None;
+    }
     let side: Vec<bool> = (0..=255u8).map(|v| f64::from(v) >= threshold).collect();
-    let want = side[usize::from(start)];
+    let want = side[usize::from(data[r * w + c])];
     let same: Vec<bool> = side.iter().map(|&s| s == want).collect();
     let mut mask = vec![0u8; w * h];
-    let mut stack = vec![r * w + c];
-    mask[r * w + c] = 1;
+    let mut stack = vec![(c, r)];
     let mut area = 0;
-    while let Some(i) = stack.pop() {
-        area += 1;
-        let (pc, pr) = (i % w, i / w);
-        for nr in pr.saturating_sub(1)..(pr + 2).min(h) {
-            for nc in pc.saturating_sub(1)..(pc + 2).min(w) {
-                let j = nr * w + nc;
-                if mask[j] == 0 && same[usize::from(data[j])] {
-                    mask[j] = 1;
-                    stack.push(j);
+    while let Some((x, y)) = stack.pop() {
+        let row = y * w;
+        if mask[row + x] != 0 {
+            continue;
+        }
+        let (mut x0, mut x1) = (x, x);
+        while x0 > 0 && mask[row + x0 - 1] == 0 && same[usize::from(data[row + x0 - 1])] {
+            x0 -= 1;
+        }
+        while x1 + 1 < w && mask[row + x1 + 1] == 0 && same[usize::from(data[row + x1 + 1])] {
+            x1 += 1;
+        }
+        mask[row + x0..=row + x1].fill(1);
+        area += x1 - x0 + 1;
+        let (s0, s1) = (x0.saturating_sub(1), (x1 + 1).min(w - 1));
+        for ny in [y.wrapping_sub(1), y + 1] {
+            if ny >= h {
+                continue;
+            }
+            let nrow = ny * w;
+            let mut in_run = false;
+            for nx in s0..=s1 {
+                let open = mask[nrow + nx] == 0 && same[usize::from(data[nrow + nx])];
+                if open && !in_run {
+                    stack.push((nx, ny));
                 }
+                in_run = open;
             }
         }
     }

@@ -83,19 +83,32 @@ fn finish(mut full: Vec<f32>, w: usize, region: Region, f: impl Fn(f32) -> f32) 
     out
 }
 
-/// The integer-tap response `Σ n·f` of every pixel (`f32`, exact while
-/// `Σ|n|·255 < 2²⁴`), by the separable pass when the kernel factors.
-fn response(g: Gray, rows: &[Vec<f64>], border: Border) -> Result<Vec<f32>> {
+/// The response `Σ n·f / divisor` of every pixel (`f32`), by the
+/// separable pass when the kernel factors into integer vectors.
+fn response(g: Gray, rows: &[Vec<f64>], divisor: f32, border: Border) -> Result<Vec<f32>> {
     let (w, h) = (g.width(), g.height());
     let mut out = vec![0.0f32; w * h];
     if let Some((kx, ky)) = integer_factors(rows) {
-        fast::separable(g, &kx, &ky, 1.0, border, &mut out)?;
+        fast::separable(g, &kx, &ky, divisor, border, &mut out)?;
     } else {
         let k: Vec<f32> = rows.iter().flatten().map(|&v| v as f32).collect();
         let kw = rows.first().map_or(0, Vec::len);
-        fast::correlate(g, &k, (kw, rows.len()), 1.0, border, &mut out)?;
+        fast::correlate(g, &k, (kw, rows.len()), divisor, border, &mut out)?;
     }
     Ok(out)
+}
+
+/// Whether `Σ n·f / d` can be divided in `f32` with the reference's bits
+/// rounded to `f32`: integer taps with `Σ|n|·255 < 2²⁴` (every sum an
+/// exact integer in `f32`) and an integer divisor below 2²⁴ — the `f32`
+/// quotient of two exact integers is then the `f32` nearest the `f64`
+/// one (no double rounding: a quotient `s/d` never lies within 2⁻⁵³ of
+/// an `f32` midpoint it is not on).
+fn f32_division_exact(rows: &[Vec<f64>], d: f64) -> bool {
+    let taps = rows.iter().flatten();
+    let integer = taps.clone().all(|v| v.fract() == 0.0);
+    let range: f64 = taps.map(|v| v.abs()).sum::<f64>() * 255.0;
+    integer && range < 16_777_216.0 && d.fract() == 0.0 && d != 0.0 && d.abs() < 16_777_216.0
 }
 
 /// `Σ n·f / divisor` as the reference divides it (`f64`; `+ 0.0` turns a
@@ -131,27 +144,38 @@ pub fn fast_filter(
         None => {
             let mut out = vec![0u8; w * h];
             fast::median3(g, border, &mut out)?;
-            let data = (region.r0..region.r0 + region.height)
-                .flat_map(|r| {
-                    let start = r * w + region.c0;
-                    out.get(start..start + region.width).unwrap_or(&[]).to_vec()
-                })
-                .map(f32::from)
-                .collect();
+            let mut data = Vec::with_capacity(region.width * region.height);
+            for r in region.r0..region.r0 + region.height {
+                let start = r * w + region.c0;
+                let row = out.get(start..start + region.width).unwrap_or(&[]);
+                data.extend(row.iter().map(|&v| f32::from(v)));
+            }
             (data, false)
         }
         Some(k) => {
             let rows = k.numerators().rows();
             let d = k.divisor();
+            // divided in the pass (f32) where that gives the reference's
+            // value rounded, else summed there and divided here in f64
+            let in_pass = f32_division_exact(&rows, d);
+            let dp = if in_pass { d as f32 } else { 1.0 };
             let full = match separable_taps(kernel_name) {
                 Some((kx, ky, _)) => {
                     let mut out = vec![0.0f32; w * h];
-                    fast::separable(g, kx, ky, 1.0, border, &mut out)?;
+                    fast::separable(g, kx, ky, dp, border, &mut out)?;
                     out
                 }
-                None => response(g, &rows, border)?,
+                None => response(g, &rows, dp, border)?,
             };
-            let data = finish(full, w, region, |s| divided(s, d));
+            let whole_region = region.c0 == 0 && region.r0 == 0 && region.width == w;
+            let data = if in_pass && whole_region {
+                // (the passes start their sums at +0: no −0 to turn)
+                full
+            } else if in_pass {
+                finish(full, w, region, |v| v + 0.0)
+            } else {
+                finish(full, w, region, |s| divided(s, d))
+            };
             let signed = data.iter().any(|&v| v < 0.0);
             (data, signed)
         }
@@ -196,8 +220,9 @@ pub fn fast_edges(img: &Image, operator: &str, border: Border) -> Result<Option<
     let mut gy = vec![0.0f32; w * h];
     fast::separable(g, sx, &[1.0, 0.0, -1.0], 1.0, border, &mut gx)?;
     fast::separable(g, &[-1.0, 0.0, 1.0], sx, 1.0, border, &mut gy)?;
-    let gx = finish(gx, w, region, |v| v + 0.0);
-    let gy = finish(gy, w, region, |v| v + 0.0);
+    // (the passes start their sums at +0: no −0 to turn)
+    let gx = finish(gx, w, region, |v| v);
+    let gy = finish(gy, w, region, |v| v);
     let mag = gx
         .iter()
         .zip(&gy)

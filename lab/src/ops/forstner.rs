@@ -25,9 +25,9 @@ pub fn forstner<'a>(
     q_min: f64,
 ) -> Result<(Vec<Layer>, Vec<Point>)> {
     check_detect(sigma_n, threshold_px, q_min)?;
-    let mut kept = ForstnerKept::new(img, size)?;
     let t2 = threshold_px * threshold_px;
-    kept.suppress(sigma_n, q_min, t2);
+    // the map and the suppression for this T in one pass over the image
+    let mut kept = ForstnerKept::build(img, size, Some((sigma_n, q_min, t2)))?;
     let points = kept.points(sigma_n, threshold_px, q_min)?;
     Ok((std::mem::take(&mut kept.layers), points))
 }
@@ -131,8 +131,9 @@ fn top_rank(n: usize) -> usize {
 /// the 8-bit `bytes` (`width × height`) that `fit` places, from their `w`
 /// layer `wl` (full size, `f32`): found on the layer (rounding keeps the
 /// order), then the windows whose `f32` is that value recomputed exactly
-/// (their own sums). The lab's pool computes `wl` by bands and this on the
-/// whole photo (the same `w_min` as one [`ForstnerKept`]).
+/// (their own sums: one by one for a few, by a pass over the image for
+/// many). The lab's pool computes `wl` by bands and this on the whole
+/// photo (the same `w_min` as one [`ForstnerKept`]).
 pub fn exact_w_min(
     bytes: &[u8],
     width: usize,
@@ -145,40 +146,69 @@ pub fn exact_w_min(
         let start = r * width + fit.c0;
         wl.get(start..start + fit.columns).unwrap_or(&[])
     };
-    let mut all: Vec<f32> = (fit.r0..fit.r0 + fit.rows)
-        .flat_map(cells)
-        .copied()
-        .collect();
-    if all.is_empty() {
+    // the value of rank k by its bits (w ≥ 0: the order of the bits is the
+    // order of the values): a histogram of the top 16 bits, then the one
+    // bucket it falls in — two passes, no copy of the layer
+    let mut hist = vec![0usize; 1 << 16];
+    let mut n = 0;
+    for r in fit.r0..fit.r0 + fit.rows {
+        for &x in cells(r) {
+            hist[(x.to_bits() >> 16) as usize] += 1;
+            n += 1;
+        }
+    }
+    if n == 0 {
         return None;
     }
-    let k = top_rank(all.len());
-    let v = *all.select_nth_unstable_by(k, f32::total_cmp).1;
+    let k = top_rank(n);
+    let (mut bucket, mut before) = (0, 0);
+    for (b, &count) in hist.iter().enumerate() {
+        if before + count > k {
+            bucket = b;
+            break;
+        }
+        before += count;
+    }
+    let mut inside: Vec<f32> = (fit.r0..fit.r0 + fit.rows)
+        .flat_map(cells)
+        .copied()
+        .filter(|x| (x.to_bits() >> 16) as usize == bucket)
+        .collect();
+    let v = *inside
+        .select_nth_unstable_by(k.checked_sub(before)?, f32::total_cmp)
+        .1;
     if v == 0.0 {
         // a w rounds to 0 only when it is 0 (no w is that small)
         return Some(0.0);
     }
-    let below = all.iter().filter(|&&x| x < v).count();
-    drop(all);
+    let below = before + inside.iter().filter(|&&x| x < v).count();
+    let same = inside.iter().filter(|&&x| x == v).count();
+    drop(inside);
     let g = Gray::new("image", bytes, width, height).ok()?;
-    let mut group = Vec::new();
-    stream::forstner_rows(g, size, |r, xx, yy, xy| {
-        let row = cells(r);
-        for (j, &x) in row.iter().enumerate() {
-            if x == v {
-                group.push(
-                    Sums4 {
+    let mut group = Vec::with_capacity(same);
+    if same <= 4096 {
+        for r in fit.r0..fit.r0 + fit.rows {
+            for (j, &x) in cells(r).iter().enumerate() {
+                if x == v {
+                    group.push(Sums4::at(&g, size, fit.c0 + j, r)?.w_q().0);
+                }
+            }
+        }
+    } else {
+        stream::forstner_rows(g, size, |r, xx, yy, xy| {
+            for (j, &x) in cells(r).iter().enumerate() {
+                if x == v {
+                    let s = Sums4 {
                         xx: xx[j],
                         yy: yy[j],
                         xy: xy[j],
-                    }
-                    .w_q()
-                    .0,
-                );
+                    };
+                    group.push(s.w_q().0);
+                }
             }
-        }
-    })
-    .ok()?;
+        })
+        .ok()?;
+    }
     let rank = k.checked_sub(below)?;
     group.sort_by(f64::total_cmp);
     group.get(rank).copied()
@@ -246,6 +276,16 @@ impl ForstnerKept {
     /// Förstner's map over `size × size` windows: its `w` and `q` layers
     /// and `w_min` now, points later.
     pub fn new<'a>(img: impl Into<Image<'a>>, size: usize) -> Result<Self> {
+        ForstnerKept::build(img, size, None)
+    }
+
+    /// [`ForstnerKept::new`], and the suppression for `(σn, q_min, limit)`
+    /// in the same pass over the image when asked.
+    fn build<'a>(
+        img: impl Into<Image<'a>>,
+        size: usize,
+        detect: Option<(f64, f64, f64)>,
+    ) -> Result<Self> {
         let img = img.into();
         let Some(g) = img.gray() else {
             let map = interest::forstner_map(img.grid, size)?;
@@ -254,47 +294,55 @@ impl ForstnerKept {
                 let k = top_rank(w.len());
                 *w.select_nth_unstable_by(k, f64::total_cmp).1
             });
-            return Ok(ForstnerKept {
+            let mut kept = ForstnerKept {
                 size,
                 layers: map_layers(&map),
                 w_min,
                 source: Source::Reference(map),
                 suppressed: None,
-            });
+            };
+            if let Some((sigma_n, q_min, limit)) = detect {
+                kept.suppress(sigma_n, q_min, limit);
+            }
+            return Ok(kept);
         };
         let (width, height) = (g.width(), g.height());
         let mut wl = vec![f32::NAN; width * height];
         let mut ql = vec![f32::NAN; width * height];
+        let mut detector = detect.map(|(sigma_n, q_min, limit)| {
+            Detector::new(width, height, size, sigma_n, q_min, limit)
+        });
         let fit = stream::forstner_rows(g, size, |r, xx, yy, xy| {
             let c0 = r * width + interest::anchor(size);
             let (wo, qo) = (&mut wl[c0..c0 + xx.len()], &mut ql[c0..c0 + xx.len()]);
-            for ((((&a, &d), &b), wv), qv) in xx.iter().zip(yy).zip(xy).zip(wo).zip(qo) {
-                let (w, q) = Sums4 {
-                    xx: a,
-                    yy: d,
-                    xy: b,
-                }
-                .w_q();
-                *wv = w as f32;
-                *qv = q as f32;
+            stream::w_q_row(xx, yy, xy, wo, qo);
+            if let Some(d) = detector.as_mut() {
+                d.row(r, xx, yy, xy);
             }
         })?;
-        let mut kept = ForstnerKept {
+        let w_min = exact_w_min(g.data(), width, height, size, &wl, fit);
+        let suppressed = detector
+            .zip(detect)
+            .map(|(d, (sigma_n, q_min, limit))| Suppressed {
+                sigma_n,
+                q_min,
+                limit,
+                maxima: d.finish(),
+            });
+        Ok(ForstnerKept {
             size,
             layers: vec![
                 Layer::new("w", whole(width, height), wl, false),
                 Layer::new("q", whole(width, height), ql, false),
             ],
-            w_min: None,
+            w_min,
             source: Source::Fast {
                 bytes: g.data().to_vec(),
                 width,
                 height,
             },
-            suppressed: None,
-        };
-        kept.w_min = kept.exact_w_min(fit);
-        Ok(kept)
+            suppressed,
+        })
     }
 
     /// The window size the map was computed with.
@@ -317,33 +365,11 @@ impl ForstnerKept {
         })
     }
 
-    /// The exact `w` of rank [`top_rank`] among the windows of `fit`
-    /// ([`exact_w_min`] on this map's own image and `w` layer).
-    fn exact_w_min(&self, fit: stream::Fit) -> Option<f64> {
-        let Source::Fast {
-            bytes,
-            width,
-            height,
-        } = &self.source
-        else {
-            return None;
-        };
-        exact_w_min(
-            bytes,
-            *width,
-            *height,
-            self.size,
-            &self.layers.first()?.data,
-            fit,
-        )
-    }
-
     /// Suppression for `σn`, `q_min` among the round pixels with
     /// `λmax(Σuv) ≤ limit`.
     fn suppress(&mut self, sigma_n: f64, q_min: f64, limit: f64) {
         let var = sigma_n * sigma_n;
         let round = |q: f64| q_min <= 0.0 || q >= q_min;
-        let radius = self.size / 2;
         let mut maxima = Vec::new();
         match &self.source {
             Source::Fast {
@@ -351,63 +377,13 @@ impl ForstnerKept {
                 width,
                 height,
             } => {
-                let (w, h) = (*width, *height);
-                let Ok(g) = Gray::new("image", bytes, w, h) else {
+                let Ok(g) = Gray::new("image", bytes, *width, *height) else {
                     return;
                 };
-                let a = interest::anchor(self.size);
-                let mut sup = Suppressor::<Sums4>::new(w, h, radius);
-                let mut keep = |c: usize, r: usize, s: f64, sums: Sums4| {
-                    maxima.push(Maximum {
-                        c,
-                        r,
-                        lambda: -s,
-                        sums: Some(sums),
-                    });
-                };
-                // λmin ≤ 2w: a window with 2w below σn²/limit cannot pass
-                let floor = var / limit;
-                let mut row = vec![(f64::NAN, Sums4::default()); w];
-                let mut next = 0;
-                let fit = stream::forstner_rows(g, self.size, |r, xx, yy, xy| {
-                    while next < r {
-                        sup.push(
-                            std::iter::repeat_n((f64::NAN, Sums4::default()), w),
-                            &mut keep,
-                        );
-                        next += 1;
-                    }
-                    for (j, ((&a2, &d2), &b2)) in xx.iter().zip(yy).zip(xy).enumerate() {
-                        let s = Sums4 {
-                            xx: a2,
-                            yy: d2,
-                            xy: b2,
-                        };
-                        let (wv, q) = s.w_q();
-                        let mut score = f64::NAN;
-                        if round(q) && 2.0 * wv * (1.0 + 1e-9) >= floor {
-                            let lmin = s.lambda_min();
-                            if lmin > 0.0 {
-                                let l = var / lmin;
-                                if l <= limit {
-                                    score = -l;
-                                }
-                            }
-                        }
-                        row[a + j] = (score, s);
-                    }
-                    sup.push(row.iter().copied(), &mut keep);
-                    next = r + 1;
-                });
-                if fit.is_ok() {
-                    while next < h {
-                        sup.push(
-                            std::iter::repeat_n((f64::NAN, Sums4::default()), w),
-                            &mut keep,
-                        );
-                        next += 1;
-                    }
-                    sup.finish(&mut keep);
+                let mut d = Detector::new(*width, *height, self.size, sigma_n, q_min, limit);
+                if stream::forstner_rows(g, self.size, |r, xx, yy, xy| d.row(r, xx, yy, xy)).is_ok()
+                {
+                    maxima = d.finish();
                 }
             }
             Source::Reference(map) => {
@@ -425,7 +401,7 @@ impl ForstnerKept {
                     })
                     .collect();
                 let wd = map.width.max(1);
-                maxima = interest::suppress(&scores, map.width, map.height, radius)
+                maxima = interest::suppress(&scores, map.width, map.height, self.size / 2)
                     .into_iter()
                     .filter_map(|i| {
                         scores[i].map(|s| Maximum {
@@ -461,17 +437,160 @@ impl ForstnerKept {
             return Ok(Vec::new());
         };
         let m = (self.size - 2) * (self.size - 2);
+        let var = sigma_n * sigma_n;
         Ok(s.maxima
             .iter()
-            .filter(|x| x.lambda <= t2)
+            // (a fast maximum's λ is within 10⁻¹⁴ of the exact one)
+            .filter(|x| x.lambda <= t2 * (1.0 + REFINE))
             .filter_map(|x| {
-                let ms = match (&self.source, x.sums) {
-                    (_, Some(sums)) => sums.measures(m),
-                    (Source::Reference(map), None) => map.get(x.c, x.r)?,
+                let (ms, lambda) = match (&self.source, x.sums) {
+                    (_, Some(sums)) => (sums.measures(m), var / sums.lambda_min()),
+                    (Source::Reference(map), None) => (map.get(x.c, x.r)?, x.lambda),
                     _ => return None,
                 };
-                point_of(&ms, x.c, x.r, x.lambda, sigma_n, threshold_px)
+                (lambda <= t2).then_some(())?;
+                point_of(&ms, x.c, x.r, lambda, sigma_n, threshold_px)
             })
             .collect())
+    }
+}
+
+/// Relative distance under which approximate scores are compared exactly.
+const REFINE: f64 = 1e-12;
+
+/// Seed 003's candidates of the fast route, fed row by row into the
+/// suppression: a window is a candidate when round (`q ≥ q_min`) and
+/// `λmax(Σuv) = σn²/λmin ≤ limit`. A row's scores are first found by a
+/// loop the compiler vectorises, on the exact integers `16·det`, `4·trace`
+/// in `f64`: `λmin ≤ 2·det/trace` rules out most windows, the roundness is
+/// decided by products, `λmax(Σuv)` is `σn²·λmax/det` with `√` for
+/// `hypot` (within 10⁻¹⁴ of the exact one); a window within 10⁻⁹ of the
+/// roundness bound or the singular rule, or within 10⁻¹² of the limit, is
+/// decided exactly (`Sums4::w_q`, `Sums4::lambda_min`, the reference's
+/// numbers). The suppression compares the approximate scores and near-ties
+/// by the exact ones (`Suppressor::refined`), and a shown point's score is
+/// the exact one ([`ForstnerKept::points`]) — the reference's decisions and
+/// numbers.
+struct Detector {
+    sup: Suppressor<Sums4>,
+    maxima: Vec<Maximum>,
+    next: usize,
+    height: usize,
+    anchor: usize,
+    var: f64,
+    q_min: f64,
+    limit: f64,
+}
+
+impl Detector {
+    fn new(width: usize, height: usize, size: usize, sigma_n: f64, q_min: f64, limit: f64) -> Self {
+        let var = sigma_n * sigma_n;
+        let exact = move |s: &Sums4| -(var / s.lambda_min());
+        Detector {
+            sup: Suppressor::new(width, height, size / 2).refined(REFINE, exact),
+            maxima: Vec::new(),
+            next: 0,
+            height,
+            anchor: interest::anchor(size),
+            var,
+            q_min,
+            limit,
+        }
+    }
+
+    /// Row `r` of the fit: its windows' sums (from column `anchor`).
+    fn row(&mut self, r: usize, xx: &[i32], yy: &[i32], xy: &[i32]) {
+        while self.next < r {
+            self.empty_row();
+        }
+        let n = xx.len().min(yy.len()).min(xy.len());
+        let (xx, yy, xy) = (&xx[..n], &yy[..n], &xy[..n]);
+        let (var, q_min, limit) = (self.var, self.q_min, self.limit);
+        let floor = var / limit;
+        let a0 = self.anchor;
+        let fill = |scores: &mut [f64], payload: &mut [Sums4]| {
+            let scores = &mut scores[a0..a0 + n];
+            for i in 0..n {
+                let (a, d, b) = (f64::from(xx[i]), f64::from(yy[i]), f64::from(xy[i]));
+                // 4·trace and 16·det, exact integers
+                let (tr4, det4) = (a + d, a * d - b * b);
+                let t2 = tr4 * tr4;
+                let maybe = tr4 > 0.0 && det4 >= 2.0 * floor * tr4 * (1.0 - 1e-9);
+                // q = 4·det4/tr4²; singular: det4 ≤ 10⁻¹²·tr4²
+                let qd = 4.0 * det4 - q_min * t2;
+                let q_near = q_min > 0.0 && qd.abs() <= 1e-9 * q_min * t2;
+                let round = q_min <= 0.0 || qd > 0.0;
+                let sing_near = det4 <= 2e-12 * t2;
+                let x = (a - d) / 8.0;
+                let bb = b / 4.0;
+                let l = var * (tr4 / 8.0 + (x * x + bb * bb).sqrt()) / (det4 / 16.0);
+                let l_near = (l - limit).abs() <= limit * REFINE;
+                let near = q_near || sing_near || l_near;
+                scores[i] = if !maybe {
+                    f64::NAN
+                } else if near {
+                    f64::INFINITY
+                } else if round && l <= limit {
+                    -l
+                } else {
+                    f64::NAN
+                };
+            }
+            let payload = &mut payload[a0..a0 + n];
+            for i in 0..n {
+                let s = Sums4 {
+                    xx: xx[i],
+                    yy: yy[i],
+                    xy: xy[i],
+                };
+                payload[i] = s;
+                if scores[i] == f64::INFINITY {
+                    scores[i] = exact_score(s, var, q_min, limit);
+                }
+            }
+        };
+        let (sup, maxima) = (&mut self.sup, &mut self.maxima);
+        sup.push_with(fill, &mut keep(maxima));
+        self.next = r + 1;
+    }
+
+    fn empty_row(&mut self) {
+        self.sup.push_empty(&mut keep(&mut self.maxima));
+        self.next += 1;
+    }
+
+    /// The kept maxima, after the last rows.
+    fn finish(mut self) -> Vec<Maximum> {
+        while self.next < self.height {
+            self.empty_row();
+        }
+        self.sup.finish(&mut keep(&mut self.maxima));
+        self.maxima
+    }
+}
+
+/// The suppression's kept cells as maxima (their `λmax(Σuv)` within
+/// 10⁻¹⁴ of the exact one, found exactly when shown).
+fn keep(maxima: &mut Vec<Maximum>) -> impl FnMut(usize, usize, f64, Sums4) + '_ {
+    move |c, r, score, sums| {
+        maxima.push(Maximum {
+            c,
+            r,
+            lambda: -score,
+            sums: Some(sums),
+        })
+    }
+}
+
+/// The exact score `−λmax(Σuv)` of a candidate window, NaN otherwise (the
+/// reference's test, its numbers).
+fn exact_score(s: Sums4, var: f64, q_min: f64, limit: f64) -> f64 {
+    let round = q_min <= 0.0 || s.w_q().1 >= q_min;
+    let lmin = s.lambda_min();
+    let l = var / lmin;
+    if round && lmin > 0.0 && l <= limit {
+        -l
+    } else {
+        f64::NAN
     }
 }

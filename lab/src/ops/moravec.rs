@@ -49,10 +49,19 @@ pub fn moravec<'a>(
             next += 1;
         }
         let out = &mut data[r * w + a..r * w + a + sums.len()];
-        for (j, (&s, o)) in sums.iter().zip(out).enumerate() {
-            let mean = f64::from(s) / n;
-            *o = mean as f32;
-            row[a + j].0 = if mean > threshold { mean } else { f64::NAN };
+        for (&s, o) in sums.iter().zip(out.iter_mut()) {
+            *o = (f64::from(s) / n) as f32;
+        }
+        // a mean above the threshold needs a sum above threshold·n (up to
+        // rounding): only those are divided again, exactly
+        let floor = threshold * n * (1.0 - 1e-12);
+        for (&s, cell) in sums.iter().zip(&mut row[a..]) {
+            let v = f64::from(s);
+            cell.0 = if v > floor && v / n > threshold {
+                v / n
+            } else {
+                f64::NAN
+            };
         }
         sup.push(row.iter().copied(), &mut keep);
         next = r + 1;

@@ -219,7 +219,7 @@ pub fn resample<'a>(
                 let size = (band.width, band.height);
                 let a = rs::SEED_A;
                 match (method, warp.affine) {
-                    (Method::Bilinear | Method::Bicubic, Some(m)) => {
+                    (_, Some(m)) => {
                         // the band's rows: the map's constant part moved down
                         let m = [
                             [m[0][0], m[0][1], m[0][2] + m[0][1] * r0 as f64],

@@ -88,16 +88,20 @@ fn window_rows(
     let mut ring = vec![vec![vec![0i32; w]; channels]; k];
     let mut col = vec![vec![0i32; w]; channels];
     let mut out = vec![vec![0i32; f.columns]; channels];
+    // out[j] = Σ cs[j + 1 … j + k]: a running sum, the entering and
+    // leaving columns as two slices of equal length (no index checks)
     let horizontal = |col: &[Vec<i32>], out: &mut [Vec<i32>]| {
         for (cs, o) in col.iter().zip(out.iter_mut()) {
+            let Some((first, rest)) = o.split_first_mut() else {
+                continue;
+            };
             let mut s: i32 = cs.iter().skip(1).take(k).sum();
-            let mut it = o.iter_mut().enumerate().peekable();
-            while let Some((j, ov)) = it.next() {
+            *first = s;
+            let n = rest.len();
+            let (enter, leave) = (&cs[k + 1..k + 1 + n], &cs[1..1 + n]);
+            for ((ov, e), l) in rest.iter_mut().zip(enter).zip(leave) {
+                s += e - l;
                 *ov = s;
-                if it.peek().is_some() {
-                    s += cs.get(j + 1 + k).copied().unwrap_or(0)
-                        - cs.get(j + 1).copied().unwrap_or(0);
-                }
             }
         }
     };
@@ -188,6 +192,51 @@ impl Sums4 {
         (w, q)
     }
 
+    /// `16·det N` and `4·trace N` as exact integers (no singular rule).
+    pub fn det_trace(self) -> (i64, i64) {
+        let (a, d, b) = (i64::from(self.xx), i64::from(self.yy), i64::from(self.xy));
+        (a * d - b * b, a + d)
+    }
+
+    /// `λmin(N)` with `√(x² + y²)` for `hypot`: within 10⁻¹⁴ (relative) of
+    /// [`Sums4::lambda_min`], for a first sort.
+    pub fn lambda_min_approx(self) -> f64 {
+        let (trace, det, singular) = self.trace_det();
+        let s = self.sums();
+        let x = (s.gx2 - s.gy2) / 2.0;
+        let lambda_max = trace / 2.0 + (x * x + s.gxgy * s.gxgy).sqrt();
+        if singular || lambda_max <= 0.0 {
+            0.0
+        } else {
+            det / lambda_max
+        }
+    }
+
+    /// The sums of the `size × size` window whose reference pixel is
+    /// `(c, r)`, from its own pixels (one window; `None` where it does not
+    /// fit).
+    pub fn at(img: &Gray, size: usize, c: usize, r: usize) -> Option<Sums4> {
+        let a = anchor(size);
+        let (c0, r0) = (c.checked_sub(a)?, r.checked_sub(a)?);
+        if size < MIN_WINDOW || c0 + size > img.width() || r0 + size > img.height() {
+            return None;
+        }
+        let px = |x: usize, y: usize| {
+            i32::from(img.row(y).and_then(|row| row.get(x).copied()).unwrap_or(0))
+        };
+        let mut s = Sums4::default();
+        for y in r0 + 1..r0 + size - 1 {
+            for x in c0 + 1..c0 + size - 1 {
+                let dx = px(x + 1, y) - px(x - 1, y);
+                let dy = px(x, y + 1) - px(x, y - 1);
+                s.xx += dx * dx;
+                s.yy += dy * dy;
+                s.xy += dx * dy;
+            }
+        }
+        Some(s)
+    }
+
     /// `λmin(N)`, the bits of `Measures::from_sums`'s `lambda_min`.
     pub fn lambda_min(self) -> f64 {
         let (trace, det, singular) = self.trace_det();
@@ -199,6 +248,35 @@ impl Sums4 {
         } else {
             det / lambda_max
         }
+    }
+}
+
+/// [`Sums4::w_q`] of a row of windows, rounded to `f32`: the same
+/// operations on the same values (so the same bits), written with selects
+/// instead of branches so that the compiler vectorises the loop.
+pub fn w_q_row(xx: &[i32], yy: &[i32], xy: &[i32], w_out: &mut [f32], q_out: &mut [f32]) {
+    let n = xx
+        .len()
+        .min(yy.len())
+        .min(xy.len())
+        .min(w_out.len())
+        .min(q_out.len());
+    let (xx, yy, xy) = (&xx[..n], &yy[..n], &xy[..n]);
+    let (w_out, q_out) = (&mut w_out[..n], &mut q_out[..n]);
+    for i in 0..n {
+        let (a, d, b) = (
+            f64::from(xx[i]) / 4.0,
+            f64::from(yy[i]) / 4.0,
+            f64::from(xy[i]) / 4.0,
+        );
+        let trace = a + d;
+        let det_raw = a * d - b * b;
+        let singular = trace <= 0.0 || det_raw <= SINGULAR_TOL * trace * trace;
+        let det = if singular { 0.0 } else { det_raw };
+        let w = det / trace;
+        let q = 4.0 * det / (trace * trace);
+        w_out[i] = (if singular { 0.0 } else { w }) as f32;
+        q_out[i] = (if trace > 0.0 { q } else { f64::NAN }) as f32;
     }
 }
 
@@ -219,16 +297,13 @@ pub fn forstner_rows(
             let n = mid.len().saturating_sub(2);
             if let [xx, yy, xy] = rows {
                 let (xx, yy, xy) = (&mut xx[1..=n], &mut yy[1..=n], &mut xy[1..=n]);
-                let it = mid[2..]
-                    .iter()
-                    .zip(&mid[..n])
-                    .zip(down[1..=n].iter().zip(&up[1..=n]));
-                for (((((r, l), (d, u)), a), b), e) in it.zip(xx).zip(yy).zip(xy) {
-                    let dx = i32::from(*r) - i32::from(*l);
-                    let dy = i32::from(*d) - i32::from(*u);
-                    *a = dx * dx;
-                    *b = dy * dy;
-                    *e = dx * dy;
+                let (r, l, d, u) = (&mid[2..2 + n], &mid[..n], &down[1..=n], &up[1..=n]);
+                for i in 0..n {
+                    let dx = i32::from(r[i]) - i32::from(l[i]);
+                    let dy = i32::from(d[i]) - i32::from(u[i]);
+                    xx[i] = dx * dx;
+                    yy[i] = dy * dy;
+                    xy[i] = dx * dy;
                 }
             }
         },
@@ -259,13 +334,13 @@ pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32]))
                     let d = i32::from(a) - i32::from(b);
                     d * d
                 };
-                for (x, o) in s.iter_mut().enumerate() {
-                    // image column x + 1: its neighbours x, x + 1, x + 2
-                    let (l, c, r) = (x, x + 1, x + 2);
-                    *o = sq(mid[r], mid[l])
-                        + sq(down[c], up[c])
-                        + sq(down[r], up[l])
-                        + sq(down[l], up[r]);
+                // image column i + 1: its neighbours i, i + 1, i + 2
+                let (ml, mr) = (&mid[..n], &mid[2..2 + n]);
+                let (ul, uc, ur) = (&up[..n], &up[1..=n], &up[2..2 + n]);
+                let (dl, dc, dr) = (&down[..n], &down[1..=n], &down[2..2 + n]);
+                for i in 0..n {
+                    s[i] =
+                        sq(mr[i], ml[i]) + sq(dc[i], uc[i]) + sq(dr[i], ul[i]) + sq(dl[i], ur[i]);
                 }
             }
         },
@@ -285,15 +360,34 @@ pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32]))
 /// reported as `(c, r, score, payload)` in row-major order, each row once
 /// the `radius` rows below it are in ([`Suppressor::finish`] decides the
 /// last ones).
+///
+/// With [`Suppressor::refined`] the pushed scores may be approximations
+/// (within a quarter of `tol`, relative): two scores closer than `tol` are
+/// compared by `exact(payload)` instead, so the decisions are the exact
+/// scores' (the reported score is the pushed one).
 pub struct Suppressor<P> {
     width: usize,
     height: usize,
     radius: usize,
     /// `(row, scores, payloads)` in slot `row % (2·radius + 1)`.
     ring: Vec<(Option<usize>, Vec<f64>, Vec<P>)>,
+    /// Per slot, the largest score within `radius` columns of each cell
+    /// (`−∞` where none): a cell below a neighbour's beyond the tolerance
+    /// is out without a closer look.
+    near: Vec<Vec<f64>>,
+    /// A row of scratch for `near`.
+    scratch: Vec<f64>,
     pushed: usize,
     decided: usize,
+    refine: Option<Refine<P>>,
 }
+
+/// One row of the ring as `decide` reads it: row, scores, payloads, the
+/// largest score near each cell.
+type RingRow<'a, P> = (usize, &'a [f64], &'a [P], &'a [f64]);
+
+/// [`Suppressor::refined`]'s tolerance and exact score.
+type Refine<P> = (f64, Box<dyn Fn(&P) -> f64>);
 
 impl<P: Copy + Default> Suppressor<P> {
     pub fn new(width: usize, height: usize, radius: usize) -> Self {
@@ -305,9 +399,18 @@ impl<P: Copy + Default> Suppressor<P> {
             ring: (0..n)
                 .map(|_| (None, vec![f64::NAN; width], vec![P::default(); width]))
                 .collect(),
+            near: vec![vec![f64::NEG_INFINITY; width]; n],
+            scratch: vec![0.0; width],
             pushed: 0,
             decided: 0,
+            refine: None,
         }
+    }
+
+    /// Scores closer than `tol` (relative) compared by `exact(payload)`.
+    pub fn refined(mut self, tol: f64, exact: impl Fn(&P) -> f64 + 'static) -> Self {
+        self.refine = Some((tol, Box::new(exact)));
+        self
     }
 
     /// The next row's scores and payloads (`width` each; fewer are padded
@@ -317,6 +420,24 @@ impl<P: Copy + Default> Suppressor<P> {
         scores: impl IntoIterator<Item = (f64, P)>,
         kept: &mut impl FnMut(usize, usize, f64, P),
     ) {
+        self.push_with(
+            |s, p| {
+                for ((sv, pv), (so, po)) in scores.into_iter().zip(s.iter_mut().zip(p.iter_mut())) {
+                    *so = sv;
+                    *po = pv;
+                }
+            },
+            kept,
+        );
+    }
+
+    /// The next row written in place: `fill(scores, payloads)` gets the
+    /// row's slots (`width` each, scores `NaN` to start with).
+    pub fn push_with(
+        &mut self,
+        fill: impl FnOnce(&mut [f64], &mut [P]),
+        kept: &mut impl FnMut(usize, usize, f64, P),
+    ) {
         if self.pushed >= self.height {
             return;
         }
@@ -324,14 +445,35 @@ impl<P: Copy + Default> Suppressor<P> {
         let (tag, s, p) = &mut self.ring[self.pushed % n];
         *tag = Some(self.pushed);
         s.fill(f64::NAN);
-        for ((sv, pv), (so, po)) in scores.into_iter().zip(s.iter_mut().zip(p.iter_mut())) {
-            *so = sv;
-            *po = pv;
+        fill(s, p);
+        // the row's largest score within `radius` columns: the scores (no
+        // score: −∞) widened one column each way `radius` times, by
+        // element-wise selects over shifted slices (vectorised)
+        let near = &mut self.near[self.pushed % n];
+        for (m, &t) in near.iter_mut().zip(s.iter()) {
+            *m = if t.is_nan() { f64::NEG_INFINITY } else { t };
+        }
+        let w = near.len();
+        let prev = &mut self.scratch;
+        for _ in 0..self.radius.min(w) {
+            prev.copy_from_slice(near);
+            let (left, right) = (&prev[..w - 1], &prev[1..]);
+            for (m, &t) in near[1..].iter_mut().zip(left) {
+                *m = if t > *m { t } else { *m };
+            }
+            for (m, &t) in near[..w - 1].iter_mut().zip(right) {
+                *m = if t > *m { t } else { *m };
+            }
         }
         self.pushed += 1;
         while self.decided + self.radius < self.pushed {
             self.decide(kept);
         }
+    }
+
+    /// A row of no scores.
+    pub fn push_empty(&mut self, kept: &mut impl FnMut(usize, usize, f64, P)) {
+        self.push(std::iter::empty(), kept);
     }
 
     /// Decides the rows still open (after the last row is pushed; rows
@@ -347,6 +489,18 @@ impl<P: Copy + Default> Suppressor<P> {
         (*tag == Some(r)).then_some((&s[..], &p[..]))
     }
 
+    /// Whether `t` (payload `pt`) beats `s` (payload `ps`): higher, or the
+    /// same and `earlier` in row-major order.
+    fn beats(&self, t: f64, pt: &P, s: f64, ps: &P, earlier: bool) -> bool {
+        let (t, s) = match &self.refine {
+            Some((tol, exact)) if (t - s).abs() <= tol * t.abs().max(s.abs()) => {
+                (exact(pt), exact(ps))
+            }
+            _ => (t, s),
+        };
+        t > s || (earlier && t == s)
+    }
+
     fn decide(&mut self, kept: &mut impl FnMut(usize, usize, f64, P)) {
         let r = self.decided;
         self.decided += 1;
@@ -354,27 +508,46 @@ impl<P: Copy + Default> Suppressor<P> {
         let Some((scores, payload)) = self.row(r) else {
             return;
         };
+        // scores below `s − margin` never beat `s` (nor NaN): no closer look
+        let tol = self.refine.as_ref().map_or(0.0, |(t, _)| 2.0 * t);
         let (lo, hi) = (r.saturating_sub(rad), (r + rad + 1).min(self.pushed));
+        let n = self.ring.len();
+        let rows: Vec<RingRow<P>> = (lo..hi)
+            .filter_map(|rr| {
+                let (row, pay) = self.row(rr)?;
+                Some((rr, row, pay, &self.near[rr % n][..]))
+            })
+            .collect();
         for (c, &s) in scores.iter().enumerate() {
             if s.is_nan() {
                 continue;
             }
+            let floor = s - tol * s.abs();
+            // a neighbour higher beyond the tolerance: out at once
+            let ceiling = s + tol * s.abs();
+            if rows.iter().any(|(_, _, _, near)| near[c] > ceiling) {
+                continue;
+            }
+            let ps = &payload[c];
             let (c0, c1) = (c.saturating_sub(rad), (c + rad + 1).min(w));
             let mut best = true;
-            'scan: for rr in lo..hi {
-                let Some((row, _)) = self.row(rr) else {
-                    continue;
-                };
-                for (cc, &t) in row.iter().enumerate().take(c1).skip(c0) {
-                    // higher, or the same and earlier in row-major order
-                    if t > s || (t == s && (rr < r || (rr == r && cc < c))) {
+            'scan: for &(rr, row, pay, _) in &rows {
+                for cc in c0..c1 {
+                    let t = row[cc];
+                    // (NaN, no score: never ≥)
+                    let lower = t.partial_cmp(&floor).is_none_or(|o| o.is_lt());
+                    if lower || (rr == r && cc == c) {
+                        continue;
+                    }
+                    let earlier = rr < r || (rr == r && cc < c);
+                    if self.beats(t, &pay[cc], s, ps, earlier) {
                         best = false;
                         break 'scan;
                     }
                 }
             }
             if best {
-                kept(c, r, s, payload.get(c).copied().unwrap_or_default());
+                kept(c, r, s, *ps);
             }
         }
     }
