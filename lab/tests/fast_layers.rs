@@ -19,6 +19,14 @@
 //! And bands (item 4): each layer-producing operator run on a band of
 //! rows with `ops::halo` rows of real neighbours gives the whole image's
 //! rows (and points) at every pixel.
+//!
+//! Natively (`cargo test`) and as wasm with `+simd128` in Node (the lab's
+//! SIMD loops: `RUSTFLAGS="-C target-feature=+simd128" cargo test --target
+//! wasm32-unknown-unknown --target-dir target/simd128 -p photogrammetry-lab
+//! --test fast_layers`).
+
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
 
 use photogrammetry_lab::ops::{self, Image, Layer, Op, Rect};
 use photogrammetry_playground::correlation;

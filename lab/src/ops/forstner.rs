@@ -510,31 +510,15 @@ impl Detector {
         let a0 = self.anchor;
         let fill = |scores: &mut [f64], payload: &mut [Sums4]| {
             let scores = &mut scores[a0..a0 + n];
-            for i in 0..n {
-                let (a, d, b) = (f64::from(xx[i]), f64::from(yy[i]), f64::from(xy[i]));
-                // 4·trace and 16·det, exact integers
-                let (tr4, det4) = (a + d, a * d - b * b);
-                let t2 = tr4 * tr4;
-                let maybe = tr4 > 0.0 && det4 >= 2.0 * floor * tr4 * (1.0 - 1e-9);
-                // q = 4·det4/tr4²; singular: det4 ≤ 10⁻¹²·tr4²
-                let qd = 4.0 * det4 - q_min * t2;
-                let q_near = q_min > 0.0 && qd.abs() <= 1e-9 * q_min * t2;
-                let round = q_min <= 0.0 || qd > 0.0;
-                let sing_near = det4 <= 2e-12 * t2;
-                let x = (a - d) / 8.0;
-                let bb = b / 4.0;
-                let l = var * (tr4 / 8.0 + (x * x + bb * bb).sqrt()) / (det4 / 16.0);
-                let l_near = (l - limit).abs() <= limit * REFINE;
-                let near = q_near || sing_near || l_near;
-                scores[i] = if !maybe {
-                    f64::NAN
-                } else if near {
-                    f64::INFINITY
-                } else if round && l <= limit {
-                    -l
-                } else {
-                    f64::NAN
-                };
+            let k = Consts {
+                var,
+                q_min,
+                limit,
+                floor,
+            };
+            let done = scores_simd(xx, yy, xy, &k, scores);
+            for i in done..n {
+                scores[i] = k.score(f64::from(xx[i]), f64::from(yy[i]), f64::from(xy[i]));
             }
             let payload = &mut payload[a0..a0 + n];
             for i in 0..n {
@@ -593,4 +577,96 @@ fn exact_score(s: Sums4, var: f64, q_min: f64, limit: f64) -> f64 {
     } else {
         f64::NAN
     }
+}
+
+/// The constants of one detection.
+struct Consts {
+    var: f64,
+    q_min: f64,
+    limit: f64,
+    /// `σn²/limit`: the least `λmin` a candidate has.
+    floor: f64,
+}
+
+impl Consts {
+    /// The approximate score `−λmax(Σuv)` of the window with `Σdx² = a`,
+    /// `Σdy² = d`, `Σdx·dy = b`; NaN when it is no candidate; `+∞` when
+    /// only the exact numbers can tell ([`Detector`]).
+    #[inline(always)]
+    fn score(&self, a: f64, d: f64, b: f64) -> f64 {
+        let (var, q_min, limit) = (self.var, self.q_min, self.limit);
+        // 4·trace and 16·det, exact integers
+        let (tr4, det4) = (a + d, a * d - b * b);
+        let t2 = tr4 * tr4;
+        let maybe = tr4 > 0.0 && det4 >= 2.0 * self.floor * tr4 * (1.0 - 1e-9);
+        // q = 4·det4/tr4²; singular: det4 ≤ 10⁻¹²·tr4²
+        let qd = 4.0 * det4 - q_min * t2;
+        let q_near = q_min > 0.0 && qd.abs() <= 1e-9 * q_min * t2;
+        let round = q_min <= 0.0 || qd > 0.0;
+        let sing_near = det4 <= 2e-12 * t2;
+        let x = (a - d) / 8.0;
+        let bb = b / 4.0;
+        let l = var * (tr4 / 8.0 + (x * x + bb * bb).sqrt()) / (det4 / 16.0);
+        let l_near = (l - limit).abs() <= limit * REFINE;
+        if !maybe {
+            f64::NAN
+        } else if q_near || sing_near || l_near {
+            f64::INFINITY
+        } else if round && l <= limit {
+            -l
+        } else {
+            f64::NAN
+        }
+    }
+}
+
+/// [`Consts::score`] two windows at a time (`f64x2`); returns how many
+/// were scored.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+fn scores_simd(xx: &[i32], yy: &[i32], xy: &[i32], k: &Consts, out: &mut [f64]) -> usize {
+    use core::arch::wasm32::*;
+    let n = out.len().min(xx.len()).min(yy.len()).min(xy.len());
+    let sp = f64x2_splat;
+    let (var, qm, lim) = (sp(k.var), sp(k.q_min), sp(k.limit));
+    let fl2 = sp(2.0 * k.floor * (1.0 - 1e-9));
+    let q_on = if k.q_min > 0.0 {
+        u64x2_splat(u64::MAX)
+    } else {
+        u64x2_splat(0)
+    };
+    let q_off = v128_not(q_on);
+    let (nan, inf) = (sp(f64::NAN), sp(f64::INFINITY));
+    let mut i = 0;
+    while i + 2 <= n {
+        let pair = |v: &[i32]| f64x2(f64::from(v[i]), f64::from(v[i + 1]));
+        let (a, d, b) = (pair(xx), pair(yy), pair(xy));
+        let tr4 = f64x2_add(a, d);
+        let det4 = f64x2_sub(f64x2_mul(a, d), f64x2_mul(b, b));
+        let t2 = f64x2_mul(tr4, tr4);
+        let maybe = v128_and(f64x2_gt(tr4, sp(0.0)), f64x2_ge(det4, f64x2_mul(fl2, tr4)));
+        let qt = f64x2_mul(qm, t2);
+        let qd = f64x2_sub(f64x2_mul(sp(4.0), det4), qt);
+        let q_near = v128_and(q_on, f64x2_le(f64x2_abs(qd), f64x2_mul(sp(1e-9), qt)));
+        let round = v128_or(q_off, f64x2_gt(qd, sp(0.0)));
+        let sing_near = f64x2_le(det4, f64x2_mul(sp(2e-12), t2));
+        let x = f64x2_mul(f64x2_sub(a, d), sp(0.125));
+        let bb = f64x2_mul(b, sp(0.25));
+        let root = f64x2_sqrt(f64x2_add(f64x2_mul(x, x), f64x2_mul(bb, bb)));
+        let lmax = f64x2_add(f64x2_mul(tr4, sp(0.125)), root);
+        let l = f64x2_div(f64x2_mul(var, lmax), f64x2_mul(det4, sp(0.0625)));
+        let l_near = f64x2_le(f64x2_abs(f64x2_sub(l, lim)), f64x2_mul(lim, sp(REFINE)));
+        let near = v128_or(v128_or(q_near, sing_near), l_near);
+        let ok = v128_and(round, f64x2_le(l, lim));
+        let clear = v128_bitselect(f64x2_neg(l), nan, ok);
+        let v = v128_bitselect(v128_bitselect(inf, clear, near), nan, maybe);
+        out[i] = f64x2_extract_lane::<0>(v);
+        out[i + 1] = f64x2_extract_lane::<1>(v);
+        i += 2;
+    }
+    i
+}
+
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+fn scores_simd(_: &[i32], _: &[i32], _: &[i32], _: &Consts, _: &mut [f64]) -> usize {
+    0
 }
