@@ -254,7 +254,8 @@ test("layers and photos are painted by the wasm (web-sys ImageData) with the pix
   const toml = fs.readFileSync(new URL("../../lab/Cargo.toml", import.meta.url), "utf8");
   assert.match(toml, /^web-sys = \{ version = "0\.3", features = \["ImageData"\] \}$/m);
   await client(2, [64, 48]);
-  // layers as the operators give them: grey (0 … 255, halves, a flat one), signed with NaN and ±∞, f32, and two of over a megapixel (painted part by part)
+  // layers as the operators give them: grey (0 … 255, halves, a flat one), signed with NaN and ±∞, f32, two of over a megapixel (painted
+  // part by part) and two of over 2 MP (painted by bands on the pool's workers)
   const specs = [
     { w: 97, h: 61, signed: false, kind: "grey", type: "Float64Array" },
     { w: 50, h: 40, signed: false, kind: "halves", type: "Float64Array" },
@@ -265,6 +266,9 @@ test("layers and photos are painted by the wasm (web-sys ImageData) with the pix
     { w: 71, h: 5, signed: false, kind: "nan", type: "Float32Array" },
     { w: 1201, h: 1003, signed: false, kind: "grey", type: "Float32Array" },
     { w: 1100, h: 1000, signed: true, kind: "signed", type: "Float64Array" },
+    // over 2 MP: painted by bands on both workers
+    { w: 2101, h: 1103, signed: false, kind: "grey", type: "Float32Array" },
+    { w: 1500, h: 1500, signed: true, kind: "nan", type: "Float32Array" },
   ];
   const r = await page.evaluate(async (specs) => {
     const { SIGNED_NEGATIVE, SIGNED_POSITIVE } = await import("./colour-scales.js");

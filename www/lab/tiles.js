@@ -23,6 +23,8 @@
 
 /** A band has about this many pixels (several bands a worker: progress, balance, a quick cancel). */
 const BAND_PIXELS = 1 << 21;
+/** Layers with more pixels are painted by bands on every pool worker. */
+const PAINT_SPLIT = 1 << 21;
 /** Images with fewer pixels run on the main worker whole (bands would cost more than they save). */
 export const MIN_PIXELS = 1 << 19;
 
@@ -277,10 +279,36 @@ export class Tiles {
     return stitch(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
   }
 
-  /** Paints `layer` on a pool worker: { bitmap, scale } (worker.js `paint`). */
-  paint(layer) {
-    // a copy of the values: the page keeps its own (the inspector, the explained pixel read them)
-    return this.idle().ask("paint", { data: layer.data, width: layer.width, signed: Boolean(layer.signed) });
+  /**
+   * Paints `layer` on the pool: { bitmap, scale } (worker.js `paint`); a
+   * layer of more than PAINT_SPLIT pixels by bands of rows on every worker
+   * (each band's range, then each band painted on the whole range, the
+   * bitmaps drawn into one).
+   */
+  async paint(layer) {
+    const { width, data } = layer;
+    const height = data.length / width;
+    const signed = Boolean(layer.signed);
+    const k = Math.min(this.n, Math.floor(height / 16));
+    if (width * height <= PAINT_SPLIT || k < 2 || typeof OffscreenCanvas === "undefined") {
+      // a copy of the values: the page keeps its own (the inspector, the explained pixel read them)
+      return this.idle().ask("paint", { data, width, signed });
+    }
+    const job = (this.paints = (this.paints ?? 0) + 1);
+    const bands = Array.from({ length: k }, (_, i) => [Math.floor((i * height) / k), Math.floor(((i + 1) * height) / k)]);
+    const ranges = await Promise.all(bands.map(([r0, r1], i) => {
+      const part = data.slice(r0 * width, r1 * width);
+      return this.worker(i).ask("paintPart", { job, part: i, data: part, width }, [part.buffer]);
+    }));
+    const range = [Math.min(...ranges.map((r) => r[0])), Math.max(...ranges.map((r) => r[1]))];
+    const parts = await Promise.all(bands.map((_, i) => this.worker(i).ask("paintPart", { job, part: i, signed, range })));
+    const canvas = new OffscreenCanvas(width, height);
+    const ctx = canvas.getContext("2d");
+    parts.forEach((p, i) => {
+      ctx.drawImage(p.bitmap, 0, bands[i][0]);
+      p.bitmap.close();
+    });
+    return { bitmap: canvas.transferToImageBitmap(), scale: parts[0].scale };
   }
 }
 

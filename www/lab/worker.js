@@ -182,17 +182,18 @@ const ENDS = Uint8Array.from([...SIGNED_NEGATIVE, ...SIGNED_POSITIVE]);
 const PAINT_PIXELS = 1 << 20;
 
 /**
- * Values painted by the wasm (paint_layer): an ImageBitmap and the scale.
- * Large layers part by part (on the whole layer's scale) into an
- * OffscreenCanvas, so that their RGBA is never whole in wasm memory.
+ * Values painted by the wasm (paint_layer): an ImageBitmap and the scale
+ * (`whole`: [min, max] of the whole layer `data` is a part of, else
+ * `data`'s own). Large layers part by part (on the whole layer's scale)
+ * into an OffscreenCanvas, so that their RGBA is never whole in wasm memory.
  */
-async function painted(data, width, signed) {
+async function painted(data, width, signed, whole = null) {
   const height = data.length / width;
   if (typeof OffscreenCanvas === "undefined" || data.length <= PAINT_PIXELS) {
-    const { image, scale } = lab.paint_layer(data, width, Boolean(signed), ENDS);
+    const { image, scale } = lab.paint_layer(data, width, Boolean(signed), ENDS, whole ?? undefined);
     return { bitmap: await createImageBitmap(image), scale };
   }
-  const range = lab.layer_range(data);
+  const range = whole ?? lab.layer_range(data);
   const canvas = new OffscreenCanvas(width, height);
   const ctx = canvas.getContext("2d");
   const rows = Math.max(1, Math.floor(PAINT_PIXELS / width));
@@ -205,6 +206,9 @@ async function painted(data, width, signed) {
   }
   return { bitmap: canvas.transferToImageBitmap(), scale };
 }
+
+/** Parts of layers being painted on several workers (paintPart), by "job part": { job, data, width }. */
+const paintParts = new Map();
 
 /** The pool's bands of Förstner maps kept for the live threshold, by band: { job, kept, own, at }. */
 const keptBands = new Map();
@@ -335,9 +339,31 @@ const handlers = {
     return p;
   },
   /**
+   * A part of a large layer painted on several pool workers (tiles.js):
+   * first `{ job, part, data, width }` (kept here) → its [min, max], then
+   * `{ job, part, signed, range }` (the whole layer's range) → `{ bitmap,
+   * scale }`.
+   */
+  async paintPart({ job, part, data, width, signed, range }, transfer) {
+    const key = `${job} ${part}`;
+    if (data) {
+      // (parts of paintings long gone: a cancelled one never asks for its second step)
+      for (const [k, p] of paintParts) if (p.job < job - 8) paintParts.delete(k);
+      paintParts.set(key, { job, data, width });
+      return Array.from(lab.layer_range(data));
+    }
+    const p = paintParts.get(key);
+    if (!p) throw new Error("part: this part of the layer is not here (paint it again)");
+    paintParts.delete(key);
+    const out = await painted(p.data, p.width, signed, Float64Array.from(range));
+    transfer.push(out.bitmap);
+    return out;
+  },
+  /**
    * A preview of `op` (a band type of OPS) on image "a": the box `rect`
    * [c, r, w, h] at full resolution, read with the operator's halo of real
-   * neighbours around it (op_halo), so its pixels are the whole result's.
+   * neighbours around it (op_halo), so its pixels are the whole result's
+   * (on an 8-bit photo; others are rounded to 8 bits for it: crop_image).
    * Answers the layer named `name` (else the first) painted: `{ bitmap,
    * scale, name, rect }`, `rect` the image pixels it covers.
    */
@@ -349,7 +375,8 @@ const handlers = {
     const halo = lab.op_halo(op, args) ?? 0;
     const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
     const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
-    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0);
+    // (a photo that is not 8-bit rounded to 8 bits: the fast paths; the result's own numbers come with it)
+    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0, true);
     try {
       const r = cut(run(img, args), [rect[0] - c0, rect[1] - r0, rect[2], rect[3]], [c0, r0]);
       const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];

@@ -70,7 +70,11 @@ pub fn image_from_grey(
 }
 
 /// The `w × h` box of `img` from `(c, r)` as an image of its own (a
-/// preview's part with its halo), its bytes with it when it is 8-bit.
+/// preview's part with its halo), its bytes with it when it is 8-bit. With
+/// `eight_bit`, a photo that is not 8-bit (a colour photo's BT.601 greys,
+/// 16-bit values) comes rounded to 8 bits (`round(v · 255 / max_value)`),
+/// so that its preview takes the operators' fast paths: a preview, not the
+/// result's exact numbers.
 #[wasm_bindgen]
 pub fn crop_image(
     img: &LabImage,
@@ -78,19 +82,36 @@ pub fn crop_image(
     r: usize,
     w: usize,
     h: usize,
+    eight_bit: Option<bool>,
 ) -> Result<LabImage, JsError> {
     let g = img
         .grid
         .window(c, r, w, h)
         .filter(|g| g.width() > 0 && g.height() > 0)
         .ok_or_else(|| JsError::new("crop: the box must lie inside the image"))?;
-    let out = wrap(g, &img.format, &img.colour, img.bits, img.max_value);
-    if let Some(Some(bytes)) = img.bytes.get() {
-        let width = img.grid.width();
-        let part: Vec<u8> = (r..r + h)
-            .flat_map(|y| bytes[y * width + c..y * width + c + w].iter().copied())
-            .collect();
-        let _ = out.bytes.set(Some(part));
+    let width = img.grid.width();
+    match img.bytes.get_or_init(|| img.grid.to_u8()) {
+        Some(bytes) => {
+            let out = wrap(g, &img.format, &img.colour, img.bits, img.max_value);
+            let part: Vec<u8> = (r..r + h)
+                .flat_map(|y| bytes[y * width + c..y * width + c + w].iter().copied())
+                .collect();
+            let _ = out.bytes.set(Some(part));
+            Ok(out)
+        }
+        None if eight_bit == Some(true) => {
+            let k = 255.0 / img.max_value;
+            let part: Vec<u8> = g
+                .data()
+                .iter()
+                .map(|&v| (v * k).round().clamp(0.0, 255.0) as u8)
+                .collect();
+            let g8 = Grid::new("image", w, h, part.iter().map(|&v| f64::from(v)).collect())
+                .map_err(js_error)?;
+            let out = wrap(g8, &img.format, &img.colour, 8, 255.0);
+            let _ = out.bytes.set(Some(part));
+            Ok(out)
+        }
+        None => Ok(wrap(g, &img.format, &img.colour, img.bits, img.max_value)),
     }
-    Ok(out)
 }
