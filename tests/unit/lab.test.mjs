@@ -35,7 +35,7 @@ test("the lab's link: its state's entries in a fixed order, samples by name, the
   assert.equal(sampleOf("<script>"), null);
   assert.deepEqual(["filters", "correlation", "fiducials"].map(startSample), ["left01.jpg", "aero1.jpg", "frame"]);
   assert.equal(engineWords("simd128", 1), "fast (SIMD), 1 thread");
-  assert.equal(engineWords("scalar", 4), "standard (no SIMD), 4 threads for filters and edges");
+  assert.equal(engineWords("scalar", 4), "standard (no SIMD), 4 threads");
   // the example a link opens is the catalog's: the entry whose lab family and readings name it
   useCatalog([]);
   assert.equal(filterLink("mean", Array(25).fill(1), 5), null);
