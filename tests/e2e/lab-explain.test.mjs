@@ -98,6 +98,8 @@ async function explainAt(page, c, r) {
     c: pc,
     r: pr,
     value: Number(await page.getAttribute("#lab-explain-value", "data-value")),
+    // the layer's own value (f32) beside the exact one (issue 31, item 1)
+    layer: Number(await page.getAttribute("#lab-layer-value", "data-value")),
     href: await page.getAttribute("#lab-explain-link", "href"),
     key: await page.getAttribute("#lab-explain-link", "data-key"),
   };
@@ -123,6 +125,8 @@ test("filters: the example selects the clicked pixel (the window's centre) and i
     assert.equal(x.key, "selected");
     const a = await answerOf(context, page.url(), x.href, "selected");
     assert.equal(a.exact, x.value, `${kernel} at (${x.c}, ${x.r}): the example's selected pixel ${a.exact}, the lab ${x.value}`);
+    // the layer holds the exact value rounded to f32
+    assert.equal(x.layer, Math.fround(x.value), `${kernel}: the layer's ${x.layer} beside the exact ${x.value}`);
     showsValue(a.text, x.value, `${kernel} at (${x.c}, ${x.r})`);
     assert.match(a.line, /^Output at the selected pixel = /);
   }

@@ -270,24 +270,23 @@ test("fiducials: the student clicks the four marks, refines them, redoes one, an
 });
 
 /** A 2048² test image: 64-pixel checkerboard (50/200) with a texture. */
-async function openBig(page) {
-  await page.evaluate(async () => {
-    const n = 2048;
+async function openBig(page, n = 2048) {
+  await page.evaluate(async (n) => {
     const bytes = new Uint8Array(n * n);
     for (let r = 0; r < n; r++) for (let c = 0; c < n; c++) bytes[r * n + c] = (((c >> 6) + (r >> 6)) & 1 ? 200 : 50) + ((c * 7 + r * 13) % 17);
-    await (await import("./lab/lab.js")).openRawForTests(n, n, bytes, "big2048");
-  });
-  await page.waitForFunction(() => document.body.dataset.image === "big2048");
+    await (await import("./lab/lab.js")).openRawForTests(n, n, bytes, `big${n}`);
+  }, n);
+  await page.waitForFunction((n) => document.body.dataset.image === `big${n}`, n);
   await idle(page);
 }
 
 const bigGrey = (c, r) => (((c >> 6) + (r >> 6)) & 1 ? 200 : 50) + ((c * 7 + r * 13) % 17);
 
-/** The k×k mean of the big image at (c, r), replicating the edge. */
-function bigMean(c, r, k) {
+/** The k×k mean of the big image (n × n) at (c, r), replicating the edge. */
+function bigMean(c, r, k, n = 2048) {
   const h = (k - 1) / 2;
   let s = 0;
-  for (let dr = -h; dr <= h; dr++) for (let dc = -h; dc <= h; dc++) s += bigGrey(Math.min(2047, Math.max(0, c + dc)), Math.min(2047, Math.max(0, r + dr)));
+  for (let dr = -h; dr <= h; dr++) for (let dc = -h; dc <= h; dc++) s += bigGrey(Math.min(n - 1, Math.max(0, c + dc)), Math.min(n - 1, Math.max(0, r + dr)));
   return s / (k * k);
 }
 
@@ -312,7 +311,8 @@ test("live sliders on a 2048² image: the newest filter size wins (the running o
   await page.waitForFunction(() => document.body.dataset.filterShown === "mean 5×5", null, { timeout: 60_000 });
   await idle(page);
   let s = await labState(page, 1000, 1000);
-  assert.ok(Math.abs(s.value - bigMean(1000, 1000, 5)) < 1e-9);
+  // layers are f32: the exact mean rounded to f32 (docs/lab.md, fast image operators)
+  assert.equal(s.value, Math.fround(bigMean(1000, 1000, 5)));
   // a drag: 7, 9, 11, 13, each next value given while the run before it is still running (at its
   // first progress message: rows are left to compute), however fast the machine. Each value is
   // asked for once; each run but the last is stopped by the next value; what is drawn only ever
@@ -354,7 +354,7 @@ test("live sliders on a 2048² image: the newest filter size wins (the running o
   for (const [c, r] of [[1000, 1000], [3, 2], [2047, 640]]) {
     s = await labState(page, c, r);
     assert.equal(s.layer, "mean 13×13");
-    assert.ok(Math.abs(s.value - bigMean(c, r, 13)) < 1e-9, `(${c}, ${r}): ${s.value} vs ${bigMean(c, r, 13)}`);
+    assert.equal(s.value, Math.fround(bigMean(c, r, 13)), `(${c}, ${r}): ${s.value} vs ${bigMean(c, r, 13)}`);
   }
   assert.equal(await page.inputValue("#lab-size"), "13");
   assert.equal(await page.textContent("#lab-size-out"), "13×13");
@@ -391,14 +391,15 @@ test("live sliders on a 2048² image: the newest filter size wins (the running o
   await context.close();
 });
 
-test("Cancel during a long run on a 2048² image: the photo and the settings are kept, and the lab works after", { timeout: TEST_TIMEOUT * 4 }, async () => {
+test("Cancel during a long run on a 4096² image: the photo and the settings are kept, and the lab works after", { timeout: TEST_TIMEOUT * 4 }, async () => {
   const { page, log, context } = await openLab();
-  await openBig(page);
+  // 4096²: the 15×15 kernel runs on the fast path (exact integer sums), long enough for Cancel only at this size
+  await openBig(page, 4096);
   assert.equal((await labState(page)).sent.raw, 1);
   await page.selectOption("#lab-family", "filters");
   await page.selectOption("#lab-kernel", "custom");
   await page.selectOption("#lab-border", "reflect");
-  // a 15×15 kernel of unequal weights: the plain correlation, 225 products a pixel over 4.2 million pixels
+  // a 15×15 kernel of unequal weights: 225 products a pixel over 16.8 million pixels
   const kernel = Array.from({ length: 15 }, (_, j) => Array.from({ length: 15 }, (_, i) => 1 + ((i * 3 + j * 5) % 7)).join(" ")).join("\n");
   await page.fill("#lab-custom", kernel);
   await page.fill("#lab-divisor", "");
@@ -420,9 +421,9 @@ test("Cancel during a long run on a 2048² image: the photo and the settings are
   });
   await page.click("#lab-run");
   const at = await pressed;
-  const [, rows, pct] = at.text.match(/^Filtering \(custom\)… rows (\d+) of 2048 \((\d+) %\), \d+\.\d s Cancel$/);
-  assert.ok(Number(rows) >= 1 && Number(rows) < 2048 && Number(pct) === Math.round((100 * rows) / 2048), `${rows} rows, ${pct} %`);
-  assert.ok(at.rows >= Number(rows) && at.of === 2048, JSON.stringify(at));
+  const [, rows, pct] = at.text.match(/^Filtering \(custom\)… rows (\d+) of 4096 \((\d+) %\), \d+\.\d s Cancel$/);
+  assert.ok(Number(rows) >= 1 && Number(rows) < 4096 && Number(pct) === Math.round((100 * rows) / 4096), `${rows} rows, ${pct} %`);
+  assert.ok(at.rows >= Number(rows) && at.of === 4096, JSON.stringify(at));
   await idle(page);
   assert.equal(await page.textContent("#lab-notice"), "Cancelled. The photo and the settings are kept.");
   assert.equal(await page.locator("#lab-error").isHidden(), true);
@@ -430,8 +431,8 @@ test("Cancel during a long run on a 2048² image: the photo and the settings are
   // nothing was drawn, the photo and every setting are as they were
   assert.equal(await page.evaluate(() => document.body.dataset.filterShown ?? null), null);
   assert.equal((await labState(page)).layer, null);
-  assert.equal(await page.evaluate(() => document.body.dataset.image), "big2048");
-  assert.match(await page.textContent("#lab-info"), /big2048: 2048 × 2048 pixels/);
+  assert.equal(await page.evaluate(() => document.body.dataset.image), "big4096");
+  assert.match(await page.textContent("#lab-info"), /big4096: 4096 × 4096 pixels/);
   assert.equal(await page.inputValue("#lab-family"), "filters");
   assert.equal(await page.inputValue("#lab-kernel"), "custom");
   assert.equal(await page.inputValue("#lab-border"), "reflect");
@@ -443,9 +444,9 @@ test("Cancel during a long run on a 2048² image: the photo and the settings are
   await setRange(page, "#lab-size", [3], 0);
   await page.waitForFunction(() => document.body.dataset.filterShown === "mean 3×3", null, { timeout: 60_000 });
   await idle(page);
-  for (const [c, r] of [[0, 0], [1000, 1000], [2047, 2047], [64, 63]]) {
+  for (const [c, r] of [[0, 0], [1000, 1000], [4095, 4095], [64, 63]]) {
     const s = await labState(page, c, r);
-    assert.ok(Math.abs(s.value - bigMean(c, r, 3)) < 1e-9, `(${c}, ${r}): ${s.value} vs ${bigMean(c, r, 3)}`);
+    assert.equal(s.value, Math.fround(bigMean(c, r, 3, 4096)), `(${c}, ${r}): ${s.value} vs ${bigMean(c, r, 3, 4096)}`);
   }
   assert.match(await page.textContent("#lab-engine"), /^Engine: fast \(SIMD\)/);
   assert.deepEqual(log.pageErrors, []);

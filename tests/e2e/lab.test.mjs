@@ -433,8 +433,12 @@ test("a clicked pixel of each family opens its worked example with the same numb
     await clickPixel(page, c, r);
     await page.waitForSelector("#lab-explain-link");
     assert.match(await page.textContent("#lab-explain"), new RegExp(`at column ${c}, row ${r}:`));
+    // the exact value (the example's number), the layer's own f32 value beside it: the exact one
+    // rounded to f32 (the direction: within 1e-4°, docs/lab.md)
     const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
-    assert.equal(shown, inLab, `${family}/${layer}: the explained value is the layer's at (${c}, ${r})`);
+    assert.equal(Number(await page.getAttribute("#lab-layer-value", "data-value")), inLab, `${family}/${layer}: the layer's value beside`);
+    if (layer === "direction") assert.ok(Math.abs(shown - inLab) <= 1e-4, `direction at (${c}, ${r}): ${shown} vs ${inLab}`);
+    else assert.equal(Math.fround(shown), inLab, `${family}/${layer}: the explained value is the layer's at (${c}, ${r}), rounded to f32`);
     if (layer === "direction") {
       // edge-window has no direction result: the link opens the same window, and the lab says how the layer follows
       assert.match(await page.textContent("#lab-explain"), /atan2\(Gy, Gx\) in degrees/);

@@ -446,25 +446,13 @@ impl<P: Copy + Default> Suppressor<P> {
         *tag = Some(self.pushed);
         s.fill(f64::NAN);
         fill(s, p);
-        // the row's largest score within `radius` columns: the scores (no
-        // score: −∞) widened one column each way `radius` times, by
-        // element-wise selects over shifted slices (vectorised)
-        let near = &mut self.near[self.pushed % n];
-        for (m, &t) in near.iter_mut().zip(s.iter()) {
-            *m = if t.is_nan() { f64::NEG_INFINITY } else { t };
-        }
-        let w = near.len();
-        let prev = &mut self.scratch;
-        for _ in 0..self.radius.min(w) {
-            prev.copy_from_slice(near);
-            let (left, right) = (&prev[..w - 1], &prev[1..]);
-            for (m, &t) in near[1..].iter_mut().zip(left) {
-                *m = if t > *m { t } else { *m };
-            }
-            for (m, &t) in near[..w - 1].iter_mut().zip(right) {
-                *m = if t > *m { t } else { *m };
-            }
-        }
+        // the row's largest score within `radius` columns
+        widen(
+            &mut self.near[self.pushed % n],
+            s,
+            &mut self.scratch,
+            self.radius,
+        );
         self.pushed += 1;
         while self.decided + self.radius < self.pushed {
             self.decide(kept);
@@ -549,6 +537,25 @@ impl<P: Copy + Default> Suppressor<P> {
             if best {
                 kept(c, r, s, *ps);
             }
+        }
+    }
+}
+
+/// `near[c]` = the largest of `s[c − radius … c + radius]` (NaN, no score:
+/// −∞), by element-wise selects over shifted slices (vectorised).
+fn widen(near: &mut [f64], s: &[f64], prev: &mut [f64], radius: usize) {
+    for (m, &t) in near.iter_mut().zip(s.iter()) {
+        *m = if t.is_nan() { f64::NEG_INFINITY } else { t };
+    }
+    let w = near.len();
+    for _ in 0..radius.min(w) {
+        prev.copy_from_slice(near);
+        let (left, right) = (&prev[..w - 1], &prev[1..]);
+        for (m, &t) in near[1..].iter_mut().zip(left) {
+            *m = if t > *m { t } else { *m };
+        }
+        for (m, &t) in near[..w - 1].iter_mut().zip(right) {
+            *m = if t > *m { t } else { *m };
         }
     }
 }

@@ -73,6 +73,6 @@ export async function showPixel(lab, text, value, ask, link) {
   lab.explain.querySelector("#lab-explain-value")?.after(
     " ",
     el("span", { class: "lab-layer-value muted", id: "lab-layer-value", "data-value": String(value) },
-      `exact · the layer (f32) holds ${value === exact ? "the same" : fmt(value, 8)}`),
+      `exact · the layer (f32) holds ${value === exact ? "the same" : fmt(value, 9)}`),
   );
 }
