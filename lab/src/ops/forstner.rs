@@ -123,7 +123,7 @@ pub struct AutoThreshold {
 }
 
 /// The rank of `w_min` among `n` values of `w` (ascending).
-fn top_rank(n: usize) -> usize {
+pub fn top_rank(n: usize) -> usize {
     ((1.0 - W_TOP_SHARE) * (n - 1) as f64).floor() as usize
 }
 
@@ -147,15 +147,17 @@ pub fn exact_w_min(
         wl.get(start..start + fit.columns).unwrap_or(&[])
     };
     // the value of rank k by its bits (w ≥ 0: the order of the bits is the
-    // order of the values): a histogram of the top 16 bits, then the one
-    // bucket it falls in — two passes, no copy of the layer
-    let mut hist = vec![0usize; 1 << 16];
+    // order of the values): a histogram of the top 12 bits (16 KB, in the
+    // first-level cache), then the one bucket it falls in — two passes, no
+    // copy of the layer
+    let mut hist = vec![0u32; 1 << 12];
     let mut n = 0;
     for r in fit.r0..fit.r0 + fit.rows {
-        for &x in cells(r) {
-            hist[(x.to_bits() >> 16) as usize] += 1;
-            n += 1;
+        let row = cells(r);
+        for &x in row {
+            hist[(x.to_bits() >> 20) as usize] += 1;
         }
+        n += row.len();
     }
     if n == 0 {
         return None;
@@ -163,6 +165,7 @@ pub fn exact_w_min(
     let k = top_rank(n);
     let (mut bucket, mut before) = (0, 0);
     for (b, &count) in hist.iter().enumerate() {
+        let count = count as usize;
         if before + count > k {
             bucket = b;
             break;
@@ -172,7 +175,7 @@ pub fn exact_w_min(
     let mut inside: Vec<f32> = (fit.r0..fit.r0 + fit.rows)
         .flat_map(cells)
         .copied()
-        .filter(|x| (x.to_bits() >> 16) as usize == bucket)
+        .filter(|x| (x.to_bits() >> 20) as usize == bucket)
         .collect();
     let v = *inside
         .select_nth_unstable_by(k.checked_sub(before)?, f32::total_cmp)
