@@ -212,6 +212,23 @@ test("a colour photo (its BT.601 greys are not 8-bit) runs by bands of its grey 
   });
   assert.equal(rs.n, 0, "resampled pixels differ");
   assert.ok(rs.bands >= 2);
+  // Förstner's kept map: its layers, the photo's own threshold (the reference route's w_min) and points
+  const fk = await page.evaluate(async () => {
+    const client = window.client;
+    const diffs = [];
+    const bands = await client.call("forstnerMaps", { size: 5, sigmaN: 4 });
+    const t = bands.auto?.thresholdPx;
+    const bp = await client.call("forstnerPoints", { sigmaN: 4, thresholdPx: t ?? 1, qMin: 0.5 });
+    const one = await client.call("forstnerMaps", { size: 5, sigmaN: 4, untiled: true });
+    const op = await client.call("forstnerPoints", { sigmaN: 4, thresholdPx: t ?? 1, qMin: 0.5, untiled: true });
+    if (!bands.bands) diffs.push("did not run by bands");
+    if (JSON.stringify(bands.auto) !== JSON.stringify(one.auto)) diffs.push(`threshold ${JSON.stringify(bands.auto)}, not ${JSON.stringify(one.auto)}`);
+    one.layers.forEach((l, i) => l.data.forEach((v, j) => Object.is(v, bands.layers[i].data[j]) || diffs.push(`${l.name} ${j}`)));
+    if (JSON.stringify(Array.from(bp.points)) !== JSON.stringify(Array.from(op.points))) diffs.push(`points ${bp.points.length / 6}, not ${op.points.length / 6}`);
+    return { diffs: diffs.slice(0, 5), auto: one.auto, points: op.points.length / 6 };
+  });
+  assert.deepEqual(fk.diffs, []);
+  assert.ok(fk.auto && fk.points > 0, JSON.stringify(fk));
   assert.deepEqual(errors, []);
 });
 

@@ -83,8 +83,6 @@ export class Tiles {
     const img = this.image;
     if (!img || args.untiled || img.width * img.height < this.minPixels) return false;
     if (type === "forstnerPoints") return this.kept !== null;
-    // the photo's own threshold is found on an 8-bit photo's bytes (exact_w_min)
-    if (type === "forstnerMaps") return Boolean(img.bytes);
     return BANDED.has(type) || type === "resample";
   }
 

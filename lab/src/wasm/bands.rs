@@ -2,17 +2,20 @@
 //! (www/lab/tiles.js): Förstner's map is computed by bands of rows, each
 //! band keeping its own map for the live threshold, and the photo's
 //! automatic threshold is then found once over the whole `w` layer here,
-//! on the main worker's photo ([`ops::exact_w_min`]: the number one
-//! whole-image map gives).
+//! on the main worker's photo (the number one whole-image map gives).
 
 use super::*;
 
-use photogrammetry_playground::interest::fast::stream;
+use photogrammetry_playground::interest::{self, fast::stream};
 
-/// The threshold chosen for the photo `img` (8-bit) from its whole `w`
-/// layer `w` (`f32`, the photo's size, as the bands put it together) for
-/// `size × size` windows and `σn`: `{ thresholdPx, wMin, share }` (as
-/// `ForstnerMaps.auto_threshold`), or null when no pixel is textured.
+/// The threshold chosen for the photo `img` from its whole `w` layer `w`
+/// (`f32`, the photo's size, NaN where no window fits, as the bands put it
+/// together) for `size × size` windows and `σn`: `{ thresholdPx, wMin,
+/// share }` (as `ForstnerMaps.auto_threshold`), or null when no pixel is
+/// textured. `w_min` is the one whole-image map gives: on an 8-bit photo
+/// [`ops::exact_w_min`] (the fast route's sums), otherwise the `w` of rank
+/// [`ops::top_rank`] found on the layer (rounding keeps the order) and the
+/// windows whose `f32` is that value recomputed by `interest::forstner`.
 #[wasm_bindgen]
 pub fn forstner_auto_threshold(
     img: &LabImage,
@@ -28,13 +31,11 @@ pub fn forstner_auto_threshold(
             w.len()
         )));
     }
-    let Some(bytes) = img.bytes.get_or_init(|| img.grid.to_u8()).as_deref() else {
-        return Err(JsError::new(
-            "image: the bands' threshold needs an 8-bit photo",
-        ));
-    };
     let fit = stream::fit(width, height, size).map_err(js_error)?;
-    let w_min = ops::exact_w_min(bytes, width, height, size, w, fit);
+    let w_min = match img.bytes.get_or_init(|| img.grid.to_u8()).as_deref() {
+        Some(bytes) => ops::exact_w_min(bytes, width, height, size, w, fit),
+        None => reference_w_min(&img.grid, size, w),
+    };
     match w_min {
         Some(w_min) if w_min > 0.0 && sigma_n > 0.0 => obj(&[
             ("thresholdPx", num(sigma_n / w_min.sqrt())),
@@ -43,6 +44,32 @@ pub fn forstner_auto_threshold(
         ]),
         _ => Ok(JsValue::NULL),
     }
+}
+
+/// The reference route's `w_min` (the `w` of rank [`ops::top_rank`] among
+/// the windows that fit) from the `f32` layer `w` and the windows of its
+/// rank's value recomputed exactly.
+fn reference_w_min(grid: &Grid, size: usize, w: &[f32]) -> Option<f64> {
+    let mut all: Vec<f32> = w.iter().copied().filter(|v| !v.is_nan()).collect();
+    if all.is_empty() {
+        return None;
+    }
+    let k = ops::top_rank(all.len());
+    let v = *all.select_nth_unstable_by(k, f32::total_cmp).1;
+    let below = all.iter().filter(|&&x| x < v).count();
+    drop(all);
+    let width = grid.width();
+    let mut group: Vec<f64> = w
+        .iter()
+        .enumerate()
+        .filter(|(_, &x)| x == v)
+        .filter_map(|(i, _)| {
+            let win = interest::window_at(grid, i % width, i / width, size)?;
+            Some(interest::forstner(&win).ok()?.measures.w)
+        })
+        .collect();
+    group.sort_by(f64::total_cmp);
+    group.get(k.checked_sub(below)?).copied()
 }
 
 /// A grey image of `width × height` `values` (row-major) with the sample
