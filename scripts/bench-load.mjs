@@ -108,6 +108,12 @@ const kindOf = (p) => {
   if (/\.html?$/.test(p) || p.endsWith("/")) return "html";
   return "other";
 };
+/** The lab's built files (their logical names start with lab/ in the build's assets.json). */
+const LAB_FILES = new Set(
+  Object.entries(JSON.parse(fs.readFileSync(path.join(DIST, "assets.json"), "utf8")))
+    .filter(([logical]) => logical.startsWith("lab/"))
+    .map(([, built]) => built),
+);
 const gzCache = new Map();
 /** gzip -9 and raw size of the dist/ file behind a URL path (null when dist/ has none). */
 function distSize(pathname) {
@@ -303,7 +309,7 @@ function bytesOf(load, origin) {
     // the build's saved solution (scripts/prerender.mjs), HTML
     saved: sum((x) => x.path.startsWith("/prerender/")),
     other: sum((x) => x.kind === "other"),
-    lab: files.filter((x) => x.path.includes("/lab/")).map((x) => x.path),
+    lab: files.filter((x) => LAB_FILES.has(x.path.replace(/^\//, "")) || x.path.startsWith("/lab/")).map((x) => x.path),
   };
 }
 
@@ -479,34 +485,46 @@ try {
     for (const { id } of examples) results[id].redraw = await redrawTimes(id, redraws);
     process.stdout.write(`  redraws done (${((Date.now() - t0) / 1000).toFixed(0)} s)\n`);
   }
+
+  // 5: what a lab visit downloads (#/lab opened after the home page, as a student
+  // comes to it: the lab's own JS, CSS and the one wasm build its worker picks),
+  // and that no example requested any lab file (the build's logical names, assets.json).
+  {
+    const context = await browser.newContext(DESKTOP);
+    try {
+      const page = await context.newPage();
+      await page.addInitScript(() => {
+        globalThis.__playgroundTest = true;
+      });
+      const requested = [];
+      page.on("request", (r) => requested.push(new URL(r.url()).pathname));
+      await page.goto(`${server.url}#/`);
+      await page.waitForLoadState("networkidle");
+      const home = new Set(requested);
+      await page.goto(`${server.url}#/lab`);
+      await page.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60000 });
+      await page.waitForLoadState("networkidle");
+      const visit = [...new Set(requested)].filter((p) => !home.has(p) && ["js", "wasm", "css"].includes(kindOf(p)));
+      const sizes = visit.map((p) => ({ path: p, ...(distSize(p) ?? { raw: 0, gz: 0 }) }));
+      const photos = fs.readdirSync(path.join(DIST, "lab", "samples")).map((f) => fs.statSync(path.join(DIST, "lab", "samples", f)).size);
+      lab = {
+        module_gz: sizes.reduce((s, f) => s + f.gz, 0),
+        module_raw: sizes.reduce((s, f) => s + f.raw, 0),
+        wasm: sizes.filter((f) => f.path.endsWith(".wasm")).map((f) => f.path),
+        photos_raw: photos.reduce((s, n) => s + n, 0),
+        photos: photos.length,
+        files: sizes.length,
+        requested_by: Object.values(results).filter((r) => r.bytes?.lab.length).map((r) => r.id),
+      };
+    } finally {
+      await context.close();
+    }
+  }
 } finally {
   await browser.close();
   await server.close();
   await floorServer.close();
   fs.rmSync(floorDir, { recursive: true, force: true });
-}
-
-// 5: the lab module's size (everything under dist/lab/, sample photos apart)
-{
-  const walk = (dir) => fs.readdirSync(dir, { withFileTypes: true }).flatMap((d) => (d.isDirectory() ? walk(path.join(dir, d.name)) : [path.join(dir, d.name)]));
-  const labDir = path.join(DIST, "lab");
-  if (fs.existsSync(labDir)) {
-    const files = walk(labDir).map((f) => {
-      const raw = fs.readFileSync(f);
-      return { path: "/" + path.relative(DIST, f).split(path.sep).join("/"), raw: raw.length, gz: zlib.gzipSync(raw, { level: 9 }).length };
-    });
-    const photo = (f) => /\.(png|jpe?g|webp|gif|avif)$/i.test(f.path);
-    const mod = files.filter((f) => !photo(f) && !/\.(gz|br)$/.test(f.path));
-    const photos = files.filter(photo);
-    lab = {
-      module_gz: mod.reduce((s, f) => s + f.gz, 0),
-      module_raw: mod.reduce((s, f) => s + f.raw, 0),
-      photos_raw: photos.reduce((s, f) => s + f.raw, 0),
-      photos: photos.length,
-      files: mod.length,
-      requested_by: Object.values(results).filter((r) => r.bytes?.lab.length).map((r) => r.id),
-    };
-  }
 }
 
 // ---------------------------------------------------------------------------
@@ -608,7 +626,7 @@ const summary = [
   maxS
     ? `slowest settled (median; the steps, result and notes updated too): ${maxS.id} ${maxS.settled_ms.median.toFixed(1)} ms (redraw ${maxS.redraw_ms.median.toFixed(1)} + rest ${maxS.settled_ms.rest.toFixed(1)} + its frame ${maxS.settled_ms.rest_frame.toFixed(1)}; input to settled, the waits for frames included: ${maxS.settled_ms.wall.toFixed(1)}); worst single: ${worstS.id} ${worstS.settled_ms.max.toFixed(1)} ms`
     : "settled: not run",
-  lab ? `image lab: module ${KB(lab.module_gz)} KB gz (${lab.files} files, raw ${KB(lab.module_raw)} KB), sample photos ${KB(lab.photos_raw)} KB (${lab.photos} files, not compressible); lab files requested by an example: ${lab.requested_by.length ? `YES — ${lab.requested_by.join(", ")}` : "none (off every example's critical path)"}` : "image lab: dist/lab/ not found",
+  lab ? `image lab: a #/lab visit downloads ${KB(lab.module_gz)} KB gz of JS, CSS and wasm (${lab.files} files, raw ${KB(lab.module_raw)} KB; wasm: ${lab.wasm.join(", ")}), sample photos ${KB(lab.photos_raw)} KB (${lab.photos} files, not compressible); lab files requested by an example: ${lab.requested_by.length ? `YES — ${lab.requested_by.join(", ")}` : "none (off every example's critical path)"}` : "image lab: not measured",
   notOk.length ? `NOT SOLVED on the first load: ${notOk.join(", ")}` : `every example reached status "ok"`,
   `untimed requests (not in resource timing): ${rows.flatMap((r) => r.files.filter((f) => f.untimed).map((f) => `${r.id}:${f.path}`)).join(", ") || "none"}; files not in dist/: ${[...new Set(rows.flatMap((r) => r.files.filter((f) => !f.inDist).map((f) => f.path)))].join(", ") || "none"}`,
   `loads tried again (a mark's frame not reported): ${retried.length ? `${retried.length} — ${retried.join("; ")}` : "none"}`,
