@@ -336,9 +336,44 @@ export async function buildSite(stage, dist) {
     for (const i of outputs.get(f)?.imports ?? []) queue.push(i.path);
   }
   const lazy = [...[...outputs.keys()].filter((f) => !eager.has(f)), ...byName];
+  fs.writeFileSync(path.join(dist, "lms-files.json"), `${JSON.stringify(lmsFiles(dist, map, outputs))}\n`);
+
   fs.writeFileSync(path.join(dist, "assets.json"), `${JSON.stringify(Object.fromEntries(Object.entries(map).sort()), null, 1)}\n`);
   fs.writeFileSync(path.join(stage, "lazy.json"), `${JSON.stringify(lazy.sort())}\n`);
   console.log(`site: esbuild: ${entries.length} page entries + ${stable.length} public ones → ${outputs.size} files in ${ASSETS}/ (${inner.length} built apart: workers, stylesheets)`);
+}
+
+/**
+ * What a practice package for an LMS (www/lms/, issue 33) copies from the site:
+ * `common`, the page and every file it may load but the examples' wasm modules
+ * and the lab (its JS chunks, stylesheets, KaTeX and its fonts, the QR code
+ * maker), and for each topic module its practice build (`topics[module]`: the
+ * wasm-bindgen JS and wasm). Written to dist/lms-files.json (a fixed name, read
+ * when an instructor downloads a package).
+ */
+function lmsFiles(dist, map, outputs) {
+  // everything the page's modules lead to (static and dynamic imports), stopping at the lab and
+  // the wasm-bindgen modules (pkg/<topic>.js, pkg/all.js …): a package carries only its topics' own
+  const reach = (roots, stop = new Set()) => {
+    const seen = new Set();
+    const queue = roots.filter(Boolean);
+    while (queue.length) {
+      const f = queue.pop();
+      if (seen.has(f) || stop.has(f)) continue;
+      seen.add(f);
+      for (const i of outputs.get(f)?.imports ?? []) queue.push(i.path);
+    }
+    return seen;
+  };
+  const topicsOf = Object.keys(map).flatMap((l) => /^pkg\/([a-z]+)_practice\.js$/.exec(l)?.[1] ?? []);
+  const isModule = (l) => l.startsWith("pkg/") || l.startsWith("lab/");
+  const stop = new Set(Object.entries(map).filter(([l]) => isModule(l)).map(([, b]) => b));
+  const pageRoots = Object.entries(map).filter(([l]) => !isModule(l)).map(([, b]) => b);
+  const page = [...reach(pageRoots, stop)].filter((f) => !f.endsWith(".wasm"));
+  const vendor = walk(path.join(dist, "vendor")).map((f) => `vendor/${f}`).filter((f) => !/\.(gz|br)$/.test(f));
+  const topics = {};
+  for (const t of topicsOf) topics[t] = [...reach([map[`pkg/${t}_practice.js`]])].filter((f) => !page.includes(f)).sort();
+  return { page: "index.html", common: ["index.html", ...page.sort(), ...vendor.sort()], topics };
 }
 
 /** A page of dist/: hashed names, inline classic scripts, modulepreloads, the catalog-data block, the CSP. */
