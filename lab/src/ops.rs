@@ -101,10 +101,16 @@ pub fn whole(width: usize, height: usize) -> Region {
 
 /// An image as the operators take it: its grey values, and their bytes
 /// when every value is an integer 0 … 255 (the fast paths' input), kept by
-/// the caller (the wasm `LabImage` converts once) or found here.
+/// the caller (the wasm `LabImage` converts once) or found here. An image
+/// made from bytes alone ([`Image::from_bytes`]: a band of an 8-bit photo)
+/// has no `f64` grid until a reference path asks for one ([`Image::grid`]
+/// builds it then, once): the fast paths read the bytes only.
 #[derive(Debug, Clone)]
 pub struct Image<'a> {
-    pub grid: &'a Grid,
+    width: usize,
+    height: usize,
+    given: Option<&'a Grid>,
+    built: std::cell::OnceCell<Grid>,
     bytes: Option<Cow<'a, [u8]>>,
 }
 
@@ -114,27 +120,61 @@ impl<'a> Image<'a> {
         let bytes = bytes
             .filter(|b| b.len() == grid.width() * grid.height())
             .map(Cow::Borrowed);
-        Image { grid, bytes }
+        Image {
+            width: grid.width(),
+            height: grid.height(),
+            given: Some(grid),
+            built: std::cell::OnceCell::new(),
+            bytes,
+        }
+    }
+
+    /// An 8-bit image of `width × height` `bytes` (row-major), without its
+    /// `f64` grid (built by [`Image::grid`] only if a reference path needs it).
+    pub fn from_bytes(width: usize, height: usize, bytes: &'a [u8]) -> Result<Self> {
+        Gray::new("image", bytes, width, height)?;
+        Ok(Image {
+            width,
+            height,
+            given: None,
+            built: std::cell::OnceCell::new(),
+            bytes: Some(Cow::Borrowed(bytes)),
+        })
+    }
+
+    /// The grey values as a grid (the reference paths' input): the caller's,
+    /// or built from the bytes the first time it is asked for.
+    pub fn grid(&self) -> &Grid {
+        if let Some(g) = self.given {
+            return g;
+        }
+        self.built.get_or_init(|| match self.gray() {
+            Some(g) => g.to_grid(),
+            None => Grid::filled(self.width, self.height, 0.0),
+        })
     }
 
     /// The 8-bit view, when the image is 8-bit.
     pub fn gray(&self) -> Option<Gray<'_>> {
         let b = self.bytes.as_deref()?;
-        Gray::new("image", b, self.grid.width(), self.grid.height()).ok()
+        Gray::new("image", b, self.width, self.height).ok()
     }
 
     pub fn width(&self) -> usize {
-        self.grid.width()
+        self.width
     }
     pub fn height(&self) -> usize {
-        self.grid.height()
+        self.height
     }
 }
 
 impl<'a> From<&'a Grid> for Image<'a> {
     fn from(grid: &'a Grid) -> Self {
         Image {
-            grid,
+            width: grid.width(),
+            height: grid.height(),
+            given: Some(grid),
+            built: std::cell::OnceCell::new(),
             bytes: grid.to_u8().map(Cow::Owned),
         }
     }
@@ -143,7 +183,10 @@ impl<'a> From<&'a Grid> for Image<'a> {
 impl<'a> From<&'a Image<'a>> for Image<'a> {
     fn from(img: &'a Image<'a>) -> Self {
         Image {
-            grid: img.grid,
+            width: img.width,
+            height: img.height,
+            given: img.given.or(img.built.get()),
+            built: std::cell::OnceCell::new(),
             bytes: img.bytes.as_deref().map(Cow::Borrowed),
         }
     }

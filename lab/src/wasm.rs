@@ -34,10 +34,15 @@ fn num(x: f64) -> JsValue {
     JsValue::from_f64(x)
 }
 
-/// A grey image held in wasm memory.
+/// A grey image held in wasm memory: its grey values as an `f64` grid,
+/// or, for an image made from 8-bit bytes (`image_from_u8`: the pool's
+/// bands), the bytes alone, the grid built only when a reference path or
+/// the explained pixel asks for it ([`LabImage::grid`]).
 #[wasm_bindgen]
 pub struct LabImage {
-    grid: Grid,
+    width: usize,
+    height: usize,
+    grid: std::cell::OnceCell<Grid>,
     format: String,
     colour: String,
     bits: u32,
@@ -46,6 +51,26 @@ pub struct LabImage {
     /// The grey values as bytes when the image is 8-bit, found once (the
     /// operators' fast paths read them: `run::image`).
     bytes: std::cell::OnceCell<Option<Vec<u8>>>,
+}
+
+impl LabImage {
+    /// The grey values as a grid: built from the bytes the first time it is
+    /// needed when the image was made from bytes.
+    fn grid(&self) -> &Grid {
+        self.grid.get_or_init(|| {
+            let b = self.bytes.get().and_then(|b| b.as_deref()).unwrap_or(&[]);
+            match photogrammetry_playground::raster::Gray::new("image", b, self.width, self.height)
+            {
+                Ok(g) => g.to_grid(),
+                Err(_) => Grid::filled(self.width, self.height, 0.0),
+            }
+        })
+    }
+
+    /// Its bytes when it is 8-bit (found once from the grid).
+    fn bytes(&self) -> Option<&[u8]> {
+        self.bytes.get_or_init(|| self.grid().to_u8()).as_deref()
+    }
 }
 
 /// A photo's orientation and reduction as the page reads them (`photo()`,
@@ -83,10 +108,10 @@ impl LabImage {
         photo_js(&self.photo)
     }
     pub fn width(&self) -> usize {
-        self.grid.width()
+        self.width
     }
     pub fn height(&self) -> usize {
-        self.grid.height()
+        self.height
     }
     /// `PNG`, `JPEG`, `TIFF`, `generated` or `raw`.
     pub fn format(&self) -> String {
@@ -105,7 +130,7 @@ impl LabImage {
     }
     /// The grey values, row-major (one copy out of wasm memory).
     pub fn grey(&self) -> Float64Array {
-        Float64Array::from(self.grid.data())
+        Float64Array::from(self.grid().data())
     }
     /// The `w × h` neighbourhood centred on `(c, r)` read under `border`
     /// (`filter::neighbourhood`), row-major: the window a worked example
@@ -120,17 +145,17 @@ impl LabImage {
     ) -> Result<Float64Array, JsError> {
         let b = ops::border(&string_arg("border", "naming a border rule", &border)?)
             .map_err(js_error)?;
-        filter::neighbourhood(&self.grid, c, r, w, h, b)
+        filter::neighbourhood(self.grid(), c, r, w, h, b)
             .map(|v| Float64Array::from(v.as_slice()))
             .ok_or_else(|| JsError::new("window: part of it lies outside the image (border crop)"))
     }
     /// The grey value at `(c, r)`, `undefined` outside.
     pub fn value(&self, c: usize, r: usize) -> Option<f64> {
-        self.grid.get(c, r)
+        self.grid().get(c, r)
     }
     /// The `w × h` window with top-left `(c, r)`, row-major (`Float64Array`).
     pub fn window(&self, c: usize, r: usize, w: usize, h: usize) -> Result<Float64Array, JsError> {
-        self.grid
+        self.grid()
             .window(c, r, w, h)
             .map(|g| Float64Array::from(g.data()))
             .ok_or_else(|| JsError::new("window: does not lie inside the image"))
@@ -139,6 +164,13 @@ impl LabImage {
 
 fn wrap(grid: Grid, format: &str, colour: &str, bits: u32, max_value: f64) -> LabImage {
     let (w, h) = (grid.width(), grid.height());
+    let img = bare(w, h, format, colour, bits, max_value);
+    let _ = img.grid.set(grid);
+    img
+}
+
+/// A `w × h` image with neither its grid nor its bytes yet (`wrap`, `image_from_u8`).
+fn bare(w: usize, h: usize, format: &str, colour: &str, bits: u32, max_value: f64) -> LabImage {
     LabImage {
         photo: decode::Photo {
             orientation: 1,
@@ -148,7 +180,9 @@ fn wrap(grid: Grid, format: &str, colour: &str, bits: u32, max_value: f64) -> La
             work_width: w,
             work_height: h,
         },
-        grid,
+        width: w,
+        height: h,
+        grid: std::cell::OnceCell::new(),
         format: format.into(),
         colour: colour.into(),
         bits,
@@ -183,18 +217,14 @@ pub fn probe_image(name: JsValue, bytes: &[u8]) -> Result<JsValue, JsError> {
     Ok(o)
 }
 
-/// An image from raw 8-bit grey bytes (row-major), e.g. the benchmark's.
+/// An image from raw 8-bit grey bytes (row-major): a band of an 8-bit
+/// photo (the pool's), the benchmark's image. Only its bytes are kept: the
+/// operators' fast paths read them, and the `f64` grid is built only if a
+/// reference path or an explained pixel needs it.
 #[wasm_bindgen]
 pub fn image_from_u8(width: usize, height: usize, data: &[u8]) -> Result<LabImage, JsError> {
-    let g = Grid::new(
-        "image",
-        width,
-        height,
-        data.iter().map(|&v| f64::from(v)).collect(),
-    )
-    .map_err(js_error)?;
-    let img = wrap(g, "raw", "grey", 8, 255.0);
-    // its bytes are these (the fast paths read them: no pass over the grid to find them)
+    photogrammetry_playground::raster::Gray::new("image", data, width, height).map_err(js_error)?;
+    let img = bare(width, height, "raw", "grey", 8, 255.0);
     let _ = img.bytes.set(Some(data.to_vec()));
     Ok(img)
 }

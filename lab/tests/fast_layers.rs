@@ -671,3 +671,55 @@ fn images_that_are_not_8_bit_take_the_reference() {
         |g, v| g.to_bits() == (v as f32).to_bits(),
     );
 }
+
+/// An image made from its bytes alone (`Image::from_bytes`: a band of an
+/// 8-bit photo in a pool worker, no `f64` grid built) gives every operator
+/// the same layers and points as the image from its grid, and the
+/// reference paths that need a grid (the region of a boundary, the crop
+/// border of a 1-pixel image) get the one built from the bytes.
+#[test]
+fn images_from_bytes_alone_equal_images_from_their_grid() {
+    for (name, img) in images() {
+        let bytes = img.to_u8().unwrap();
+        let (w, h) = (img.width(), img.height());
+        let b = || Image::from_bytes(w, h, &bytes).unwrap();
+        assert_eq!(b().grid(), &img, "{name}: the grid built from the bytes");
+        for border in [Border::Replicate, Border::Crop] {
+            for kernel in ["mean", "gaussian-5", "median", "log"] {
+                let got = ops::filter_image(b(), kernel, border, None);
+                let want = ops::filter_image(&img, kernel, border, None);
+                same(got, want, format!("{name}: {kernel} {border:?}"));
+            }
+            let got = ops::edges(b(), "sobel", border);
+            same(
+                got,
+                ops::edges(&img, "sobel", border),
+                format!("{name}: sobel"),
+            );
+        }
+        let got = ops::forstner(b(), 5, 2.0, 0.5, 0.5);
+        same(
+            got,
+            ops::forstner(&img, 5, 2.0, 0.5, 0.5),
+            format!("{name}: Förstner"),
+        );
+        let got = ops::moravec(b(), 4, 100.0);
+        same(
+            got,
+            ops::moravec(&img, 4, 100.0),
+            format!("{name}: Moravec"),
+        );
+        let got = ops::boundary(b(), 128.0, w / 2, h / 2).map(|t| (t.region, t.boundary.code));
+        let want = ops::boundary(&img, 128.0, w / 2, h / 2).map(|t| (t.region, t.boundary.code));
+        same(got, want, format!("{name}: boundary"));
+    }
+    assert!(Image::from_bytes(3, 2, &[1, 2, 3, 4, 5]).is_err());
+    assert!(Image::from_bytes(0, 0, &[]).is_err());
+}
+
+/// Equal results (or the same error), NaN equal to NaN (layers mark "no value" with it): the
+/// same `Debug` text, which prints every `f32` and `f64` exactly.
+fn same<T: std::fmt::Debug>(got: T, want: T, what: String) {
+    let (g, w) = (format!("{got:?}"), format!("{want:?}"));
+    assert!(g == w, "{what}: {g} != {w}");
+}

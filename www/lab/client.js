@@ -29,6 +29,7 @@ export class LabClient {
     this.threads = this.tiles.n;
     this.sent = {};
     this.tiling = 0;
+    this.cancels = 0;
     this.start();
   }
 
@@ -65,17 +66,28 @@ export class LabClient {
     this.sent[type] = (this.sent[type] ?? 0) + 1;
     if (this.tiles.handles(type, args)) {
       this.tiling++;
-      return this.tiles.run(type, args, onProgress).finally(() => this.tiling--);
+      // a preview asked for first has the cores first (the whole result's bands start when it is painted)
+      const previews = [...this.pending.values()].filter((p) => p.type === "preview").map((p) => p.done);
+      const cancels = this.cancels;
+      return Promise.allSettled(previews)
+        .then(() => {
+          if (this.cancels !== cancels) throw Object.assign(new Error("Cancelled."), { cancelled: true });
+          return this.tiles.run(type, args, onProgress);
+        })
+        .finally(() => this.tiling--);
     }
     const opens = OPENS.has(type) && (args.slot ?? "a") === "a";
     if (opens) this.tiles.setImage(null);
     // a map the main worker keeps: its points are the main worker's too
     if (type === "forstnerMaps") this.tiles.kept = null;
     const id = this.nextId++;
+    let entry;
     const p = new Promise((resolve, reject) => {
-      this.pending.set(id, { resolve, reject, type });
+      entry = { resolve, reject, type };
+      this.pending.set(id, entry);
       this.worker.postMessage({ id, type, ...args }, transfer);
     });
+    entry.done = p;
     if (!opens) return p;
     return p.then((r) => {
       this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes, grey: r.grey, bits: r.bits ?? 8, maxValue: r.maxValue ?? 255 });
@@ -95,6 +107,7 @@ export class LabClient {
 
   /** Stops whatever runs: the pool's bands; the main worker (replaced, the image restored) when it runs a long request. */
   cancel() {
+    this.cancels++;
     this.tiles.cancel();
     if ([...this.pending.values()].some((p) => !QUICK.has(p.type))) this.replace("cancelled");
   }

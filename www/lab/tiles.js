@@ -25,6 +25,8 @@
 const BAND_PIXELS = 1 << 21;
 /** Layers with more pixels are painted by bands on every pool worker. */
 const PAINT_SPLIT = 1 << 21;
+/** Buffers of bands' layers kept for the next bands (2 workers × 4 layers). */
+const SPARE = 8;
 /** Images with fewer pixels run on the main worker whole (bands would cost more than they save). */
 export const MIN_PIXELS = 1 << 19;
 
@@ -62,6 +64,7 @@ export class Tiles {
     this.workers = [];
     this.nextId = 1;
     this.image = null; // { width, height, bytes: Uint8Array }
+    this.spare = []; // ArrayBuffers of bands' layers, to be filled again (recycle)
     this.running = new Set();
     this.halos = new Map();
     this.kept = null; // the bands' Förstner maps: { job, size, holders: Map(band → slot), bands }
@@ -77,6 +80,12 @@ export class Tiles {
   setImage(img) {
     this.image = img && (img.bytes || img.grey) ? img : null;
     this.kept = null;
+    this.spare = [];
+  }
+
+  /** Keeps `buffers` (bands' layers already copied into the whole ones) for the next bands, at most SPARE of them. */
+  recycle(buffers) {
+    for (const b of buffers) if (b.byteLength && this.spare.length < SPARE) this.spare.push(b);
   }
 
   handles(type, args) {
@@ -198,15 +207,20 @@ export class Tiles {
     const job = ++this.jobs;
     const keep = type === "forstnerMaps";
     const holders = new Map();
+    const whole = new Whole(height);
     const parts = await this.lanes(bands, height, onProgress, async (w, k, [start, end]) => {
       const [r0, r1] = [Math.max(0, start - halo), Math.min(height, end + halo)];
       const [data, transfer] = this.rows(r0, r1);
       const own = [0, start - r0, width, end - start];
-      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, ...data, own, at: [0, r0], keep: keep ? { job, band: k } : null }, transfer);
+      // buffers of earlier bands' layers to copy this band's into (no fresh pages: spare_buffers)
+      const spare = this.spare.splice(0, 4);
+      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, ...data, own, at: [0, r0], keep: keep ? { job, band: k } : null, spare }, [...transfer, ...spare]);
       holders.set(k, w);
+      // its rows into the whole layers at once; its buffers are then the next bands'
+      this.recycle([...part.spare, ...whole.add(part)]);
       return part;
     });
-    const out = stitch(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
+    const out = whole.result(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
     if (!keep) return out;
     this.kept = { job, size: args.size, holders, bands: bands.length };
     const auto = await this.main("forstnerAuto", { size: args.size, sigmaN: args.sigmaN, w: out.layers[0].data });
@@ -266,15 +280,19 @@ export class Tiles {
   async resample(args, onProgress) {
     const img = this.image;
     const bands = bandsOf(args.width, args.height, this.n, this.minRows);
+    const whole = new Whole(args.height);
     const parts = await this.lanes(bands, args.height, onProgress, async (w, k, [row0, row1]) => {
       if (w.image !== img) {
         const [data, transfer] = this.rows(0, img.height);
         await w.ask(img.bytes ? "raw" : "grey", { width: img.width, height: img.height, ...data }, transfer);
         w.image = img;
       }
-      return w.ask("resample", { ...args, row0, row1 });
+      const spare = this.spare.splice(0, 4);
+      const part = await w.ask("resample", { ...args, row0, row1, spare }, spare);
+      this.recycle([...part.spare, ...whole.add(part)]);
+      return part;
     });
-    return stitch(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
+    return whole.result(parts, { bands: bands.length, workers: Math.min(this.n, bands.length) });
   }
 
   /**
@@ -311,34 +329,61 @@ export class Tiles {
 }
 
 /**
- * The bands' answers as the whole image's: layers of the rows each band
- * owns (the worker cut them to its own rows and placed them in the image),
- * points in band order (row-major, as one call finds them).
+ * Layers of the whole image put together as the bands' answers arrive
+ * (any order): each layer allocated once for the image's rows, a band's
+ * own rows (placed in the image by the worker) copied in, so that the
+ * band's buffers can carry the next bands' layers; `result` gives the
+ * whole image's answer: its layers made of the rows each band owns (the
+ * worker cut them to its own rows and placed them in the image), its points
+ * in band order (row-major, as one call finds them).
  */
-export function stitch(parts, info) {
-  const first = parts[0];
-  const layers = first.layers.map((l0, li) => {
-    const pieces = parts.map((p) => p.layers[li]).filter((l) => l.height > 0);
-    const top = pieces.length ? pieces[0].r0 : l0.r0;
-    const height = pieces.reduce((s, l) => s + l.height, 0);
-    const data = new l0.data.constructor(height * l0.width);
-    let at = 0;
-    for (const l of pieces) {
-      data.set(l.data, at);
-      at += l.data.length;
-    }
-    // a reference-path layer is signed when any of its values is negative: in any band
-    return { ...l0, r0: top, height, signed: parts.some((p) => p.layers[li].signed), data };
-  });
-  const out = { ...first, layers, bands: info };
-  if (first.points) {
-    const points = new Float64Array(parts.reduce((s, p) => s + p.points.length, 0));
-    let at = 0;
-    for (const p of parts) {
-      points.set(p.points, at);
-      at += p.points.length;
-    }
-    out.points = points;
+export class Whole {
+  constructor(height) {
+    this.height = height;
+    this.layers = null;
+  }
+
+  /** Copies `part`'s layers in; returns their buffers (free now). */
+  add(part) {
+    this.layers ??= part.layers.map((l) => ({ data: new l.data.constructor(this.height * l.width), top: Infinity, rows: 0, signed: false }));
+    return part.layers.map((l, i) => {
+      const whole = this.layers[i];
+      if (l.height > 0) {
+        whole.data.set(l.data, l.r0 * l.width);
+        whole.top = Math.min(whole.top, l.r0);
+        whole.rows += l.height;
+      }
+      // a reference-path layer is signed when any of its values is negative: in any band
+      whole.signed ||= Boolean(l.signed);
+      const b = l.data.buffer;
+      l.data = null;
+      return b;
+    });
+  }
+
+  /** The whole image's answer from the bands' `parts` (their layers added), in band order. */
+  result(parts, info) {
+    const first = parts[0];
+    const layers = first.layers.map((l0, i) => {
+      const { data, top, rows, signed } = this.layers[i];
+      const r0 = rows ? top : l0.r0;
+      // (a layer without the image's first or last rows, e.g. border crop: the view of its rows)
+      const view = r0 === 0 && rows === this.height ? data : data.subarray(r0 * l0.width, (r0 + rows) * l0.width);
+      return { ...l0, r0, height: rows, signed, data: view };
+    });
+    const out = { ...first, layers, bands: info };
+    if (first.points) out.points = concat(parts.map((p) => p.points));
+    return out;
+  }
+}
+
+/** Float64Arrays one after another. */
+function concat(arrays) {
+  const out = new Float64Array(arrays.reduce((s, a) => s + a.length, 0));
+  let at = 0;
+  for (const a of arrays) {
+    out.set(a, at);
+    at += a.length;
   }
   return out;
 }

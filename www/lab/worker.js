@@ -461,14 +461,20 @@ const handlers = {
 };
 
 self.onmessage = async (ev) => {
-  const { id, type, ...args } = ev.data;
+  const { id, type, spare, ...args } = ev.data;
   try {
     await ready;
     const handler = handlers[type];
     if (!handler) throw new Error(`unknown request "${type}"`);
     const transfer = [];
     const t0 = performance.now();
+    // the page's spare buffers for this request's layers (tiles.js: bands); those not used go back
+    if (spare) lab.spare_buffers(spare);
     const result = await handler(args, transfer, id);
+    if (spare) {
+      result.spare = Array.from(lab.spare_buffers([]));
+      transfer.push(...result.spare);
+    }
     // ms: the time inside the worker (for npm run bench -- --lab)
     self.postMessage({ id, ok: true, result, ms: performance.now() - t0 }, transfer);
   } catch (e) {

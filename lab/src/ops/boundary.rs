@@ -50,7 +50,7 @@ pub fn boundary<'a>(
             (Layer::new("region", whole(w, h), data, false), b)
         }
         None => {
-            let mask = chain::region_at(img.grid, threshold, c, r, conn)
+            let mask = chain::region_at(img.grid(), threshold, c, r, conn)
                 .ok_or_else(|| outside(c, r, w, h))?;
             let b = chain::trace(&mask, conn)
                 .into_iter()

@@ -151,8 +151,8 @@ pub fn correlate<'a, 'b>(
             "must be an odd number of pixels across and down (at least 3), so that it has a centre",
         ));
     }
-    let t = cut(a.grid, "template", template)?;
-    let s = cut(b.grid, "search", search)?;
+    let t = cut(a.grid(), "template", template)?;
+    let s = cut(b.grid(), "search", search)?;
     let tb = box_bytes(&a, template);
     let sb = box_bytes(&b, search);
     let surface = surface(&t, &s, tb.as_deref().zip(sb.as_deref()))?;
@@ -211,7 +211,7 @@ pub fn correlate<'a, 'b>(
                 width: (2 * mc + 1).min(b.width() - c0),
                 height: (2 * mr + 1).min(b.height() - r0),
             };
-            let win = cut(b.grid, "search", lsm_window)?;
+            let win = cut(b.grid(), "search", lsm_window)?;
             let settings = Settings {
                 model,
                 gradients: Gradients::SearchWindow,

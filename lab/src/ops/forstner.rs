@@ -291,7 +291,7 @@ impl ForstnerKept {
     ) -> Result<Self> {
         let img = img.into();
         let Some(g) = img.gray() else {
-            let map = interest::forstner_map(img.grid, size)?;
+            let map = interest::forstner_map(img.grid(), size)?;
             let mut w: Vec<f64> = map.cells.iter().flatten().map(|m| m.w).collect();
             let w_min = (!w.is_empty()).then(|| {
                 let k = top_rank(w.len());

@@ -31,7 +31,7 @@ pub fn moravec<'a>(
     }
     let img = img.into();
     let Some(g) = img.gray() else {
-        return moravec_reference(img.grid, size, threshold);
+        return moravec_reference(img.grid(), size, threshold);
     };
     let (w, h) = (g.width(), g.height());
     let n = ((size.max(2) - 2) * (size.max(2) - 2)) as f64;

@@ -232,7 +232,7 @@ pub fn resample<'a>(
                 o
             }
             None => {
-                let grid = rs::warp(img.grid, band.width, band.height, shifted, method, 0.0);
+                let grid = rs::warp(img.grid(), band.width, band.height, shifted, method, 0.0);
                 grid.data().iter().map(|&v| v as f32).collect()
             }
         };

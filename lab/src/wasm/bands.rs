@@ -23,7 +23,7 @@ pub fn forstner_auto_threshold(
     w: &[f32],
     sigma_n: f64,
 ) -> Result<JsValue, JsError> {
-    let (width, height) = (img.grid.width(), img.grid.height());
+    let (width, height) = (img.width, img.height);
     if w.len() != width * height {
         return Err(JsError::new(&format!(
             "w: must hold the photo's {} values (got {})",
@@ -32,9 +32,9 @@ pub fn forstner_auto_threshold(
         )));
     }
     let fit = stream::fit(width, height, size).map_err(js_error)?;
-    let w_min = match img.bytes.get_or_init(|| img.grid.to_u8()).as_deref() {
+    let w_min = match img.bytes() {
         Some(bytes) => ops::exact_w_min(bytes, width, height, size, w, fit),
-        None => reference_w_min(&img.grid, size, w),
+        None => reference_w_min(img.grid(), size, w),
     };
     match w_min {
         Some(w_min) if w_min > 0.0 && sigma_n > 0.0 => obj(&[
@@ -111,34 +111,34 @@ pub fn crop_image(
     h: usize,
     eight_bit: Option<bool>,
 ) -> Result<LabImage, JsError> {
-    let g = img
-        .grid
-        .window(c, r, w, h)
-        .filter(|g| g.width() > 0 && g.height() > 0)
-        .ok_or_else(|| JsError::new("crop: the box must lie inside the image"))?;
-    let width = img.grid.width();
-    match img.bytes.get_or_init(|| img.grid.to_u8()) {
-        Some(bytes) => {
-            let out = wrap(g, &img.format, &img.colour, img.bits, img.max_value);
-            let part: Vec<u8> = (r..r + h)
-                .flat_map(|y| bytes[y * width + c..y * width + c + w].iter().copied())
-                .collect();
-            let _ = out.bytes.set(Some(part));
-            Ok(out)
-        }
-        None if eight_bit == Some(true) => {
-            let k = 255.0 / img.max_value;
-            let part: Vec<u8> = g
-                .data()
-                .iter()
-                .map(|&v| (v * k).round().clamp(0.0, 255.0) as u8)
-                .collect();
-            let g8 = Grid::new("image", w, h, part.iter().map(|&v| f64::from(v)).collect())
-                .map_err(js_error)?;
-            let out = wrap(g8, &img.format, &img.colour, 8, 255.0);
-            let _ = out.bytes.set(Some(part));
-            Ok(out)
-        }
-        None => Ok(wrap(g, &img.format, &img.colour, img.bits, img.max_value)),
+    let inside = w > 0 && h > 0 && c.checked_add(w).is_some_and(|e| e <= img.width);
+    if !(inside && r.checked_add(h).is_some_and(|e| e <= img.height)) {
+        return Err(JsError::new("crop: the box must lie inside the image"));
     }
+    let width = img.width;
+    if let Some(bytes) = img.bytes() {
+        // (its bytes only: the grid is built if a reference path asks for it)
+        let part: Vec<u8> = (r..r + h)
+            .flat_map(|y| bytes[y * width + c..y * width + c + w].iter().copied())
+            .collect();
+        let mut out = bare(w, h, &img.format, &img.colour, img.bits, img.max_value);
+        out.bytes = std::cell::OnceCell::from(Some(part));
+        return Ok(out);
+    }
+    let g = img
+        .grid()
+        .window(c, r, w, h)
+        .ok_or_else(|| JsError::new("crop: the box must lie inside the image"))?;
+    if eight_bit == Some(true) {
+        let k = 255.0 / img.max_value;
+        let part: Vec<u8> = g
+            .data()
+            .iter()
+            .map(|&v| (v * k).round().clamp(0.0, 255.0) as u8)
+            .collect();
+        let mut out = bare(w, h, &img.format, &img.colour, 8, 255.0);
+        out.bytes = std::cell::OnceCell::from(Some(part));
+        return Ok(out);
+    }
+    Ok(wrap(g, &img.format, &img.colour, img.bits, img.max_value))
 }

@@ -6,12 +6,59 @@
 
 use super::*;
 use js_sys::Float32Array;
+use wasm_bindgen::JsCast;
 
-/// The image as the operators take it: the grid and its bytes when it is
-/// 8-bit (converted once per image).
+/// The image as the operators take it: its bytes when it is 8-bit (found
+/// once per image), and its grid — for an image made from bytes only if an
+/// operator's reference path asks for it (`ops::Image::grid`).
 fn image(img: &LabImage) -> ops::Image<'_> {
-    let bytes = img.bytes.get_or_init(|| img.grid.to_u8());
-    ops::Image::with_bytes(&img.grid, bytes.as_deref())
+    match (img.grid.get(), img.bytes()) {
+        (Some(grid), bytes) => ops::Image::with_bytes(grid, bytes),
+        (None, Some(bytes)) => ops::Image::from_bytes(img.width, img.height, bytes)
+            .unwrap_or_else(|_| ops::Image::from(img.grid())),
+        (None, None) => ops::Image::from(img.grid()),
+    }
+}
+
+thread_local! {
+    /// Buffers the page gave back for the next layers ([`spare_buffers`]).
+    static SPARE: std::cell::RefCell<Vec<js_sys::ArrayBuffer>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// Keeps `buffers` (`ArrayBuffer`s the page is done with: the last bands'
+/// layers, tiles.js) for the layers of the next `run_*` calls, which then
+/// copy their values into one of them instead of a fresh buffer (a fresh
+/// one costs its pages first: as much again as the copy). Returns the
+/// buffers kept before that were not used, to be handed back (the page's
+/// own count stays bounded).
+#[wasm_bindgen]
+pub fn spare_buffers(buffers: Array) -> Array {
+    let out = Array::new();
+    SPARE.with(|s| {
+        let mut s = s.borrow_mut();
+        for b in s.drain(..) {
+            out.push(&b);
+        }
+        s.extend(buffers.iter().filter_map(|b| b.dyn_into().ok()));
+    });
+    out
+}
+
+/// `data` as a `Float32Array` out of wasm memory (one copy), into a spare
+/// buffer that is large enough when the page gave one.
+fn f32_array(data: &[f32]) -> Float32Array {
+    let n = data.len();
+    let spare = SPARE.with(|s| {
+        let mut s = s.borrow_mut();
+        let i = s.iter().position(|b| b.byte_length() as usize >= n * 4)?;
+        Some(s.swap_remove(i))
+    });
+    let a = match spare {
+        Some(b) => Float32Array::new_with_byte_offset_and_length(&b, 0, n as u32),
+        None => Float32Array::new_with_length(n as u32),
+    };
+    a.copy_from(data);
+    a
 }
 
 fn layer_js(l: &Layer) -> Result<JsValue, JsError> {
@@ -22,7 +69,7 @@ fn layer_js(l: &Layer) -> Result<JsValue, JsError> {
         ("c0", num(l.c0 as f64)),
         ("r0", num(l.r0 as f64)),
         ("signed", JsValue::from_bool(l.signed)),
-        ("data", Float32Array::from(l.data.as_slice()).into()),
+        ("data", f32_array(&l.data).into()),
     ])
 }
 
@@ -325,7 +372,7 @@ fn warp_of(
     width: usize,
     height: usize,
 ) -> Result<ops::Warp, JsError> {
-    let size = (img.grid.width(), img.grid.height());
+    let size = (img.width, img.height);
     ops::Warp::new(size, kind, params, width, height).map_err(js_error)
 }
 
@@ -444,7 +491,7 @@ pub fn run_fiducials(img: &LabImage, approx: &[f64]) -> Result<JsValue, JsError>
 /// converge).
 #[wasm_bindgen]
 pub fn refine_mark(img: &LabImage, c: f64, r: f64) -> Result<Float64Array, JsError> {
-    let (w, h) = (img.grid.width() as f64, img.grid.height() as f64);
+    let (w, h) = (img.width as f64, img.height as f64);
     if !(c.is_finite() && r.is_finite() && c >= 0.0 && r >= 0.0 && c < w && r < h) {
         return Err(JsError::new("mark: the click must lie inside the image"));
     }
@@ -606,5 +653,5 @@ pub fn exact_at(
 ) -> Result<Option<f64>, JsError> {
     let op = op_of(&op, &args)?;
     let layer = string_arg("layer", "naming a layer", &layer)?;
-    ops::exact_at(&a.grid, &b.grid, &op, &layer, c, r).map_err(js_error)
+    ops::exact_at(a.grid(), b.grid(), &op, &layer, c, r).map_err(js_error)
 }
