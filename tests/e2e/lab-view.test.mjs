@@ -1,6 +1,6 @@
 // The lab's view in Chromium: zoomed in far enough, the grey values are
 // written into the pixels (the drawn text read back and checked against
-// the photo); the keyboard pans and fits; the inspector gives c, r, the
+// the photo); the keyboard (Ctrl+arrows) pans and fits; the inspector gives c, r, the
 // grey value and, on the generated scanned frame, x and y in mm; the
 // opacity slider blends the result over the photo; a signed layer (Sobel
 // gx) gets the diverging legend with its range; and the engine line says
@@ -95,9 +95,9 @@ test("zoomed in, the grey values are written in the pixels; the keyboard pans an
   let g = await view(page);
   assert.ok(Math.abs(g.zoom - fit.zoom * 1.25 ** presses) < 1e-6 * g.zoom, `${g.zoom} after ${presses} presses from ${fit.zoom}`);
   await textsDrawn(page);
-  await page.keyboard.press("ArrowRight");
+  await page.keyboard.press("Control+ArrowRight");
   const after = await view(page);
-  // → moves the view 40 canvas pixels (the image goes left), nothing else changes
+  // Ctrl+→ moves the view 40 canvas pixels (the image goes left), nothing else changes
   assert.equal(after.ox, g.ox - 40);
   assert.equal(after.oy, g.oy);
   assert.equal(after.zoom, g.zoom);
@@ -123,17 +123,17 @@ test("zoomed in, the grey values are written in the pixels; the keyboard pans an
   }
   assert.ok(written >= 12, `${written} pixels in view`);
   assert.ok(texts.size <= written + 2 * (r1 - r0 + c1 - c0 + 4), `${texts.size} texts for ${written} pixels in view`);
-  // ↓ pans down, ← and ↑ back again, 0 fits the whole photo
+  // Ctrl+↓ pans down, Ctrl+← and Ctrl+↑ back again, 0 fits the whole photo
   const [cc, cr] = centrePixel(g);
-  await page.keyboard.press("ArrowDown");
+  await page.keyboard.press("Control+ArrowDown");
   assert.equal((await view(page)).oy, g.oy - 40);
-  await page.keyboard.press("ArrowDown");
-  await page.keyboard.press("ArrowDown");
+  await page.keyboard.press("Control+ArrowDown");
+  await page.keyboard.press("Control+ArrowDown");
   const down = centrePixel(await view(page));
   assert.deepEqual(down, [cc, Math.floor((g.ch / 2 - g.oy + 120) / g.zoom)]);
   assert.ok(down[1] > cr);
-  await page.keyboard.press("ArrowLeft");
-  await page.keyboard.press("ArrowUp");
+  await page.keyboard.press("Control+ArrowLeft");
+  await page.keyboard.press("Control+ArrowUp");
   const moved = await view(page);
   assert.deepEqual([moved.ox, moved.oy], [g.ox + 40, g.oy - 80]);
   await page.keyboard.press("0");

@@ -14,7 +14,8 @@ import { useCatalog } from "./explain.js";
 // reached through the lab module (the build bundles them into it)
 export { LabClient } from "./client.js";
 export * as explain from "./explain.js";
-import { Viewer, fmt, paintOf, setPainter } from "./view.js";
+import { Viewer, fmt, paintOf, pixelWords, setPainter } from "./view.js";
+import { Explorer } from "./explore.js";
 import { testHook, testing } from "../test-hooks.js";
 import filters from "./families/filters.js";
 import edges from "./families/edges.js";
@@ -461,16 +462,21 @@ class Lab {
       el("option", { value: "over" }, "over the photo"), el("option", { value: "beside" }, "beside the photo"));
     this.modeSelect.addEventListener("change", () => {
       this.viewer.setMode(this.modeSelect.value);
+      this.explorer.describe();
       this.saveState();
     });
     this.opacity = el("input", { type: "range", id: "lab-opacity", min: "0", max: "1", step: "0.05", value: "0.7" });
     this.opacity.addEventListener("input", () => this.viewer.setOpacity(Number(this.opacity.value)));
-    this.opacity.addEventListener("change", () => this.saveState());
+    this.opacity.addEventListener("change", () => {
+      this.explorer.describe();
+      this.saveState();
+    });
     this.legend = el("div", { class: "lab-legend", id: "lab-legend", hidden: true });
     this.inspector = el("p", { class: "lab-inspector", id: "lab-inspector", "aria-live": "off" }, "Point at the image: column c, row r and grey value appear here.");
     this.explain = el("div", { class: "lab-explain", id: "lab-explain", hidden: true, "aria-live": "polite" });
     const stage = el("div", { class: "lab-stage", id: "lab-stage" });
     this.extra = el("div", { class: "lab-extra", id: "lab-extra" });
+    this.explorer = new Explorer(this);
     const layerBar = el("div", { class: "lab-layerbar", id: "lab-layerbar", hidden: true },
       el("label", {}, "Result layer ", this.layerSelect), " ", el("label", {}, "Show the result ", this.modeSelect), " ",
       el("label", {}, "Opacity of the result ", this.opacity));
@@ -491,13 +497,16 @@ class Lab {
       el("div", { class: "lab-controls" }, el("label", {}, "Operator family ", this.familySelect), this.familyBox),
       this.progress,
       layerBar, this.legend,
-      stage, this.inspector, this.explain, this.extra);
+      this.explorer.bar, stage, this.inspector, this.explorer.panel, this.explain, this.extra);
     this.root.replaceChildren(section);
     this.section = section;
     this.viewer = new Viewer(stage, {
-      label: "The photo and the result layer (drag to pan, wheel or + − to zoom, 0 to fit)",
+      label: "The photo and the result layer (drag to pan, wheel to zoom)",
       onPick: (c, r, ev, pos) => this.pick(c, r, pos),
       onHover: (p) => this.hover(p),
+      onCursor: () => this.explorer.update(),
+      liveId: "lab-cursor-live",
+      describedBy: "lab-view-desc",
       onView: () => this.saveState(),
       onTapZoom: () => {
         this.say("Zoomed in so that a finger can hit one pixel: tap the pixel now (pinch out, or 0 on a keyboard, to see the whole photo).");
@@ -557,20 +566,9 @@ class Lab {
     }
   }
 
+  /** The inspector's line for the pixel under the pointer (or the keyboard's cursor). */
   hover(p) {
-    if (!p) return;
-    const parts = [`c ${p.c}, r ${p.r}`, `grey ${fmt(p.grey)}`];
-    // a reduced photo: the photo's own pixels this lab pixel averages
-    const k = this.image?.photo?.factor ?? 1;
-    if (k > 1) parts.push(`photo pixels c ${k * p.c}…${k * p.c + k - 1}, r ${k * p.r}…${k * p.r + k - 1}`);
-    const t = this.image?.truth;
-    if (t) {
-      // the frame photo has a known pixel size: x, y in mm about the centre
-      const m = (this.image.width - 1) / 2;
-      parts.push(`x ${fmt((p.c - m) * t.pixel_mm)} mm, y ${fmt((m - p.r) * t.pixel_mm)} mm (nominal)`);
-    }
-    if (p.layer !== null) parts.push(`${p.layerName} ${fmt(p.layer)}`);
-    this.inspector.textContent = parts.join(" · ");
+    if (p) this.inspector.textContent = pixelWords(p, this.image);
   }
 
   // ------------------------------------------------------------- status
@@ -803,6 +801,7 @@ class Lab {
         ", licence ",
         sample.licence === "Apache-2.0" ? el("a", { href: here("LICENSE-Apache-2.0.txt"), id: "lab-sample-licence", title: "The Apache License 2.0, full text" }, sample.licence) : sample.licence)
       : "");
+    this.explorer.update();
     testHook("image", img.name);
     this.family?.imageChanged?.();
     this.saveState();
@@ -821,6 +820,7 @@ class Lab {
     this.viewer?.setLayer(null);
     this.viewer?.setShapes([]);
     this.viewer?.setMark(null);
+    this.explorer?.setPoints(null);
   }
 
   /** Shows result layers (the first, or the one named `show`); all of them painted now (the pool), so that another is shown at once. */
@@ -839,6 +839,7 @@ class Lab {
     const scale = await this.viewer.setLayer(layer);
     // a newer layer (or result) was shown meanwhile
     if (this.layers[Number(this.layerSelect.value)] !== layer) return;
+    this.explorer.update();
     this.legend.replaceChildren();
     if (!scale) {
       this.legend.hidden = true;

@@ -1,6 +1,8 @@
 // The lab's image view: the grey image with a result layer over it (with an
 // opacity) or beside it, zoom and pan by mouse wheel / drag, touch (drag,
-// pinch) and keyboard (+ − arrows 0), a pixel inspector, grey values written
+// pinch) and keyboard (+ − Ctrl+arrows 0), a cell cursor moved by the arrow
+// keys (its pixel read out in a polite live region, Enter picks it as a
+// click does), a pixel inspector, grey values written
 // into the pixels when zoomed in far enough, and shapes drawn on top
 // (points with ellipses, boxes, outlines) in image coordinates. The photo
 // and the layers are painted by the lab's workers (wasm, ImageBitmaps); a
@@ -26,6 +28,30 @@ export function fmt(v, digits = 5) {
   if (Number.isInteger(v)) return String(v);
   const s = Number(v.toPrecision(digits));
   return String(s);
+}
+
+/**
+ * The inspector's words for pixel `p` ({ c, r, grey, layer, layerName }) of
+ * `img`: c, r, the grey value, a reduced photo's own pixels, the frame's
+ * x, y in mm, the layer's value. `long`: the live region's words ("column
+ * 812, row 403, grey 87; Sobel magnitude 143.2"), else the inspector's
+ * ("c 812, r 403 · grey 87 · Sobel magnitude 143.2").
+ */
+export function pixelWords(p, img, long = false) {
+  const parts = [long ? `column ${p.c}, row ${p.r}, grey ${fmt(p.grey)}` : `c ${p.c}, r ${p.r}`];
+  if (!long) parts.push(`grey ${fmt(p.grey)}`);
+  // a reduced photo: the photo's own pixels this lab pixel averages
+  const k = img?.photo?.factor ?? 1;
+  if (k > 1) parts.push(`photo pixels c ${k * p.c}…${k * p.c + k - 1}, r ${k * p.r}…${k * p.r + k - 1}`);
+  const t = img?.truth;
+  if (t) {
+    // the frame photo has a known pixel size: x, y in mm about the centre
+    const m = (img.width - 1) / 2;
+    parts.push(`x ${fmt((p.c - m) * t.pixel_mm)} mm, y ${fmt((m - p.r) * t.pixel_mm)} mm (nominal)`);
+  }
+  if (p.layer !== null) parts.push(`${p.layerName} ${fmt(p.layer)}`);
+  else if (long && p.layerName) parts.push(`${p.layerName}: no value here`);
+  return parts.join(long ? "; " : " · ");
 }
 
 /**
@@ -72,11 +98,20 @@ export class Viewer {
     this.canvas = document.createElement("canvas");
     this.canvas.className = "lab-canvas";
     this.canvas.tabIndex = 0;
-    this.canvas.setAttribute("role", "img");
-    this.canvas.setAttribute("aria-label", opts.label);
+    // operated by keys (the cell cursor): a screen reader passes them on
+    this.canvas.setAttribute("role", "application");
+    this.canvas.setAttribute("aria-label", `${opts.label}. Arrow keys move a cursor by one pixel (Shift: 10), Home and End to the row's ends, Enter picks the pixel; + and − zoom, Ctrl+arrows pan, 0 fits`);
+    if (opts.describedBy) this.canvas.setAttribute("aria-describedby", opts.describedBy);
     // the view behind a canvas (the tests read its geometry)
     this.canvas.labViewer = this;
-    host.append(this.canvas);
+    // the cursor's pixel, read out (polite: the newest position wins)
+    this.live = document.createElement("p");
+    this.live.className = "visually-hidden lab-cursor-live";
+    this.live.setAttribute("aria-live", "polite");
+    if (opts.liveId) this.live.id = opts.liveId;
+    host.append(this.canvas, this.live);
+    /** The keyboard's cell cursor [c, r], or null (drawn while the view has focus). */
+    this.cursor = null;
     this.image = null;
     this.base = null;
     this.layer = null;
@@ -97,6 +132,51 @@ export class Viewer {
     clearTimeout(this.viewTimer);
     this.resizer.disconnect();
     this.canvas.remove();
+    this.live.remove();
+  }
+
+  /**
+   * Puts the cell cursor on pixel (c, r) (clamped to the image), pans the
+   * view when the pixel is out of it, and reads the pixel out.
+   */
+  setCursor(c, r) {
+    const img = this.image;
+    if (!img) return;
+    c = Math.min(Math.max(0, Math.round(c)), img.width - 1);
+    r = Math.min(Math.max(0, Math.round(r)), img.height - 1);
+    this.cursor = [c, r];
+    this.keepInView(c, r);
+    this.draw();
+    this.hover(c, r);
+    const p = this.pixelAt(c, r);
+    this.live.textContent = pixelWords(p, img, true);
+    this.opts.onCursor?.(c, r);
+  }
+
+  /** Pans (whole screen steps of the view, no zoom change) so that pixel (c, r) is inside the first panel with a margin. */
+  keepInView(c, r) {
+    const panels = this.mode === "beside" && this.layer ? 2 : 1;
+    const w = this.canvas.width / panels;
+    const h = this.canvas.height;
+    const margin = Math.min(24 * (this.dpr || 1), w / 4, h / 4);
+    const [x0, y0] = [c * this.zoom + this.ox, r * this.zoom + this.oy];
+    const [x1, y1] = [x0 + this.zoom, y0 + this.zoom];
+    let dx = 0;
+    let dy = 0;
+    if (x0 < margin) dx = margin - x0;
+    else if (x1 > w - margin) dx = w - margin - x1;
+    if (y0 < margin) dy = margin - y0;
+    else if (y1 > h - margin) dy = h - margin - y1;
+    // a jump far out of view: the pixel goes to the middle
+    if (Math.abs(dx) > w / 2) dx = w / 2 - (x0 + x1) / 2;
+    if (Math.abs(dy) > h / 2) dy = h / 2 - (y0 + y1) / 2;
+    if (dx || dy) this.pan(Math.round(dx), Math.round(dy));
+  }
+
+  /** The pixel at the view's centre (clamped to the image): where a cursor starts. */
+  centrePixel() {
+    const { c, r } = this.centre();
+    return [Math.min(Math.max(0, Math.round(c)), this.image.width - 1), Math.min(Math.max(0, Math.round(r)), this.image.height - 1)];
   }
 
   /** @param {{ width, height, grey: Float64Array, maxValue, bitmap?: ImageBitmap }} img (painted when it has no bitmap) */
@@ -355,25 +435,59 @@ export class Viewer {
       }
     });
     cv.addEventListener("pointerleave", () => this.opts.onHover?.(null));
-    cv.addEventListener("keydown", (ev) => {
-      const step = 40 * (this.dpr || 1);
-      const mid = [cv.width / 2, cv.height / 2];
-      const keys = {
+    cv.addEventListener("keydown", (ev) => this.key(ev));
+    // the cursor shows while the view has the focus
+    cv.addEventListener("focus", () => {
+      if (this.image && !this.cursor) this.setCursor(...this.centrePixel());
+      else this.draw();
+    });
+    cv.addEventListener("blur", () => this.draw());
+  }
+
+  /**
+   * The keys: arrows move the cell cursor (Shift: 10 pixels), Home / End to
+   * the row's first / last pixel (Ctrl: the image's first / last), Enter or
+   * Space picks the cursor's pixel as a click does; + − zoom about the
+   * view's middle, Ctrl+arrows pan, 0 fits.
+   */
+  key(ev) {
+    const cv = this.canvas;
+    const step = 40 * (this.dpr || 1);
+    const mid = [cv.width / 2, cv.height / 2];
+    const dir = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] }[ev.key];
+    const img = this.image;
+    let k = null;
+    if (dir && (ev.ctrlKey || ev.metaKey)) k = () => this.pan(-dir[0] * step, -dir[1] * step);
+    else if (dir && img) {
+      k = () => {
+        const [c, r] = this.cursor ?? this.centrePixel();
+        const n = ev.shiftKey ? 10 : 1;
+        this.setCursor(c + dir[0] * n, r + dir[1] * n);
+      };
+    } else if ((ev.key === "Home" || ev.key === "End") && img) {
+      k = () => {
+        const [, r] = this.cursor ?? this.centrePixel();
+        const end = ev.key === "End";
+        const row = ev.ctrlKey || ev.metaKey ? (end ? img.height - 1 : 0) : r;
+        this.setCursor(end ? img.width - 1 : 0, row);
+      };
+    } else if ((ev.key === "Enter" || ev.key === " ") && img && !ev.repeat) {
+      k = () => {
+        const [c, r] = this.cursor ?? this.centrePixel();
+        this.opts.onPick?.(c, r, ev, [c, r]);
+      };
+    } else {
+      k = {
         "+": () => this.zoomAt(1.25, ...mid),
         "=": () => this.zoomAt(1.25, ...mid),
         "-": () => this.zoomAt(0.8, ...mid),
         0: () => this.fit(),
-        ArrowLeft: () => this.pan(step, 0),
-        ArrowRight: () => this.pan(-step, 0),
-        ArrowUp: () => this.pan(0, step),
-        ArrowDown: () => this.pan(0, -step),
-      };
-      const k = keys[ev.key];
-      if (k) {
-        ev.preventDefault();
-        k();
-      }
-    });
+      }[ev.key];
+    }
+    if (k) {
+      ev.preventDefault();
+      k();
+    }
   }
 
   hover(c, r) {
@@ -382,13 +496,19 @@ export class Viewer {
       this.opts.onHover?.(null);
       return;
     }
+    this.opts.onHover?.(this.pixelAt(c, r));
+  }
+
+  /** Pixel (c, r) inside the image: { c, r, grey, layer (null: none or not finite), layerName }. */
+  pixelAt(c, r) {
+    const img = this.image;
     let layerValue = null;
     const l = this.layer;
     if (l && c >= l.c0 && r >= l.r0 && c < l.c0 + l.width && r < l.r0 + l.height) {
       const v = l.data[(r - l.r0) * l.width + (c - l.c0)];
       if (Number.isFinite(v)) layerValue = v;
     }
-    this.opts.onHover?.({ c, r, grey: img.grey[r * img.width + c], layer: layerValue, layerName: l?.name ?? null });
+    return { c, r, grey: img.grey[r * img.width + c], layer: layerValue, layerName: l?.name ?? null };
   }
 
   draw() {
@@ -433,6 +553,7 @@ export class Viewer {
       if (this.zoom >= LABEL_ZOOM) this.labels(ctx, p * w, w, onlyLayer);
       this.drawShapes(ctx);
       this.drawMark(ctx);
+      this.drawCursor(ctx);
       ctx.restore();
     }
   }
@@ -506,6 +627,25 @@ export class Viewer {
         ctx.lineTo(x + dx * (half + 16 * px), y + dy * (half + 16 * px));
       }
       ctx.stroke();
+    }
+  }
+
+  /**
+   * The keyboard's cursor while the view has the focus: the pixel's square
+   * (at least 10 screen pixels) in the focus colour, a white and a dark
+   * line, so that it shows on any grey and any layer colour.
+   */
+  drawCursor(ctx) {
+    if (!this.cursor || document.activeElement !== this.canvas) return;
+    const [c, r] = this.cursor;
+    const px = (1 / this.zoom) * (this.dpr || 1);
+    const half = Math.max(0.5, 5 * px);
+    const [x, y] = [c + 0.5, r + 0.5];
+    const focus = getComputedStyle(this.canvas).getPropertyValue("--focus").trim() || "#c2410c";
+    for (const [colour, width, grow] of [["#000", 5, 2], ["#fff", 3, 1], [focus, 2, 0]]) {
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = width * px;
+      ctx.strokeRect(x - half - grow * px, y - half - grow * px, 2 * (half + grow * px), 2 * (half + grow * px));
     }
   }
 

@@ -18,10 +18,10 @@ const correlation = {
     const [reach, reachLabel] = number("lab-reach", "Search ± (px)", 30, { min: "1", max: "150", step: "1" });
     const [model, modelLabel] = select("lab-model", "LSM model", [["shift", "shift"], ["shift-radiometric", "shift + radiometric"], ["affine", "affine + radiometric"]], "shift-radiometric");
     box.append(secondLabel, " ", sizeLabel, " ", reachLabel, " ", modelLabel,
-      el("p", { class: "muted" }, "Click the photo where the template should be (its centre), then drag the box (mouse or touch) or move it with the arrow keys on the box's handle below (Shift: 10 pixels a step); the matching runs again where it is dropped. The NCC surface over the search box appears as a heat map on the search photo below, with the best match, its subpixel peak (3×3 quadric, Example 9) and every LSM iteration's patch outline."));
+      el("p", { class: "muted" }, "Click the photo where the template should be (its centre) — or, on the keyboard, focus the photo, move its cursor with the arrow keys and press Enter — then drag the box (mouse or touch) or move it with the arrow keys on the box's handle below (Shift: 10 pixels a step); the matching runs again where it is dropped. The NCC surface over the search box appears as a heat map on the search photo below, with the best match, its subpixel peak (3×3 quadric, Example 9) and every LSM iteration's patch outline."));
     // the template box: its position, announced; a handle for the keyboard
     const handle = el("button", { type: "button", id: "lab-template-handle", class: "lab-handle", disabled: true, "aria-describedby": "lab-template-pos" }, "Template box: arrow keys move it");
-    const readout = el("p", { id: "lab-template-pos", class: "lab-readout", "aria-live": "polite" }, "No template box yet: click the photo.");
+    const readout = el("p", { id: "lab-template-pos", class: "lab-readout", "aria-live": "polite" }, "No template box yet: click the photo, or press Enter on its cursor.");
     box.append(el("div", { class: "lab-template-bar" }, handle, " ", readout));
     const holder = el("div", { class: "lab-pair" });
     const fig = el("figure", {}, el("figcaption", { id: "lab-search-caption" }, "Search photo: NCC surface (blue −1 … red +1), best match (orange), LSM iterations (green to blue)."));
@@ -65,7 +65,7 @@ const correlation = {
       const n = Number(size.value);
       readout.textContent = at
         ? `Template ${n}×${n} centred on column ${at[0]}, row ${at[1]}${moving ? " (moving)" : ""}.`
-        : "No template box yet: click the photo.";
+        : "No template box yet: click the photo, or press Enter on its cursor.";
       handle.disabled = !at;
       testHook("template", at ? at.join(",") : "");
     };

@@ -60,6 +60,7 @@ const interest = {
         }
       }
       lab.viewer.setShapes(shapes);
+      lab.explorer.setPoints(p, used.op);
       lab.say(`${p.length / 6} interest points found${used.op === "forstner" ? ` with T = ${fmt(used.thresholdPx, 3)} px` : ""}.`);
       testHook("points", String(p.length / 6));
     };
