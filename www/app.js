@@ -525,7 +525,18 @@ async function showLab(params = []) {
 // ---------------------------------------------------------------------------
 // Routing
 
+/** A SCORM package's page (its index.html carries #lms-package, www/lms/download.js): its practice only. */
+const lmsPackage = document.getElementById("lms-package") !== null;
+
+async function showLmsPackage() {
+  destroyView();
+  setStatus("loading");
+  const { packageSettings, showLmsPractice } = await import("./lms/launch.js");
+  await showLmsPractice({ root, core, entries, setStatus }, packageSettings());
+}
+
 async function route({ focus = false } = {}) {
+  if (lmsPackage) return showLmsPackage();
   const hash = location.hash;
   const { id, params: allParams } = parseHash(hash);
   const params = embedPage.takeOptions(allParams); // theme, hide, lock …: embed-options.js
@@ -539,6 +550,15 @@ async function route({ focus = false } = {}) {
   }
   if (!id) {
     await showHome(params);
+    return;
+  }
+  if (id === "practice" && params.some(([key]) => key === "receipt")) {
+    // a work receipt, regraded (www/lms/receipt.js loads the practice of the receipt's topics)
+    destroyView();
+    setStatus("loading");
+    const { showReceipt } = await import("./lms/receipt.js");
+    if (location.hash !== hash) return;
+    await showReceipt({ root, core, entries, setStatus }, params.find(([key]) => key === "receipt")[1]);
     return;
   }
   if (id === "practice" || params.some(([key]) => key === "practice")) {
@@ -595,7 +615,7 @@ async function main() {
   // (and its figures: both were preloaded from the HTML by preload-route.js)
   const early = loadCore().then((c) => {
     const { id, params } = parseHash(location.hash);
-    if (!params.some(([key]) => key === "practice")) {
+    if (!lmsPackage && !params.some(([key]) => key === "practice")) {
       c.load(id).catch(() => {}); // route() reports errors
       const module = c.catalog().find((e) => e.id === id)?.module;
       if (module) loadFigures(module);
@@ -630,9 +650,10 @@ async function main() {
       console.error(e);
       showMessage("Something went wrong", `The example could not be shown: ${messageOf(e)}`);
     });
-  window.addEventListener("hashchange", () => go({ focus: true }));
+  // (a SCORM package's page keeps its one view: no routes, no offline copy of its own)
+  if (!lmsPackage) window.addEventListener("hashchange", () => go({ focus: true }));
   // the offline copy's service worker: after the first view (not on its critical path)
-  go().then(() => import("./sw-register.js"));
+  go().then(() => (lmsPackage ? null : import("./sw-register.js")));
 }
 
 main();

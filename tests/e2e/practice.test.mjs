@@ -391,7 +391,9 @@ describe("worksheets", () => {
       assert.ok(firstKey.includes(String(cm)), `${cm} in ${firstKey}`);
       await page.emulateMedia({ media: "print" });
       assert.equal(await page.locator(".ws-key").evaluate((k) => getComputedStyle(k).breakBefore), "page");
-      assert.equal(await page.locator(".ws-screen-only").isVisible(), false);
+      // the links, buttons and the LMS panel are for the screen only
+      assert.deepEqual(await page.locator(".ws-screen-only").evaluateAll((xs) => xs.filter((x) => getComputedStyle(x).display !== "none").length), 0);
+      assert.equal(await page.locator(".ws-screen-only").count(), 2);
       const pdf = await page.pdf({ format: "A4" });
       const pages = (pdf.toString("latin1").match(/\/Type\s*\/Page[^s]/g) ?? []).length;
       assert.ok(pages >= 2, `the printed sheet has ${pages} page(s)`);

@@ -159,6 +159,7 @@ export class ScormSession {
    */
   report({ score, outOf, answered, total, passing = null, suspend, boxes = [] }) {
     if (!this.open) return false;
+    this.lastError = null; // this report's errors only
     passing ??= this.passing();
     const raw = percent(score, outOf);
     const complete = answered >= total;

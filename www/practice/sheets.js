@@ -128,11 +128,18 @@ export function showOverview({ root, core, entries, setStatus }) {
     "section",
     { class: "panel worksheet-maker" },
     el("h3", {}, "Worksheet for a class"),
-    el("p", { class: "muted" }, "Fresh variants of one example or of a whole topic, to print, with the answer key on separate pages."),
+    el("p", { class: "muted" }, "Fresh variants of one example or of a whole topic, to print, with the answer key on separate pages, or as a package for your LMS's gradebook (on the worksheet's page)."),
     el("div", { class: "ws-row" }, el("label", { for: "ws-example" }, "Example"), select),
     el("div", { class: "ws-row" }, el("label", { for: "ws-n" }, "Variants"), count),
     el("div", { class: "ws-row ws-check" }, steps, el("label", { for: "ws-steps" }, "Answer key with the worked steps")),
     make,
+  );
+  const receipts = el(
+    "section",
+    { class: "panel receipt-check" },
+    el("h3", {}, "Check a work receipt"),
+    el("p", { class: "muted" }, "A student's receipt (Copy a work receipt, in practice) holds their answers as typed: open it to see them graded again, box by box."),
+    el("a", { class: "button", href: "#/practice?receipt=" }, "Check a receipt"),
   );
   root.replaceChildren(
     el(
@@ -140,7 +147,7 @@ export function showOverview({ root, core, entries, setStatus }) {
       { class: "practice-overview" },
       el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog")),
       el("header", { class: "example-head" }, el("h2", { tabindex: "-1" }, "Practice"), el("p", { class: "example-summary" }, "Every example with numbers you have not seen, checked box by box. Your answers stay in this browser.")),
-      el("div", { class: "overview-grid" }, sections, maker),
+      el("div", { class: "overview-grid" }, sections, maker, receipts),
     ),
   );
   setStatus("practice-overview");
@@ -184,7 +191,7 @@ export async function showWorksheet({ root, core, entries, setStatus }, what, nT
   const title = what.startsWith("topic:") ? `Worksheet: ${what.slice(6)}` : `Worksheet: ${chosen[0].title}`;
   document.title = siteTitle(title);
 
-  const encode = await loadQr();
+  const [encode, { lmsPanel }] = await Promise.all([loadQr(), import("../lms/panel.js")]);
   if (location.hash !== hash) return; // the reader moved on while the encoder loaded
   const exercises = items.map(({ entry, variant }, i) => {
     const address = practiceAddress(entry.id, variant.code);
@@ -234,6 +241,7 @@ export async function showWorksheet({ root, core, entries, setStatus }, what, nT
       { class: "worksheet", "data-steps": withSteps ? "1" : "0" },
       el("div", { class: "crumbs ws-screen-only" }, el("a", { href: "#/practice" }, "← All practice"), " ", print, " ", toggle),
       el("header", { class: "ws-head" }, el("h2", {}, title), el("p", {}, "Name: ____________________   Date: __________"), el("p", { class: "muted" }, "Give each answer to the tolerance stated beside its line. Work each exercise in order; a later answer is marked against your own earlier ones.")),
+      lmsPanel({ items, title, entries }),
       el("div", { class: "ws-exercises" }, exercises),
       el("section", { class: "ws-key" }, el("h2", {}, `Answer key — ${title.replace("Worksheet: ", "")}`), keys),
     ),

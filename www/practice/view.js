@@ -113,14 +113,9 @@ function buildVariant(ctx, entry, variant, answers) {
   const { core, root, mode } = ctx;
   const id = entry.id;
   const code = variant.code;
-  let solution = null;
-  const worked = () => (solution ??= core.solve(id, variant.inputs));
-  const hintsShown = {};
-  const checked = new Set(Object.keys(answers).filter((k) => answers[k]));
 
   document.title = siteTitle(`Practice: ${entry.title}`);
   const score = el("p", { class: "practice-score", role: "status" });
-  const revealed = el("p", { class: "practice-revealed muted" });
   const saveNote = el("p", { class: "muted practice-save", hidden: true }, "Your answers cannot be kept in this browser (storage is off); they stay until you leave the page.");
   const copyStatus = el("span", { class: "copy-status", role: "status" });
 
@@ -138,17 +133,50 @@ function buildVariant(ctx, entry, variant, answers) {
       copyStatus.textContent = `Link: ${location.href}`;
     }
   });
+  // a work receipt: the answers as typed, which an instructor regrades (www/lms/receipt.js)
+  const receiptButton = el("button", { type: "button", class: "button" }, "Copy a work receipt");
+  receiptButton.addEventListener("click", async () => {
+    const { encodeAttempt } = await import("../lms/attempt.js");
+    const r = { text: encodeAttempt([{ id, code, answers: boxes.texts() }]) };
+    try {
+      await navigator.clipboard.writeText(r.text);
+      copyStatus.textContent = `Receipt copied (${r.text.length} characters): your instructor opens it at “Check a work receipt” under All practice.`;
+    } catch {
+      copyStatus.textContent = `Receipt: ${r.text}`;
+    }
+  });
   const actions = el(
     "div",
     { class: "actions practice-actions" },
     newButton,
     copyButton,
     el("a", { class: "button", href: `#/practice?worksheet=${encodeURIComponent(id)}&n=4` }, "Worksheet"),
+    receiptButton,
+    el("a", { class: "button", href: `#/practice?worksheet=${encodeURIComponent(id)}&n=1&codes=${code}` }, "For your LMS"),
     copyStatus,
   );
 
-  const boxes = variant.boxes.map((b, k) => buildBox(b, k));
-  const list = el("ol", { class: "answer-list" }, boxes.map((b) => b.item));
+  const boxes = mountBoxes({
+    core,
+    id,
+    code,
+    variant,
+    answers,
+    onGraded(g, t, changed) {
+      // nothing typed in a variant never stored: nothing to keep
+      const typed = Object.values(t).some((x) => x.trim());
+      if ((typed || loadProgress(id)?.code === code) && !saveProgress(id, code, t)) saveNote.hidden = false;
+      const scoreText = `Score: ${g.score} of ${g.out_of}`;
+      if (score.textContent !== scoreText) score.textContent = scoreText;
+      if (changed && mode === "embed") {
+        const r = g.boxes[changed];
+        postAnswer({ example: id, code, box: changed, verdict: r.verdict, score: g.score, outOf: g.out_of });
+      }
+    },
+    onError(e) {
+      score.textContent = `The answers could not be checked: ${messageOf(e)}`;
+    },
+  });
 
   const crumbs =
     mode === "embed"
@@ -173,17 +201,39 @@ function buildVariant(ctx, entry, variant, answers) {
           { class: "panel answers-panel", "aria-labelledby": "answers-h" },
           el("h3", { id: "answers-h" }, "Your answers"),
           el("p", { class: "muted" }, "Work in order; each box is checked when you leave it (Tab or Enter). A decimal comma, 1.2e-3, 3/4 and a unit after the number are all read. A later box is also checked against your own earlier answers."),
-          list,
+          boxes.element,
           score,
-          revealed,
+          boxes.revealed,
           saveNote,
         ),
       ),
     ),
   );
 
+  ctx.setStatus("practice");
+}
+
+/**
+ * A variant's answer boxes, checked by the core as the student leaves each
+ * one: the list (labels, tolerance, "read as", verdict lines, hint ladder) and
+ * the line of hints revealed. The practice view and an LMS package's page
+ * (www/lms/launch.js, several variants on one page: `idPrefix` keeps their
+ * element ids apart) both use it. `onGraded(graded, texts, changedKey)` after
+ * every grading, `onChecked(key, graded)` when a box was left.
+ * Returns { element, revealed, regrade(changedKey), texts(), graded() }.
+ */
+export function mountBoxes({ core, id, code, variant, answers, idPrefix = "", onGraded = () => {}, onChecked = () => {}, onError = () => {} }) {
+  let solution = null;
+  const worked = () => (solution ??= core.solve(id, variant.inputs));
+  const hintsShown = {};
+  const checked = new Set(Object.keys(answers).filter((k) => answers[k]));
+  const revealed = el("p", { class: "practice-revealed muted" });
+  let last = null;
+  const boxes = variant.boxes.map((b, k) => buildBox(b, k));
+  const element = el("ol", { class: "answer-list" }, boxes.map((b) => b.item));
+
   function buildBox(b, k) {
-    const inputId = `answer-${k}`;
+    const inputId = `${idPrefix}answer-${k}`;
     const input = el("input", {
       id: inputId,
       class: "answer-input",
@@ -292,12 +342,10 @@ function buildVariant(ctx, entry, variant, answers) {
     try {
       g = core.grade(id, code, t);
     } catch (e) {
-      score.textContent = `The answers could not be checked: ${messageOf(e)}`;
+      onError(e);
       return;
     }
-    // nothing typed in a variant never stored: nothing to keep
-    const typed = Object.values(t).some((x) => x.trim());
-    if ((typed || loadProgress(id)?.code === code) && !saveProgress(id, code, t)) saveNote.hidden = false;
+    last = g;
     for (const b of boxes) {
       const r = g.boxes[b.b.key];
       const text = b.input.value.trim();
@@ -321,15 +369,18 @@ function buildVariant(ctx, entry, variant, answers) {
         testData(b.item, "mistake", null);
       }
     }
-    const scoreText = `Score: ${g.score} of ${g.out_of}`;
-    if (score.textContent !== scoreText) score.textContent = scoreText;
-    if (changed && mode === "embed") {
-      const r = g.boxes[changed];
-      postAnswer({ example: id, code, box: changed, verdict: r.verdict, score: g.score, outOf: g.out_of });
-    }
+    onGraded(g, t, changed);
+    if (changed) onChecked(changed, g);
   }
 
-  regrade(null);
+  regrade(null, { verdicts: true });
   showRevealed();
-  ctx.setStatus("practice");
+  return {
+    element,
+    revealed,
+    regrade,
+    texts,
+    graded: () => last ?? core.grade(id, code, texts()),
+  };
 }
+
