@@ -208,16 +208,31 @@ test("a SCORM 2004 package reports completion and success; without an LMS the pa
   await alone.waitForFunction(() => /^Score: 1 of /.test(document.querySelector(".practice-score")?.textContent ?? ""), null, { timeout: WAIT });
   await context.close();
 
-  // a receipt (as the practice page's button copies it) regraded on the site: an edited answer earns what it earns
+  // a receipt made by the practice page's button, regraded on the site: an edited answer earns what it earns
   const { context: c2, page: site } = await open(env.browser);
-  const { encodeAttempt } = await import("../../www/lms/attempt.js");
+  await site.goto(`${env.url}index.html#/gsd?practice=${v.code}`);
+  await site.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: WAIT });
   const answers = Object.fromEntries(v.boxes.map((b) => [b.key, typed(b)]));
   answers[v.boxes[1].key] = "12345";
-  await site.goto(`${env.url}index.html#/practice?receipt=${encodeAttempt([{ id: "gsd", code: v.code, answers }])}`);
+  for (const [key, text] of Object.entries(answers)) {
+    await site.locator(`input[data-key="${key}"]`).fill(text);
+    await site.locator(`input[data-key="${key}"]`).press("Tab");
+  }
+  await site.getByRole("button", { name: "Copy a work receipt" }).click();
+  await site.waitForFunction(() => document.querySelector(".receipt-text")?.value.startsWith("PGA1."), null, { timeout: WAIT });
+  const text = await site.locator(".receipt-text").inputValue();
+  assert.deepEqual(decodeAttempt(text), [{ id: "gsd", code: v.code, answers }]);
+  assert.equal(await site.locator(".receipt-box svg.ws-qr").count(), 1, "a QR code of the address");
+  await site.goto(await site.locator(".receipt-link").getAttribute("href"));
   await site.waitForFunction(() => document.body.dataset.status === "receipt" && document.querySelector(".receipt-score"), null, { timeout: WAIT });
   const g = core.grade("gsd", v.code, answers);
   assert.equal(await site.locator(".receipt-score").getAttribute("data-score"), String(g.score));
   for (const b of v.boxes) assert.equal(await site.locator(`.receipt-item tr[data-key="${b.key}"]`).getAttribute("data-verdict"), g.boxes[b.key].verdict, b.key);
+  // the same receipt with a box edited to the right value: graded to what the edit earns
+  const fixed = { ...answers, [v.boxes[1].key]: typed(v.boxes[1]) };
+  const { encodeAttempt } = await import("../../www/lms/attempt.js");
+  await site.goto(`${env.url}index.html#/practice?receipt=${encodeAttempt([{ id: "gsd", code: v.code, answers: fixed }])}`);
+  await site.waitForFunction((want) => document.querySelector(".receipt-score")?.dataset.score === want, String(core.grade("gsd", v.code, fixed).score), { timeout: WAIT });
   await site.goto(`${env.url}index.html#/practice?receipt=PGA1.garbled`);
   await site.waitForFunction(() => document.querySelector(".receipt-result .error-box"), null, { timeout: WAIT });
   assert.match(await site.locator(".receipt-result .error-box").textContent(), /damaged/);

@@ -12,10 +12,11 @@ export const PACKAGE_BLOCK = "lms-package";
 
 /**
  * The settings a package carries, checked: { scorm: "1.2"|"2004", title,
- * passing (0–100 or null), items: [{ id, code }] (fixed variants) or null with
+ * passing (0–100 or null), site (the playground's address, where receipts
+ * are regraded), items: [{ id, code }] (fixed variants) or null with
  * `fresh: { ids, n }` (new variants at each learner's first launch) }.
  */
-export function packageSettings({ scorm = "1.2", title, passing = null, items = null, fresh = null, entries }) {
+export function packageSettings({ scorm = "1.2", title, passing = null, items = null, fresh = null, site = null, entries }) {
   if (scorm !== "1.2" && scorm !== "2004") throw new Error(`scorm: "${scorm}" is not a SCORM version (1.2 or 2004)`);
   if (typeof title !== "string" || !title.trim()) throw new Error("title: give the activity a title");
   if (passing != null && !(Number.isFinite(passing) && passing >= 0 && passing <= 100)) throw new Error("passing: a percentage from 0 to 100, or none");
@@ -27,7 +28,7 @@ export function packageSettings({ scorm = "1.2", title, passing = null, items = 
   if (scorm === "1.2" && perExample > MAX_VARIANTS_12) {
     throw new Error(`items: SCORM 1.2 keeps at most 4,096 characters of answers, enough for ${MAX_VARIANTS_12} variants an example; choose fewer variants, or SCORM 2004`);
   }
-  return { scorm, title: title.trim(), passing, items: items ? items.map(({ id, code }) => ({ id, code })) : null, fresh: items ? null : { ids: [...fresh.ids], n: fresh.n } };
+  return { scorm, title: title.trim(), passing, site, items: items ? items.map(({ id, code }) => ({ id, code })) : null, fresh: items ? null : { ids: [...fresh.ids], n: fresh.n } };
 }
 
 /** The package's index.html: the site's page with the settings block before </head>. */

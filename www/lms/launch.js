@@ -13,7 +13,7 @@ import { testHook } from "../test-hooks.js";
 import { AttemptError, decodeAttempt, encodeAttempt } from "./attempt.js";
 import { connect, interactionId } from "./scorm.js";
 import { PACKAGE_BLOCK } from "./download.js";
-import { receipt } from "./receipt.js";
+import { receiptBox } from "./receipt-box.js";
 
 /** The package's settings (its index.html's data block), or null on the site itself. */
 export function packageSettings(doc = document) {
@@ -59,8 +59,6 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
   const where = el("p", { class: "lms-status", role: "status" });
   const connected = session ? `Your score goes to your course (SCORM ${session.version}) after each box you check.${start.resumed ? " Your earlier answers are back." : ""}` : "";
   const score = el("p", { class: "practice-score", role: "status" });
-  const receiptOut = el("p", { class: "muted receipt-out" });
-  const receiptButton = el("button", { type: "button", class: "button" }, "Copy a work receipt");
   const sections = [];
   const mounted = items.map((it, k) => {
     const entry = byId.get(it.id);
@@ -88,6 +86,9 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
     told.set(`${k}/${key}`, said);
     report([{ k, key }]);
   }
+
+  // the receipt's address is the playground's own (a package's page has no receipt view)
+  const receipt = receiptBox(() => attempt(), { site: settings.site ?? location.href });
 
   function attempt() {
     return mounted.map(({ it, variant, boxes }) => ({ id: it.id, code: variant.code, answers: boxes.texts() }));
@@ -127,16 +128,6 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
     if (where.textContent !== text2) where.textContent = text2;
   }
 
-  receiptButton.addEventListener("click", async () => {
-    const r = receipt(attempt());
-    try {
-      await navigator.clipboard.writeText(r.text);
-      receiptOut.textContent = `Receipt copied (${r.text.length} characters). Your instructor can regrade it at the playground's “Check a work receipt”.`;
-    } catch {
-      receiptOut.textContent = `Receipt: ${r.text}`;
-    }
-  });
-
   where.textContent = session ? connected : "No course system (LMS) found: this is practice only, and scores are not being sent anywhere.";
   root.replaceChildren(
     el(
@@ -146,8 +137,8 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
       el("p", { class: "muted" }, "Work in order; each box is checked when you leave it (Tab or Enter). A decimal comma, 1.2e-3, 3/4 and a unit after the number are all read."),
       sections,
       score,
-      el("div", { class: "actions" }, receiptButton),
-      receiptOut,
+      el("div", { class: "actions" }, receipt.button),
+      receipt.element,
     ),
   );
   report();

@@ -35,6 +35,7 @@ export function lmsPanel({ items, title, entries }) {
         passing: passing.value.trim() === "" ? null : Number(passing.value),
         items: fixed.checked ? items.map((x) => ({ id: x.entry.id, code: x.variant.code })) : null,
         fresh: fixed.checked ? null : { ids, n: perExample },
+        site: new URL("index.html", location.href).href,
         entries,
       });
     } catch (e) {

@@ -8,15 +8,7 @@
 import { el } from "../dom.js";
 import { siteTitle } from "../site.js";
 import { verdictParts, verdictSentence } from "../practice/view.js";
-import { decodeAttempt, encodeAttempt, gradeAttempt } from "./attempt.js";
-
-/** The receipt of `items` ([{ id, code, answers }]) and the address that regrades it. */
-export function receipt(items, here = location.href) {
-  const text = encodeAttempt(items);
-  const url = new URL(here);
-  url.hash = `#/practice?receipt=${text}`;
-  return { text, url: url.href };
-}
+import { decodeAttempt, gradeAttempt } from "./attempt.js";
 
 /** "3.5" / "2" — a score with its half points. */
 const points = (x) => String(Math.round(x * 100) / 100);

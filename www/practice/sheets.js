@@ -49,7 +49,7 @@ export function qrSvg(encode, text) {
 }
 
 /** The QR encoder, or null when it cannot load (the sheet keeps its written addresses). */
-async function loadQr() {
+export async function loadQr() {
   try {
     return (await import(QR_URL)).encode;
   } catch (e) {

@@ -133,18 +133,21 @@ function buildVariant(ctx, entry, variant, answers) {
       copyStatus.textContent = `Link: ${location.href}`;
     }
   });
-  // a work receipt: the answers as typed, which an instructor regrades (www/lms/receipt.js)
+  // a work receipt: the answers as typed, which an instructor regrades (www/lms/receipt-box.js, loaded when pressed)
   const receiptButton = el("button", { type: "button", class: "button" }, "Copy a work receipt");
-  receiptButton.addEventListener("click", async () => {
-    const { encodeAttempt } = await import("../lms/attempt.js");
-    const r = { text: encodeAttempt([{ id, code, answers: boxes.texts() }]) };
-    try {
-      await navigator.clipboard.writeText(r.text);
-      copyStatus.textContent = `Receipt copied (${r.text.length} characters): your instructor opens it at “Check a work receipt” under All practice.`;
-    } catch {
-      copyStatus.textContent = `Receipt: ${r.text}`;
-    }
-  });
+  const receiptSpot = el("div", { class: "receipt-spot" });
+  receiptButton.addEventListener(
+    "click",
+    async () => {
+      const { receiptBox } = await import("../lms/receipt-box.js");
+      const box = receiptBox(() => [{ id, code, answers: boxes.texts() }]);
+      receiptButton.replaceWith(box.button);
+      receiptSpot.replaceChildren(box.element);
+      box.button.click();
+      box.button.focus();
+    },
+    { once: true },
+  );
   const actions = el(
     "div",
     { class: "actions practice-actions" },
@@ -194,6 +197,7 @@ function buildVariant(ctx, entry, variant, answers) {
         el("p", { class: "example-meta" }, `Variant ${code} · ${entry.source ?? ""}`),
       ),
       actions,
+      receiptSpot,
       el("div", { class: "practice-layout" },
         el("section", { class: "panel givens-panel", "aria-labelledby": "givens-h" }, el("h3", { id: "givens-h" }, "Given"), renderGivens(entry, variant.inputs)),
         el(
