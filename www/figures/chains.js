@@ -553,7 +553,85 @@ const shapePresets = (extra = {}) => [
 const CAPTION =
   "The pixel grid: c to the right, r downward. Blue arrows are the steps of the chain code, each labelled with its digit (1 = east, counter-clockwise to 8 = south-east); the green ring is the start. Red marks where a path breaks or branches. For a closed boundary: major axis (orange), minor axis (purple), basic rectangle (dashed).";
 
-const base = { caption: CAPTION, height: figureHeight, describe, draw: drawFigure, interact: { pointer: onPointer, key: onKey } };
+/** Direction words of the code digits (8-connectivity: 1 = east, counter-clockwise; 4-connectivity: 1 east, 2 north, 3 west, 4 south). */
+const WORDS8 = ["east", "north-east", "north", "north-west", "west", "south-west", "south", "south-east"];
+const WORDS4 = ["east", "north", "west", "south"];
+
+/**
+ * The Data view (index.js tables()): the grid as a table (a cell's pixel, its
+ * place on the path, start and end in words), the path move by move, the
+ * numbers under the grid; the grid is explorable (Enter toggles a cell as a click does).
+ */
+function tables(solution) {
+  const m = model(solution);
+  const res = m.res;
+  const shown = m.code ? m.path : m.raw;
+  const e = extent(m);
+  const where = new Map();
+  const note = (p, word) => {
+    const k = `${p[0]},${p[1]}`;
+    where.set(k, [...(where.get(k) ?? []), word]);
+  };
+  if (m.mode === "region") for (const p of m.raw) note(p, "region pixel");
+  shown.forEach((p, i) => note(p, m.mode === "region" ? `boundary ${i + 1}` : `pixel ${i + 1}`));
+  const first = shown[0];
+  const last = shown[shown.length - 1];
+  const rows = [];
+  const marks = [];
+  for (let j = 0; j < e.rows; j++) {
+    const r = e.r0 + j;
+    rows.push(Array.from({ length: e.cols }, (_, i) => (where.get(`${e.c0 + i},${r}`) ?? []).join(", ")));
+    marks.push(Array.from({ length: e.cols }, (_, i) => {
+      const p = [e.c0 + i, r];
+      const words = [same(p, first) ? "start" : null, !m.closed && shown.length > 1 && same(p, last) ? "end" : null].filter(Boolean);
+      return words.join(", ") || null;
+    }));
+  }
+  const words = m.four ? WORDS4 : WORDS8;
+  const path = m.closed && m.path.length ? [...m.path, m.path[0]] : m.path;
+  const moves = m.code ? m.code.map((d, i) => `(${path[i]?.[0]}, ${path[i]?.[1]}) → (${path[i + 1]?.[0]}, ${path[i + 1]?.[1]}): code ${d}, ${words[d - 1] ?? "?"}`) : [];
+  const numbers = [
+    ["chain code", m.code ? digits(m.code) || "empty" : "none (the path breaks)"],
+    ["differential code", Array.isArray(res.differential) ? digits(res.differential) || "empty" : "none"],
+  ];
+  if (typeof res.length === "number") numbers.push(["length L (px)", fmt(res.length, DIGITS)]);
+  if (typeof res.diameter === "number") numbers.push(["diameter D (px)", fmt(res.diameter, DIGITS)], ["minor axis m (px)", fmt(res.minor_axis_length, DIGITS)], ["eccentricity E", res.eccentricity == null ? "no value" : fmt(res.eccentricity, DIGITS)]);
+  for (const b of m.breaks.slice(0, 3)) if (b.length >= 5) numbers.push(["break", `pixel ${b[0]} (${b[1]}, ${b[2]}) → pixel ${b[0] + 1} (${b[3]}, ${b[4]})`]);
+  return {
+    summary: `${describe(solution)} ${first ? `It starts at column ${first[0]}, row ${first[1]}${!m.closed && last && shown.length > 1 ? ` and ends at column ${last[0]}, row ${last[1]}` : ""}` : "No pixels"}; the grid shows columns ${e.c0}–${e.c0 + e.cols - 1} and rows ${e.r0}–${e.r0 + e.rows - 1}.`,
+    tables: [
+      {
+        caption: "The pixel grid (c to the right, r downward)",
+        corner: "",
+        columns: Array.from({ length: e.cols }, (_, i) => `column ${e.c0 + i}`),
+        rowHeaders: Array.from({ length: e.rows }, (_, j) => `row ${e.r0 + j}`),
+        rows,
+        marks,
+        // a region's cells are toggled from the cursor (Enter or Space); with pixels in order the arrow keys add steps
+        ...(m.mode === "region"
+          ? {
+              explore: {
+                rect(j, i, width) {
+                  const L = layout(width, m);
+                  return { x: L.left + i * L.cell, y: L.top + j * L.cell, w: L.cell, h: L.cell };
+                },
+              },
+            }
+          : {}),
+      },
+      { caption: "The numbers under the grid", columns: ["what", "value"], rows: numbers },
+    ],
+    list: moves.length ? { caption: `The path, move by move (${m.four ? "4" : "8"}-connectivity codes)`, items: moves } : null,
+  };
+}
+
+/** The smallest cell a pointer should have to hit (CSS px; WCAG 2.5.8). */
+const TARGET = 24;
+
+/** The canvas width that gives every cell of the grid TARGET px (the registry lets the panel scroll when it is narrower). */
+const minWidth = (solution) => 2 * LAYOUT.margin + LAYOUT.axis + extent(model(solution)).cols * TARGET;
+
+const base = { caption: CAPTION, height: figureHeight, minWidth, describe, draw: drawFigure, tables, interact: { pointer: onPointer, key: onKey } };
 
 export const figures = {
   "chain-code": {

@@ -4,6 +4,7 @@
 //   gsd: a side view of the camera (not to scale) with one pixel and its
 //     ground footprint.
 
+import { seriesTable } from "./data-view.js";
 import { formatNumber } from "../format.js";
 import {
   arrow,
@@ -289,6 +290,27 @@ function frameFigure(id) {
     caption: "The image to scale. Blue: pixel coordinates (c, r) from the top-left corner, r downward. Orange: image coordinates (x, y) in mm from the centre, y upward.",
     height: (width, solution) => frameLayout(frameData(solution, id), width).height,
     describe: (solution) => describeFrame(solution, id),
+    tables(solution) {
+      const d = frameData(solution, id);
+      const px = (v) => formatNumber(v, PX_DIGITS);
+      const mm = (v) => formatNumber(v, MM_DIGITS);
+      return {
+        summary: describeFrame(solution, id),
+        tables: [
+          seriesTable(
+            "The point p in both coordinate systems",
+            ["system", "first coordinate", "second coordinate"],
+            [
+              ["pixel (c, r), px from the top-left corner", px(d.c), px(d.r)],
+              ["image (x, y), mm from the centre", mm(d.x), mm(d.y)],
+              ["the centre (c0, r0), px", px(d.c0), px(d.r0)],
+            ],
+            [[d.outside ? "outside the image" : null, null, null], [null, null, null], [null, null, null]],
+          ),
+          seriesTable("The frame", ["quantity", "value"], [["columns", px(d.columns)], ["rows", px(d.rows)], ["pixel size (mm)", formatNumber(d.p, MM_DIGITS)]]),
+        ],
+      };
+    },
     draw: (ctx, width, height, solution) => drawFrame(ctx, width, height, solution, id),
   };
 }
@@ -421,6 +443,13 @@ function describeGsd(solution) {
 }
 
 const gsdFigure = {
+  tables(solution) {
+    const l = gsdLabels(gsdData(solution));
+    return {
+      summary: describeGsd(solution),
+      tables: [seriesTable("The labelled lengths of the sketch (a side view, not to scale)", ["label"], [l.f, l.H, l.p, l.gsd, l.scale].map((t) => [t]))],
+    };
+  },
   caption: "Side view of the camera: the rays through one pixel's edges cross at the projection centre O and mark its footprint on the ground (not to scale).",
   height: (width) => Math.min(GSD.maxHeight, Math.max(GSD.minHeight, width * GSD.heightPerWidth)),
   describe: describeGsd,

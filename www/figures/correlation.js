@@ -368,7 +368,7 @@ function draw2d(ctx, width, height, solution, state) {
   }
 
   // deviations: x = A − Ā, y = B − B̄; a product's sign is its quadrant
-  const pts = d.a.flatMap((row, i) => row.map((v, j) => [v - d.ma, finite(d.b[i]?.[j]) - d.mb]));
+  const pts = deviations2d(d);
   const ext = Math.max(1e-9, ...pts.map(([x, y]) => Math.max(Math.abs(x), Math.abs(y))));
   const s = L.plotSize / 2 / (ext * 1.1);
   const cx = width / 2;
@@ -418,12 +418,21 @@ function draw2d(ctx, width, height, solution, state) {
     [1, 0.55],
   ]);
   labels.draw();
+  textBlock(ctx, lines2d(d, sel, pts), MARGIN, L.plotTop + L.plotSize + 10, { size: FONT_SIZE_SMALL });
+}
+
+/** Each pair's deviations [A − Ā, B − B̄], row by row. */
+export const deviations2d = (d) => d.a.flatMap((row, i) => row.map((v, j) => [v - d.ma, finite(d.b[i]?.[j]) - d.mb]));
+
+/** The lines under the ncc-2d scatter (and its status): ρ, and the selected pair (index `sel`) of the deviations `pts`. */
+export function lines2d(d, sel, pts) {
+  const cols = d.a[0]?.length ?? 1;
   const lines = [{ text: isNum(d.rho) ? `ρ = ${fmt(d.res.sum_dadb, VALUE_DIGITS, NONE)} / √(${fmt(d.res.sum_da2, VALUE_DIGITS, NONE)} × ${fmt(d.res.sum_db2, VALUE_DIGITS, NONE)}) = ${fmt(d.rho, RHO_DIGITS, NONE)}` : "ρ: no value (an array without variance: 0/0)", weight: "bold" }];
-  if (sel !== null) {
+  if (sel !== null && pts[sel]) {
     const [x, y] = pts[sel];
-    lines.push({ text: `Selected (row ${Math.floor(sel / L.cols) + 1}, column ${(sel % L.cols) + 1}): (${fmt(x, 5, NONE)}) × (${fmt(y, 5, NONE)}) = ${fmt(x * y, 5, NONE)}`, color: COLORS.point });
+    lines.push({ text: `Selected (row ${Math.floor(sel / cols) + 1}, column ${(sel % cols) + 1}): (${fmt(x, 5, NONE)}) × (${fmt(y, 5, NONE)}) = ${fmt(x * y, 5, NONE)}`, color: COLORS.point });
   }
-  textBlock(ctx, lines, MARGIN, L.plotTop + L.plotSize + 10, { size: FONT_SIZE_SMALL });
+  return lines;
 }
 
 function select2d(solution, p) {
@@ -861,6 +870,9 @@ const subpixel2d = {
   },
   draw: drawQuadric,
 };
+
+// for the Data views (correlation-tables.js)
+export { ncc1d, ncc2d, nccSurface, subpixel1d, subpixel2d, oneD, twoD, surf, parabolaData, quadricData, selected1d, selectedSurface, linesSurface, isNum, stepWith, RHO_DIGITS, VALUE_DIGITS, NONE };
 
 export const figures = {
   "ncc-1d": ncc1d,

@@ -9,6 +9,7 @@
 // keys move the selection.
 
 import { isMatrix, stepValue } from "../values.js";
+import { matrixTable, seriesTable } from "./data-view.js";
 import { COLORS, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, GRID, LINE_HEIGHT, PLAIN_SHADE, arrowStep, cellAt, drawGrid, fmt, greyLegend, layoutSpec, outline, shader, signedLegend, signedMatrix, text, textBlock, textWidth, wrapWords } from "./draw.js";
 
 // ---------------------------------------------------------------------------
@@ -286,7 +287,31 @@ function selectionInteract(dataOf) {
   };
 }
 
+/** The Data view (index.js tables()): the window (the selected pixel and the kernel's footprint in words), kernels, outputs, the sum. */
+const tablesOf = (dataOf, what) => (solution) => {
+  const d = dataOf(solution);
+  if (!d) return { summary: `The window and its ${what}.`, tables: [] };
+  const kw = d.kernels[0]?.m[0].length ?? 3;
+  const kh = d.kernels[0]?.m.length ?? 3;
+  const c0 = d.sel.c - 1 - Math.floor(kw / 2);
+  const r0 = d.sel.r - 1 - Math.floor(kh / 2);
+  const inWindow = (r, c) => [r === d.sel.r - 1 && c === d.sel.c - 1 ? "selected" : null, r >= r0 && r < r0 + kh && c >= c0 && c < c0 + kw ? "under the kernel" : null].filter(Boolean).join(", ");
+  const atSel = (r, c) => (r + d.first.r === d.sel.r && c + d.first.c === d.sel.c ? "selected" : null);
+  const values = d.outputs.map((o) => `${o.short ?? o.name} = ${fmt(o.value, 6)}`).join(", ");
+  const outputs = d.outputs.map((o) => matrixTable(`${o.name} (output, at the window's columns and rows)`, o.m, { format: (v) => fmt(v, 6, "no value"), first: d.first, mark: atSel }));
+  return {
+    summary: `A ${d.window.length}×${d.window[0].length} window; the selected pixel is at row ${d.sel.r}, column ${d.sel.c}: ${values}. Outputs cover columns ${d.first.c}–${d.first.c + d.outputs[0].m[0].length - 1} and rows ${d.first.r}–${d.first.r + d.outputs[0].m.length - 1}.`,
+    tables: [
+      matrixTable("Window f (grey values)", d.window, { format: (v) => fmt(v, 6, "no value"), mark: inWindow }),
+      ...d.kernels.map((k) => matrixTable(k.name, k.m, { format: (v) => fmt(v, 6, "no value"), first: { c: 1, r: 1 } })),
+      ...outputs,
+      seriesTable("The selected pixel's sum, as written under the grids", ["line"], sumLines(d).map((l) => [l.text.trim()])),
+    ],
+  };
+};
+
 const filterSpec = layoutSpec({
+  tables: tablesOf(filterData, "filtered output"),
   caption:
     "The window with the kernel laid over the selected pixel (orange frame, the kernel's weights in the corners of its cells), the kernel, and the output grid (shaded on a diverging scale, blue below 0 and orange above, when it has negative values; otherwise in grey, dark = low as in an image, with its legend). Below: the selected pixel's multiply-and-sum, one line per kernel row.",
   data: filterData,
@@ -302,6 +327,7 @@ const filterSpec = layoutSpec({
 });
 
 const edgeSpec = layoutSpec({
+  tables: tablesOf(edgeData, "edge responses"),
   caption:
     "The window with the 3×3 neighbourhood of the selected pixel framed in orange, the two kernels, then Gx, Gy (diverging scale: blue below 0, orange above) and the edge magnitude (grey, dark = low as in an image, with its legend). Below: the selected pixel's sums, one line per kernel row, and its magnitude.",
   data: edgeData,

@@ -58,12 +58,54 @@
 // buttons under the canvas, each setting the input texts it returns (as if
 // typed) and solving again.
 //
+// Optional: `minWidth(solution)`, the least canvas width (CSS px) the figure
+// needs, e.g. for cells of at least 24 × 24 px to click (WCAG 2.5.8): on a
+// narrower panel the canvas keeps that width and the panel scrolls sideways.
+//
+// Optional: `tables(solution, state)`, the figure's numbers for readers who
+// cannot see the canvas (issue 32; docs/figures.md), read from the same
+// solution data the figure is drawn from (no number is computed for it):
+//
+//   tables(solution, state) {
+//     return {
+//       summary: "ρ is highest, 0.93, at row 3, column 4 of the 5 × 5 positions.",  // the canvas's description
+//       tables: [{
+//         caption: "ρ at every position",
+//         corner: "",                                      // the top-left header (optional)
+//         columns: ["column 1", …], rowHeaders: ["row 1", …],
+//         rows: [["0.12", …], …],                          // texts, formatted as the figure writes them
+//         marks: [[null, "best", …], …],                   // optional: words added to a cell ("best", "selected")
+//         explore: { rect(r, c, width, height) { return { x, y, w, h }; } },  // optional: the cell on the canvas
+//       }],
+//       list: { caption: "The path, move by move", items: ["(1, 4) → (2, 4): east, code 1", …] },  // optional
+//     };
+//   }
+//
+// The summary becomes the canvas's accessible description (aria-describedby);
+// a "Data" button under the canvas (a disclosure: aria-expanded, aria-controls)
+// shows the summary, the tables (th scope=col/row headers) and the list; they
+// print. A table with `explore` gives the focused canvas a cell cursor: the
+// arrow keys (Home, End, PageUp, PageDown) move it where the figure's own key
+// hooks leave the key alone, a polite live line reads the cell ("row 3,
+// column 2, 87, inside the window"), and Enter or Space on it does what a
+// click on the cell's centre does (the same pointer/select/pick path).
+//
 // The page calls mountFigures(host, id, { onInputs })
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { COLORS, clearLabelBoxes, font, FONT_SIZE, pageTheme, usePalette } from "./draw.js";
 import { testData } from "../test-hooks.js";
+import { cursorText, dataView, moveCursor, renderData } from "./data-view.js";
+
+// the figures' own rules (the Data view, the cell cursor's line), loaded with the registry
+if (typeof document !== "undefined" && !document.getElementById("figures-css")) {
+  const link = document.createElement("link");
+  link.rel = "stylesheet";
+  link.id = "figures-css";
+  link.href = new URL("./figures.css", import.meta.url).href;
+  document.head.append(link);
+}
 
 /** While the page prints, figures are drawn on the light paper whatever the theme. */
 let printing = false;
@@ -78,7 +120,7 @@ let printing = false;
 const MODULES = Object.freeze({
   coordinates: () => import("./coordinates.js"),
   transformations: () => import("./transformations.js"),
-  correlation: () => import("./correlation.js"),
+  correlation: () => import("./correlation-tables.js"),
   matching: () => import("./matching.js"),
   resampling: () => import("./resampling.js"),
   filters: () => import("./filters.js"),
@@ -137,8 +179,16 @@ function paint(panel, solution, shared = { selected: null }) {
   const { spec, canvas, figure } = panel;
   // the width the resize observer last saw (read while the layout was clean); reading
   // clientWidth here, after the steps were rewritten, would lay the whole page out again
-  const width = panel.width ?? Math.floor(figure.clientWidth);
-  if (!solution || width <= 0) return;
+  const room = panel.width ?? Math.floor(figure.clientWidth);
+  if (!solution || room <= 0) return;
+  // a figure whose targets would be smaller than 24 × 24 px (WCAG 2.5.8) asks for a wider canvas: the panel scrolls
+  let width = room;
+  try {
+    if (typeof spec.minWidth === "function") width = Math.max(room, Math.ceil(spec.minWidth(solution)));
+  } catch {
+    width = room;
+  }
+  figure.classList.toggle("figure-wide", width > room);
   const dpr = window.devicePixelRatio || 1;
   let height;
   try {
@@ -166,6 +216,8 @@ function paint(panel, solution, shared = { selected: null }) {
     const scales = (canvas.greyScales ?? []).map((g) => `${g.text}.`);
     canvas.setAttribute("aria-label", [spec.describe(solution, state), ...scales].join(" "));
     if (panel.status) panel.status.textContent = spec.status(solution, state) ?? "";
+    showData(panel, solution, state, width, height, ctx);
+    operable(canvas);
   } catch (e) {
     console.error("figure failed", e);
     ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
@@ -177,10 +229,77 @@ function paint(panel, solution, shared = { selected: null }) {
     clearLabelBoxes(canvas);
     canvas.setAttribute("aria-label", "The figure could not be drawn for these values.");
   }
-  panel.drawn = { width, dpr };
+  panel.drawn = { width: room, dpr };
 }
 
-/** Wires a spec's optional `interact` hooks to its canvas (pointer and keyboard). */
+/**
+ * A canvas the keyboard can operate (focusable) is a group with its own role
+ * description, not a picture (docs/figures.md); a static one stays an image.
+ */
+function operable(canvas) {
+  const role = canvas.tabIndex >= 0 ? "group" : "img";
+  if (canvas.getAttribute("role") === role) return;
+  canvas.setAttribute("role", role);
+  if (role === "group") canvas.setAttribute("aria-roledescription", "interactive figure");
+  else canvas.removeAttribute("aria-roledescription");
+}
+
+/**
+ * The spec's tables(solution, state): the canvas's description (the summary),
+ * the Data view when it is open, and the cell cursor (drawn on the canvas
+ * while it has the focus, its cell read out in the panel's cursor line).
+ */
+function showData(panel, solution, state, width, height, ctx) {
+  if (!panel.data) return;
+  let data = null;
+  try {
+    data = panel.spec.tables(solution, state);
+  } catch (e) {
+    console.error("figure data failed", e);
+  }
+  panel.tables = data;
+  panel.data.summary.textContent = data?.summary ?? "";
+  if (panel.data.open) renderData(panel.data.body, data);
+  const grid = (data?.tables ?? []).find((t) => t.explore);
+  panel.grid = grid ?? null;
+  const keys = grid ? `Keyboard: on the focused figure the arrow keys move a cell cursor over ${grid.caption ?? "the grid"} (its cell is read out)${panel.clicks.length ? "; Enter or Space does what a click on the cell does" : ""}.` : "";
+  if (panel.data.keys.textContent !== keys) panel.data.keys.textContent = keys;
+  if (grid && panel.canvas.tabIndex < 0) panel.canvas.tabIndex = 0;
+  if (!grid || !panel.cursor) {
+    if (panel.data.cursorLine.textContent) panel.data.cursorLine.textContent = "";
+    return;
+  }
+  const rows = grid.rows.length;
+  const cols = grid.rows[0]?.length ?? 0;
+  if (!rows || !cols) {
+    panel.cursor = null;
+    panel.data.cursorLine.textContent = "";
+    return;
+  }
+  // the cursor stays on its row and column (by their headers: a grid may grow or shift when a click changes it)
+  const at = (headers, key, i, n) => {
+    const k = key === undefined ? -1 : (headers ?? []).indexOf(key);
+    return k >= 0 ? k : Math.min(i, n - 1);
+  };
+  const r = at(grid.rowHeaders, panel.cursor.rowKey, panel.cursor.r, rows);
+  const c = at(grid.columns, panel.cursor.colKey, panel.cursor.c, cols);
+  panel.cursor = { r, c, rowKey: grid.rowHeaders?.[r], colKey: grid.columns?.[c] };
+  const words = cursorText(grid, panel.cursor);
+  if (panel.data.cursorLine.textContent !== words) panel.data.cursorLine.textContent = words;
+  if (document.activeElement !== panel.canvas) return;
+  const box = grid.explore.rect(panel.cursor.r, panel.cursor.c, width, height);
+  if (!box) return;
+  ctx.save();
+  for (const [color, lw, dash] of [["#ffffff", 5, []], [COLORS.ink, 2.5, [5, 3]]]) {
+    ctx.strokeStyle = color;
+    ctx.lineWidth = lw;
+    ctx.setLineDash(dash);
+    ctx.strokeRect(box.x, box.y, box.w, box.h);
+  }
+  ctx.restore();
+}
+
+/** Wires a spec's optional `interact` hooks to its canvas (pointer and keyboard); returns its click at a point. */
 function interactive(spec, canvas, figure, current, onInputs) {
   const { interact } = spec;
   canvas.tabIndex = 0;
@@ -196,16 +315,19 @@ function interactive(spec, canvas, figure, current, onInputs) {
   };
   let pressed = false;
   let queued = null;
-  const fromEvent = (e) => {
+  const pointerAt = (x, y, width, height) => {
     const solution = current();
     if (!solution || typeof interact.pointer !== "function") return null;
-    const box = canvas.getBoundingClientRect();
     try {
-      return interact.pointer(e.clientX - box.left, e.clientY - box.top, box.width, box.height, solution);
+      return interact.pointer(x, y, width, height, solution);
     } catch (err) {
       console.error("figure interaction failed", err);
       return null;
     }
+  };
+  const fromEvent = (e) => {
+    const box = canvas.getBoundingClientRect();
+    return pointerAt(e.clientX - box.left, e.clientY - box.top, box.width, box.height);
   };
   canvas.addEventListener("pointerdown", (e) => {
     if (e.button !== 0) return;
@@ -244,6 +366,7 @@ function interactive(spec, canvas, figure, current, onInputs) {
       apply(changes);
     }
   });
+  return (x, y, width, height) => apply(pointerAt(x, y, width, height));
 }
 
 /** Sets a panel's range input from the spec's slider(solution). */
@@ -295,6 +418,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     const figure = document.createElement("figure");
     figure.className = "figure-panel";
     figure.append(canvas);
+    const data = typeof spec.tables === "function" ? dataView(canvas) : null;
     if (Array.isArray(spec.actions) && spec.actions.length && onInputs) {
       const bar = document.createElement("div");
       bar.className = "figure-actions";
@@ -320,9 +444,18 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       caption.textContent = spec.caption;
       figure.append(caption);
     }
+    if (data) figure.append(data.cursorLine, data.bar, data.body);
     host.append(figure);
-    const panel = { spec, canvas, figure, drawn: null, slider: null, sliderValue: null, state: null, status: null };
-    if (spec.interact && onInputs) interactive(spec, canvas, figure, () => solution, onInputs);
+    const panel = { spec, canvas, figure, drawn: null, slider: null, sliderValue: null, state: null, status: null, data, cursor: null, grid: null, clicks: [] };
+    if (data) {
+      data.toggle.addEventListener("click", () => {
+        data.open = !data.open;
+        data.toggle.setAttribute("aria-expanded", String(data.open));
+        data.body.hidden = !data.open;
+        if (data.open) renderData(data.body, panel.tables);
+      });
+    }
+    if (spec.interact && onInputs) panel.clicks.push(interactive(spec, canvas, figure, () => solution, onInputs));
     if (typeof spec.slider === "function") {
       const label = document.createElement("label");
       label.className = "figure-slider";
@@ -357,12 +490,14 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   for (const panel of panels) {
     const { spec, canvas } = panel;
     if (typeof spec.select === "function") {
+      const selectAt = (x, y, width, height) => {
+        if (solution) interact(panel, spec.select(solution, { x, y, width, height }, panel.state));
+      };
       canvas.addEventListener("click", (e) => {
-        if (!solution) return;
         const box = canvas.getBoundingClientRect();
-        const point = { x: e.clientX - box.left, y: e.clientY - box.top, width: box.width, height: box.height };
-        interact(panel, spec.select(solution, point, panel.state));
+        selectAt(e.clientX - box.left, e.clientY - box.top, box.width, box.height);
       });
+      panel.clicks.push(selectAt);
     }
     if (typeof spec.key === "function") {
       canvas.tabIndex = 0;
@@ -390,11 +525,12 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     canvas.addEventListener("pointerleave", () => {
       if (!shared.pinned) select(null, false);
     });
-    canvas.addEventListener("click", (e) => {
-      const i = hit(e);
+    const pickAt = (i) => {
       if (i === null || (shared.pinned && i === shared.selected)) select(null, false);
       else select(i, true);
-    });
+    };
+    canvas.addEventListener("click", (e) => pickAt(hit(e)));
+    p.clicks.push((x, y, width, height) => pickAt(solution ? spec.pick(x, y, width, height, solution) : null));
     canvas.addEventListener("keydown", (e) => {
       const n = solution ? spec.count(solution) : 0;
       if (!n) return;
@@ -407,6 +543,28 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       e.preventDefault();
       select(next, next !== null);
     });
+  }
+  for (const p of panels) {
+    if (!p.data) continue;
+    const { canvas } = p;
+    canvas.addEventListener("keydown", (e) => {
+      if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || !solution || !p.grid) return;
+      if (e.key === "Enter" || e.key === " ") {
+        if (!p.cursor || !p.clicks.length) return;
+        e.preventDefault();
+        const box = p.grid.explore.rect(p.cursor.r, p.cursor.c, canvas.clientWidth, canvas.clientHeight);
+        if (box) for (const click of p.clicks) click(box.x + box.w / 2, box.y + box.h / 2, canvas.clientWidth, canvas.clientHeight);
+        return;
+      }
+      const next = moveCursor(p.grid, p.cursor, e.key);
+      if (!next) return;
+      e.preventDefault();
+      p.cursor = { ...next, rowKey: p.grid.rowHeaders?.[next.r], colKey: p.grid.columns?.[next.c] };
+      paint(p, solution, shared);
+    });
+    // the cursor is drawn while the canvas has the focus
+    canvas.addEventListener("focus", () => p.cursor && paint(p, solution, shared));
+    canvas.addEventListener("blur", () => p.cursor && paint(p, solution, shared));
   }
   const onResize = () => {
     // repaint only when the width or the pixel ratio changed (the height follows the width)
@@ -440,6 +598,8 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   const beforePrint = () => {
     printing = true;
     redraw();
+    // the Data views print open (figures.css): their tables are filled now
+    for (const p of panels) if (p.data && !p.data.open) renderData(p.data.body, p.tables);
   };
   const afterPrint = () => {
     printing = false;

@@ -7,6 +7,7 @@
 //     and N as above.
 
 import { isMatrix, stepValue } from "../values.js";
+import { matrixTable, seriesTable } from "./data-view.js";
 import { COLORS, DASH, PALETTES, FONT_SIZE, FONT_SIZE_SMALL, GREY_LEGEND, LINE_HEIGHT, Labels, arrow, arrowStep, dot, finite, fmt, greyLegend, greyScale, greyScaleOf, line, text, textBlock, textWidth } from "./draw.js";
 
 /** Layout constants (CSS px). */
@@ -86,7 +87,36 @@ function windowCell(width, win) {
   return Math.max(GRID.minCell, Math.min(GRID.maxCell, (width - 2 * GRID.margin) / cols));
 }
 
+/** The window's Data view: its grey values with each interior pixel's gradient in words; explorable. */
+const windowTables = (source) => (solution) => {
+  const { window: win, gx, gy } = source(solution);
+  if (!isMatrix(win)) return { summary: "The window.", tables: [] };
+  const hasG = isMatrix(gx) && isMatrix(gy);
+  const mark = (r, c) => {
+    const g = hasG && r > 0 && c > 0 ? gx[r - 1]?.[c - 1] : undefined;
+    if (typeof g !== "number") return "border";
+    return `interior, gradient g′x = ${fmt(g)}, g′y = ${fmt(gy[r - 1][c - 1])}`;
+  };
+  return {
+    summary: windowSpec(source).describe(solution),
+    tables: [
+      matrixTable("The window (grey values; c → r ↓ from 1)", win, {
+        format: (v) => fmt(v, 5, "no value"),
+        mark,
+        explore: {
+          rect(r, c, width) {
+            const cell = windowCell(width, win);
+            const x0 = Math.max(GRID.margin, (width - win[0].length * cell) / 2);
+            return { x: x0 + c * cell, y: GRID.margin + r * cell, w: cell, h: cell };
+          },
+        },
+      }),
+    ],
+  };
+};
+
 const windowSpec = (source) => ({
+  tables: windowTables(source),
   caption:
     "The window: grey values (dark = low, as in an image; see the legend), the interior framed; each blue arrow is the gradient (g′x, g′y) of an interior pixel by central differences, drawn to scale with the longest one.",
   height(width, solution) {
@@ -180,6 +210,12 @@ function ellipseLayout(width, solution) {
 }
 
 const ellipseSpec = {
+  tables(solution) {
+    return {
+      summary: `${ellipseSpec.describe(solution)} The figure draws the error ellipse beside the threshold circle; its numbers are these.`,
+      tables: [seriesTable("N and the precision test (the lines beside the ellipse)", ["line"], ellipseLines(solution).filter((l) => l.text !== "N =").map((l) => [l.text.trim()]))],
+    };
+  },
   caption:
     "N and the precision test of Lecture 21: the error ellipse of the position (semi-axes σmax, σmin; orange) beside the threshold circle of radius T (dashed). Inside the circle: accepted. A long ellipse is an edge, a huge one a flat area.",
   height(width, solution) {
@@ -290,6 +326,21 @@ function drawOverview(ctx, width, m, scale) {
 }
 
 const moravecSpec = {
+  tables(solution, state) {
+    const m = moravecPixels(solution, state);
+    if (!m.win) return { summary: "No window.", tables: [] };
+    const best = m.all.length ? m.all.reduce((a, b) => (b.sum > a.sum ? b : a)) : null;
+    const sel = m.selected;
+    const rows = m.all.map((p) => [`P(c${p.c}, r${p.r})`, fmt(p.g), ...p.diffs.map((v) => fmt(v)), fmt(p.sum)]);
+    const marks = m.all.map((p) => [[best && p === best ? "largest sum" : null, sel && p === sel ? "selected" : null].filter(Boolean).join(", ") || null, null, null, null, null, null, null]);
+    return {
+      summary: `${m.total} interior pixels; the largest sum of squared differences, ${best ? fmt(best.sum) : "none"}, is at ${best ? `P(c${best.c}, r${best.r})` : "no pixel"}; the mean of the sums is ${fmt(solution.result?.mean)}.${sel ? ` Selected: P(c${sel.c}, r${sel.r}), sum ${fmt(sel.sum)}.` : ""}`,
+      tables: [
+        seriesTable("Each interior pixel: the four differences across it and the sum of their squares", ["pixel", "grey value", ...DIRECTIONS.map((d) => `${d.name} ${d.glyph}`), "sum of squares"], rows, marks),
+        matrixTable("The window (grey values)", m.win, { format: (v) => fmt(v, 5, "no value"), mark: (r, c) => (sel && r === sel.r - 1 && c === sel.c - 1 ? "selected" : null) }),
+      ],
+    };
+  },
   caption:
     "Moravec (worked examples, Example 14): at each interior pixel (framed), the four differences across it — along the row, the column and both diagonals, each arrow from the subtracted to the other neighbour — squared and summed. A window larger than 4×4 shows the selected pixel (orange 3×3 frame).",
   height(width, solution, state) {
@@ -448,6 +499,23 @@ function legendLines(width, solution, magnification) {
 }
 
 const imageSpec = {
+  tables(solution) {
+    const r = solution.result ?? {};
+    const inp = solution.inputs ?? {};
+    const pts = Array.isArray(r.points) ? r.points : [];
+    const refs = stepValue(solution, "references");
+    return {
+      summary: `${imageSpec.describe(solution)} The 64×64 pattern's grey values are 0 and 255 (its picture is not repeated as a table); the interest points and the windows are listed here.`,
+      tables: [
+        seriesTable("The interest points after suppression (purple rings)", ["point", "c", "r"], pts.map((p, i) => [String(i + 1), fmt(p[0]), fmt(p[1])])),
+        seriesTable(
+          "The windows and their cases",
+          ["window", "c", "r", "case"],
+          [[`selected ${inp.window_size}×${inp.window_size} window (orange)`, fmt(inp.c), fmt(inp.r), String(r.case ?? "")], ...(Array.isArray(refs) ? refs.map((x) => [`reference: ${x.place}`, fmt(x.c), fmt(x.r), String(x.case)]) : [])],
+        ),
+      ],
+    };
+  },
   caption:
     "The 64×64 test pattern with the window (orange square) and its error ellipse, magnified so that the dashed circle is T; small orange dots pass the threshold, purple rings are the interest points left after non-maximum suppression. Three fixed windows (dotted) show Lecture 21's three cases with their ellipses at the same magnification: flat (a dashed disc, no direction determined or both axes long), edge (long along the edge), corner (small).",
   height(width, solution) {

@@ -8,6 +8,7 @@
 //     parameters against the iteration number.
 
 import { formatNumber } from "../format.js";
+import { matrixTable, seriesTable } from "./data-view.js";
 import { COLORS, FONT_SIZE_SMALL, GREY_LEGEND, dot, drawGrid, finite, greyLegend, greyScaleOf, line, text, textWidth, wrapWords } from "./draw.js";
 
 const PAD = Object.freeze({ left: 44, right: 16, top: 34, bottom: 38 });
@@ -306,7 +307,71 @@ function paramsDescribe(solution) {
   return `The parameters against the iteration number: ${s.map((x) => `${x.label} ends at ${f(x.values[x.values.length - 1])}`).join("; ")}; the run ${statusWords(solution)} after ${iterations(solution)} iterations.`;
 }
 
+// ---------------------------------------------------------------- Data views (index.js tables())
+
+const cellText = (v) => (typeof v === "number" && Number.isFinite(v) ? f(v) : "no value");
+
+function gridsTables(solution, state) {
+  const { template, patch, diff, k, n } = gridsData(solution, state);
+  const rows = template.length;
+  const cols = template[0]?.length ?? 0;
+  const mark = (r, c) => (patch.length ? `resampled Gₛ ${cellText(patch[r]?.[c])}, difference dL ${cellText(diff[r]?.[c])}` : null);
+  return {
+    summary: `${gridsDescribe(solution, state)} ${paramsDescribe(solution)}`,
+    tables: [
+      matrixTable(`Template (each cell also gives the resampled patch and the difference at iteration ${k + 1} of ${n})`, template, {
+        format: cellText,
+        mark,
+        explore: {
+          rect(r, c, width) {
+            const { cell } = gridLayout(width, rows, cols);
+            return { x: gridsLeft(width, rows, cols) + c * cell, y: GRID_TITLE + 20 + r * cell, w: cell, h: cell };
+          },
+        },
+      }),
+      matrixTable(`Resampled search patch Gₛ at iteration ${k + 1}`, patch, { format: cellText }),
+      matrixTable(`Difference dL at iteration ${k + 1}`, diff, { format: cellText }),
+    ],
+  };
+}
+
+function paramsTables(solution) {
+  const s = series(solution);
+  const n = Math.max(0, ...s.map((x) => x.values.length - 1));
+  const truth = s.some((x) => x.truth !== null);
+  const columns = [...Array.from({ length: n }, (_, i) => `iteration ${i + 1}`), "end", ...(truth ? ["true value"] : [])];
+  return {
+    summary: paramsDescribe(solution),
+    tables: [
+      {
+        caption: "Each parameter at the start of every iteration and after the last update (the plotted series)",
+        corner: "parameter",
+        columns,
+        rowHeaders: s.map((x) => x.label),
+        rows: s.map((x) => [...x.values.map(cellText), ...(truth ? [x.truth === null ? "" : cellText(x.truth)] : [])]),
+      },
+    ],
+  };
+}
+
+function profileTables(solution, state) {
+  const first = solution.steps?.[0]?.values ?? {};
+  const search = Array.isArray(first.search) ? first.search : [];
+  const template = Array.isArray(first.template) ? first.template : [];
+  const tv = table(solution);
+  const k = chosen(solution, state);
+  const patch = tv.patches?.[k]?.[0] ?? [];
+  return {
+    summary: `${profileDescribe(solution, state)} ${paramsDescribe(solution)}`,
+    tables: [
+      seriesTable("The search window (the bars)", ["position", "grey value"], search.map((v, i) => [String(i + 1), cellText(v)])),
+      seriesTable(`The template and the search patch resampled at iteration ${k + 1}`, ["template pixel", "template G_t", "resampled G_s"], template.map((v, i) => [String(i + 1), cellText(v), cellText(patch[i])])),
+    ],
+  };
+}
+
 const PARAMS = Object.freeze({
+  tables: paramsTables,
   caption: "Each parameter at the start of every iteration and after the last update; dashed: the true value where it is known.",
   height: paramsHeight,
   describe: paramsDescribe,
@@ -318,6 +383,7 @@ const GRIDS = Object.freeze({
   height: gridsHeight,
   describe: gridsDescribe,
   draw: gridsDraw,
+  tables: gridsTables,
   slider: sliderSpec,
 });
 
@@ -328,6 +394,7 @@ export const figures = {
       height: () => 280,
       describe: profileDescribe,
       draw: profileDraw,
+      tables: profileTables,
       slider: sliderSpec,
     },
     PARAMS,

@@ -9,6 +9,7 @@
 // computes the graticule, the k profile and the differences).
 
 import { formatNumber } from "../format.js";
+import { seriesTable } from "./data-view.js";
 import { COLORS, DASH, DOTS, FONT_SIZE_SMALL, dot, line, text, textWidth } from "./draw.js";
 
 const PAD = Object.freeze({ left: 58, right: 16, top: 30, bottom: 44 });
@@ -121,7 +122,22 @@ function mapData(solution) {
   return { v, e: [Math.min(...es), Math.max(...es)], n: [Math.min(...ns), Math.max(...ns)] };
 }
 
+/** Every `step`-th row of a plotted profile, and its last (the Data views' tables: the samples as the core gave them). */
+const thinned = (rows, step) => rows.filter((_, i) => i % step === 0 || i === rows.length - 1);
+
 const map = {
+  tables(solution) {
+    const r = solution.result ?? {};
+    const point = stepWith(solution, "point")?.point ?? [];
+    const lon0 = stepWith(solution, "central_meridian")?.central_meridian ?? r.central_meridian;
+    const rows = [
+      ["zone", String(r.zone ?? solution.inputs?.zone ?? "")],
+      ["central meridian", lonName(lon0)],
+      ["point: easting (km)", formatNumber(point[0], 9)],
+      ["point: northing (km)", formatNumber(point[1], 10)],
+    ];
+    return { summary: map.describe(solution), tables: [seriesTable("The zone and the point (the curves are the zone's meridians and parallels)", ["what", "value"], rows)] };
+  },
   caption: "The zone on the map: meridians and parallels as the transverse Mercator draws them (every 1° or 5°), the central meridian (blue), the zone's edges 3° either side (orange, dashed), the equator (green) when near, and the point.",
   height(width, solution) {
     const d = mapData(solution);
@@ -244,6 +260,14 @@ function kSpec(seedLine) {
       ? "The scale factor k along the parallel, against the distance x from the central meridian: 0.9996 in the middle, 1 on the two lines of true scale (dashed), largest at the zone's edges (orange). Dotted: the seed's “1.0000 at 90 km”."
       : "The scale factor k along the point's parallel, against the distance x from the central meridian: 0.9996 in the middle, 1 where the dashed line crosses, largest at the zone's edges (orange); the dot is the point.",
     height: (width) => plotHeight(width),
+    tables(solution) {
+      const p = kProfile(solution);
+      if (!p) return { summary: "Scale factor plot (no data).", tables: [] };
+      return {
+        summary: this.describe(solution),
+        tables: [seriesTable("The plotted scale factor k (every fifth sample of the curve)", ["longitude from the central meridian (°)", "x (km)", "k"], thinned(p.rows, 5).map(([dl, x, k]) => [formatNumber(dl, 4), formatNumber(x, 6), formatNumber(k, 8)]))],
+      };
+    },
     describe(solution) {
       const p = kProfile(solution);
       if (!p) return "Scale factor plot (no data).";
@@ -318,6 +342,14 @@ const LOG_LABELS = [
 ];
 
 const difference = {
+  tables(solution) {
+    const v = stepWith(solution, "difference_profile");
+    if (!v) return { summary: "Difference plot (no data).", tables: [] };
+    return {
+      summary: difference.describe(solution),
+      tables: [seriesTable("The plotted difference, classical minus exact series", ["longitude from the central meridian (°)", "x (km)", "difference (m)"], v.difference_profile.map(([dl, x, dm]) => [formatNumber(dl, 4), formatNumber(x, 6), formatNumber(dm, 3)]))],
+    };
+  },
   caption: "How far the classical series (Snyder) puts the point from the exact Krüger series, along the point's parallel, against the distance from the central meridian; log scale in metres. The dot is the point; the dashed line is 1 mm.",
   height: (width) => plotHeight(width),
   describe(solution) {

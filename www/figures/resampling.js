@@ -5,6 +5,7 @@
 //     rows, and the sixteen pixels of the cubic convolution when they exist.
 
 import { isMatrix, stepValue } from "../values.js";
+import { matrixTable, seriesTable } from "./data-view.js";
 import { COLORS, FONT_SIZE_SMALL, GRID, LINE_HEIGHT, Labels, arrowStep, dot, drawGrid, fmt, layoutSpec, line, outline, text, textBlock, textWidth } from "./draw.js";
 
 const R = Object.freeze({
@@ -213,7 +214,36 @@ function draw(ctx, width, d) {
   else withLabels(true).draw();
 }
 
+/** The Data view (index.js tables()): the patch with the pixels the methods use named in its cells, the values box. */
+function tables(solution) {
+  const d = data(solution);
+  if (!d) return { summary: "The patch and the position.", tables: [] };
+  const { res } = d;
+  const w = Array.isArray(d.bl.w) ? d.bl.w : [];
+  const corners = [[d.bl.c, d.bl.r], [d.bl.c + 1, d.bl.r], [d.bl.c, d.bl.r + 1], [d.bl.c + 1, d.bl.r + 1]];
+  const hasCubic = Number.isFinite(d.bc.c) && res.bicubic !== null && res.bicubic !== undefined;
+  const mark = (j, i) => {
+    const c = d.fc + i;
+    const r = d.fr + j;
+    const words = [];
+    if (c === res.nearest_c && r === res.nearest_r) words.push("nearest");
+    corners.forEach(([cc, rr], k) => {
+      if (cc === c && rr === r) words.push(`bilinear, w = ${fmt(w[k], 3)}`);
+    });
+    if (hasCubic && c >= d.bc.c && c < d.bc.c + 4 && r >= d.bc.r && r < d.bc.r + 4) words.push("in the 4×4 of bicubic");
+    return words.join(", ");
+  };
+  return {
+    summary: `The position c = ${fmt(d.c, 7)}, r = ${fmt(d.r, 7)} lies between columns ${fmt(d.bl.c)}–${fmt(d.bl.c + 1)} and rows ${fmt(d.bl.r)}–${fmt(d.bl.r + 1)} of the ${d.patch.length}×${d.patch[0].length} patch. Nearest pixel (${fmt(res.nearest_c)}, ${fmt(res.nearest_r)}) = ${fmt(res.nearest)}; bilinear: I₁ = ${fmt(res.i1, 6)}, I₂ = ${fmt(res.i2, 6)}, I = ${fmt(res.bilinear, 6)}; bicubic ${hasCubic ? fmt(res.bicubic, 6) : "not available here"}.`,
+    tables: [
+      matrixTable("The patch (grey values at image columns and rows)", d.patch, { format: (v) => fmt(v, 6, "no value"), first: { c: d.fc, r: d.fr }, mark }),
+      seriesTable("The values (the box beside the patch)", ["value"], valueLines(d).map((l) => [l.text])),
+    ],
+  };
+}
+
 const spec = layoutSpec({
+  tables,
   caption:
     "The patch at its image columns and rows (grey values above the pixel centres), the position (orange dot), the nearest pixel (blue dashed), the four pixels of the bilinear interpolation with their weights w (line width), I₁ and I₂ on the two rows, and the sixteen pixels of the cubic convolution when the patch holds them (purple dashed, each pixel's weight f(t)·f(s) at the bottom of its cell; some are negative).",
   data,

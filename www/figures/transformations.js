@@ -418,7 +418,54 @@ function describeRows(solution, state) {
   return parts.join(" ");
 }
 
+// ---------------------------------------------------------------------------
+// The Data views (index.js tables()) and the picked point's status line
+
+const isPicked = (d, state) => Number.isInteger(state?.selected) && state.selected < d.n;
+
+function pointsTables(solution, state) {
+  const d = dataOf(solution);
+  const f = (z) => formatNumber(finite(z), 6);
+  const unit = d.unit ? ` (${d.unit})` : "";
+  return {
+    summary: describePoints(solution, state),
+    tables: [
+      {
+        caption: `The control points: source, target and residual (fitted minus given)${unit}`,
+        columns: ["point", d.axes[0], d.axes[1], "x", "y", "residual x", "residual y"],
+        rows: d.source.map(([u, v], i) => [String(i + 1), f(u), f(v), f(d.target[i][0]), f(d.target[i][1]), d.residuals[i] ? f(d.residuals[i][0]) : "", d.residuals[i] ? f(d.residuals[i][1]) : ""]),
+        marks: d.source.map((_, i) => [isPicked(d, state) && i === state.selected ? "picked" : null, null, null, null, null, null, null]),
+      },
+    ],
+  };
+}
+
+function rowsTables(solution, state) {
+  const d = dataOf(solution);
+  const f = (z) => formatNumber(finite(z), TABLE.digits);
+  const u = d.A[0]?.length ?? 0;
+  return {
+    summary: describeRows(solution, state),
+    tables: [
+      {
+        caption: "Every row of A with its observation L and residual V (two per point: x, then y)",
+        corner: "row",
+        columns: [...Array.from({ length: u }, (_, j) => `A: ${d.names[j] ?? `x${j + 1}`}`), "L", "V"],
+        rowHeaders: d.A.map((_, r) => `row ${r + 1}, point ${Math.floor(r / 2) + 1} ${r % 2 === 0 ? "x" : "y"}`),
+        rows: d.A.map((row, r) => [...row.map(f), f(d.L[r]), f(d.V[r])]),
+        marks: d.A.map((row, r) => [...row.map(() => null), null, isPicked(d, state) && Math.floor(r / 2) === state.selected ? "picked point" : null]),
+      },
+    ],
+  };
+}
+
 const pointsFigure = {
+  tables: pointsTables,
+  // the picked point in words, read out when the arrow keys pick another
+  status: (solution, state) => {
+    const d = dataOf(solution);
+    return isPicked(d, state) ? pickedLine(d, state.selected) : "";
+  },
   caption: "The control points in both systems, numbered; in the target, each point's residual vector (fitted minus given) drawn magnified — the scale bar says by how much. Point at a point, click it, or focus the figure and use the arrow keys to pick one: it is marked here and its rows light up in the table below.",
   height(width, solution) {
     return layout(width, dataOf(solution)).height;
@@ -430,6 +477,7 @@ const pointsFigure = {
 };
 
 const rowsFigure = {
+  tables: rowsTables,
   caption: "The rows of A with their observations L and residuals V = A·X − L, two per point (its x equation, then its y equation); the picked point's rows are highlighted.",
   height(width, solution) {
     const d = dataOf(solution);
