@@ -16,7 +16,7 @@ import { renderAnswer, renderNotes, renderResult, updateSteps } from "./render.j
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
-import { mountShell } from "./shell.js";
+import { mountShell, mountSkipLink } from "./shell.js";
 import { SITE_TITLE, siteTitle } from "./site.js";
 
 /** Longest URL key quoted back in the "ignored" notice. */
@@ -28,8 +28,9 @@ const API_NAMES_KEY = "photogrammetry-playground:show-api-names";
 
 const mode = document.body.dataset.mode === "embed" ? "embed" : "full";
 const root = document.getElementById("app");
-// the header's theme switch and the skip link (the site's page only)
+// the header's theme switch and the skip link (the embed: the skip link only)
 if (mode === "full") mountShell();
+else mountSkipLink();
 
 let core = null;
 let entries = [];
@@ -65,6 +66,19 @@ async function showHome(params = []) {
   if (location.hash !== hash) return; // the reader moved on; that hashchange routes
   root.replaceChildren(homeView(entries, { query: params.find(([k]) => k === "q")?.[1] ?? "" }));
   setStatus("home");
+}
+
+/** The accessibility statement (#/accessibility, the footer's link): its own small module. */
+async function showStatement(focus) {
+  destroyView();
+  const hash = location.hash;
+  const { statementView } = await import("./accessibility.js");
+  if (location.hash !== hash) return; // the reader moved on; that hashchange routes
+  document.title = siteTitle("Accessibility");
+  root.replaceChildren(statementView());
+  endPrerendered();
+  setStatus("message");
+  if (focus) root.querySelector("#statement-title")?.focus();
 }
 
 function showMessage(title, message) {
@@ -106,7 +120,8 @@ function buildView(entry) {
   const heading = el(mode === "embed" ? "h1" : "h2", { id: "example-title", tabindex: "-1" }, entry.title);
   const from = [entry.source, entry.document && entry.document !== entry.source ? entry.document : null].filter(Boolean).join(" — ");
   const meta = el("p", { class: "example-meta" }, `${from}${from && entry.topic ? " · " : ""}${entry.topic ?? ""}`);
-  const answerLine = el("p", { class: "answer-line", role: "status", "aria-live": "polite", hidden: true });
+  // not a live region itself: embed-page.js announces its words once typing settles (one region)
+  const answerLine = el("p", { class: "answer-line", hidden: true });
   const summary = entry.summary ? el("p", { class: "example-summary" }, entry.summary) : null;
   const urlNotice = el("p", { class: "notice url-notice", role: "status", hidden: true });
   const errorBox = el("div", { class: "error-box", role: "alert", hidden: true });
@@ -550,6 +565,10 @@ async function route({ focus = false } = {}) {
   }
   if (!id) {
     await showHome(params);
+    return;
+  }
+  if (id === "accessibility") {
+    await showStatement(focus);
     return;
   }
   if (id === "practice" && params.some(([key]) => key === "receipt")) {

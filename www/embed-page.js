@@ -1,7 +1,8 @@
 // The page side of the view options (embed-options.js) and of embedding: the
 // parts shown, locked inputs, folded steps, the theme, the height and events
 // posted to the host page (embed-bridge.js), result changes announced to
-// screen readers, and the tools bar (exports, "Embed this").
+// screen readers (the answer line's words, in the page's one polite live
+// region, once typing settles and only when they changed), and the tools bar (exports, "Embed this").
 //
 // app.js calls: takeOptions(params) when it reads the address, optionEntries()
 // when it writes it, onView(view, api) when an example is built, afterRoute()
@@ -13,6 +14,7 @@ import { configure, isFramed, listen, post, postCanvasResize } from "./embed-bri
 import { toolsBar } from "./export.js";
 import { formatValue } from "./format.js";
 import { fitFormulas } from "./math.js";
+import { spokenText } from "./render.js";
 
 /** Wait after the last change before announcing the result (typing settles). */
 const ANNOUNCE_DELAY_MS = 600;
@@ -193,9 +195,10 @@ export function onStatus(status, view) {
   if (status === "ok" && view.lastGood) {
     shapeSteps();
     const solution = view.lastGood;
-    const summary = resultSummary(solution);
-    if (current.lastAnnounced === null) current.lastAnnounced = `Result: ${summary}`;
-    else announce(`Result: ${summary}`);
+    // the answer line as a screen reader reads it (powers of ten in words), else the first results
+    const said = spokenText(view.parts.answerLine).replace(/\s+/g, " ").trim() || resultSummary(solution);
+    if (current.lastAnnounced === null) current.lastAnnounced = said;
+    else announce(said);
     const payload = { example: view.id, title: view.entry.title, inputs: solution.inputs, texts: Object.fromEntries(view.form.entries()), result: solution.result };
     if (!readySent) {
       readySent = true;

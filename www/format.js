@@ -56,6 +56,22 @@ export function formatNumber(value, digits = EXACT_SIGNIFICANT_DIGITS) {
   return value < 0 ? MINUS + s : s;
 }
 
+const FROM_SUPERSCRIPT = Object.fromEntries(Object.entries(SUPERSCRIPT).map(([k, v]) => [v, k]));
+
+/**
+ * How a screen reader should say a text with powers of ten written as
+ * formatNumber writes them: "1.87772 × 10⁻⁶" → "1.87772 times 10 to the
+ * minus 6" (superscript characters are read as "superscript minus", or not
+ * at all). null when the text has none (it reads as shown).
+ */
+export function spokenNumber(text) {
+  const said = String(text).replace(/ × 10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/g, (_, sup) => {
+    const e = [...sup].map((c) => FROM_SUPERSCRIPT[c]).join("");
+    return ` times 10 to the ${e.startsWith("-") ? `minus ${e.slice(1)}` : e}`;
+  });
+  return said === String(text) ? null : said;
+}
+
 /** A number with exactly as many decimals as needed up to `decimals` (never e-notation). */
 export function formatDecimals(value, decimals) {
   if (typeof value !== "number" || !Number.isFinite(value)) return formatNumber(value);

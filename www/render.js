@@ -9,7 +9,7 @@
 import { el } from "./dom.js";
 import { fitFormulaNodes, fitFormulas, formulaSource, renderFormula } from "./math.js";
 import { isMatrix, stepValue } from "./values.js";
-import { agreesWithPrinted, formatDecimals, formatDifference, formatExact, formatNumber, formatValue } from "./format.js";
+import { agreesWithPrinted, formatDecimals, formatDifference, formatExact, formatNumber, formatValue, spokenNumber } from "./format.js";
 
 /** Note kinds with their own badge style; any other kind gets the neutral one. */
 const NOTE_KINDS = ["erratum", "rounding", "convention", "warning"];
@@ -137,6 +137,28 @@ export function labelOf(solution, key) {
 }
 
 
+/**
+ * An element with `text` that reads well: a power of ten ("1.8 × 10⁻⁶") is
+ * shown as written and said "1.8 times 10 to the minus 6" (style.css
+ * .spoken: the shown text hidden from the accessibility tree, the words as
+ * its alt text; copying and innerText keep the text shown).
+ */
+export function readable(tag, attrs, text) {
+  const spoken = spokenNumber(text);
+  if (spoken === null) return el(tag, attrs, text);
+  return el(tag, { ...attrs, class: `${attrs.class ?? ""} spoken`.trim(), "data-spoken": spoken }, el("span", { "aria-hidden": "true" }, text));
+}
+
+/** The text of `node` as a screen reader gets it: .spoken parts as said, aria-hidden parts left out. */
+export function spokenText(node) {
+  if (node.nodeType === Node.TEXT_NODE) return node.nodeValue;
+  if (node.nodeType !== Node.ELEMENT_NODE) return "";
+  if (node.dataset.spoken !== undefined) return node.dataset.spoken;
+  if (node.classList.contains("answer-sep")) return "; ";
+  if (node.getAttribute("aria-hidden") === "true") return "";
+  return [...node.childNodes].map(spokenText).join("");
+}
+
 /** A matrix larger than this (rows or columns) is shown in a scroll box of its own. */
 const MATRIX_MAX_COLS = 8;
 const MATRIX_MAX_ROWS = 12;
@@ -144,18 +166,19 @@ const MATRIX_MAX_ROWS = 12;
 /** A value as DOM: a number, a bracketed vector that wraps, a matrix as a grid. */
 export function valueNode(value, format = (v) => formatNumber(v)) {
   if (isMatrix(value)) {
-    const rows = value.map((row) => el("tr", {}, row.map((v) => el("td", {}, typeof v === "number" ? format(v) : formatValue(v)))));
-    const table = el("table", { class: "matrix", role: "presentation" }, el("tbody", {}, rows));
     const cols = Math.max(...value.map((r) => r.length));
+    const rows = value.map((row) => el("tr", {}, row.map((v) => readable("td", {}, typeof v === "number" ? format(v) : formatValue(v)))));
+    // a table a screen reader can walk cell by cell ("row 2, column 3"), named by its size
+    const table = el("table", { class: "matrix", "aria-label": `${value.length} × ${cols} matrix` }, el("tbody", {}, rows));
     if (cols <= MATRIX_MAX_COLS && value.length <= MATRIX_MAX_ROWS) return table;
     // a large what-if (a 64×64 search array): every number kept, in a box that scrolls
     return el("div", { class: "matrix-scroll", tabindex: "0", role: "region", "aria-label": `${value.length} × ${cols} matrix: scroll to see all of it` }, table);
   }
   if (Array.isArray(value)) {
-    const items = value.map((v, i) => el("span", { class: "vector-item" }, typeof v === "number" ? format(v, i) : formatValue(v), i < value.length - 1 ? "," : ""));
+    const items = value.map((v, i) => el("span", { class: "vector-item" }, readable("span", {}, typeof v === "number" ? format(v, i) : formatValue(v)), i < value.length - 1 ? "," : ""));
     return el("span", { class: "vector" }, items);
   }
-  return el("span", { class: "value" }, typeof value === "number" ? format(value) : formatValue(value));
+  return readable("span", { class: "value" }, typeof value === "number" ? format(value) : formatValue(value));
 }
 
 function dataValue(value) {
@@ -205,7 +228,7 @@ function diffCell(solution, key, exact, printed) {
     return td;
   }
   const diff = zipMap(exact, printed, (e, p) => formatDifference(e, p));
-  const shown = agrees ? null : isMatrix(diff) ? valueNode(diff, (v) => v) : Array.isArray(diff) ? valueNode(diff, (v) => v) : el("span", { class: "value" }, diff ?? "—");
+  const shown = agrees ? null : isMatrix(diff) ? valueNode(diff, (v) => v) : Array.isArray(diff) ? valueNode(diff, (v) => v) : readable("span", { class: "value" }, diff ?? "—");
   if (shown) td.append(shown, " ");
   td.append(
     el(
@@ -295,14 +318,15 @@ export function renderAnswer(solution) {
       // no value: say why, from the note about it (e.g. resample's bicubic value off the patch)
       return el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, "no value"), ...noValueReason(solution, key));
     }
-    const span = el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", el("strong", {}, `${answerText(exact, printed, unit)}${u}`));
+    const span = el("span", { class: "answer-item", "data-key": key }, el("span", { class: "answer-label" }, label), " = ", readable("strong", {}, `${answerText(exact, printed, unit)}${u}`));
     if (printed !== undefined) {
       const { agrees, explained } = compare(solution, key, exact, printed);
       span.append(`; the course notes print ${answerText(printed)}${u}`, el("span", { class: "muted" }, agrees ? " (agrees)" : explained ? " (an erratum: see the notes)" : " (see the notes)"));
     }
     return span;
   });
-  return parts.flatMap((p, i) => (i ? [el("span", { class: "answer-sep" }, " · "), p] : [p]));
+  // the dot is for the eye; a screen reader hears a pause (style.css .answer-sep::after)
+  return parts.flatMap((p, i) => (i ? [el("span", { class: "answer-sep" }, el("span", { "aria-hidden": "true" }, " · ")), p] : [p]));
 }
 
 /**

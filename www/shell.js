@@ -1,5 +1,5 @@
 // The site's shell around the views (index.html): the header's Theme switch
-// and the "Skip to main content" link.
+// and the "Skip to the example" link (index.html and embed.html: mountSkipLink).
 //
 // Theme: the reader's choice (System, Light or Dark) is remembered under
 // THEME_KEY and becomes <html data-theme="light|dark"> (System: no
@@ -41,7 +41,7 @@ function applyChoice(choice) {
 
 /**
  * Wires the header's switch (a <select> with the values of CHOICES) and the
- * skip link. Called once, on the site's page only.
+ * skip link. Called once, on the site's page only (the embed: mountSkipLink).
  */
 export function mountShell() {
   const select = document.getElementById("theme-choice");
@@ -73,7 +73,11 @@ export function mountShell() {
       if (e.persisted) sync();
     });
   }
-  // the skip link: focus <main> without touching the address (a hash is a route here)
+  mountSkipLink();
+}
+
+/** The skip link: focuses <main> without touching the address (a hash is a route here). */
+export function mountSkipLink() {
   document.addEventListener("click", (e) => {
     const link = e.target instanceof Element ? e.target.closest("a.skip-link") : null;
     if (!link) return;

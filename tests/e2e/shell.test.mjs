@@ -239,7 +239,7 @@ describe("the theme switch", () => {
 });
 
 describe("the skip link", () => {
-  test("Tab reaches “Skip to main content” first, shown; Enter moves the focus into <main> and leaves the address", { timeout: TEST_TIMEOUT }, async () => {
+  test("Tab reaches “Skip to the example” first, shown; Enter moves the focus into <main> and leaves the address", { timeout: TEST_TIMEOUT }, async () => {
     const { context, page } = await open(env.browser);
     try {
       for (const hash of ["", "#/ncc-2d"]) {
@@ -250,7 +250,7 @@ describe("the skip link", () => {
         assert.ok(hidden.y + hidden.height <= 0, "out of sight until focused");
         await page.keyboard.press("Tab");
         const focused = await page.evaluate(() => ({ cls: document.activeElement.className, text: document.activeElement.textContent }));
-        assert.deepEqual(focused, { cls: "skip-link", text: "Skip to main content" });
+        assert.deepEqual(focused, { cls: "skip-link", text: "Skip to the example" });
         const shown = await page.locator("a.skip-link").boundingBox();
         assert.ok(shown.y >= 0 && shown.height > 20, `visible on focus: ${JSON.stringify(shown)}`);
         await page.keyboard.press("Enter");

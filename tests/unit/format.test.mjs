@@ -11,6 +11,7 @@ import {
   formatNumber,
   formatValue,
   printedDecimals,
+  spokenNumber,
 } from "../../www/format.js";
 
 const M = "\u2212";
@@ -82,5 +83,15 @@ describe("differences: exact − printed, 0 within the printed precision", () =>
     assert.equal(printedDecimals(35.37), 2);
     assert.equal(printedDecimals(0.042), 3);
     assert.equal(printedDecimals(NaN), null);
+  });
+});
+
+describe("spokenNumber: powers of ten as a screen reader should say them", () => {
+  it("reads formatNumber's powers of ten in words, and leaves other text alone (null)", () => {
+    assert.equal(spokenNumber(formatNumber(1.87772e-6)), "1.87772 times 10 to the minus 6");
+    assert.equal(spokenNumber(formatNumber(-2.5e12)), "\u22122.5 times 10 to the 12");
+    assert.equal(spokenNumber("[1.2 × 10⁻¹⁰, 3 × 10¹¹]"), "[1.2 times 10 to the minus 10, 3 times 10 to the 11]");
+    assert.equal(spokenNumber(formatNumber(35.649)), null);
+    assert.equal(spokenNumber("2 × 3"), null);
   });
 });
