@@ -6,6 +6,7 @@
 // are not being sent.
 
 import { el } from "../dom.js";
+import { lmsStyles } from "./styles.js";
 import { siteTitle } from "../site.js";
 import { renderGivens } from "../practice/common.js";
 import { mountBoxes } from "../practice/view.js";
@@ -43,6 +44,7 @@ function startingItems(settings, saved) {
 }
 
 export async function showLmsPractice({ root, core, entries, setStatus }, settings) {
+  lmsStyles();
   document.title = siteTitle(settings.title);
   const session = connect(window, settings.scorm);
   const start = startingItems(settings, session?.suspendData() || null);

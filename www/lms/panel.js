@@ -3,6 +3,7 @@
 // learner) and the button that makes the zip in the browser.
 
 import { el } from "../dom.js";
+import { lmsStyles } from "./styles.js";
 import { buildPackage, fetchBytes, packageSettings, saveFile } from "./download.js";
 import { MAX_VARIANTS_12 } from "./scorm.js";
 
@@ -13,6 +14,7 @@ let panels = 0;
  * worksheet's; `entries`: the catalog.
  */
 export function lmsPanel({ items, title, entries }) {
+  lmsStyles();
   const k = ++panels;
   const id = (name) => `lms${k}-${name}`;
   const version = el("select", { id: id("version") }, el("option", { value: "1.2" }, "SCORM 1.2 (Moodle, Canvas, Brightspace, Blackboard)"), el("option", { value: "2004" }, "SCORM 2004 4th edition"));

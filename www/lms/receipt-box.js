@@ -4,6 +4,7 @@
 // package's page (www/lms/launch.js) both use it.
 
 import { el } from "../dom.js";
+import { lmsStyles } from "./styles.js";
 import { loadQr, qrSvg } from "../practice/sheets.js";
 import { encodeAttempt } from "./attempt.js";
 
@@ -23,6 +24,7 @@ export function receiptAddress(text, site = location.href) {
 
 /** The button and its output; `attempt()` gives [{ id, code, answers }] when pressed. */
 export function receiptBox(attempt, { site = location.href } = {}) {
+  lmsStyles();
   const button = el("button", { type: "button", class: "button receipt-button" }, "Copy a work receipt");
   const out = el("div", { class: "receipt-out", hidden: true });
   const said = el("p", { class: "receipt-said", role: "status" });

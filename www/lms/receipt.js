@@ -6,6 +6,7 @@
 // never read from the receipt.
 
 import { el } from "../dom.js";
+import { lmsStyles } from "./styles.js";
 import { siteTitle } from "../site.js";
 import { verdictParts, verdictSentence } from "../practice/view.js";
 import { decodeAttempt, gradeAttempt } from "./attempt.js";
@@ -18,6 +19,7 @@ const points = (x) => String(Math.round(x * 100) / 100);
  * regraded. `ctx`: { root, core, entries, setStatus } as the practice views.
  */
 export async function showReceipt(ctx, text) {
+  lmsStyles();
   const { root, core, entries, setStatus } = ctx;
   document.title = siteTitle("Check a work receipt");
   const box = el("textarea", { id: "receipt-text", rows: "3", spellcheck: "false", autocomplete: "off", "aria-describedby": "receipt-help" });
@@ -82,7 +84,7 @@ function attemptSection(it, entry) {
   const table = el(
     "table",
     { class: "receipt-table" },
-    el("caption", {}, `${title}, variant ${it.code}: ${points(it.graded.score)} of ${it.graded.out_of}`),
+    el("caption", {}, `Score for this variant: ${points(it.graded.score)} of ${it.graded.out_of}`),
     el("thead", {}, el("tr", {}, el("th", { scope: "col" }, "Box"), el("th", { scope: "col" }, "Answer as typed"), el("th", { scope: "col" }, "Verdict"), el("th", { scope: "col" }, "Points"))),
     el("tbody", {}, rows),
   );

@@ -227,6 +227,7 @@ function buildVariant(ctx, entry, variant, answers) {
  * Returns { element, revealed, regrade(changedKey), texts(), graded() }.
  */
 export function mountBoxes({ core, id, code, variant, answers, idPrefix = "", onGraded = () => {}, onChecked = () => {}, onError = () => {} }) {
+  ensureStyles();
   let solution = null;
   const worked = () => (solution ??= core.solve(id, variant.inputs));
   const hintsShown = {};
