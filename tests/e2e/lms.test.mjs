@@ -33,7 +33,7 @@ after(async () => {
 });
 
 /** Makes a package on the worksheet page (its LMS panel) and returns { zip bytes, files }. */
-async function makePackage({ scorm, passing, codes }) {
+async function makePackage({ scorm, passing, codes, fresh = false }) {
   const { context, page } = await open(env.browser, { acceptDownloads: true });
   try {
     await page.goto(`${env.url}index.html#/practice?worksheet=gsd&n=2&codes=${codes.join(",")}`);
@@ -41,6 +41,7 @@ async function makePackage({ scorm, passing, codes }) {
     const panel = page.locator(".lms-panel");
     await panel.locator("select").selectOption(scorm);
     if (passing != null) await panel.locator("input.lms-passing").fill(String(passing));
+    if (fresh) await panel.getByLabel(/A new variant for each student/).check();
     const [download] = await Promise.all([page.waitForEvent("download", { timeout: WAIT }), panel.getByRole("button", { name: "Download for your LMS" }).click()]);
     const file = path.join(dir, `pkg-${scorm}.zip`);
     await download.saveAs(file);
@@ -237,4 +238,30 @@ test("a SCORM 2004 package reports completion and success; without an LMS the pa
   await site.waitForFunction(() => document.querySelector(".receipt-result .error-box"), null, { timeout: WAIT });
   assert.match(await site.locator(".receipt-result .error-box").textContent(), /damaged/);
   await c2.close();
+});
+
+test("a package with a new variant per student draws the codes at the first launch and keeps them in suspend_data", { timeout: 240_000 }, async () => {
+  dir ??= fs.mkdtempSync(path.join(os.tmpdir(), "pp-lms-"));
+  const codes = ["1K7Q2", "1ABCD"];
+  const { files } = await makePackage({ scorm: "1.2", passing: null, codes, fresh: true });
+  const root = writeHost(files, "pkgfresh");
+  host ??= await startServer({ dir: root, port: 0 });
+  const { context, page } = await open(env.browser);
+  await page.goto(`${host.url}host.html`);
+  const ready = () => page.waitForFunction(() => document.querySelector("#sco").contentDocument?.body?.dataset.status === "lms", null, { timeout: WAIT });
+  await ready();
+  const frame = page.frameLocator("#sco");
+  const drawn = await frame.locator(".lms-item").evaluateAll((xs) => xs.map((x) => x.dataset.code));
+  assert.equal(drawn.length, 2, "as many variants as the worksheet had");
+  assert.notDeepEqual(drawn, codes, "not the worksheet's codes");
+  await page.waitForFunction(() => window.cmi().cmi.suspend_data !== "", null, { timeout: WAIT });
+  assert.deepEqual(decodeAttempt((await page.evaluate(() => window.cmi())).cmi.suspend_data).map((x) => x.code), drawn);
+  await page.frame({ url: /pkgfresh\/index\.html/ }).evaluate(() => (location.href = "about:blank"));
+  await page.waitForFunction(() => window.cmi().cmi.core.exit === "suspend", null, { timeout: WAIT });
+  await page.evaluate(() => window.keep());
+  await page.reload();
+  await ready();
+  assert.deepEqual(await frame.locator(".lms-item").evaluateAll((xs) => xs.map((x) => x.dataset.code)), drawn, "the same variants in the next launch");
+  await page.evaluate(() => sessionStorage.clear());
+  await context.close();
 });
