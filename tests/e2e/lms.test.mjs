@@ -15,6 +15,15 @@ import { nodeModule, open, start } from "./harness.mjs";
 import { startServer } from "../../scripts/serve.mjs";
 import { percent } from "../../www/lms/scorm.js";
 import { decodeAttempt } from "../../www/lms/attempt.js";
+import { createRequire } from "node:module";
+
+const AXE = createRequire(import.meta.url).resolve("axe-core/axe.min.js");
+/** axe-core's WCAG 2.0–2.2 A and AA rules on the page as it is now: the violations, as lines. */
+async function axe(page, where) {
+  await page.addScriptTag({ path: AXE });
+  const r = await page.evaluate(() => window.axe.run(document, { runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa"] }, resultTypes: ["violations"] }));
+  return r.violations.map((v) => `${where}: ${v.id} ${v.nodes.slice(0, 3).map((n) => n.target.join(" ")).join(" | ")}`);
+}
 
 const WAIT = 60_000;
 let env;
@@ -175,7 +184,7 @@ test("a SCORM 2004 package reports completion and success; without an LMS the pa
   assert.match(strFromU8(files["imsmanifest.xml"]), /<schemaversion>2004 4th Edition<\/schemaversion>/);
   const root = writeHost(files, "pkg2004");
   host ??= await startServer({ dir: root, port: 0 });
-  const { context, page } = await open(env.browser);
+  const { context, page } = await open(env.browser, { bypassCSP: true });
   await page.goto(`${host.url}host.html?v=2004`);
   await page.waitForFunction(() => document.querySelector("#sco").contentDocument?.body?.dataset.status === "lms", null, { timeout: WAIT });
   const frame = page.frameLocator("#sco");
@@ -207,10 +216,11 @@ test("a SCORM 2004 package reports completion and success; without an LMS the pa
   await alone.locator(`.lms-item[data-code="${v.code}"] input[data-key="${b0.key}"]`).fill(typed(b0));
   await alone.locator(`.lms-item[data-code="${v.code}"] input[data-key="${b0.key}"]`).press("Tab");
   await alone.waitForFunction(() => /^Score: 1 of /.test(document.querySelector(".practice-score")?.textContent ?? ""), null, { timeout: WAIT });
+  const problems = await axe(alone, "the package's page");
   await context.close();
 
   // a receipt made by the practice page's button, regraded on the site: an edited answer earns what it earns
-  const { context: c2, page: site } = await open(env.browser);
+  const { context: c2, page: site } = await open(env.browser, { bypassCSP: true });
   await site.goto(`${env.url}index.html#/gsd?practice=${v.code}`);
   await site.waitForFunction(() => document.body.dataset.status === "practice", null, { timeout: WAIT });
   const answers = Object.fromEntries(v.boxes.map((b) => [b.key, typed(b)]));
@@ -229,6 +239,7 @@ test("a SCORM 2004 package reports completion and success; without an LMS the pa
   const g = core.grade("gsd", v.code, answers);
   assert.equal(await site.locator(".receipt-score").getAttribute("data-score"), String(g.score));
   for (const b of v.boxes) assert.equal(await site.locator(`.receipt-item tr[data-key="${b.key}"]`).getAttribute("data-verdict"), g.boxes[b.key].verdict, b.key);
+  problems.push(...(await axe(site, "the receipt view")));
   // the same receipt with a box edited to the right value: graded to what the edit earns
   const fixed = { ...answers, [v.boxes[1].key]: typed(v.boxes[1]) };
   const { encodeAttempt } = await import("../../www/lms/attempt.js");
@@ -237,6 +248,7 @@ test("a SCORM 2004 package reports completion and success; without an LMS the pa
   await site.goto(`${env.url}index.html#/practice?receipt=PGA1.garbled`);
   await site.waitForFunction(() => document.querySelector(".receipt-result .error-box"), null, { timeout: WAIT });
   assert.match(await site.locator(".receipt-result .error-box").textContent(), /damaged/);
+  assert.deepEqual(problems, [], "WCAG 2.2 AA (axe-core)");
   await c2.close();
 });
 
