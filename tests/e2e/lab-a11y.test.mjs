@@ -230,6 +230,19 @@ test("axe-core at 390 and 1280 px, light and dark, with a layer shown and the Da
       .map(([n, b]) => `${n} ${b.width.toFixed(1)} × ${b.height.toFixed(1)}`));
     assert.deepEqual(small, [], family);
   }
+  // prefers-reduced-motion: the progress spinner stands still (zoom and pan are never animated)
+  const spin = () => page.evaluate(() => {
+    const s = document.createElement("span");
+    s.className = "lab-spinner";
+    document.querySelector("#lab").append(s);
+    const name = getComputedStyle(s).animationName;
+    s.remove();
+    return name;
+  });
+  await page.emulateMedia({ reducedMotion: "reduce" });
+  assert.equal(await spin(), "none");
+  await page.emulateMedia({ reducedMotion: "no-preference" });
+  assert.equal(await spin(), "lab-spin");
   if (shell.size) console.log(`outside the lab (the page shell): ${[...shell].join("; ")}`);
   assert.deepEqual(log.pageErrors, []);
 });

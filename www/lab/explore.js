@@ -7,12 +7,15 @@
 // shown, the cursor's cell marked in words.
 
 import { el } from "../dom.js";
-import { fmt } from "./view.js";
+import { fmt, paintedOf } from "./view.js";
 
 /** The Data view's neighbourhood: HALF pixels each side of the cursor. */
 const HALF = 3;
 /** The description names this many of the points found. */
 const FIRST_POINTS = 5;
+
+/** Photos up to this many pixels have their grey range in the description (a loop over the values on the page). */
+const RANGE_PIXELS = 1 << 22;
 
 /** The smallest and largest finite value of `data` (once per array). */
 const ranges = new WeakMap();
@@ -20,7 +23,8 @@ function rangeOf(data) {
   let r = ranges.get(data);
   if (!r) {
     let [lo, hi] = [Infinity, -Infinity];
-    for (const v of data) {
+    for (let i = 0; i < data.length; i++) {
+      const v = data[i];
       if (v < lo) lo = v;
       if (v > hi) hi = v;
     }
@@ -30,11 +34,14 @@ function rangeOf(data) {
   return r;
 }
 
-/** A layer in words: its name, size, where it starts when not at (0, 0), its range. */
-export function layerWords(l) {
-  const range = rangeOf(l.data);
+/**
+ * A layer in words: its name, size, where it starts when not at (0, 0),
+ * its range (`scale`: the painting's, { min, max }; null: not painted yet).
+ */
+export function layerWords(l, scale) {
   const at = l.c0 || l.r0 ? ` from column ${l.c0}, row ${l.r0}` : "";
-  return `${l.name}, ${l.width} × ${l.height} pixels${at}, ${range ? `values from ${fmt(range[0])} to ${fmt(range[1])}` : "no values"}${l.signed ? " (signed)" : ""}`;
+  const range = !scale ? "its range is given when it is shown" : Number.isFinite(scale.min) ? `values from ${fmt(scale.min)} to ${fmt(scale.max)}` : "no values";
+  return `${l.name}, ${l.width} × ${l.height} pixels${at}, ${range}${l.signed ? " (signed)" : ""}`;
 }
 
 /**
@@ -97,22 +104,30 @@ export class Explorer {
     this.describe();
   }
 
-  /** The description of the view: the photo, the layers (the one shown first), the points. */
-  describe() {
+  /**
+   * The description of the view: the photo, the layers (the one shown
+   * first), the points. Layer ranges come from their paintings (the
+   * worker's); the newest call wins.
+   */
+  async describe() {
+    const gen = (this.describeGen = (this.describeGen ?? 0) + 1);
     const lab = this.lab;
     const img = lab.image;
     if (!img) {
       this.desc.textContent = "No photo open yet.";
       return;
     }
-    const g = rangeOf(img.grey);
-    const parts = [`${img.name}: ${img.width} × ${img.height} pixels, grey values from ${fmt(g?.[0])} to ${fmt(g?.[1])}.`];
+    const g = img.width * img.height <= RANGE_PIXELS ? rangeOf(img.grey) : null;
+    const parts = [`${img.name}: ${img.width} × ${img.height} pixels, ${g ? `grey values from ${fmt(g[0])} to ${fmt(g[1])}` : `grey values on a scale of 0 to ${fmt(img.maxValue)}`}.`];
     const shown = lab.layers[Number(lab.layerSelect.value)];
+    const scales = await Promise.all(lab.layers.map((l) => paintedOf(l)));
+    if (gen !== this.describeGen) return;
+    const words = (l) => layerWords(l, scales[lab.layers.indexOf(l)]?.scale ?? null);
     if (shown) {
       const how = lab.modeSelect.value === "beside" ? "beside the photo" : `over the photo at ${Math.round(Number(lab.opacity.value) * 100)} % opacity`;
-      parts.push(`Result layer shown (${how}): ${layerWords(shown)}.`);
+      parts.push(`Result layer shown (${how}): ${words(shown)}.`);
       const others = lab.layers.filter((l) => l !== shown);
-      if (others.length) parts.push(`Other layers: ${others.map(layerWords).join("; ")}.`);
+      if (others.length) parts.push(`Other layers: ${others.map(words).join("; ")}.`);
     }
     if (this.points) parts.push(pointsWords(this.points.p, this.points.op));
     this.desc.textContent = parts.join(" ");

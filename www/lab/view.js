@@ -70,11 +70,21 @@ export function setPainter(p) {
 const painted = new WeakMap();
 
 /**
+ * The painting of `layer` when it was asked for already (a promise of {
+ * bitmap, scale } or null), without asking for it: its scale has the
+ * layer's range (the worker's, so that the page does not loop over a big
+ * layer).
+ *
  * `layer` painted, once per layer object (null when no painter is set or
  * the painting failed: a cancel, a stopped worker; asked again next time).
  * The lab paints every layer of a result as it arrives (prepaint), so
  * that switching layers draws at once.
  */
+export function paintedOf(layer) {
+  return painted.get(layer) ?? null;
+}
+
+/** `layer` painted (see paintedOf: the painting asked for already, or null), asked for now when not yet. */
 export function paintOf(layer) {
   if (!painter) return Promise.resolve(null);
   let p = painted.get(layer);
@@ -423,7 +433,11 @@ export class Viewer {
         const [x, y] = this.toImage(p[0], p[1]);
         const c = Math.round(x);
         const r = Math.round(y);
-        if (c >= 0 && r >= 0 && c < this.image.width && r < this.image.height) this.opts.onPick?.(c, r, ev, [x, y]);
+        if (c >= 0 && r >= 0 && c < this.image.width && r < this.image.height) {
+          // the keyboard's cursor goes on from the clicked pixel
+          this.cursor = [c, r];
+          this.opts.onPick?.(c, r, ev, [x, y]);
+        }
       }
     };
     cv.addEventListener("pointerup", up);
