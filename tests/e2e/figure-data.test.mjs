@@ -235,7 +235,7 @@ describe("figure data", () => {
     const c = (top % cols) + 1;
     await page.waitForFunction((w) => document.querySelector(".figure-status").textContent.includes(w), `Selected (row ${r}, column ${c})`);
     const said = await line.textContent();
-    assert.match(said, new RegExp(`= ${f(t.result.rho, 4)}\\n`));
+    assert.match(said, new RegExp(`^Selected \\(row ${r}, column ${c}\\): .*\\nρ = .* = ${f(t.result.rho, 4)}$`));
     assert.ok(said.includes(`(${f(da[r - 1][c - 1], 5)}) × (${f(db[r - 1][c - 1], 5)})`), said);
     assert.deepEqual(log.pageErrors, []);
   });

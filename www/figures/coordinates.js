@@ -447,7 +447,7 @@ const gsdFigure = {
     const l = gsdLabels(gsdData(solution));
     return {
       summary: describeGsd(solution),
-      tables: [seriesTable("The labelled lengths of the sketch (a side view, not to scale)", ["label"], [l.f, l.H, l.p, l.gsd, l.scale].map((t) => [t]))],
+      tables: [seriesTable("The labelled lengths of the sketch (a side view, not to scale)", ["quantity", "value"], [l.f, l.H, l.p, l.gsd, l.scale].map((t) => t.split(/ = (?=[^=]*$)/)))],
     };
   },
   caption: "Side view of the camera: the rays through one pixel's edges cross at the projection centre O and mark its footprint on the ground (not to scale).",

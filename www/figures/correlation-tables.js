@@ -145,9 +145,10 @@ const ADDED = new Map([
         const d = twoD(solution);
         const total = d.a.length * (d.a[0]?.length ?? 0);
         const sel = Number.isInteger(state?.i) && state.i < total ? state.i : null;
-        return lines2d(d, sel, deviations2d(d))
-          .map((l) => l.text)
-          .join("\n");
+        // nothing selected: the canvas's ρ line alone would only repeat the figure
+        if (sel === null) return "";
+        const [rho, pair] = lines2d(d, sel, deviations2d(d));
+        return `${pair.text}\n${rho.text}`;
       },
     },
   ],

@@ -58,10 +58,23 @@ export function renderData(body, data) {
   host.replaceChildren(...parts);
 }
 
+/** Marks that single a cell out (drawn with a frame); other marks are notes (words only). */
+const HIGHLIGHT = /\b(best|selected|start|end|picked|highest|largest|nearest|lowest)\b/;
+/** A number as the figures write it (a real minus, digits, a power of ten): right-aligned; other texts left. */
+const NUMERIC = /^[−+-]?[\d.,\s]*\d( × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?$/;
+
 function table(t) {
   const wrap = el("div", "figure-table-wrap");
   const tab = el("table", "figure-table");
-  if (t.caption) tab.append(el("caption", null, t.caption));
+  const parts = [];
+  if (t.caption) {
+    // the caption is the table's name for screen readers; the same words are shown above the
+    // scrolling box (a wide table's own caption would scroll away with it)
+    const shown = el("p", "figure-table-title", t.caption);
+    shown.setAttribute("aria-hidden", "true");
+    parts.push(shown);
+    tab.append(el("caption", "visually-hidden", t.caption));
+  }
   const head = el("tr");
   if (t.rowHeaders) {
     const corner = el("th", null, t.corner ?? "");
@@ -86,10 +99,14 @@ function table(t) {
     row.forEach((v, c) => {
       const td = el("td");
       td.append(el("span", "figure-value", v));
+      if (v && !NUMERIC.test(v)) td.classList.add("figure-text");
       const mark = t.marks?.[r]?.[c];
       if (mark) {
-        td.classList.add("figure-marked");
-        td.append(el("span", "figure-mark", `, ${mark}`));
+        if (HIGHLIGHT.test(mark)) td.classList.add("figure-marked");
+        const words = el("span", "figure-mark");
+        // read as "0.9665, best"; shown on a line of its own under the value
+        words.append(el("span", "visually-hidden", ", "), mark);
+        td.append(words);
       }
       tr.append(td);
     });
@@ -97,7 +114,10 @@ function table(t) {
   });
   tab.append(thead, tbody);
   wrap.append(tab);
-  return wrap;
+  parts.push(wrap);
+  const box = el("div", "figure-table-box");
+  box.append(...parts);
+  return box;
 }
 
 /** What the cursor line reads for cell (r, c) of an explorable table: "row 3, column 2, 87, inside the window". */

@@ -262,7 +262,8 @@ function showData(panel, solution, state, width, height, ctx) {
   if (panel.data.open) renderData(panel.data.body, data);
   const grid = (data?.tables ?? []).find((t) => t.explore);
   panel.grid = grid ?? null;
-  const keys = grid ? `Keyboard: on the focused figure the arrow keys move a cell cursor over ${grid.caption ?? "the grid"} (its cell is read out)${panel.clicks.length ? "; Enter or Space does what a click on the cell does" : ""}.` : "";
+  const name = (grid?.caption ?? "the grid").replace(/\s*\(.*$/, "");
+  const keys = grid ? `Keyboard: on the focused figure the arrow keys move a cell cursor over “${name}”, read out below${panel.clicks.length ? "; Enter or Space does what a click on the cell does" : ""}.` : "";
   if (panel.data.keys.textContent !== keys) panel.data.keys.textContent = keys;
   if (grid && panel.canvas.tabIndex < 0) panel.canvas.tabIndex = 0;
   if (!grid || !panel.cursor) {

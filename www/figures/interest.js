@@ -94,13 +94,13 @@ const windowTables = (source) => (solution) => {
   const hasG = isMatrix(gx) && isMatrix(gy);
   const mark = (r, c) => {
     const g = hasG && r > 0 && c > 0 ? gx[r - 1]?.[c - 1] : undefined;
-    if (typeof g !== "number") return "border";
+    if (typeof g !== "number") return null;
     return `interior, gradient g′x = ${fmt(g)}, g′y = ${fmt(gy[r - 1][c - 1])}`;
   };
   return {
     summary: windowSpec(source).describe(solution),
     tables: [
-      matrixTable("The window (grey values; c → r ↓ from 1)", win, {
+      matrixTable("The window (grey values, c → r ↓ from 1; each interior pixel with its gradient)", win, {
         format: (v) => fmt(v, 5, "no value"),
         mark,
         explore: {
