@@ -225,6 +225,8 @@ enum Source {
         bytes: Vec<u8>,
         width: usize,
         height: usize,
+        /// Where the windows that fit lie (`w_min`'s cells).
+        fit: stream::Fit,
     },
     /// The reference's map of every window's measures.
     Reference(interest::Map<Measures>),
@@ -270,7 +272,9 @@ struct Suppressed {
 pub struct ForstnerKept {
     size: usize,
     layers: Vec<Layer>,
-    w_min: Option<f64>,
+    /// `w_min` (the automatic threshold's), found when first asked for: the
+    /// pool's bands and `run_forstner` never ask.
+    w_min: std::cell::OnceCell<Option<f64>>,
     source: Source,
     suppressed: Option<Suppressed>,
 }
@@ -300,7 +304,7 @@ impl ForstnerKept {
             let mut kept = ForstnerKept {
                 size,
                 layers: map_layers(&map),
-                w_min,
+                w_min: std::cell::OnceCell::from(w_min),
                 source: Source::Reference(map),
                 suppressed: None,
             };
@@ -323,7 +327,6 @@ impl ForstnerKept {
                 d.row(r, xx, yy, xy);
             }
         })?;
-        let w_min = exact_w_min(g.data(), width, height, size, &wl, fit);
         let suppressed = detector
             .zip(detect)
             .map(|(d, (sigma_n, q_min, limit))| Suppressed {
@@ -338,11 +341,12 @@ impl ForstnerKept {
                 Layer::new("w", whole(width, height), wl, false),
                 Layer::new("q", whole(width, height), ql, false),
             ],
-            w_min,
+            w_min: std::cell::OnceCell::new(),
             source: Source::Fast {
                 bytes: g.data().to_vec(),
                 width,
                 height,
+                fit,
             },
             suppressed,
         })
@@ -361,7 +365,19 @@ impl ForstnerKept {
     /// The threshold chosen for this photo for `σn` (None when the map has
     /// no textured pixel: `w_min` is 0, or no window fits).
     pub fn auto_threshold(&self, sigma_n: f64) -> Option<AutoThreshold> {
-        let w_min = self.w_min?;
+        let w_min = (*self.w_min.get_or_init(|| match &self.source {
+            Source::Fast {
+                bytes,
+                width,
+                height,
+                fit,
+            } => {
+                let wl = self.layers.first().map_or(&[][..], |l| &l.data[..]);
+                exact_w_min(bytes, *width, *height, self.size, wl, *fit)
+            }
+            // (the reference route finds it with its map)
+            Source::Reference(_) => None,
+        }))?;
         (w_min > 0.0 && sigma_n > 0.0).then(|| AutoThreshold {
             w_min,
             threshold_px: sigma_n / w_min.sqrt(),
@@ -379,6 +395,7 @@ impl ForstnerKept {
                 bytes,
                 width,
                 height,
+                ..
             } => {
                 let Ok(g) = Gray::new("image", bytes, *width, *height) else {
                     return;

@@ -61,6 +61,13 @@ fn f32_array(data: &[f32]) -> Float32Array {
     a
 }
 
+/// [`image`] with its grid (built once and kept with the image when it was
+/// made from bytes): for the operators that read grey values from the grid
+/// (correlation's windows, the boundary's region, the fiducials).
+fn whole_image(img: &LabImage) -> ops::Image<'_> {
+    ops::Image::with_bytes(img.grid(), img.bytes())
+}
+
 fn layer_js(l: &Layer) -> Result<JsValue, JsError> {
     obj(&[
         ("name", JsValue::from_str(&l.name)),
@@ -269,7 +276,7 @@ pub fn run_correlation(
     };
     let t = rect(template, "template")?;
     let s = rect(search, "search")?;
-    let m = ops::correlate(image(a), t, image(b), s, model).map_err(js_error)?;
+    let m = ops::correlate(whole_image(a), t, whole_image(b), s, model).map_err(js_error)?;
     let surface = Layer {
         name: "ncc".into(),
         width: m.surface.width,
@@ -401,7 +408,7 @@ pub fn run_boundary(
     c: usize,
     r: usize,
 ) -> Result<JsValue, JsError> {
-    let t = ops::boundary(image(img), threshold, c, r).map_err(js_error)?;
+    let t = ops::boundary(whole_image(img), threshold, c, r).map_err(js_error)?;
     let pixels: Vec<f64> = t
         .boundary
         .pixels
@@ -449,7 +456,7 @@ pub fn run_fiducials(img: &LabImage, approx: &[f64]) -> Result<JsValue, JsError>
     }
     let pts: Vec<(f64, f64)> = approx.chunks(2).map(|p| (p[0], p[1])).collect();
     let template = sample::mark_template(21).map_err(js_error)?;
-    let marks = ops::measure_marks(image(img), &template, &pts, 12).map_err(js_error)?;
+    let marks = ops::measure_marks(whole_image(img), &template, &pts, 12).map_err(js_error)?;
     let measured: Vec<(f64, f64)> = marks.iter().map(|m| m.measured).collect();
     let (sim, aff) = ops::fit_fiducials(&measured, &sample::calibrated()).map_err(js_error)?;
     let fit_js = |f: &photogrammetry_playground::transform::Fit| -> Result<JsValue, JsError> {
@@ -496,7 +503,7 @@ pub fn refine_mark(img: &LabImage, c: f64, r: f64) -> Result<Float64Array, JsErr
         return Err(JsError::new("mark: the click must lie inside the image"));
     }
     let template = sample::mark_template(21).map_err(js_error)?;
-    let marks = ops::measure_marks(image(img), &template, &[(c, r)], 12).map_err(js_error)?;
+    let marks = ops::measure_marks(whole_image(img), &template, &[(c, r)], 12).map_err(js_error)?;
     let m = marks
         .first()
         .ok_or_else(|| JsError::new("mark: could not be measured"))?;
