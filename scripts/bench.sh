@@ -3,6 +3,7 @@
 # loads (gzipped bytes) and how long it takes to show the first solution.
 # npm run bench -- ops [--json FILE]: the image operators of ../shared/bench
 # (T1–T7) against OpenCV.js in the same Node process (scripts/bench-ops/).
+# npm run bench -- lab (or --lab): the image lab on a 12 MP photo (scripts/bench_lab.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = ops ]; then
@@ -11,5 +12,9 @@ if [ "${1:-}" = ops ]; then
 fi
 bash scripts/setup.sh --test
 SKIP_SETUP=1 bash scripts/build.sh
+if [ "${1:-}" = lab ]; then
+  shift
+  exec node scripts/bench_lab.mjs "$@"
+fi
 node scripts/bench.mjs "$@"
 node scripts/bench-embed.mjs "$@"
