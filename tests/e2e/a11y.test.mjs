@@ -161,8 +161,22 @@ describe("at 390 px and 320 px", { timeout: TEST_TIMEOUT * 4 }, () => {
   });
 });
 
-/** The accessibility tree's nodes (CDP) whose DOM node matches `selector`, with their subtree's text. */
-async function axText(selector) {
+/**
+ * The accessibility tree's nodes (CDP) whose DOM node matches `selector`, with
+ * their subtree's text; asked again when the page replaced a node meanwhile
+ * (a formula fitted after its step was rendered).
+ */
+async function axText(selector, tries = 3) {
+  try {
+    return await axTextOnce(selector);
+  } catch (e) {
+    if (tries <= 1 || !/Could not find node/.test(e.message)) throw e;
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0))));
+    return axText(selector, tries - 1);
+  }
+}
+
+async function axTextOnce(selector) {
   const cdp = await context.newCDPSession(page);
   try {
     const { nodes } = await cdp.send("Accessibility.getFullAXTree");
@@ -204,6 +218,7 @@ describe("what a screen reader gets (the accessibility tree over CDP)", { timeou
     // the substituted formulas are MathML, the KaTeX boxes hidden: no text twice
     // (a step off screen is not rendered: content-visibility, style.css)
     await page.locator(".steps .formula math").first().scrollIntoViewIfNeeded();
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(r, 0)))));
     const formula = (await axText(".steps .formula:has(math)"))[0];
     assert.ok(formula.text.length > 0);
     assert.equal(await page.locator(".steps .katex-html:not([aria-hidden='true'])").count(), 0);
