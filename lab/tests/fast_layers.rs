@@ -25,6 +25,9 @@
 //! wasm32-unknown-unknown --target-dir target/simd128 -p photogrammetry-lab
 //! --test fast_layers`).
 
+mod common;
+
+use common::random;
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -34,21 +37,6 @@ use photogrammetry_playground::filter::{self, Kernel};
 use photogrammetry_playground::matching::Model;
 use photogrammetry_playground::raster::{Border, Grid};
 use photogrammetry_playground::resample::{self, Method};
-
-/// SplitMix64 grey values 0 … 255.
-fn random(w: usize, h: usize, seed: u64) -> Grid {
-    let mut s = seed;
-    let data = (0..w * h)
-        .map(|_| {
-            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = s;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            ((z ^ (z >> 31)) % 256) as f64
-        })
-        .collect();
-    Grid::new("image", w, h, data).unwrap()
-}
 
 /// Random images and structured ones: a checkerboard of 4-pixel squares
 /// (exact corners, ties), ramps with a flat block, a disc.
