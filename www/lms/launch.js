@@ -96,7 +96,10 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
     return mounted.map(({ it, variant, boxes }) => ({ id: it.id, code: variant.code, answers: boxes.texts() }));
   }
 
-  /** Totals now; with `checked` ([{ k, key }]), those boxes go to the LMS as interactions. */
+  /**
+   * Totals now; with `checked` ([{ k, key }]), those boxes go to the LMS as
+   * interactions. Returns whether every box is answered.
+   */
   function report(checked = []) {
     let total = 0;
     let outOf = 0;
@@ -112,7 +115,7 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
     const text = `Score: ${Math.round(total * 100) / 100} of ${outOf}`;
     if (score.textContent !== text) score.textContent = text;
     testHook("lmsScore", `${total}/${outOf}`);
-    if (!session) return;
+    if (!session) return answered >= boxes;
     const sent = session.report({
       score: total,
       outOf,
@@ -128,6 +131,7 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
     });
     const text2 = sent && !session.lastError ? connected : `Your course did not take the score: ${session.lastError ?? "the LMS refused to save"}. Copy a work receipt to keep your answers.`;
     if (where.textContent !== text2) where.textContent = text2;
+    return answered >= boxes;
   }
 
   where.textContent = session ? connected : "No course system (LMS) found: this is practice only, and scores are not being sent anywhere.";
@@ -146,10 +150,7 @@ export async function showLmsPractice({ root, core, entries, setStatus }, settin
   report();
   if (session) {
     window.addEventListener("pagehide", () => {
-      report();
-      const g = mounted.map((m) => m.boxes.graded());
-      const complete = g.every((x) => Object.values(x.boxes).every((r) => r.verdict !== "empty"));
-      session.finish({ complete });
+      session.finish({ complete: report() });
     });
   }
   testHook("lms", session ? session.version : "none");
