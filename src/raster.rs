@@ -229,6 +229,56 @@ impl<'a> Gray<'a> {
     }
 }
 
+/// A grey image of `f32` values borrowed from a buffer (row-major, no
+/// padding): the input of the fast filter passes when the grey values are
+/// not bytes (`filter::fast::{separable, correlate, sobel, median3_f32}`
+/// read it as they read a [`Gray`]'s converted rows). The image lab gives
+/// a colour photo's greys as the whole numbers `n = s · grey` (its BT.601
+/// sums), exact in `f32`, so that the passes' sums are exact integers.
+#[derive(Debug, Clone, Copy)]
+pub struct GrayF32<'a> {
+    data: &'a [f32],
+    width: usize,
+    height: usize,
+}
+
+impl<'a> GrayF32<'a> {
+    /// A view of `data` as `width × height`; `field` names it in errors
+    /// (every value must be finite).
+    pub fn new(field: &str, data: &'a [f32], width: usize, height: usize) -> Result<Self> {
+        if width == 0 || height == 0 {
+            return Err(Error::input(field, "is empty"));
+        }
+        if width.checked_mul(height) != Some(data.len()) {
+            return Err(Error::input(
+                field,
+                format!("has {} values for {width}×{height}", data.len()),
+            ));
+        }
+        if data.iter().any(|v| !v.is_finite()) {
+            return Err(Error::input(field, "must hold finite numbers"));
+        }
+        Ok(GrayF32 {
+            data,
+            width,
+            height,
+        })
+    }
+    pub fn width(&self) -> usize {
+        self.width
+    }
+    pub fn height(&self) -> usize {
+        self.height
+    }
+    pub fn data(&self) -> &'a [f32] {
+        self.data
+    }
+    /// Row `r` (`None` past the last row).
+    pub fn row(&self, r: usize) -> Option<&'a [f32]> {
+        self.data.get(r * self.width..(r + 1) * self.width)
+    }
+}
+
 impl Grid {
     /// The values as bytes when every one is a whole number in 0 … 255
     /// (an 8-bit image), so that a fast 8-bit path gives the same result.

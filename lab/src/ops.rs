@@ -16,7 +16,7 @@ use std::borrow::Cow;
 
 use photogrammetry_playground::error::{Error, Result};
 use photogrammetry_playground::filter::{self, Kernel, Region};
-use photogrammetry_playground::raster::{Border, Gray, Grid};
+use photogrammetry_playground::raster::{Border, Gray, GrayF32, Grid};
 use photogrammetry_playground::read::short;
 
 mod boundary;
@@ -112,6 +112,62 @@ pub struct Image<'a> {
     given: Option<&'a Grid>,
     built: std::cell::OnceCell<Grid>,
     bytes: Option<Cow<'a, [u8]>>,
+    /// The grey values as [`Levels`] when they are not bytes, found once
+    /// when first asked for: kept in the caller's cell ([`Image::with_levels`])
+    /// or in `found`.
+    keep: Option<&'a std::cell::OnceCell<Option<Levels>>>,
+    found: std::cell::OnceCell<Option<Levels>>,
+}
+
+/// Grey values that are whole numbers over one scale: `grey = n / scale`
+/// in one `f64` division, bit for bit, every `n` an integer 0 … 2²⁴ − 1
+/// (exact in `f32`). A colour photo's BT.601 greys are such numbers
+/// (`n = 299·R + 587·G + 114·B`, `scale` 1000; reduced `k×` by area
+/// averages, the block's sum over `1000·k²`), and so are 16-bit greys
+/// (`scale` 1): the fast filter passes read `n` ([`GrayF32`]), their sums
+/// of `n` are exact integers below 2²⁴, and dividing by `scale` once gives
+/// the grey values the reference reads — the same greys the explained
+/// pixel's window holds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Levels {
+    pub data: Vec<f32>,
+    pub scale: f64,
+    /// The largest `n`.
+    pub max: f32,
+}
+
+/// The scales [`levels_of`] tries: 1 (16-bit greys), `1000·k²` (colour
+/// photos' greys, reduced `k×` for `k` 1 … 4).
+const LEVEL_SCALES: [f64; 5] = [1.0, 1000.0, 4000.0, 9000.0, 16000.0];
+
+impl Levels {
+    /// The levels as an image of `width × height` for the fast passes.
+    pub fn view(&self, width: usize, height: usize) -> Option<GrayF32<'_>> {
+        GrayF32::new("image", &self.data, width, height).ok()
+    }
+}
+
+/// `values` as [`Levels`] when they are such numbers over one of the
+/// scales 1, 1000, 4000, 9000, 16000 (checked at every value: `n / scale`
+/// must give the value back bit for bit), else `None`.
+pub fn levels_of(values: &[f64]) -> Option<Levels> {
+    const LIMIT: f64 = 16_777_216.0;
+    'scales: for scale in LEVEL_SCALES {
+        let mut data = Vec::with_capacity(values.len());
+        let mut max = 0.0f32;
+        for &v in values {
+            // (floor, not round: a wasm instruction, not a libm call; v ≥ 0)
+            let n = (v * scale + 0.5).floor();
+            if !(v >= 0.0 && n < LIMIT && n / scale == v) {
+                continue 'scales;
+            }
+            let n = n as f32;
+            max = if n > max { n } else { max };
+            data.push(n);
+        }
+        return Some(Levels { data, scale, max });
+    }
+    None
 }
 
 impl<'a> Image<'a> {
@@ -126,6 +182,18 @@ impl<'a> Image<'a> {
             given: Some(grid),
             built: std::cell::OnceCell::new(),
             bytes,
+            keep: None,
+            found: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// The same image with the caller's cell for its [`Levels`] (the wasm
+    /// `LabImage` keeps them with the photo): found once, when an operator
+    /// first asks, and kept there for the next.
+    pub fn with_levels(self, keep: &'a std::cell::OnceCell<Option<Levels>>) -> Self {
+        Image {
+            keep: Some(keep),
+            ..self
         }
     }
 
@@ -139,6 +207,8 @@ impl<'a> Image<'a> {
             given: None,
             built: std::cell::OnceCell::new(),
             bytes: Some(Cow::Borrowed(bytes)),
+            keep: None,
+            found: std::cell::OnceCell::new(),
         })
     }
 
@@ -152,6 +222,19 @@ impl<'a> Image<'a> {
             Some(g) => g.to_grid(),
             None => Grid::filled(self.width, self.height, 0.0),
         })
+    }
+
+    /// The grey values as [`Levels`] when the image is not 8-bit and its
+    /// greys are such numbers (found once; `None` for an 8-bit image: its
+    /// bytes are the fast paths' input).
+    pub fn levels(&self) -> Option<&Levels> {
+        if self.bytes.is_some() {
+            return None;
+        }
+        self.keep
+            .unwrap_or(&self.found)
+            .get_or_init(|| levels_of(self.grid().data()))
+            .as_ref()
     }
 
     /// The 8-bit view, when the image is 8-bit.
@@ -176,6 +259,8 @@ impl<'a> From<&'a Grid> for Image<'a> {
             given: Some(grid),
             built: std::cell::OnceCell::new(),
             bytes: grid.to_u8().map(Cow::Owned),
+            keep: None,
+            found: std::cell::OnceCell::new(),
         }
     }
 }
@@ -188,6 +273,8 @@ impl<'a> From<&'a Image<'a>> for Image<'a> {
             given: img.given.or(img.built.get()),
             built: std::cell::OnceCell::new(),
             bytes: img.bytes.as_deref().map(Cow::Borrowed),
+            keep: Some(img.keep.unwrap_or(&img.found)),
+            found: std::cell::OnceCell::new(),
         }
     }
 }

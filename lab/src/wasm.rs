@@ -51,6 +51,10 @@ pub struct LabImage {
     /// The grey values as bytes when the image is 8-bit, found once (the
     /// operators' fast paths read them: `run::image`).
     bytes: std::cell::OnceCell<Option<Vec<u8>>>,
+    /// The grey values as levels when they are not bytes (a colour photo's
+    /// BT.601 greys: `ops::Levels`), found when an operator first asks
+    /// (`ops::Image::levels`) and kept for every later one.
+    levels: std::cell::OnceCell<Option<ops::Levels>>,
 }
 
 impl LabImage {
@@ -188,6 +192,7 @@ fn bare(w: usize, h: usize, format: &str, colour: &str, bits: u32, max_value: f6
         bits,
         max_value,
         bytes: std::cell::OnceCell::new(),
+        levels: std::cell::OnceCell::new(),
     }
 }
 

@@ -323,8 +323,9 @@ fn fast_routes_give_the_reference_bits_at_every_pixel() {
             }
         }
     }
-    // not 8-bit: the reference path
-    let frac = Grid::new("image", 3, 3, vec![0.5; 9]).unwrap();
+    // neither 8-bit nor levels (whole numbers over 1, 1000, 4000, … as a
+    // colour photo's greys are: lab/tests/colour_layers.rs): the reference path
+    let frac = Grid::new("image", 3, 3, vec![std::f64::consts::SQRT_2; 9]).unwrap();
     assert!(
         ops::fast_filter(&(&frac).into(), "mean", ops::border("zero").unwrap(), None)
             .unwrap()

@@ -17,7 +17,7 @@
 //! run scalar.
 
 use crate::error::{Error, Result};
-use crate::raster::{check_len, fold, Border, Gray};
+use crate::raster::{check_len, fold, Border, Gray, GrayF32};
 
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 use core::arch::wasm32::*;
@@ -52,7 +52,45 @@ pub(crate) fn row_at<'a>(img: &Gray<'a>, r: isize, border: Border) -> Option<&'a
     fold(r, img.height(), effective(border)).and_then(|i| img.row(i))
 }
 
-/// Rows of an 8-bit image converted to `f32` once each, kept in a ring of
+/// An image the filter passes read row by row as `f32`: an 8-bit
+/// [`Gray`]'s bytes converted, or a [`GrayF32`]'s values copied.
+pub trait Rows {
+    fn width(&self) -> usize;
+    fn height(&self) -> usize;
+    /// Row `i` into `dst` as `f32` (nothing past the last row).
+    fn load(&self, i: usize, dst: &mut [f32]);
+}
+
+impl Rows for Gray<'_> {
+    fn width(&self) -> usize {
+        Gray::width(self)
+    }
+    fn height(&self) -> usize {
+        Gray::height(self)
+    }
+    fn load(&self, i: usize, dst: &mut [f32]) {
+        if let Some(src) = self.row(i) {
+            convert_row(src, dst);
+        }
+    }
+}
+
+impl Rows for GrayF32<'_> {
+    fn width(&self) -> usize {
+        GrayF32::width(self)
+    }
+    fn height(&self) -> usize {
+        GrayF32::height(self)
+    }
+    fn load(&self, i: usize, dst: &mut [f32]) {
+        if let Some(src) = self.row(i) {
+            let n = src.len().min(dst.len());
+            dst[..n].copy_from_slice(&src[..n]);
+        }
+    }
+}
+
+/// Rows of an image converted to `f32` once each, kept in a ring of
 /// `2·radius + 1` slots: the rows a vertical pass needs at one output row
 /// lie within `radius` of it, so they never share a slot.
 pub(crate) struct RowRing {
@@ -72,11 +110,11 @@ impl RowRing {
     }
 
     /// Makes sure source row `i` is converted; returns its slot.
-    fn load(&mut self, img: &Gray, i: usize) -> usize {
+    fn load(&mut self, img: &impl Rows, i: usize) -> usize {
         let slot = i % self.slots.len();
         if self.tags[slot] != Some(i) {
-            if let (Some(src), Some(dst)) = (img.row(i), self.slots.get_mut(slot)) {
-                convert_row(src, dst);
+            if let Some(dst) = self.slots.get_mut(slot) {
+                img.load(i, dst);
             }
             self.tags[slot] = Some(i);
         }
@@ -86,7 +124,7 @@ impl RowRing {
     /// The converted rows for positions `r − radius … r + radius`.
     pub(crate) fn rows(
         &mut self,
-        img: &Gray,
+        img: &impl Rows,
         r: usize,
         radius: usize,
         border: Border,
@@ -294,7 +332,7 @@ fn check_taps(field: &str, k: &[f32]) -> Result<()> {
 /// (Integer taps and a divisor keep integer sums exact: the 3×3 mean is
 /// the `f32` nearest to the reference's value.)
 pub fn separable(
-    img: Gray,
+    img: impl Rows,
     kx: &[f32],
     ky: &[f32],
     divisor: f32,
@@ -329,7 +367,7 @@ pub fn separable(
 /// exact in `f32` makes the output the `f32` nearest to the reference's
 /// value.
 pub fn correlate(
-    img: Gray,
+    img: impl Rows,
     k: &[f32],
     (kw, kh): (usize, usize),
     divisor: f32,
@@ -541,7 +579,7 @@ pub fn gaussian_taps(sigma: f64, radius: usize) -> Option<Vec<f64>> {
 /// response (right minus left, [`super::sobel_y`]), `gy` its transpose
 /// (down minus up, −[`super::sobel_x`]), `mag = √(gx² + gy²)`.
 pub fn sobel(
-    img: Gray,
+    img: impl Rows,
     border: Border,
     gx: &mut [f32],
     gy: &mut [f32],
@@ -617,6 +655,50 @@ pub fn median3(img: Gray, border: Border, out: &mut [u8]) -> Result<()> {
         pad_row(&mut mid, w, 1, border, 0);
         pad_row(&mut hi, w, 1, border, 0);
         combine_median(&lo, &mid, &hi, o);
+    }
+    Ok(())
+}
+
+/// [`median3`] of an `f32` image (its values, none NaN): the same sorted
+/// columns and the same selection, scalar — every output is one of the
+/// nine inputs, as the reference's median is.
+pub fn median3_f32(img: GrayF32, border: Border, out: &mut [f32]) -> Result<()> {
+    let (w, h) = (img.width(), img.height());
+    check_len("output", out, w * h)?;
+    let zeros = vec![0.0f32; w];
+    let mut lo = vec![0.0f32; w + 2];
+    let mut mid = vec![0.0f32; w + 2];
+    let mut hi = vec![0.0f32; w + 2];
+    let (mn, mx) = (
+        |a: f32, b: f32| if b < a { b } else { a },
+        |a: f32, b: f32| if b > a { b } else { a },
+    );
+    let m3 = |a: f32, b: f32, c: f32| mx(mn(a, b), mn(mx(a, b), c));
+    for (r, o) in out.chunks_exact_mut(w).enumerate() {
+        let r = r as isize;
+        let at = |d: isize| {
+            fold(r + d, h, effective(border))
+                .and_then(|i| img.row(i))
+                .unwrap_or(&zeros)
+        };
+        let (a, b, c) = (at(-1), at(0), at(1));
+        for x in 0..w {
+            let (va, vb, vc) = (a[x], b[x], c[x]);
+            let (l1, h1) = (mn(va, vb), mx(va, vb));
+            let m1 = mx(l1, vc);
+            lo[x + 1] = mn(l1, vc);
+            mid[x + 1] = mn(m1, h1);
+            hi[x + 1] = mx(m1, h1);
+        }
+        pad_row(&mut lo, w, 1, border, 0.0);
+        pad_row(&mut mid, w, 1, border, 0.0);
+        pad_row(&mut hi, w, 1, border, 0.0);
+        for (x, o) in o.iter_mut().enumerate() {
+            let l = mx(mx(lo[x], lo[x + 1]), lo[x + 2]);
+            let m = m3(mid[x], mid[x + 1], mid[x + 2]);
+            let hh = mn(mn(hi[x], hi[x + 1]), hi[x + 2]);
+            *o = m3(l, m, hh);
+        }
     }
     Ok(())
 }

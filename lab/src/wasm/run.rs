@@ -13,6 +13,7 @@ use wasm_bindgen::JsCast;
 /// operator's reference path asks for it (`ops::Image::grid`).
 fn image(img: &LabImage) -> ops::Image<'_> {
     match (img.grid.get(), img.bytes()) {
+        (Some(grid), None) => ops::Image::with_bytes(grid, None).with_levels(&img.levels),
         (Some(grid), bytes) => ops::Image::with_bytes(grid, bytes),
         (None, Some(bytes)) => ops::Image::from_bytes(img.width, img.height, bytes)
             .unwrap_or_else(|_| ops::Image::from(img.grid())),

@@ -1,0 +1,371 @@
+//! Colour photos on the fast paths (issue 31): a colour photo's greys are
+//! the BT.601 sums `n = 299·R + 587·G + 114·B` over 1000 (over `1000·k²`
+//! reduced `k×`), 16-bit greys whole numbers — `ops::Levels`. The filters
+//! (every named kernel, the median, custom kernels) and the edges run the
+//! core's fast passes on `n` and divide by the scale once; each layer is
+//! tied here to the reference function on the `f64` greys (the grid the
+//! explained pixel reads) at every pixel:
+//!
+//! * the median: the reference's value rounded to `f32`, bit for bit;
+//! * integer kernels whose sums of `n` are exact in `f32`
+//!   (`Σ|k|·max n < 2²⁴`), `gx`, `gy` and the magnitude: within half an
+//!   `f32` step of the reference plus `10⁻¹²·Σ|k|·top/|d|` (its own `f64`
+//!   roundings of the divided greys; `top` the photo's largest grey);
+//! * other kernels: within `10⁻⁶ · Σ|k| · top / |d|` (the `f32` sums);
+//! * the direction: within 10⁻⁴ degrees.
+//!
+//! And a band of rows with its halo equals the whole photo's rows bit for
+//! bit (the band finds the same levels over the same scale).
+
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+use photogrammetry_lab::decode::luma;
+use photogrammetry_lab::ops::{self, Image, Layer, Op};
+use photogrammetry_playground::filter::{self, Kernel};
+use photogrammetry_playground::raster::Grid;
+
+/// SplitMix64 numbers below `n`.
+fn numbers(seed: u64, n: u64) -> impl FnMut() -> f64 {
+    let mut s = seed;
+    move || {
+        s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = s;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) % n) as f64
+    }
+}
+
+/// A colour photo's greys as the decoder makes them (`decode::luma`).
+fn colour(w: usize, h: usize, seed: u64) -> Grid {
+    let mut next = numbers(seed, 256);
+    let data = (0..w * h)
+        .map(|_| {
+            let (r, g, b) = (next(), next(), next());
+            luma(r, g, b)
+        })
+        .collect();
+    Grid::new("image", w, h, data).unwrap()
+}
+
+/// A colour photo reduced 2× as the decoder reduces it: each grey the
+/// block's four BT.601 sums over 4000 (`decode/grey.rs`).
+fn colour_reduced(w: usize, h: usize, seed: u64) -> Grid {
+    let mut next = numbers(seed, 256);
+    let data = (0..w * h)
+        .map(|_| {
+            let s: f64 = (0..4)
+                .map(|_| 299.0 * next() + 587.0 * next() + 114.0 * next())
+                .sum();
+            s / 4000.0
+        })
+        .collect();
+    Grid::new("image", w, h, data).unwrap()
+}
+
+fn images() -> Vec<(String, Grid, f64)> {
+    let mut out = Vec::new();
+    for (k, &(w, h)) in [(1, 1), (7, 5), (33, 29), (64, 48)].iter().enumerate() {
+        out.push((
+            format!("colour {w}×{h}"),
+            colour(w, h, 3 + k as u64),
+            1000.0,
+        ));
+    }
+    out.push((
+        "colour reduced 2× 40×31".into(),
+        colour_reduced(40, 31, 5),
+        4000.0,
+    ));
+    // a colour checkerboard: two colours, flat squares (ties, zero gradients)
+    let (a, b) = (luma(200.0, 30.0, 90.0), luma(10.0, 240.0, 33.0));
+    out.push((
+        "colour checkerboard 48×40".into(),
+        Grid::from_fn(48, 40, |c, r| if (c / 4 + r / 4) % 2 == 0 { a } else { b }),
+        1000.0,
+    ));
+    let mut next = numbers(11, 65536);
+    let data = (0..45 * 37).map(|_| next()).collect();
+    out.push((
+        "16-bit 45×37".into(),
+        Grid::new("image", 45, 37, data).unwrap(),
+        1.0,
+    ));
+    out
+}
+
+/// A custom kernel's rows and divisor.
+type Custom = (Vec<Vec<f64>>, f64);
+
+const BORDERS: [&str; 4] = ["replicate", "reflect", "zero", "crop"];
+
+fn check(
+    what: &str,
+    layer: &Layer,
+    want: impl Fn(usize, usize) -> Option<f64>,
+    ok: impl Fn(f32, f64) -> bool,
+) {
+    let mut n = 0;
+    for r in layer.r0..layer.r0 + layer.height {
+        for c in layer.c0..layer.c0 + layer.width {
+            let got = layer.data[(r - layer.r0) * layer.width + (c - layer.c0)];
+            let v =
+                want(c, r).unwrap_or_else(|| panic!("{what} at ({c}, {r}): no reference value"));
+            assert!(
+                ok(got, v),
+                "{what} at ({c}, {r}): layer {got}, reference {v}"
+            );
+            n += 1;
+        }
+    }
+    assert!(n > 0 || layer.data.is_empty(), "{what}");
+}
+
+/// Half an `f32` step of `want` plus `abs`.
+fn near(abs: f64) -> impl Fn(f32, f64) -> bool {
+    move |got, want| (f64::from(got) - want).abs() <= want.abs() * 2f64.powi(-24) * 1.000_001 + abs
+}
+
+#[test]
+fn colour_photos_take_the_fast_filters() {
+    let named = [
+        "mean",
+        "weighted-mean",
+        "gaussian-3",
+        "gaussian-5",
+        "laplacian-4",
+        "laplacian-8",
+        "laplacian-004",
+        "log",
+        "sharpen",
+        "high-pass",
+        "median",
+    ];
+    let customs: [(&str, Option<f64>); 3] = [
+        ("1 0 2\n-1 3 1\n0 1 1\n2 0 -1\n1 0 0", None),
+        ("0.1 0.25 -0.3;0.7 1.5 0.2;-0.05 0.4 0.33", Some(0.3)),
+        (&"1 ".repeat(15), None),
+    ];
+    for (name, img, scale) in images() {
+        let image = Image::from(&img);
+        assert!(image.gray().is_none(), "{name} is not 8-bit");
+        let levels = image.levels().expect("its greys are levels");
+        assert_eq!(levels.scale, scale, "{name}");
+        // the largest grey (tolerances are relative to it)
+        let top = f64::from(levels.max) / levels.scale;
+        for b in BORDERS {
+            let border = ops::border(b).unwrap();
+            let mut runs: Vec<(String, Option<Custom>)> =
+                named.iter().map(|k| (k.to_string(), None)).collect();
+            for (text, d) in customs {
+                runs.push(("custom".into(), Some(ops::custom_kernel(text, d).unwrap())));
+            }
+            for (k, custom) in &runs {
+                let c = custom.as_ref().map(|(r, d)| (r.as_slice(), *d));
+                let layer = ops::fast_filter(&image, k, border, c).unwrap();
+                let kern = ops::kernel(k, c).unwrap();
+                let reference = match &kern {
+                    Some(kk) => filter::correlate(&img, kk, border),
+                    None => filter::median(&img, 3, 3, border),
+                };
+                let what = format!("{k} {custom:?} {b} {name}");
+                let Ok(reference) = reference else {
+                    assert!(layer.is_none(), "{what}: the reference has no pixel");
+                    continue;
+                };
+                let layer = layer.expect("the fast path takes a colour photo");
+                let at = |c, r| reference.at_input(c, r);
+                let Some(kk) = kern else {
+                    check(&what, &layer, at, |g, v| {
+                        g.to_bits() == (v as f32).to_bits()
+                    });
+                    continue;
+                };
+                let rows = kk.numerators().rows();
+                let taps: f64 = rows.iter().flatten().map(|v| v.abs()).sum();
+                let range = taps * top / kk.divisor().abs();
+                let exact = rows.iter().flatten().all(|v| v.fract() == 0.0)
+                    && taps * f64::from(levels.max) < 16_777_216.0;
+                if exact {
+                    check(&what, &layer, at, near(1e-12 * range));
+                } else {
+                    check(&what, &layer, at, |g, v| {
+                        (f64::from(g) - v).abs() <= 1e-6 * range
+                    });
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn colour_photos_take_the_fast_edges() {
+    for (name, img, _) in images() {
+        let top = img.data().iter().fold(0.0f64, |a, &b| a.max(b));
+        for b in BORDERS {
+            let border = ops::border(b).unwrap();
+            for op in ["sobel", "prewitt"] {
+                let layers = ops::fast_edges(&Image::from(&img), op, border).unwrap();
+                let (kx, ky) = ops::edge_kernels(op).unwrap();
+                let Ok(g) = filter::gradient(&img, &kx, &ky, border) else {
+                    assert!(layers.is_none());
+                    continue;
+                };
+                let layers = layers.expect("the fast path takes a colour photo");
+                let reg = g.region;
+                let pick = |grid: &Grid| {
+                    let grid = grid.clone();
+                    move |c: usize, r: usize| {
+                        reg.contains(c, r)
+                            .then(|| grid.get(c - reg.c0, r - reg.r0))
+                            .flatten()
+                    }
+                };
+                let what = |l: &str| format!("{op} {l} {b} {name}");
+                let tol = near(1e-12 * 8.0 * top);
+                check(&what("gx"), &layers[0], pick(&g.gx), &tol);
+                check(&what("gy"), &layers[1], pick(&g.gy), &tol);
+                check(&what("magnitude"), &layers[2], pick(&g.magnitude), &tol);
+                let (gx, gy) = (pick(&g.gx), pick(&g.gy));
+                // (where the reference's gradient is zero but for its own f64
+                // roundings of the divided greys — a reflected border, a flat
+                // square — its direction is those roundings' and the fast
+                // path's exact sums give 0: no direction to compare)
+                let dir = |c, r| {
+                    gx(c, r).zip(gy(c, r)).map(|(x, y): (f64, f64)| {
+                        if x.hypot(y) <= 1e-9 * top {
+                            f64::NAN
+                        } else {
+                            y.atan2(x).to_degrees()
+                        }
+                    })
+                };
+                check(&what("direction"), &layers[3], dir, |g, v| {
+                    let d = (f64::from(g) - v).abs();
+                    v.is_nan() || d <= 1e-4 || (d - 360.0).abs() <= 1e-4
+                });
+            }
+        }
+    }
+}
+
+/// The explained pixel: `exact_at` reads the `f64` greys the layer was
+/// computed from (the levels over their scale, bit for bit), and the
+/// layer's value is that number within the stated tolerance.
+#[test]
+fn the_explained_pixel_reads_the_greys_the_layer_was_made_from() {
+    let img = colour(33, 29, 21);
+    let image = Image::from(&img);
+    let levels = image.levels().unwrap();
+    for (n, g) in levels.data.iter().zip(img.data()) {
+        assert_eq!((f64::from(*n) / levels.scale).to_bits(), g.to_bits());
+    }
+    let border = ops::border("reflect").unwrap();
+    let mean = ops::fast_filter(&image, "gaussian-3", border, None)
+        .unwrap()
+        .unwrap();
+    let op = Op::Filter {
+        kernel: "gaussian-3".into(),
+        border,
+        custom: None,
+    };
+    for (c, r) in [(0, 0), (16, 14), (32, 28)] {
+        let exact = ops::exact_at(&img, &img, &op, "gaussian-3", c, r)
+            .unwrap()
+            .unwrap();
+        assert!(
+            near(1e-12 * 255.0)(mean.data[r * 33 + c], exact),
+            "({c}, {r})"
+        );
+    }
+}
+
+/// A band of rows with its halo, run on its own (as a pool worker runs it),
+/// equals the whole colour photo's rows bit for bit.
+#[test]
+fn colour_bands_with_their_halo_equal_the_whole_photo() {
+    let img = colour(57, 41, 8);
+    let (w, h) = (img.width(), img.height());
+    for b in BORDERS {
+        let border = ops::border(b).unwrap();
+        let (rows, d) = ops::custom_kernel(&["1 2 3 2 1"; 7].join("\n"), None).unwrap();
+        let mut opsv: Vec<Op> = ["gaussian-5", "median", "log", "mean"]
+            .iter()
+            .map(|k| Op::Filter {
+                kernel: k.to_string(),
+                border,
+                custom: None,
+            })
+            .collect();
+        opsv.push(Op::Filter {
+            kernel: "custom".into(),
+            border,
+            custom: Some((rows, d)),
+        });
+        opsv.push(Op::Edges {
+            operator: "sobel".into(),
+            border,
+        });
+        for op in &opsv {
+            let halo = ops::halo(op).unwrap().unwrap();
+            let run = |g: &Grid| -> Vec<Layer> {
+                match op {
+                    Op::Filter {
+                        kernel,
+                        border,
+                        custom,
+                    } => {
+                        let c = custom.as_ref().map(|(r, d)| (r.as_slice(), *d));
+                        vec![ops::filter_image(g, kernel, *border, c).unwrap()]
+                    }
+                    Op::Edges { operator, border } => ops::edges(g, operator, *border).unwrap(),
+                    _ => unreachable!(),
+                }
+            };
+            let whole = run(&img);
+            for (start, end) in [(0, 9), (9, 20), (20, 21), (21, h - 7), (h - 7, h)] {
+                let (r0, r1) = (start.saturating_sub(halo), (end + halo).min(h));
+                let band = img.window(0, r0, w, r1 - r0).unwrap();
+                for (l, wl) in run(&band).iter().zip(&whole) {
+                    for r in start..end {
+                        for c in 0..w {
+                            let got = (r >= r0).then(|| l.at(c, r - r0)).flatten();
+                            assert_eq!(
+                                got.map(f64::to_bits),
+                                wl.at(c, r).map(f64::to_bits),
+                                "{op:?} {} band {start}…{end} at ({c}, {r})",
+                                l.name
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Greys that are no such numbers (e.g. `f32` samples) keep the reference
+/// paths: no levels, the reference's layers.
+#[test]
+fn other_greys_keep_the_reference_paths() {
+    let img = Grid::from_fn(9, 7, |c, r| 0.1 + (c * 7 + r) as f64 / 3.0);
+    assert!(ops::levels_of(img.data()).is_none());
+    let border = ops::border("replicate").unwrap();
+    assert!(ops::fast_filter(&Image::from(&img), "mean", border, None)
+        .unwrap()
+        .is_none());
+    let layer = ops::filter_image(&img, "mean", border, None).unwrap();
+    let reference = filter::correlate(
+        &img,
+        &Kernel::new("k", &vec![vec![1.0; 3]; 3], 9.0).unwrap(),
+        border,
+    )
+    .unwrap();
+    check(
+        "mean",
+        &layer,
+        |c, r| reference.at_input(c, r),
+        |g, v| g.to_bits() == (v as f32).to_bits(),
+    );
+}
