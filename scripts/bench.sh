@@ -4,6 +4,7 @@
 # npm run bench -- ops [--json FILE]: the image operators of ../shared/bench
 # (T1–T7) against OpenCV.js in the same Node process (scripts/bench-ops/).
 # npm run bench -- lab (or --lab): the image lab on a 12 MP photo (scripts/bench_lab.mjs).
+# npm run bench -- motion: the moving-window figures played frame by frame (scripts/bench-motion.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = ops ]; then
@@ -12,6 +13,10 @@ if [ "${1:-}" = ops ]; then
 fi
 bash scripts/setup.sh --test
 SKIP_SETUP=1 bash scripts/build.sh
+if [ "${1:-}" = motion ]; then
+  shift
+  exec node scripts/bench-motion.mjs "$@"
+fi
 if [ "${1:-}" = lab ]; then
   shift
   exec node scripts/bench_lab.mjs "$@"

@@ -59,6 +59,16 @@ export function renderSteps(solution) {
   return list;
 }
 
+/**
+ * Marks the step a moving figure's frame belongs to (class step-playing; k is
+ * the index in solution.steps, null for none): a class toggled, nothing built again.
+ */
+export function markStep(container, k) {
+  const now = Number.isInteger(k) ? container.querySelector(`:scope > .steps > #step-${k + 1}`) : null;
+  for (const item of container.querySelectorAll(":scope > .steps > .step-playing")) if (item !== now) item.classList.remove("step-playing");
+  now?.classList.add("step-playing");
+}
+
 /** The steps each list of updateSteps shows, by list. */
 const shownSteps = new WeakMap();
 

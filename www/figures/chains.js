@@ -229,10 +229,10 @@ function fillCells(ctx, L, pixels, color) {
  * left of the travel direction, else right of it); out-and-back steps are
  * kept apart by a sideways offset.
  */
-function drawSteps(ctx, L, m, labels) {
+function drawSteps(ctx, L, m, labels, upto = Infinity) {
   const n = m.path.length;
   if (n < 2 || !m.code) return;
-  const steps = m.code.length;
+  const steps = Math.min(m.code.length, upto + 1);
   const off = 0.14 * L.cell;
   const showDigits = L.cell >= LAYOUT.labelMinCell;
   const head = Math.max(4, Math.min(10, L.cell * 0.28));
@@ -402,8 +402,9 @@ function figureHeight(width, solution) {
   return L.gridBottom + LAYOUT.infoGap + 14 + lines.length * lh + LAYOUT.margin;
 }
 
-function drawFigure(ctx, width, height, solution) {
+function drawFigure(ctx, width, height, solution, state) {
   const m = model(solution);
+  const f = state?.frame ?? null; // motion: the moves up to the frame's, the follower where it has got to
   const L = layout(width, m);
   drawLattice(ctx, L);
   if (m.mode === "region") {
@@ -425,8 +426,23 @@ function drawFigure(ctx, width, height, solution) {
   const marks = endMarks(L, m);
   if (marks) labels.avoidDot(...marks.start, 1.5);
   if (marks?.end) labels.avoidDot(...marks.end, 1.5);
-  if (m.code) drawSteps(ctx, L, m, labels);
+  if (m.code) drawSteps(ctx, L, m, labels, f ? f.k : Infinity);
   else drawBrokenPath(ctx, L, m);
+  if (f) {
+    // the follower: a ring on the pixel the move reached
+    const [x, y] = centre(L, f.to);
+    const ring = Math.max(6, 0.42 * L.cell);
+    for (const [color, w] of [["#ffffff", 5], [COLORS.point, 3]]) {
+      ctx.save();
+      ctx.strokeStyle = color;
+      ctx.lineWidth = w;
+      ctx.beginPath();
+      ctx.arc(x, y, ring, 0, 2 * Math.PI);
+      ctx.stroke();
+      ctx.restore();
+    }
+    labels.avoidDot(x, y, ring, 2);
+  }
   // the digits belong to the path: placed before the shape's lines (which they may touch)
   labels.place();
   const axisLabels = drawShape(ctx, L, m.res, labels);
@@ -625,13 +641,37 @@ function tables(solution) {
   };
 }
 
+/**
+ * Motion (issue 34; index.js `frames`): the follower walking the boundary,
+ * one move (one code digit) a frame; pixels and codes are the solution's.
+ */
+function frames(solution) {
+  const m = model(solution);
+  if (!m.code || m.path.length < 2) return [];
+  const path = m.closed ? [...m.path, m.path[0]] : m.path;
+  const words = m.four ? WORDS4 : WORDS8;
+  const step = (solution.steps ?? []).findIndex((s) => s.values && Array.isArray(s.values.code));
+  return m.code.map((code, k) => {
+    const from = path[k];
+    const to = path[k + 1] ?? from;
+    return {
+      k,
+      from,
+      to,
+      code,
+      step: step >= 0 ? step : null,
+      caption: `Move ${k + 1}: from column ${from[0]}, row ${from[1]} to column ${to[0]}, row ${to[1]}, ${words[code - 1] ?? "?"}: code ${code}. The code so far: ${m.code.slice(0, k + 1).join(" ")}.`,
+    };
+  });
+}
+
 /** The smallest cell a pointer should have to hit (CSS px; WCAG 2.5.8). */
 const TARGET = 24;
 
 /** The canvas width that gives every cell of the grid TARGET px (the registry lets the panel scroll when it is narrower). */
 const minWidth = (solution) => 2 * LAYOUT.margin + LAYOUT.axis + extent(model(solution)).cols * TARGET;
 
-const base = { caption: CAPTION, height: figureHeight, minWidth, describe, draw: drawFigure, tables, interact: { pointer: onPointer, key: onKey } };
+const base = { caption: CAPTION, height: figureHeight, minWidth, describe, draw: drawFigure, tables, frames, motion: { noun: "move" }, interact: { pointer: onPointer, key: onKey } };
 
 export const figures = {
   "chain-code": {

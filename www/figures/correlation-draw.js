@@ -162,7 +162,7 @@ function oneD(solution) {
 }
 
 function selected1d(d, state) {
-  return clampIndex(state?.k, d.rho.length, d.best ?? 0);
+  return clampIndex(state?.frame ? state.frame.k : state?.k, d.rho.length, d.best ?? 0);
 }
 
 const ONE_D = { rowH: 34, barsH: 150, gap: 14, label: 16, axis: 30, headroom: 16, legend: LEGEND_ROOM };
@@ -239,13 +239,16 @@ function draw1d(ctx, width, height, solution, state) {
   const barW = Math.max(1, Math.min(L.cell * 0.7, 26));
   const labels = new Labels(ctx, width, height);
   const bars = [];
+  const f = state?.frame ?? null; // motion: the positions after the frame's not yet computed, the best so far held
+  const best = f ? f.best : d.best;
   d.rho.forEach((r, i) => {
     const cx = X(i + n / 2);
+    if (f && i > f.k) return;
     if (!isNum(r)) {
       labels.avoid(text(ctx, "×", cx, L.yZero, { color: COLORS.muted, align: "center", size: FONT_SIZE_SMALL }));
       return;
     }
-    ctx.fillStyle = i === d.best ? COLORS.highlight : r >= 0 ? "rgba(217, 119, 6, 0.45)" : "rgba(29, 95, 191, 0.55)";
+    ctx.fillStyle = i === best ? COLORS.highlight : r >= 0 ? "rgba(217, 119, 6, 0.45)" : "rgba(29, 95, 191, 0.55)";
     const top = Math.min(Y(r), L.yZero);
     const h = Math.abs(Y(r) - L.yZero);
     ctx.fillRect(cx - barW / 2, top, barW, h);
@@ -257,15 +260,15 @@ function draw1d(ctx, width, height, solution, state) {
     bars.push({ i, r, cx });
   });
   labels.avoidLine(X(0), Y(THRESHOLD), X(L.n), Y(THRESHOLD), 1);
-  if (d.best !== null) {
-    const cx = X(d.best + n / 2);
-    labels.add("best", cx, L.yZero + ONE_D.barsH / 2 + 2, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL, candidates: ["S"], gap: 0 });
+  if (best !== null) {
+    const cx = X(best + n / 2);
+    labels.add(f && f.k < d.rho.length - 1 ? "best so far" : "best", cx, L.yZero + ONE_D.barsH / 2 + 2, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL, candidates: ["S"], gap: 0 });
   }
   // each bar's ρ beside its end (a negative one also just above the axis);
   // the best and the selected bars first, the others only where they fit
   if (d.rho.length <= 40) {
     const size = L.cell >= 30 ? FONT_SIZE_SMALL : 10;
-    const order = [...bars].sort((a, b) => (b.i === d.best) - (a.i === d.best) || (b.i === k) - (a.i === k) || a.i - b.i);
+    const order = [...bars].sort((a, b) => (b.i === best) - (a.i === best) || (b.i === k) - (a.i === k) || a.i - b.i);
     for (const { i, r, cx } of order) {
       const end = Y(r);
       const pad = L.cell >= 30 ? LABEL_PAD : 1;
@@ -277,7 +280,7 @@ function draw1d(ctx, width, height, solution, state) {
         pad,
         gap: 3,
         candidates: spots,
-        optional: !(i === d.best || i === k),
+        optional: !(i === best || i === k),
       });
     }
   }
@@ -497,7 +500,8 @@ function surf(solution) {
 
 function selectedSurface(d, state) {
   const [br, bc] = d.best ?? [0, 0];
-  return [clampIndex(state?.r, d.h, br), clampIndex(state?.c, d.w, bc)];
+  const at = state?.frame ?? state; // a motion frame (correlation.js frames) is the selection
+  return [clampIndex(at?.r, d.h, br), clampIndex(at?.c, d.w, bc)];
 }
 
 function layoutSurface(width, d) {
@@ -543,9 +547,12 @@ function drawSurface(ctx, width, height, solution, state) {
   cells(ctx, d.search, L.xs, L.y1, L.cell, shade);
   greyLegend(ctx, MARGIN, L.y1 + Math.max(L.th, L.sh) * L.cell + 5, shade.scale, { maxWidth: width - 2 * MARGIN });
   if (d.h) outline(ctx, L.xs + c * L.cell, L.y1 + r * L.cell, L.tw * L.cell, L.th * L.cell, COLORS.point, 3);
-  if (d.best) {
+  const f = state?.frame ?? null; // motion: positions after the frame's not yet computed, the best so far held
+  const best = f ? f.best : d.best;
+  const final = Boolean(best && d.best && best[0] === d.best[0] && best[1] === d.best[1]);
+  if (best) {
     // the best window's centre pixel
-    const [br, bc] = d.best;
+    const [br, bc] = best;
     const cx = L.xs + (bc + L.tw / 2) * L.cell;
     const cy = L.y1 + (br + L.th / 2) * L.cell;
     outline(ctx, cx - L.cell / 2, cy - L.cell / 2, L.cell, L.cell, COLORS.highlight, 2, DASH);
@@ -555,20 +562,23 @@ function drawSurface(ctx, width, height, solution, state) {
   // ρ as the seed prints it: four decimals where they fit, two otherwise
   const decimals = L.heat >= HEAT_MAX - 4 ? 4 : 2;
   cells(ctx, d.rho, L.xh, L.y2, L.heat, rhoShade, (v) => v.toFixed(decimals).replace("-", "\u2212"));
-  if (d.best) {
-    const [br, bc] = d.best;
+  ctx.fillStyle = COLORS.background;
+  for (let i = f ? f.index + 1 : d.h * d.w; i < d.h * d.w; i += 1) ctx.fillRect(L.xh + (i % d.w) * L.heat + 1, L.y2 + Math.floor(i / d.w) * L.heat + 1, L.heat - 2, L.heat - 2);
+  if (best && final) {
+    const [br, bc] = best;
     // the 3×3 neighbourhood Example 9 fits, clipped to the surface
     const r0 = Math.max(0, br - 1);
     const c0 = Math.max(0, bc - 1);
     const r1 = Math.min(d.h, br + 2);
     const c1 = Math.min(d.w, bc + 2);
     outline(ctx, L.xh + c0 * L.heat, L.y2 + r0 * L.heat, (c1 - c0) * L.heat, (r1 - r0) * L.heat, COLORS.ink, 1.5, DASH);
-    outline(ctx, L.xh + bc * L.heat + 1, L.y2 + br * L.heat + 1, L.heat - 2, L.heat - 2, COLORS.highlight, 3);
   }
+  if (best) outline(ctx, L.xh + best[1] * L.heat + 1, L.y2 + best[0] * L.heat + 1, L.heat - 2, L.heat - 2, COLORS.highlight, 3);
   if (d.h) outline(ctx, L.xh + c * L.heat - 1, L.y2 + r * L.heat - 1, L.heat + 2, L.heat + 2, COLORS.point, 2.5);
-  if (d.best) {
-    const best = `Best: position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC, VALUE_DIGITS, NONE)}, r = ${fmt(d.bestR, VALUE_DIGITS, NONE)}`;
-    text(ctx, best, MARGIN, L.y3 + 6, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL });
+  if (best && !final) text(ctx, `Best so far: position ${best[0] * d.w + best[1] + 1}, ρ = ${fmt(d.rho[best[0]]?.[best[1]], RHO_DIGITS, NONE)}`, MARGIN, L.y3 + 6, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL });
+  if (final) {
+    const words = `Best: position ${d.best[0] * d.w + d.best[1] + 1}, centre pixel c = ${fmt(d.bestC, VALUE_DIGITS, NONE)}, r = ${fmt(d.bestR, VALUE_DIGITS, NONE)}`;
+    text(ctx, words, MARGIN, L.y3 + 6, { color: COLORS.highlight, weight: "bold", size: FONT_SIZE_SMALL });
   }
 }
 
@@ -872,7 +882,7 @@ const subpixel2d = {
 };
 
 // for the Data views (correlation.js)
-export { ncc1d, ncc2d, nccSurface, subpixel1d, subpixel2d, oneD, twoD, surf, parabolaData, quadricData, selected1d, selectedSurface, linesSurface, isNum, stepWith, RHO_DIGITS, VALUE_DIGITS, NONE };
+export { ncc1d, ncc2d, nccSurface, subpixel1d, subpixel2d, oneD, twoD, surf, parabolaData, quadricData, selected1d, selectedSurface, lines1d, linesSurface, isNum, stepWith, RHO_DIGITS, VALUE_DIGITS, NONE };
 
 export const figures = {
   "ncc-1d": ncc1d,

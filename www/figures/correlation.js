@@ -3,7 +3,7 @@
 // is drawn from, formatted as the figure writes it. The registry loads the
 // topic from here (index.js MODULES).
 
-import { figures as drawn, ncc1d, ncc2d, nccSurface, subpixel1d, subpixel2d, deviations2d, isNum, lines2d, oneD, parabolaData, quadricData, selected1d, selectedSurface, stepWith, surf, twoD, NONE, RHO_DIGITS, VALUE_DIGITS } from "./correlation-draw.js";
+import { figures as drawn, ncc1d, ncc2d, nccSurface, subpixel1d, subpixel2d, deviations2d, isNum, lines1d, lines2d, linesSurface, oneD, parabolaData, quadricData, selected1d, selectedSurface, stepWith, surf, twoD, NONE, RHO_DIGITS, VALUE_DIGITS } from "./correlation-draw.js";
 import { fmt } from "./draw.js";
 import { columnsFrom, matrixTable, seriesTable } from "./data-view.js";
 
@@ -133,9 +133,71 @@ function quadricTables(solution) {
   };
 }
 
+// ---------------------------------------------------------------------------
+// Motion (issue 34; index.js `frames`): the template moving position by position,
+// ρ filling in, the best so far held. Every number is the solution's.
+
+/** The index in solution.steps of the first step whose values satisfy `test`, or null. */
+function stepIndex(solution, test) {
+  const i = (solution.steps ?? []).findIndex((s) => s.values && test(s.values));
+  return i >= 0 ? i : null;
+}
+
+/** For each position in order, the best (highest finite ρ) among it and those before it (null before any). */
+function bestSoFar(rhos) {
+  let best = null;
+  return rhos.map((r, i) => {
+    if (isNum(r) && (best === null || r > rhos[best])) best = i;
+    return best;
+  });
+}
+
+function ncc1dFrames(solution) {
+  const d = oneD(solution);
+  const held = bestSoFar(d.rho);
+  const all = stepIndex(solution, (v) => Array.isArray(v.rho));
+  return d.rho.map((_, k) => ({
+    k,
+    best: held[k],
+    // the position's own step ("Sub-window k", shown for short arrays), else the step with every ρ
+    step: stepIndex(solution, (v) => v.k === k + 1 && Object.hasOwn(v, "rho")) ?? all,
+    get caption() {
+      const [where, , , value] = lines1d(d, k);
+      return `${where.text}. ${value.text}`;
+    },
+  }));
+}
+
+function surfaceFrames(solution) {
+  const d = surf(solution);
+  const order = d.rho.flatMap((row) => row);
+  const held = bestSoFar(order);
+  const all = stepIndex(solution, (v) => Array.isArray(v.rho));
+  const inFull = stepIndex(solution, (v) => Object.hasOwn(v, "window") && Object.hasOwn(v, "position"));
+  return order.map((_, index) => {
+    const r = Math.floor(index / d.w);
+    const c = index % d.w;
+    const isBest = d.best && d.best[0] === r && d.best[1] === c;
+    return {
+      index,
+      r,
+      c,
+      best: held[index] === null ? null : [Math.floor(held[index] / d.w), held[index] % d.w],
+      // the best window's own step writes its numbers term by term
+      step: isBest && inFull !== null ? inFull : all,
+      get caption() {
+        const [where, means, , value] = linesSurface(d, r, c);
+        const v = d.rho[r]?.[c];
+        const formula = isNum(v) ? `ρ = Σ(T−T̄)(B−B̄) / √(Σ(T−T̄)² Σ(B−B̄)²) = ${val(d.sumDadb[r]?.[c])} / √(${val(d.sumDa2)} × ${val(d.sumDb2[r]?.[c])}) = ${rho(v)}` : value.text;
+        return `${where.text}. ${means.text}. ${formula}`;
+      },
+    };
+  });
+}
+
 /** What each drawn spec gains here, by the spec (the ids are written once, in correlation.js). */
 const ADDED = new Map([
-  [ncc1d, { tables: ncc1dTables }],
+  [ncc1d, { tables: ncc1dTables, frames: ncc1dFrames, motion: { noun: "position" }, frameAt: (solution, state) => selected1d(oneD(solution), state) }],
   [
     ncc2d,
     {
@@ -152,7 +214,19 @@ const ADDED = new Map([
       },
     },
   ],
-  [nccSurface, { tables: surfaceTables }],
+  [
+    nccSurface,
+    {
+      tables: surfaceTables,
+      frames: surfaceFrames,
+      motion: { noun: "position" },
+      frameAt(solution, state) {
+        const d = surf(solution);
+        const [r, c] = selectedSurface(d, state);
+        return r * d.w + c;
+      },
+    },
+  ],
   [subpixel1d, { tables: parabolaTables }],
   [subpixel2d, { tables: quadricTables }],
 ]);

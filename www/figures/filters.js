@@ -82,6 +82,8 @@ function rowTerms(nums, vals) {
 }
 
 function sumLines(d) {
+  // a motion frame at another pixel than the selected one: its output values (the solution writes out the selected pixel's sum only)
+  if (d.frame && !d.frame.selected) return [{ text: d.frame.values, weight: "bold", color: COLORS.highlight }, { text: "The sum is written out for the selected pixel (click one); the solution's steps give it.", color: COLORS.muted }];
   const nb = d.neighbourhood;
   const at = `row ${d.sel.r}, column ${d.sel.c}`;
   if (!Array.isArray(nb)) {
@@ -237,6 +239,9 @@ function drawFigure(ctx, width, d) {
       if (shade.scale) greys.push(shade.scale);
       const g = drawGrid(ctx, p.mat, p.x, p.y, L.cell, { title: fitTitle(p, width), first: d.first, shade });
       geo[`output${i}`] = g;
+      // motion: the outputs after the frame's pixel are not computed yet
+      ctx.fillStyle = COLORS.background;
+      for (let k = d.frame ? d.frame.index + 1 : g.rows * g.cols; k < g.rows * g.cols; k++) ctx.fillRect(g.x0 + (k % g.cols) * g.cell + 1, g.y0 + Math.floor(k / g.cols) * g.cell + 1, g.cell - 2, g.cell - 2);
       const oc = sel.c - (d.first.c - 1);
       const or = sel.r - (d.first.r - 1);
       if (oc >= 0 && or >= 0 && oc < g.cols && or < g.rows) outline(ctx, g, oc, or, 1, 1);
@@ -340,6 +345,50 @@ const edgeSpec = layoutSpec({
   },
   interact: selectionInteract(edgeData),
 });
+
+// ---------------------------------------------------------------------------
+// Motion (issue 34; index.js `frames`): the kernel moving over the window, one
+// output pixel a frame, each output value appearing; the values are the
+// solution's output grids (the selected pixel's sum is written out as before).
+
+function moving(spec, dataOf, noun) {
+  const index = (solution) => (solution.steps ?? []).findIndex((s) => s.values && Object.hasOwn(s.values, "neighbourhood"));
+  const last = (solution) => (solution.steps ?? []).findLastIndex((s) => s.values && Object.hasOwn(s.values, "output_first_c"));
+  spec.frames = (solution) => {
+    const d = dataOf(solution);
+    if (!d) return [];
+    const out = d.outputs[0].m;
+    const cols = out[0].length;
+    const kh = d.kernels[0]?.m.length ?? 3;
+    const kw = d.kernels[0]?.m[0].length ?? 3;
+    return out.flatMap((row, r) =>
+      row.map((_, c) => {
+        const at = { c: d.first.c + c, r: d.first.r + r };
+        const selected = at.c === d.sel.c && at.r === d.sel.r;
+        const values = d.outputs.map((o) => `${o.short ?? o.name.replace(/^Output /, "")} = ${fmt(o.m[r]?.[c], 6, "no value")}`).join(", ");
+        const k = r * cols + c;
+        return {
+          index: k,
+          ...at,
+          selected,
+          values: `At row ${at.r}, column ${at.c}: ${values}`,
+          step: selected && index(solution) >= 0 ? index(solution) : last(solution) >= 0 ? last(solution) : null,
+          caption: `${noun[0].toUpperCase()}${noun.slice(1)} ${k + 1}: the kernel over rows ${at.r - Math.floor(kh / 2)}–${at.r - Math.floor(kh / 2) + kh - 1}, columns ${at.c - Math.floor(kw / 2)}–${at.c - Math.floor(kw / 2) + kw - 1} of the window; at row ${at.r}, column ${at.c}: ${values}.`,
+        };
+      }),
+    );
+  };
+  spec.motion = { noun };
+  const draw = spec.draw;
+  spec.draw = (ctx, width, height, solution, state) => {
+    const f = state?.frame;
+    if (!f) return draw(ctx, width, height, solution);
+    const d = dataOf(solution);
+    if (d) drawFigure(ctx, width, { ...d, sel: { c: f.c, r: f.r }, frame: f });
+  };
+}
+moving(filterSpec, filterData, "output pixel");
+moving(edgeSpec, edgeData, "output pixel");
 
 // Preset buttons: the seeds' windows with their kernels (the help texts list them too).
 const grid = (rows) => rows.map((r) => r.join(" ")).join("\n");

@@ -90,6 +90,18 @@
 // column 2, 87, inside the window"), and Enter or Space on it does what a
 // click on the cell's centre does (the same pointer/select/pick path).
 //
+// Optional: motion (issue 34; docs/figures.md, "Motion"), for a figure of a
+// moving window: `frames(solution)` returns the frames, each a plain object
+// read from the solution (no number computed for it) with `caption` (this
+// frame's numbers, in words) and `step` (the index of its step in
+// solution.steps, highlighted in the step list, or null); `motion: { noun }`
+// names a frame ("position", "move", "iteration"). The panel gets Play, Pause,
+// Step back, Step forward, Show all and a slider (www/motion/motion.js), and
+// `draw` receives `state.frame` (the frame shown, or null: the figure as it
+// is without motion) and `state.frameIndex`. `frameAt(solution, state)`
+// (optional) gives the frame of a selection the figure's own click or key
+// made, so the motion follows it. A spec without `frames` is untouched.
+//
 // The page calls mountFigures(host, id, { onInputs })
 // once per example view and .update(solution) after each successful solve;
 // device-pixel-ratio scaling, resizing and errors are handled here.
@@ -175,7 +187,14 @@ export function hasFigure(id) {
   return specsFor(id).length > 0;
 }
 
-function paint(panel, solution, shared = { selected: null }) {
+/** The frame the panel's motion shows, or null (none, or the figure without motion). */
+function frameOf(panel) {
+  const i = panel.motion?.index ?? null;
+  return i === null ? null : panel.frames?.[i] ?? null;
+}
+
+/** `light`: a frame while playing: only the canvas changes (its words follow when it stops). */
+function paint(panel, solution, shared = { selected: null }, light = false) {
   const { spec, canvas, figure } = panel;
   // the width the resize observer last saw (read while the layout was clean); reading
   // clientWidth here, after the steps were rewritten, would lay the whole page out again
@@ -208,10 +227,15 @@ function paint(panel, solution, shared = { selected: null }) {
   testData(canvas, "theme", usePalette(printing ? "light" : pageTheme()));
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
-  const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null };
+  const frame = frameOf(panel);
+  const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null, frame, frameIndex: frame ? panel.motion.index : null };
   clearLabelBoxes(canvas);
   try {
     spec.draw(ctx, width, height, solution, state);
+    if (light) {
+      panel.drawn = { width: room, dpr };
+      return;
+    }
     // the legend of every grey scale drawn, in words
     const scales = (canvas.greyScales ?? []).map((g) => `${g.text}.`);
     canvas.setAttribute("aria-label", [spec.describe(solution, state), ...scales].join(" "));
@@ -403,10 +427,13 @@ function syncSlider(panel, solution) {
  * input changes from interactive figures.
  * @returns {{ update(solution): void, redraw(): void, destroy(): void } | null}
  */
-export function mountFigures(host, id, { onInputs = null } = {}) {
+export function mountFigures(host, id, { onInputs = null, onStep = null, onPosition = null } = {}) {
   const specs = specsFor(id);
   if (!specs.length) return null;
   let solution = null;
+  let destroyed = false;
+  /** A start the link asked for (play=), kept until the motion and a solution are there. */
+  let playRequest = null;
   const shared = { selected: null, pinned: false };
   const edit = (texts) => {
     if (onInputs && texts && typeof texts === "object" && Object.keys(texts).length) onInputs(texts);
@@ -465,6 +492,11 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       input.type = "range";
       input.step = "1";
       input.addEventListener("input", () => {
+        // a moving figure's own slider is its scrub (frame k is slider value k + 1)
+        if (panel.motion?.index !== null && panel.motion?.index !== undefined) {
+          panel.motion.goTo(Number(input.value) - Number(input.min));
+          return;
+        }
         panel.sliderValue = Number(input.value);
         name.textContent = panel.sliderText(panel.sliderValue);
         paint(panel, panel.solution, shared);
@@ -472,6 +504,33 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       label.append(name, input);
       canvas.after(label);
       panel.slider = { label, name, input };
+    }
+    if (typeof spec.frames === "function") {
+      panel.frames = [];
+      figure.dataset.moves = ""; // a figure that moves (its controls come with their module)
+      // the controls' module is loaded with the first figure that moves (www/motion/motion.js)
+      panel.motionReady = import("../motion/motion.js").then(({ createMotion }) => {
+        if (destroyed) return;
+        panel.motion = createMotion({
+          noun: spec.motion?.noun ?? "position",
+          // a figure with its own slider (the LSM iterations): that slider scrubs, and follows the frame
+          scrub: !panel.slider,
+          all: spec.motion?.all !== false,
+          show: (i, how) => {
+            if (panel.slider && i !== null && panel.frames[i]?.slider !== undefined) {
+              panel.sliderValue = panel.frames[i].slider;
+              panel.slider.input.value = String(panel.sliderValue);
+              panel.slider.name.textContent = panel.sliderText?.(panel.sliderValue) ?? "";
+            }
+            paint(panel, solution, shared, !how.full);
+          },
+          onStep: (k) => onStep?.(k),
+          onPosition: (i) => onPosition?.(i),
+        });
+        canvas.after(panel.motion.element);
+        if (solution) panel.motion.setFrames(panel.frames);
+        openRequested();
+      });
     }
     if (typeof spec.status === "function") {
       panel.status = document.createElement("p");
@@ -485,14 +544,35 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
   const interact = (panel, next) => {
     if (next === undefined) return false;
     panel.state = next;
+    // a selection made on a moving figure: the motion goes to its frame (or shows every position)
+    if (panel.motion && panel.motion.index !== null) {
+      let at = null;
+      try {
+        at = typeof panel.spec.frameAt === "function" ? panel.spec.frameAt(solution, next) : null;
+      } catch {
+        at = null;
+      }
+      panel.motion.goTo(Number.isInteger(at) ? at : null);
+      return true;
+    }
     paint(panel, solution, shared);
     return true;
   };
+  const moving = () => panels.find((p) => p.motion);
+  // a key or click moves on from the frame shown (its position is the selection then)
+  const withFrame = (panel) => (frameOf(panel) ? { ...(panel.state ?? {}), frame: frameOf(panel) } : panel.state);
+  function openRequested() {
+    const p = moving();
+    if (!playRequest || !p || !solution) return;
+    const request = playRequest;
+    playRequest = null;
+    p.motion.open(request);
+  }
   for (const panel of panels) {
     const { spec, canvas } = panel;
     if (typeof spec.select === "function") {
       const selectAt = (x, y, width, height) => {
-        if (solution) interact(panel, spec.select(solution, { x, y, width, height }, panel.state));
+        if (solution) interact(panel, spec.select(solution, { x, y, width, height }, withFrame(panel)));
       };
       canvas.addEventListener("click", (e) => {
         const box = canvas.getBoundingClientRect();
@@ -504,7 +584,7 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
       canvas.tabIndex = 0;
       canvas.addEventListener("keydown", (e) => {
         if (!solution || e.altKey || e.ctrlKey || e.metaKey) return;
-        if (interact(panel, spec.key(solution, e.key, panel.state))) e.preventDefault();
+        if (interact(panel, spec.key(solution, e.key, withFrame(panel)))) e.preventDefault();
       });
     }
   }
@@ -613,6 +693,16 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
     update(next) {
       solution = next;
       panels.forEach((p) => syncSlider(p, next));
+      for (const p of panels) {
+        if (typeof p.spec.frames !== "function") continue;
+        try {
+          p.frames = p.spec.frames(next) ?? [];
+        } catch (e) {
+          console.error("figure frames failed", e);
+          p.frames = [];
+        }
+        p.motion?.setFrames(p.frames);
+      }
       const counts = panels
         .filter((p) => typeof p.spec.count === "function")
         .map((p) => {
@@ -627,9 +717,21 @@ export function mountFigures(host, id, { onInputs = null } = {}) {
         shared.pinned = false;
       }
       redraw();
+      openRequested();
     },
     redraw,
+    /** Whether a figure of the example moves (has frames). */
+    hasMotion: panels.some((p) => typeof p.spec.frames === "function"),
+    /** Opens the motion as the link asks (play=): { frame } (1-based, paused) or { auto: true }. */
+    play(request) {
+      playRequest = request ?? null;
+      openRequested();
+    },
+    /** The motion controllers (for `npm run bench -- motion`). */
+    motions: () => panels.map((p) => p.motion).filter(Boolean),
     destroy() {
+      destroyed = true;
+      panels.forEach((p) => p.motion?.destroy());
       observer.disconnect();
       themeObserver.disconnect();
       scheme.removeEventListener("change", redraw);

@@ -271,7 +271,8 @@ function moravecPixels(solution, state) {
   const total = all.length;
   if (total <= MORAVEC.maxShown) return { all, shown: all, win, total, selected: null };
   const largest = all.reduce((a, b) => (b.sum > a.sum ? b : a));
-  const selected = all.find((p) => p.c === state?.c && p.r === state?.r) ?? largest;
+  const at = state?.frame ?? state; // a motion frame is the selection
+  const selected = all.find((p) => p.c === at?.c && p.r === at?.r) ?? largest;
   return { all, shown: [selected], win, total, selected };
 }
 
@@ -377,6 +378,26 @@ const moravecSpec = {
     const next = { c: m.selected.c + step[0], r: m.selected.r + step[1] };
     return m.all.some((p) => p.c === next.c && p.r === next.r) ? next : { c: m.selected.c, r: m.selected.r };
   },
+  // motion (issue 34; index.js `frames`): pixel by pixel, its four differences and their sum (the solution's `differences`)
+  frames(solution) {
+    const { all } = moravecPixels(solution, null);
+    const steps = solution.steps ?? [];
+    const table = steps.findIndex((s) => s.values && Object.hasOwn(s.values, "sums"));
+    const mean = steps.findIndex((s) => s.values && Object.hasOwn(s.values, "mean"));
+    return all.map((p, k) => ({
+      k,
+      c: p.c,
+      r: p.r,
+      step: k === all.length - 1 && mean >= 0 ? mean : table >= 0 ? table : null,
+      caption: `Pixel ${k + 1}: P(c${p.c}, r${p.r}) = ${fmt(p.g)}; the differences across it ${DIRECTIONS.map((d, i) => `${d.glyph} ${fmt(p.diffs[i])}`).join(", ")}; the sum of their squares ${fmt(p.sum)}.${k === all.length - 1 ? ` The mean of the ${all.length} sums: ${fmt(solution.result?.mean)}.` : ""}`,
+    }));
+  },
+  motion: { noun: "pixel" },
+  frameAt(solution, state) {
+    const { all } = moravecPixels(solution, null);
+    const i = all.findIndex((p) => p.c === state?.c && p.r === state?.r);
+    return i >= 0 ? i : null;
+  },
   draw(ctx, width, height, solution, state) {
     const m = moravecPixels(solution, state);
     const { shown, win, total } = m;
@@ -397,7 +418,9 @@ const moravecSpec = {
       top += L.keyH;
     }
     const lh = FONT_SIZE_SMALL * LINE_HEIGHT;
+    const f = state?.frame ?? null; // motion (a small window): the pixels up to the frame's
     shown.forEach((p, i) => {
+      if (f && !m.selected && i > f.k) return;
       const px = MORAVEC.panelGap + (i % L.perRow) * (L.panelW + MORAVEC.panelGap);
       const py = top + MORAVEC.panelGap + Math.floor(i / L.perRow) * (L.panelH + MORAVEC.panelGap);
       const gx0 = px + (L.panelW - 3 * L.cell) / 2;
@@ -450,7 +473,7 @@ const moravecSpec = {
     });
     labels.avoid(greyLegend(ctx, MORAVEC.panelGap, height - 22 - GRID.greyLegend, scale, { maxWidth: width - 2 * MORAVEC.panelGap }));
     const note = m.selected ? ` (${total} pixels)` : "";
-    labels.add(`mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { weight: "bold", candidates: ["E"], gap: 0 });
+    if (!f || f.k === total - 1) labels.add(`mean of the sums = ${fmt(solution.result?.mean)}${note}`, MORAVEC.panelGap, height - 12, { weight: "bold", candidates: ["E"], gap: 0 });
     labels.draw();
   },
 };

@@ -46,6 +46,28 @@ function chosen(solution, state) {
   return Math.min(Math.max(k, 1), Math.max(n, 1)) - 1;
 }
 
+/**
+ * Motion (issue 34; index.js `frames`): iteration by iteration, each frame the
+ * parameters at the iteration's start, their increments and σ₀, as the
+ * "Every iteration" step carries them; the figure's own slider follows.
+ */
+function frames(solution) {
+  const v = table(solution);
+  const n = iterations(solution);
+  const step = (solution.steps ?? []).findIndex((s) => s.title === "Every iteration");
+  const names = Object.keys(v).filter((key) => Array.isArray(v[key]) && Array.isArray(v[`d${key}`]));
+  return Array.from({ length: n }, (_, k) => ({
+    k,
+    slider: k + 1,
+    step: step >= 0 ? step : null,
+    get caption() {
+      const params = names.map((key) => `${key} = ${f(v[key][k])} (d${key} = ${f(v[`d${key}`][k])})`).join(", ");
+      return `Iteration ${k + 1} of ${n}: at its start ${params}; σ₀ = ${f(v.sigma0[k])}.`;
+    },
+  }));
+}
+const MOTION = Object.freeze({ frames, motion: Object.freeze({ noun: "iteration", all: false }) });
+
 function statusWords(solution) {
   const s = solution.result?.status;
   return s === "converged" ? "converged" : s === "not-converged" ? "not converged" : s === "left-window" ? "left the search window" : s === "degenerate" ? "degenerate" : String(s ?? "");
@@ -385,6 +407,7 @@ const GRIDS = Object.freeze({
   draw: gridsDraw,
   tables: gridsTables,
   slider: sliderSpec,
+  ...MOTION,
 });
 
 export const figures = {
@@ -396,6 +419,7 @@ export const figures = {
       draw: profileDraw,
       tables: profileTables,
       slider: sliderSpec,
+      ...MOTION,
     },
     PARAMS,
   ],
