@@ -18,6 +18,7 @@ import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
 import { mountShell, mountSkipLink } from "./shell.js";
 import { SITE_TITLE, siteTitle } from "./site.js";
+import { SWEEPABLE } from "./sweep/link.js";
 
 /** Longest URL key quoted back in the "ignored" notice. */
 const MAX_QUOTED_KEY = 40;
@@ -96,6 +97,7 @@ function showMessage(title, message) {
 
 function destroyView() {
   if (view?.figure) view.figure.destroy();
+  if (view?.sweep) view.sweep.destroy();
   if (view?.stopFitting) view.stopFitting();
   if (view?.stopKeeping) view.stopKeeping();
   view = null;
@@ -142,6 +144,13 @@ function buildView(entry) {
   apiBox.addEventListener("change", () => showApiNames(apiBox.checked));
   const apiToggle = el("label", { class: "api-toggle", for: `api-names-${id}`, title: "The names course authors use in links and in the JS API" }, apiBox, "Show API names");
   const actions = el("div", { class: "actions" }, resetButton, copyButton, apiToggle, copyStatus);
+  // a sweep of a number input (www/sweep/: loaded when it opens; docs/embedding.md, sweep=)
+  const sweepHost = el("div", { class: "sweep-host", hidden: true });
+  const sweepButton = (entry.inputs ?? []).some((f) => SWEEPABLE.includes(f.kind)) ? el("button", { type: "button", class: "button keep-enabled sweep-open" }, "Sweep an input…") : null;
+  if (sweepButton) {
+    sweepButton.addEventListener("click", () => openSweep(v, { focus: true }));
+    actions.append(sweepButton);
+  }
   // practice mode (www/practice/): fresh numbers for this example
   if (entry.practice !== false) actions.append(el("a", { class: "button practice-link", href: `#/${encodeURIComponent(id)}?practice` }, "Practice"));
   // the same operator on a whole photo, in the image lab
@@ -177,7 +186,7 @@ function buildView(entry) {
     });
     children.push(el("div", { class: "crumbs" }, el("a", { href: "#/" }, "← Catalog"), drawer));
   }
-  children.push(el("header", { class: "example-head" }, heading, meta, summary), answerLine, urlNotice, errorBox, staleBanner, solutionArea);
+  children.push(el("header", { class: "example-head" }, heading, meta, summary), answerLine, urlNotice, errorBox, staleBanner, solutionArea, sweepHost);
   const article = el("article", { class: "example", "data-id": id }, children);
   root.replaceChildren(article);
   endPrerendered();
@@ -191,7 +200,7 @@ function buildView(entry) {
     v.figure = mountFigures(figureHost, id, { onInputs });
   }
 
-  v.parts = { heading, answerLine, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea };
+  v.parts = { heading, answerLine, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea, sweepHost, sweepButton };
   v.stopFitting = keepFitted(stepsList);
   // the answer line keeps its tallest height: the panels below stay put as it changes
   v.stopKeeping = keepTallest(answerLine);
@@ -404,6 +413,57 @@ function writeUrl() {
   if (view.openLink) view.openLink.setAttribute("href", `index.html${hash}`);
 }
 
+/** Opens the sweep tool of view `v` (its module and uPlot load now): `spec`, `plot` from the link. */
+async function openSweep(v, options = {}) {
+  let mountSweep;
+  try {
+    ({ mountSweep } = await import("./sweep/sweep.js"));
+  } catch (e) {
+    showGeneralError(`The sweep could not be loaded: ${messageOf(e)}`);
+    return;
+  }
+  if (view !== v) return;
+  v.sweep ??= mountSweep(v.parts.sweepHost, {
+    core,
+    view: v,
+    setInput: (key, text) => {
+      if (view !== v) return;
+      v.form.set({ [key]: text });
+      inputChanged();
+    },
+    setLink: (sweep, plot) => {
+      embedPage.setSweep(sweep, plot);
+      if (view === v) writeUrl();
+    },
+    posted: () => embedPage.sweepChanged(),
+    hashFor: (key, text) => buildHash(v.id, [...v.form.entries().map(([k, t]) => [k, k === key ? text : t]), ...embedPage.optionEntries()]),
+    changeStart: () => latestChange?.start,
+    close: () => {
+      closeSweep(v);
+      v.parts.sweepButton?.focus();
+    },
+  });
+  v.sweep.open(options);
+}
+
+function closeSweep(v) {
+  v.sweep?.destroy();
+  v.sweep = null;
+  embedPage.setSweep(null);
+  if (view === v) writeUrl();
+}
+
+/**
+ * An open sweep follows the inputs: before the page solves when the solution
+ * is shown at once (the host's change event then carries the new series),
+ * after it on an input change (the figure first; the event waits for the steps).
+ */
+function recompute({ defer = false } = {}) {
+  if (!defer) view?.sweep?.changed();
+  recomputeSolution({ defer });
+  if (defer) view?.sweep?.changed();
+}
+
 /**
  * Reads the form, parses, solves, renders; the URL follows. With `defer`
  * (an input change) a solution's steps, result and notes wait for
@@ -411,7 +471,7 @@ function writeUrl() {
  * solved first shows the pending solution whole, so what the stale banner
  * calls "the last valid inputs" is what the steps show.
  */
-function recompute({ defer = false } = {}) {
+function recomputeSolution({ defer = false } = {}) {
   if (!view) return;
   const id = view.id;
   const texts = view.form.texts();
@@ -621,6 +681,10 @@ async function route({ focus = false } = {}) {
     notice.textContent = "";
   }
   recompute();
+  // sweep= / plot= in the address: the sweep opens with them
+  const { sweep, plot } = embedPage.currentOptions();
+  if (sweep || plot) openSweep(v, { spec: sweep, plot });
+  else if (v.sweep) closeSweep(v);
   embedPage.afterRoute();
   if (focus) v.parts.heading.focus({ preventScroll: false });
 }

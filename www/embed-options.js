@@ -10,15 +10,19 @@
 //   step=3                       the step to start at: marked, and open when collapsed
 //   host=https://course.example  the embedding page's origin: messages go only there
 //   id=ex1                       echoed in every message to the host page
+//   sweep=key:from:to:steps      a sweep of one number input (issue 34; www/sweep/link.js)
+//   plot=gsd_cm,pixel_size_mm    the results the sweep plots
+
+import { parsePlot, parseSweep } from "./sweep/link.js";
 
 export const PARTS = Object.freeze(["inputs", "steps", "figure", "result", "notes", "tools"]);
-export const OPTION_KEYS = Object.freeze(["theme", "show", "hide", "steps", "lock", "step", "host", "id"]);
+export const OPTION_KEYS = Object.freeze(["theme", "show", "hide", "steps", "lock", "step", "host", "id", "sweep", "plot"]);
 const THEMES = ["auto", "light", "dark"];
 const MAX_QUOTED = 40;
 const MAX_STEP = 1000;
 
 export function defaults() {
-  return { theme: "auto", hide: [], steps: "open", lock: false, step: null, host: null, id: null };
+  return { theme: "auto", hide: [], steps: "open", lock: false, step: null, host: null, id: null, sweep: null, plot: null };
 }
 
 function quote(text) {
@@ -110,6 +114,22 @@ export function parseOptions(params) {
           keep(key, String(options.step));
         } else bad("give a step number, 1 or more");
         break;
+      case "sweep": {
+        const read = parseSweep(v);
+        if (read.spec) {
+          options.sweep = read.spec;
+          keep(key, v);
+        } else bad(read.error);
+        break;
+      }
+      case "plot": {
+        const read = parsePlot(v);
+        if (read.keys) {
+          options.plot = read.keys;
+          keep(key, read.keys.join(","));
+        } else bad(read.error);
+        break;
+      }
       case "host": {
         const origin = parseOrigin(v);
         if (origin) {

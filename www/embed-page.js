@@ -46,6 +46,26 @@ export function optionEntries() {
   return optionList;
 }
 
+/** The sweep's part of the address (sweep=key:from:to:steps&plot=a,b; www/sweep/): null removes it. */
+export function setSweep(sweep, plot) {
+  optionList = optionList.filter(([k]) => k !== "sweep" && k !== "plot");
+  if (sweep) optionList.push(["sweep", sweep]);
+  if (sweep && plot) optionList.push(["plot", plot]);
+}
+
+/** The sweep changed by its own controls (no input did): the host hears of it with the series. */
+export function sweepChanged() {
+  if (current?.view.lastGood && document.body.dataset.status === "ok") post("change", changePayload(current.view, current.view.lastGood));
+}
+
+/** The change event's data: the example, its inputs and results, and an open sweep's series (`sweep`). */
+function changePayload(view, solution) {
+  const payload = { example: view.id, title: view.entry.title, inputs: solution.inputs, texts: Object.fromEntries(view.form.entries()), result: solution.result };
+  const sweep = view.sweep?.payload();
+  if (sweep) payload.sweep = sweep;
+  return payload;
+}
+
 /** The current options (for the tools and the embed panel). */
 export function currentOptions() {
   return { ...options, hide: [...options.hide] };
@@ -199,7 +219,7 @@ export function onStatus(status, view) {
     const said = spokenText(view.parts.answerLine).replace(/\s+/g, " ").trim() || resultSummary(solution);
     if (current.lastAnnounced === null) current.lastAnnounced = said;
     else announce(said);
-    const payload = { example: view.id, title: view.entry.title, inputs: solution.inputs, texts: Object.fromEntries(view.form.entries()), result: solution.result };
+    const payload = changePayload(view, solution);
     if (!readySent) {
       readySent = true;
       post("ready", payload);

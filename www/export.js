@@ -130,7 +130,8 @@ export function figurePng(root) {
   return new Promise((resolve) => out.toBlob(resolve, "image/png"));
 }
 
-function download(blob, name) {
+/** Saves `blob` as a file called `name` (a link clicked for the reader). */
+export function download(blob, name) {
   const url = URL.createObjectURL(blob);
   const a = el("a", { href: url, download: name, hidden: true });
   document.body.append(a);

@@ -6,6 +6,8 @@
 //   sweep=<field>:<from>:<to>:<steps>   e.g. sweep=flying_height_m:500:3000:100
 //   plot=<result>,<result>              e.g. plot=gsd_cm
 
+/** Field kinds a sweep can run over (an angle is a number of degrees). */
+export const SWEEPABLE = Object.freeze(["number", "integer", "angle"]);
 /** Points of a sweep: at least two, at most this many (the slider's stops; a solve each). */
 export const MIN_STEPS = 2;
 export const MAX_STEPS = 500;

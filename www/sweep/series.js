@@ -8,15 +8,12 @@
 // checks its syntax): sweep=<field>:<from>:<to>:<steps>&plot=<key>,<key>
 //   sweep=flying_height_m:500:3000:100&plot=gsd_cm  (link.js reads and writes it)
 
-import { MAX_STEPS, MIN_STEPS, tidy } from "./link.js";
+import { MAX_STEPS, MIN_STEPS, SWEEPABLE, tidy } from "./link.js";
 
-export { formatSweep, MAX_PLOTTED, MAX_STEPS, MIN_STEPS, parsePlot, parseSweep, tidy, valueText } from "./link.js";
+export { formatSweep, MAX_PLOTTED, MAX_STEPS, MIN_STEPS, parsePlot, parseSweep, SWEEPABLE, tidy, valueText } from "./link.js";
 
 /** The steps a new sweep takes when the range allows it. */
 export const DEFAULT_STEPS = 50;
-
-/** Field kinds a sweep can run over (an angle is a number of degrees). */
-export const SWEEPABLE = Object.freeze(["number", "integer", "angle"]);
 
 /** The number fields an entry can sweep, in form order. */
 export function sweepableFields(entry) {

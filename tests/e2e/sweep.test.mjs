@@ -1,0 +1,196 @@
+// The Sweep tool in Chromium (issue 34; www/sweep/, docs/embedding.md): opened
+// with the keyboard only, the plotted series is solve() at every point (the
+// core in Node says what each point must be); a sweep= link and an embed with
+// sweep= draw the same series; the CSV carries the same numbers; the host page
+// gets the series with the change event; axe-core finds no WCAG 2.2 AA
+// violation on an open sweep at 390 and 1280 px; a wrong sweep= is named in
+// words and the page keeps working. One browser, one page reused.
+import { after, before, describe, test } from "node:test";
+import assert from "node:assert/strict";
+import fs from "node:fs";
+import { createRequire } from "node:module";
+import { TEST_TIMEOUT, nodeModule, open, start, startHost } from "./harness.mjs";
+
+const WAIT = 20_000;
+const AXE = createRequire(import.meta.url).resolve("axe-core/axe.min.js");
+const TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa"];
+const LINK = "sweep=flying_height_m:500:3000:100&plot=gsd_cm";
+/** Two units (cm, mm: a second axis) and points the solver refuses (dpi ≤ 0). */
+const GAPS = "sweep=dpi:-200:1200:15&plot=gsd_cm,pixel_size_mm";
+
+let env;
+let core;
+let page;
+let context;
+before(async () => {
+  env = await start();
+  core = await nodeModule("all");
+  ({ context, page } = await open(env.browser, { bypassCSP: true, acceptDownloads: true }));
+});
+after(async () => {
+  await context?.close();
+  await env?.close();
+});
+
+/** What uPlot was given (test-hooks.js: the section's data-plotted), once drawn. */
+async function plotted(p = page) {
+  const section = await p.waitForSelector(".sweep-section[data-plotted]", { timeout: WAIT });
+  return JSON.parse(await section.getAttribute("data-plotted"));
+}
+
+async function go(hash) {
+  await page.goto(`${env.url}index.html${hash}`);
+  await page.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
+}
+
+/** Each plotted point against the core: solve(id, inputs with that value), a gap with its message where it throws. */
+function assertSolved(id, data, inputs = {}) {
+  assert.ok(data.xs.length >= 2);
+  data.xs.forEach((x, i) => {
+    let s = null;
+    let message = null;
+    try {
+      s = core.solve(id, { ...inputs, [data.key]: x });
+    } catch (e) {
+      message = e.message;
+    }
+    assert.equal(data.errors[i], message, `${data.key} = ${x}`);
+    for (const [k, ys] of Object.entries(data.ys)) assert.equal(ys[i], s ? s.result[k] : null, `${k} at ${data.key} = ${x}`);
+  });
+}
+
+describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
+  let linkFromUi = null;
+  let fromUi = null;
+
+  test("opened with the keyboard only: the plotted series is solve() at each point; arrows read a point, Enter shows its solution", async () => {
+    await go("#/gsd");
+    let found = false;
+    for (let i = 0; i < 80 && !found; i++) {
+      await page.keyboard.press("Tab");
+      found = await page.evaluate(() => document.activeElement?.classList.contains("sweep-open"));
+    }
+    assert.ok(found, "the Sweep button is reached with Tab");
+    await page.keyboard.press("Enter");
+    fromUi = await plotted();
+    assert.equal(await page.evaluate(() => document.activeElement?.textContent), "Sweep an input");
+    assert.equal(fromUi.key, "dpi", "the first number input");
+    assert.deepEqual(Object.keys(fromUi.ys), ["gsd_cm"], "the example's answer is plotted first");
+    assertSolved("gsd", fromUi);
+    assert.match(page.url(), /sweep=dpi:450:1800:50&plot=gsd_cm/);
+    linkFromUi = new URL(page.url()).hash;
+
+    // the chart: arrows move a point cursor read out in a live line
+    await page.focus(".sweep-frame");
+    for (const key of ["Home", "ArrowRight", "ArrowRight"]) await page.keyboard.press(key);
+    const line = page.locator(".sweep-section .figure-cursor");
+    const x = fromUi.xs[2];
+    assert.equal(await line.getAttribute("aria-live"), "polite");
+    assert.match(await line.textContent(), new RegExp(`^Scan resolution = ${String(x).slice(0, 5)}`));
+    // Enter: that point's value in the form, and the page solves it
+    await page.keyboard.press("Enter");
+    await page.waitForFunction((v) => document.querySelector("[data-key=dpi] input")?.value === v && document.body.dataset.status === "ok", String(x), { timeout: WAIT });
+    assert.equal(Number(await page.inputValue("[data-key=dpi] input")), x);
+
+    // the Data table holds the same series
+    await page.click(".sweep-section .figure-data-toggle");
+    const rows = await page.$$eval(".sweep-section .figure-data tbody tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.querySelector(".figure-value").textContent)));
+    assert.equal(rows.length, fromUi.xs.length);
+    rows.forEach(([cx, cy], i) => {
+      assert.ok(Math.abs(Number(cx.replace("−", "-")) - fromUi.xs[i]) <= 1e-9 * Math.abs(fromUi.xs[i]), `x ${cx}`);
+      assert.ok(Math.abs(Number(cy.replace("−", "-")) - fromUi.ys.gsd_cm[i]) <= 1e-9 * Math.abs(fromUi.ys.gsd_cm[i]), `y ${cy}`);
+    });
+
+    // the CSV: the same numbers, at full precision
+    const [download] = await Promise.all([page.waitForEvent("download"), page.click('[data-tool="sweep-csv"]')]);
+    const csv = fs.readFileSync(await download.path(), "utf8").trim().split("\r\n");
+    assert.equal(csv[0], "dpi (dpi),gsd_cm (cm),error");
+    csv.slice(1).forEach((row, i) => {
+      const [cx, cy, err] = row.split(",");
+      assert.equal(Number(cx), fromUi.xs[i]);
+      assert.equal(Number(cy), fromUi.ys.gsd_cm[i]);
+      assert.equal(err, "");
+    });
+  });
+
+  test("the sweep's link and a sweep= link draw the same series as solve()", async () => {
+    assert.ok(linkFromUi, "the first test ran");
+    await go(linkFromUi.replace(/dpi=[^&]*/, "dpi=900"));
+    assert.deepEqual(await plotted(), fromUi);
+    await go(`#/gsd?${LINK}`);
+    const data = await plotted();
+    assert.equal(data.key, "flying_height_m");
+    assert.equal(data.xs.length, 100);
+    assert.equal(data.xs[0], 500);
+    assert.equal(data.xs.at(-1), 3000);
+    assertSolved("gsd", data);
+  });
+
+  test("errors are gaps with the solver's message; two units get two axes; axe: no WCAG 2.2 AA violation at 1280 and 390 px", async () => {
+    for (const width of [1280, 390]) {
+      await page.setViewportSize({ width, height: 900 });
+      await go(`#/gsd?${GAPS}`);
+      const data = await plotted();
+      assertSolved("gsd", data);
+      const refused = data.errors.filter(Boolean);
+      assert.ok(refused.length >= 2, "dpi ≤ 0 is refused");
+      assert.match(refused[0], /^dpi: /);
+      assert.match(await page.textContent(".sweep-errors-fold summary"), new RegExp(`^${refused.length} of 15 points have no solution`));
+      assert.equal(await page.locator(".sweep-legend li").count(), 3, "two results and the worked example");
+      assert.match(await page.textContent(".sweep-legend"), /left axis.*right axis/);
+      // the first point is refused: its message is read on the keyboard's cursor
+      await page.focus(".sweep-frame");
+      await page.keyboard.press("Home");
+      assert.match(await page.textContent(".sweep-section .figure-cursor"), /no solution — dpi: /);
+      await page.addScriptTag({ path: AXE });
+      const result = await page.evaluate((tags) => window.axe.run({ include: [[".sweep-section"]] }, { runOnly: { type: "tag", values: tags }, resultTypes: ["violations"] }), TAGS);
+      assert.deepEqual(
+        result.violations.map((v) => `${width}px: ${v.id} ${v.nodes.map((n) => n.target.join(" ")).join(" | ")}`),
+        [],
+      );
+    }
+    await page.setViewportSize({ width: 1280, height: 900 });
+  });
+
+  test("a wrong sweep= is named in words (never HTML) and the page keeps working", async () => {
+    await go("#/gsd?sweep=flying_height_m:500:<b>x</b>:100");
+    assert.match(await page.textContent(".options-notice"), /Ignored the option sweep=“flying_height_m:500:<b>x<\/b>:100”: “to” is not a number/);
+    assert.equal(await page.locator(".options-notice b").count(), 0);
+    assert.equal(await page.locator(".sweep-section").count(), 0);
+    await go("#/gsd?sweep=height:1:2:5&plot=gsd_cm,nope");
+    await plotted();
+    const message = await page.textContent(".sweep-message");
+    assert.match(message, /Ignored sweep=height:…: this example has no input height; the number inputs here are dpi, focal_length_mm, flying_height_m\./);
+    assert.match(message, /Ignored plot=nope: it is not a numeric result/);
+    await page.fill("[data-key=dpi] input", "1200");
+    await page.waitForFunction(() => document.body.dataset.status === "ok" && document.querySelector(".answer-line")?.textContent.includes("26.7"), null, { timeout: WAIT });
+  });
+
+  test("an embed with sweep= draws the same series and the host page gets it with the change event", async () => {
+    const link = await (async () => {
+      await go(`#/gsd?${LINK}`);
+      return plotted();
+    })();
+    const host = await startHost({
+      "/course.html": `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Course</title></head><body>
+        <script>window.events = []; document.addEventListener("playground:change", (e) => window.events.push(e.detail));</script>
+        <script src="${env.url}embed.js" defer></script>
+        <div id="a" data-playground="gsd?${LINK}" data-id="a"></div></body></html>`,
+    });
+    try {
+      const p = await context.newPage();
+      await p.goto(`${host.url}course.html`);
+      await p.waitForFunction(() => window.events.some((d) => d.sweep), null, { timeout: WAIT });
+      const frame = await (await p.waitForSelector("#a iframe")).contentFrame();
+      assert.deepEqual(await plotted(frame), link);
+      const sweep = await p.evaluate(() => window.events.findLast((d) => d.sweep).sweep);
+      assert.equal(sweep.input, "flying_height_m");
+      assert.deepEqual(sweep.xs, link.xs);
+      assert.deepEqual(sweep.ys, link.ys);
+      assert.deepEqual(sweep.plot, ["gsd_cm"]);
+      await p.close();
+    } finally {
+      await host.close();
+    }
+  });
+});

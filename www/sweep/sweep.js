@@ -1,0 +1,533 @@
+// The Sweep tool of an example (issue 34; docs/sweeps.md): one number input
+// run over a range, the chosen numeric results plotted against it. Loaded by
+// app.js with import() only when a sweep opens (the button, or sweep= in the
+// link): uPlot comes with it (chart.js), never on the first load.
+//
+// Every point is solve(id, inputs with that value) (series.js, the one path
+// Node's tests check with the real core); the slider and a click on the chart
+// put that value into the form, and the page's own recompute shows that
+// point's whole solution. The link carries sweep=key:from:to:steps&plot=a,b.
+
+import { el, idPart } from "../dom.js";
+import { download } from "../export.js";
+import { testData } from "../test-hooks.js";
+import { labelOf } from "../render.js";
+import { dataView, num, renderData, seriesTable } from "../figures/data-view.js";
+import { axesOf, colour, makeChart, strokeOf } from "./chart.js";
+import {
+  checkPlot,
+  checkSweep,
+  chooseRange,
+  computeSeries,
+  fieldApplies,
+  formatSweep,
+  MAX_PLOTTED,
+  MAX_STEPS,
+  MIN_STEPS,
+  numericResultKeys,
+  seriesCsv,
+  sweepableFields,
+  sweepValues,
+  valueText,
+} from "./series.js";
+
+const STYLESHEET = new URL("./sweep.css", import.meta.url).href; // (the build gives it its hashed name)
+const STATUS_MS = 4000;
+
+function styles() {
+  if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
+  document.head.append(el("link", { rel: "stylesheet", href: STYLESHEET }));
+}
+
+const fieldText = (f) => `${f.label}${f.unit ? ` (${f.unit})` : ""}`;
+const withUnit = (v, unit) => `${num(v)}${unit ? ` ${unit}` : ""}`;
+
+/**
+ * Mounts the sweep panel in `host`.
+ * @param {HTMLElement} host
+ * @param {{ core, view, setInput: (key: string, text: string) => void, setLink: (sweep: string|null, plot: string|null) => void,
+ *           posted: () => void, hashFor: (key: string, text: string) => string }} api
+ * @returns {{ open(options), changed(), payload(), destroy() }}
+ */
+export function mountSweep(host, api) {
+  styles();
+  const { core, view } = api;
+  const { entry, id } = view;
+  const prefix = `sweep-${idPart(id)}`;
+  const state = { field: null, range: null, plot: [], series: null, base: null, idx: null, chart: null, chartKeys: "", labels: null };
+
+  const heading = el("h3", { id: `${prefix}-h`, tabindex: "-1" }, "Sweep an input");
+  const intro = el("p", { class: "sweep-intro" }, "Solve this example over a range of one input and plot the results against it. Each point is the example solved with that value; move the slider or click the chart to see that point’s whole solution above.");
+  const fieldSelect = el("select", { id: `${prefix}-field` });
+  const fromInput = el("input", { id: `${prefix}-from`, type: "number", step: "any", inputmode: "decimal" });
+  const toInput = el("input", { id: `${prefix}-to`, type: "number", step: "any", inputmode: "decimal" });
+  const stepsInput = el("input", { id: `${prefix}-steps`, type: "number", step: "1", min: String(MIN_STEPS), max: String(MAX_STEPS), inputmode: "numeric" });
+  const labelled = (input, text) => el("div", { class: "sweep-control" }, el("label", { for: input.id }, text), input);
+  const plotBox = el("fieldset", { class: "sweep-plot" }, el("legend", {}, "Plot"));
+  const message = el("p", { class: "sweep-message", role: "status" });
+  const chartHost = el("div", { class: "sweep-chart" });
+  const legend = el("ul", { class: "sweep-legend" });
+  const frame = el("div", { class: "sweep-frame", tabindex: "0", role: "group", "aria-roledescription": "interactive chart" }, chartHost);
+  const data = dataView(frame);
+  data.keys.textContent = "Arrow keys: move along the points (Home, End: the ends); Enter: show that point’s solution.";
+  const slider = el("input", { id: `${prefix}-slider`, type: "range", min: "0", max: "1", step: "1", value: "0" });
+  const sliderValue = el("output", { for: slider.id, class: "sweep-slider-value" });
+  const pointLink = el("a", { class: "sweep-point-link" }, "Link to this point");
+  const scrub = el("div", { class: "sweep-scrub" }, el("label", { for: slider.id }, "Solution shown at"), slider, sliderValue, pointLink);
+  const errorsBox = el("div", { class: "sweep-errors" });
+  const status = el("p", { class: "tools-status", role: "status" });
+  const csvButton = el("button", { type: "button", class: "button keep-enabled", "data-tool": "sweep-csv" }, "Series (CSV)");
+  const pngButton = el("button", { type: "button", class: "button keep-enabled", "data-tool": "sweep-png" }, "Chart (PNG)");
+  const closeButton = el("button", { type: "button", class: "button keep-enabled" }, "Close the sweep");
+  const section = el(
+    "section",
+    { class: "panel sweep-section", "aria-labelledby": heading.id, "data-sweep": "" },
+    heading,
+    intro,
+    el("div", { class: "sweep-controls" }, labelled(fieldSelect, "Input"), labelled(fromInput, "From"), labelled(toInput, "To"), labelled(stepsInput, "Steps")),
+    plotBox,
+    message,
+    frame,
+    legend,
+    data.cursorLine,
+    scrub,
+    data.bar,
+    data.body,
+    errorsBox,
+    el("div", { class: "tools" }, csvButton, pngButton, closeButton),
+    status,
+  );
+  // the sweep's controls stay usable in a locked embed: they change no input of the exercise
+  for (const c of [fieldSelect, fromInput, toInput, stepsInput]) c.classList.add("keep-enabled");
+  host.replaceChildren(section);
+  host.hidden = false;
+
+  const fields = sweepableFields(entry);
+  for (const f of fields) fieldSelect.append(el("option", { value: f.key }, fieldText(f)));
+
+  let statusTimer = 0;
+  const say = (text) => {
+    clearTimeout(statusTimer);
+    status.textContent = text;
+    statusTimer = setTimeout(() => (status.textContent = ""), STATUS_MS);
+  };
+
+  /** The labels and units of results (from a solution: they do not change with the inputs). */
+  function labels() {
+    if (!state.labels) {
+      let s = view.lastGood;
+      if (!s) {
+        try {
+          s = core.solve(id, {});
+        } catch {
+          s = null;
+        }
+      }
+      state.labels = s;
+    }
+    return state.labels;
+  }
+
+  const resultInfo = (k) => labelOf(labels() ?? {}, k);
+
+  /** The form's inputs as the core reads them, or an error message. */
+  function baseInputs() {
+    const texts = view.form.texts();
+    let parsed;
+    try {
+      parsed = core.parseInputs(id, texts);
+    } catch (e) {
+      return { error: e.message };
+    }
+    const errs = Object.entries(parsed.errors ?? {}).filter(([k]) => k !== state.field?.key);
+    if (errs.length) return { error: `Fix the inputs above first: ${errs.map(([k, m]) => (m.startsWith(`${k}: `) ? m : `${k}: ${m}`)).join("; ")}` };
+    const inputs = { ...(parsed.inputs ?? {}) };
+    delete inputs[state.field.key];
+    return { inputs, texts };
+  }
+
+  /** The swept input's value in the form, as the core reads it (null when it does not read). */
+  function currentValue() {
+    const key = state.field.key;
+    try {
+      const v = core.parseInputs(id, { [key]: view.form.texts()[key] }).inputs?.[key];
+      return typeof v === "number" ? v : null;
+    } catch {
+      return null;
+    }
+  }
+
+  function buildPlotChoices() {
+    const keys = numericResultKeys(labels());
+    plotBox.replaceChildren(el("legend", {}, `Plot (up to ${MAX_PLOTTED} results)`));
+    for (const k of keys) {
+      const { label, unit } = resultInfo(k);
+      const box = el("input", { type: "checkbox", id: `${prefix}-plot-${idPart(k)}`, value: k, class: "keep-enabled" });
+      box.checked = state.plot.includes(k);
+      box.addEventListener("change", () => {
+        const chosen = [...plotBox.querySelectorAll("input:checked")].map((b) => b.value);
+        if (chosen.length > MAX_PLOTTED) {
+          box.checked = false;
+          say(`At most ${MAX_PLOTTED} results at once: clear one first.`);
+          return;
+        }
+        state.plot = chosen;
+        run({ own: true });
+      });
+      plotBox.append(el("label", { for: box.id, class: "sweep-plot-choice" }, box, ` ${label}${unit ? ` (${unit})` : ""}`, el("code", { class: "field-key" }, k)));
+    }
+  }
+
+  /** The results plotted first: the example's answer where it is a number, else the first numeric result. */
+  function defaultPlot() {
+    const s = labels();
+    const keys = numericResultKeys(s);
+    const answer = (s?.answer ?? []).filter((k) => keys.includes(k));
+    return answer.length ? answer.slice(0, MAX_PLOTTED) : keys.slice(0, 1);
+  }
+
+  function setField(key, range = null) {
+    state.field = fields.find((f) => f.key === key) ?? fields[0];
+    fieldSelect.value = state.field.key;
+    if (range) state.range = range;
+    else {
+      const base = baseInputs();
+      const value = currentValue() ?? state.field.default;
+      state.range = base.error ? chooseRange(() => null, id, {}, state.field, value) : chooseRange(core.solve, id, base.inputs, state.field, value);
+    }
+    fromInput.value = String(state.range.from);
+    toInput.value = String(state.range.to);
+    stepsInput.value = String(state.range.steps);
+    const integer = state.field.kind === "integer";
+    fromInput.step = integer ? "1" : "any";
+    toInput.step = integer ? "1" : "any";
+  }
+
+  /** Reads the range controls: a range, or a worded message. */
+  function readRange() {
+    const from = fromInput.valueAsNumber;
+    const to = toInput.valueAsNumber;
+    const steps = stepsInput.valueAsNumber;
+    if (!Number.isFinite(from)) return { error: "“From” must be a number." };
+    if (!Number.isFinite(to)) return { error: "“To” must be a number." };
+    if (from === to) return { error: "“From” and “To” are the same value: a sweep needs a range." };
+    if (!Number.isInteger(steps) || steps < MIN_STEPS || steps > MAX_STEPS) return { error: `“Steps” must be a whole number from ${MIN_STEPS} to ${MAX_STEPS}.` };
+    return { range: { from, to, steps } };
+  }
+
+  function writeLink() {
+    api.setLink(formatSweep({ key: state.field.key, ...state.range }), state.plot.join(","));
+  }
+
+  /** The plotted results that fit two axes; a third unit is left out with a message. */
+  function plotted() {
+    const series = state.plot.map((k) => ({ key: k, ...resultInfo(k) }));
+    const units = axesOf(series);
+    return { shown: series.filter((s) => units.includes(s.unit ?? "")), left: series.filter((s) => !units.includes(s.unit ?? "")) };
+  }
+
+  function ensureChart(shown) {
+    const keys = `${state.field.key}|${shown.map((s) => s.key).join(",")}`;
+    if (state.chart && state.chartKeys === keys) return;
+    state.chart?.destroy();
+    chartHost.replaceChildren();
+    state.chartKeys = keys;
+    state.chart = makeChart(chartHost, {
+      x: { label: state.field.label, unit: state.field.unit, seed: state.field.default },
+      series: shown,
+      onCursor: (i) => {
+        if (i !== null && state.idx !== i && !state.keyboard) readout(i, false);
+      },
+      onPick: (i) => pick(i),
+    });
+    const units = axesOf(shown);
+    legend.replaceChildren(
+      ...shown.map((s, i) => {
+        const swatch = el("span", { class: "sweep-swatch", "aria-hidden": "true" });
+        swatch.style.borderTopColor = colour(strokeOf(i).color);
+        swatch.style.borderTopStyle = strokeOf(i).dash.length ? "dashed" : "solid";
+        const side = units.length > 1 ? (units.indexOf(s.unit ?? "") === 0 ? ", left axis" : ", right axis") : "";
+        return el("li", {}, swatch, `${s.label}${s.unit ? ` (${s.unit})` : ""}${side}`);
+      }),
+      el("li", { class: "sweep-legend-mark" }, el("span", { class: "sweep-swatch sweep-swatch-seed", "aria-hidden": "true" }), `worked example: ${state.field.label} = ${withUnit(state.field.default, state.field.unit)}`),
+    );
+  }
+
+  /** The words for point i: "Flying height H = 1200 m: GSD = 23.4 cm" or its solver's message. */
+  function pointText(i) {
+    const s = state.series;
+    const x = s.xs[i];
+    const head = `${state.field.label} = ${withUnit(x, state.field.unit)}`;
+    const p = s.points[i];
+    if (p.error) return `${head}: no solution — ${p.error}`;
+    const parts = plotted().shown.map(({ key, label, unit }) => (s.ys[key][i] === null ? `${label}: no value` : `${label} = ${withUnit(s.ys[key][i], unit)}`));
+    return `${head}: ${parts.join("; ")}`;
+  }
+
+  function readout(i, announce) {
+    if (!state.series || i === null || i >= state.series.xs.length) return;
+    state.idx = i;
+    // the live line speaks for the keyboard; a pointer's hover writes the same words
+    data.cursorLine.setAttribute("aria-live", announce ? "polite" : "off");
+    data.cursorLine.textContent = pointText(i);
+  }
+
+  /** Point i's value into the form: the page solves it (its whole solution above). */
+  function pick(i) {
+    if (!state.series || i == null) return;
+    slider.value = String(i);
+    showSlider(i);
+    api.setInput(state.field.key, valueText(state.series.xs[i]));
+    state.chart?.setCurrent(state.series.xs[i]);
+  }
+
+  /** The slider at point i; its words say `value` (the form's, when it lies between two points). */
+  function showSlider(i, value = null) {
+    const x = value ?? state.series.xs[i];
+    sliderValue.textContent = withUnit(x, state.field.unit);
+    slider.setAttribute("aria-valuetext", `${state.field.label} ${withUnit(x, state.field.unit)}`);
+    pointLink.href = api.hashFor(state.field.key, valueText(x));
+  }
+
+  function nearestIndex(value) {
+    const xs = state.series?.xs ?? [];
+    if (value === null || !xs.length) return 0;
+    let best = 0;
+    xs.forEach((x, i) => {
+      if (Math.abs(x - value) < Math.abs(xs[best] - value)) best = i;
+    });
+    return best;
+  }
+
+  function tables() {
+    const s = state.series;
+    const { shown } = plotted();
+    const columns = [fieldText(state.field), ...shown.map(({ label, unit }) => `${label}${unit ? ` (${unit})` : ""}`)];
+    const rows = s.xs.map((x, i) => [num(x, 10), ...shown.map(({ key }) => (s.ys[key][i] === null ? "no value" : num(s.ys[key][i], 10)))]);
+    const marks = s.xs.map((x, i) => [s.points[i].error ? "no solution" : x === state.field.default ? "worked example" : null, ...shown.map(() => null)]);
+    return { tables: [seriesTable(`The series: ${columns.slice(1).join(", ")} against ${columns[0]}`, columns, rows, marks)] };
+  }
+
+  /** The Data table (figures' data view); its scrolling box reachable by keyboard. */
+  function showData() {
+    renderData(data.body, tables());
+    for (const wrap of data.body.querySelectorAll(".figure-table-wrap")) scrollable(wrap, "The series as a table: scroll to see all of it");
+  }
+
+  function renderErrors() {
+    const s = state.series;
+    const bad = s.points.map((p, i) => [i, p]).filter(([, p]) => p.error);
+    if (!bad.length) {
+      errorsBox.replaceChildren();
+      return;
+    }
+    const t = el(
+      "table",
+      { class: "figure-table sweep-error-table" },
+      el("caption", { class: "visually-hidden" }, "Points without a solution"),
+      el("thead", {}, el("tr", {}, el("th", { scope: "col" }, fieldText(state.field)), el("th", { scope: "col" }, "The solver’s message"))),
+      el("tbody", {}, ...bad.map(([, p]) => el("tr", {}, el("td", {}, num(p.x, 10)), el("td", { class: "figure-text" }, p.error)))),
+    );
+    // a long list folds (a phone would scroll through it); a few are shown at once
+    const fold = el("details", { class: "sweep-errors-fold" }, el("summary", {}, `${bad.length} of ${s.xs.length} points have no solution (gaps in the lines, × on the chart): the solver’s messages`), el("div", { class: "figure-table-wrap" }, t));
+    fold.open = bad.length <= 5;
+    errorsBox.replaceChildren(fold);
+    scrollable(fold.querySelector(".figure-table-wrap"), "Points without a solution: scroll to see all of it");
+  }
+
+  /**
+   * Computes the series and draws it. `own`: a change of the sweep's own
+   * controls (the link follows and the host hears of it); else an input of
+   * the page changed (only the inputs other than the swept one matter).
+   */
+  function run({ own = false } = {}) {
+    if (!state.field) return;
+    const base = baseInputs();
+    if (base.error) {
+      message.textContent = base.error;
+      return;
+    }
+    const r = readRange();
+    if (r.error) {
+      message.textContent = r.error;
+      return;
+    }
+    const key = JSON.stringify([state.field.key, r.range, state.plot, base.inputs]);
+    if (!own && key === state.base && state.series) {
+      // only the swept input moved (the slider): the curve stands, its marks follow
+      const v = currentValue();
+      state.chart?.setCurrent(v);
+      if (v !== null && v !== state.series.xs[Number(slider.value)]) {
+        slider.value = String(nearestIndex(v));
+        showSlider(Number(slider.value), v);
+      }
+      return;
+    }
+    state.range = r.range;
+    state.base = key;
+    if (own) writeLink();
+    const t0 = performance.now();
+    const { shown, left } = plotted();
+    const notes = [];
+    if (!state.plot.length) notes.push("Choose a result to plot.");
+    if (left.length) notes.push(`Not plotted: ${left.map((s) => s.label).join(", ")} (a third unit: two axes at most).`);
+    const values = sweepValues(r.range, state.field.kind === "integer");
+    state.series = computeSeries(core.solve, id, base.inputs, state.field.key, values, shown.map((s) => s.key));
+    ensureChart(shown);
+    const errors = state.series.points.map((p) => p.error);
+    const v = currentValue();
+    state.chart.setData(state.series.xs, state.series.ys, errors, v);
+    // what uPlot was given, for the e2e tests (test-hooks.js: nothing on a student's page)
+    testData(section, "plotted", JSON.stringify({ key: state.field.key, xs: state.series.xs, ys: Object.fromEntries(shown.map((x) => [x.key, state.series.ys[x.key]])), errors }));
+    const bad = errors.filter(Boolean).length;
+    message.textContent = [...notes, bad ? `${bad} of ${values.length} points have no solution: see the list below the chart.` : ""].filter(Boolean).join(" ");
+    slider.max = String(values.length - 1);
+    const i = nearestIndex(v);
+    slider.value = String(i);
+    showSlider(i, v);
+    data.summary.textContent = `A line chart of ${shown.map((s) => s.label).join(" and ") || "nothing yet"} against ${state.field.label} from ${withUnit(values[0], state.field.unit)} to ${withUnit(values.at(-1), state.field.unit)}, ${values.length} points${bad ? `, ${bad} without a solution` : ""}. The worked example’s value is ${withUnit(state.field.default, state.field.unit)}.`;
+    frame.setAttribute("aria-label", `Sweep chart: ${shown.map((s) => s.label).join(", ")} against ${state.field.label}`);
+    if (data.open) showData();
+    renderErrors();
+    if (state.idx !== null && state.idx >= values.length) state.idx = null;
+    // for `npm run bench -- sweep`: the series and its chart, after the frame that paints them
+    const start = own ? t0 : (api.changeStart?.() ?? t0);
+    requestAnimationFrame(() =>
+      setTimeout(() => {
+        performance.clearMeasures("sweep");
+        performance.measure("sweep", { start, end: performance.now(), detail: { points: values.length, compute: performance.now() - t0 } });
+      }, 0),
+    );
+    if (own) api.posted();
+  }
+
+  // ---- events
+  fieldSelect.addEventListener("change", () => {
+    setField(fieldSelect.value);
+    state.idx = null;
+    run({ own: true });
+  });
+  for (const input of [fromInput, toInput, stepsInput]) input.addEventListener("change", () => run({ own: true }));
+  slider.addEventListener("input", () => {
+    const i = Number(slider.value);
+    readout(i, false);
+    state.chart?.select(i);
+    pick(i);
+  });
+  frame.addEventListener("keydown", (e) => {
+    if (!state.series || e.altKey || e.ctrlKey || e.metaKey) return;
+    const n = state.series.xs.length;
+    const cur = state.idx ?? nearestIndex(currentValue());
+    let next;
+    if (e.key === "ArrowRight" || e.key === "ArrowUp") next = Math.min(n - 1, cur + (state.idx === null ? 0 : 1));
+    else if (e.key === "ArrowLeft" || e.key === "ArrowDown") next = Math.max(0, cur - (state.idx === null ? 0 : 1));
+    else if (e.key === "Home") next = 0;
+    else if (e.key === "End") next = n - 1;
+    else if (e.key === "PageUp") next = Math.min(n - 1, cur + 10);
+    else if (e.key === "PageDown") next = Math.max(0, cur - 10);
+    else if ((e.key === "Enter" || e.key === " ") && state.idx !== null) {
+      e.preventDefault();
+      pick(state.idx);
+      say(`Showing the solution at ${state.field.label} = ${withUnit(state.series.xs[state.idx], state.field.unit)}.`);
+      return;
+    } else return;
+    e.preventDefault();
+    state.keyboard = true;
+    state.chart?.select(next);
+    state.keyboard = false;
+    readout(next, true);
+  });
+  frame.addEventListener("blur", () => state.chart?.select(null));
+  data.toggle.addEventListener("click", () => {
+    data.open = !data.open;
+    data.toggle.setAttribute("aria-expanded", String(data.open));
+    data.body.hidden = !data.open;
+    if (data.open && state.series) showData();
+  });
+  csvButton.addEventListener("click", () => {
+    if (!state.series) return say("Nothing to export yet.");
+    const labelsByKey = Object.fromEntries(state.series.plot.map((k) => [k, `${k}${resultInfo(k).unit ? ` (${resultInfo(k).unit})` : ""}`]));
+    const xLabel = `${state.field.key}${state.field.unit ? ` (${state.field.unit})` : ""}`;
+    download(new Blob([seriesCsv(state.series, { xLabel, labels: labelsByKey })], { type: "text/csv" }), `${id}-sweep-${state.field.key}.csv`);
+    say("Series downloaded.");
+  });
+  pngButton.addEventListener("click", () => {
+    const canvas = state.chart?.canvas();
+    if (!canvas) return say("Nothing to export yet.");
+    const out = document.createElement("canvas");
+    out.width = canvas.width;
+    out.height = canvas.height;
+    const ctx = out.getContext("2d");
+    ctx.fillStyle = colour("background");
+    ctx.fillRect(0, 0, out.width, out.height);
+    ctx.drawImage(canvas, 0, 0);
+    out.toBlob((blob) => {
+      if (!blob) return say("The chart could not be saved.");
+      download(blob, `${id}-sweep-${state.field.key}.png`);
+      say("Chart downloaded.");
+    }, "image/png");
+  });
+  closeButton.addEventListener("click", () => api.close());
+  const retheme = () => state.chart && (state.chart.theme(), state.series && state.chart.setData(state.series.xs, state.series.ys, state.series.points.map((p) => p.error), currentValue()));
+  const themeObserver = new MutationObserver(retheme);
+  themeObserver.observe(document.documentElement, { attributes: true, attributeFilter: ["data-theme"] });
+  const scheme = window.matchMedia("(prefers-color-scheme: dark)");
+  scheme.addEventListener("change", retheme);
+
+  return {
+    /** Opens (or re-aims) the sweep: a spec from the link (checked here against the example), the results to plot. */
+    open({ spec = null, plot = null, focus = false } = {}) {
+      const notes = [];
+      const texts = view.form.texts();
+      let field = fields.find((f) => fieldApplies(entry, f, texts)) ?? fields[0];
+      let range = null;
+      if (spec) {
+        const wrong = checkSweep(entry, spec);
+        if (wrong) notes.push(`Ignored sweep=${spec.key}:…: ${wrong}.`);
+        else {
+          field = fields.find((f) => f.key === spec.key);
+          range = { from: spec.from, to: spec.to, steps: spec.steps };
+        }
+      }
+      state.plot = [];
+      setField(field.key, range);
+      const numeric = numericResultKeys(labels());
+      if (plot) {
+        const { keys, unknown } = checkPlot(labels(), plot);
+        if (unknown.length) notes.push(`Ignored plot=${unknown.join(",")}: ${unknown.length === 1 ? "it is not a numeric result" : "they are not numeric results"} of this example (${numeric.join(", ")}).`);
+        state.plot = keys;
+      }
+      if (!state.plot.length) state.plot = defaultPlot();
+      buildPlotChoices();
+      run({ own: true });
+      if (notes.length) message.textContent = `${notes.join(" ")} ${message.textContent}`.trim();
+      if (focus) heading.focus();
+    },
+    /** An input of the page changed (app.js recompute): the series follows. */
+    changed() {
+      if (state.field) run();
+    },
+    /** The series for the host page's change event (embed-page.js). */
+    payload() {
+      const s = state.series;
+      if (!s) return null;
+      return { input: s.key, from: state.range.from, to: state.range.to, steps: state.range.steps, plot: [...s.plot], xs: [...s.xs], ys: Object.fromEntries(s.plot.map((k) => [k, [...s.ys[k]]])), errors: s.points.map((p) => p.error) };
+    },
+    /** For the e2e tests: the uPlot data and the state. */
+    series: () => state.series,
+    destroy() {
+      themeObserver.disconnect();
+      scheme.removeEventListener("change", retheme);
+      state.chart?.destroy();
+      host.replaceChildren();
+      host.hidden = true;
+    },
+  };
+}
+
+/** A box that may scroll sideways, reachable and named for the keyboard (as render.js's wide matrices). */
+function scrollable(node, label) {
+  node.setAttribute("tabindex", "0");
+  node.setAttribute("role", "region");
+  node.setAttribute("aria-label", label);
+}
