@@ -57,6 +57,15 @@ export function snippets({ base, id, title, texts, options, height = DEFAULT_HEI
     attrs.push(`data-step="${options.step}"`);
     params.push(["step", String(options.step)]);
   }
+  // an open sweep (www/sweep/): the embed opens with the same plot
+  if (!options.practice && options.sweep) {
+    attrs.push(`data-sweep="${options.sweep}"`);
+    params.push(["sweep", options.sweep]);
+    if (options.plot) {
+      attrs.push(`data-plot="${options.plot}"`);
+      params.push(["plot", options.plot]);
+    }
+  }
   const attrText = (s) => s.replace(/&/g, "&amp;").replace(/"/g, "&quot;").replace(/</g, "&lt;");
   const script = `<script src="${attrText(embedJs)}" defer></script>\n<div data-playground="${attrText(query)}"${attrs.length ? ` ${attrs.join(" ")}` : ""}></div>`;
   const src = new URL(`embed.html${buildHash(id, [...own, ...params]).replace(/practice=(&|$)/, "practice$1")}`, base).href;
@@ -189,7 +198,9 @@ export function toggleEmbedPanel(view, button, bar) {
   const preview = el("iframe", { class: "embed-preview", title: `Preview of the embedded ${view.entry.title}` });
   const heightNote = el("p", { class: "muted embed-height" });
   const refresh = ({ reload = true } = {}) => {
-    const s = snippets({ base, id: view.id, title: view.entry.title, texts: view.form.entries(), options: state, height: state.height });
+    // the sweep open on the page, as its link writes it (sweep=…&plot=…)
+    const sweep = view.sweep?.linkEntries() ?? {};
+    const s = snippets({ base, id: view.id, title: view.entry.title, texts: view.form.entries(), options: { ...state, sweep: sweep.sweep ?? null, plot: sweep.plot ?? null }, height: state.height });
     script.area.value = s.script;
     iframe.area.value = s.iframe;
     heightNote.textContent = state.measured
