@@ -40,7 +40,8 @@ function styles() {
 }
 
 const fieldText = (f) => `${f.label}${f.unit ? ` (${f.unit})` : ""}`;
-const withUnit = (v, unit) => `${num(v)}${unit ? ` ${unit}` : ""}`;
+/** "1200 m", "13.75°" (no space before a degree sign). */
+const withUnit = (v, unit) => `${num(v)}${unit ? `${unit === "°" ? "" : " "}${unit}` : ""}`;
 
 /**
  * Mounts the sweep panel in `host`.
