@@ -12,7 +12,7 @@
 import assert from "node:assert/strict";
 import { after, before, describe, test } from "node:test";
 import { formatNumber } from "../../www/format.js";
-import { CATALOG_IDS, TEST_TIMEOUT, nodeModule, open, settled, start, visit } from "./harness.mjs";
+import { CATALOG_IDS, TEST_TIMEOUT, nodeModule, open, parseShown, settled, start, visit } from "./harness.mjs";
 
 let env;
 let page;
@@ -127,6 +127,59 @@ async function openTables() {
 }
 
 const values = (t) => t.cells.map((row) => row.map(([v]) => v));
+
+/** Every number in the solution (inputs, result, the steps' values), sorted: what a table may show. */
+function numbersOf(s) {
+  const out = [];
+  const walk = (v) => {
+    if (typeof v === "number" && Number.isFinite(v)) out.push(v);
+    else if (Array.isArray(v)) v.forEach(walk);
+    else if (v && typeof v === "object") Object.values(v).forEach(walk);
+  };
+  walk(s.inputs);
+  walk(s.result);
+  for (const st of s.steps ?? []) walk(st.values);
+  return out.sort((a, b) => a - b);
+}
+
+/**
+ * The cells of every table that are one number, each read back (parseShown:
+ * the real minus sign, a power of ten) and found in the solution to the
+ * digits it shows (half a unit of its last digit): a table cell is a number
+ * of the solution, not one the figure computed or mistyped.
+ */
+function strayCells(panels, s) {
+  const have = numbersOf(s);
+  const near = (x, tol) => {
+    let lo = 0;
+    let hi = have.length;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (have[mid] < x - tol) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo < have.length && have[lo] <= x + tol;
+  };
+  const stray = [];
+  let read = 0;
+  for (const t of panels.flatMap((p) => p.tables)) {
+    t.cells.forEach((row, r) =>
+      row.forEach(([text], c) => {
+        const x = parseShown(text);
+        // a row's number in the first column (point 1, 2 …) is not a value
+        if (!Number.isFinite(x) || !/\d/.test(text) || (c === 0 && text === String(r + 1))) return;
+        read++;
+        // half a unit of the last digit shown (of the mantissa for a power of ten)
+        const [mantissa, power = ""] = text.replace(/\u2212/g, "-").split(" × 10");
+        const decimals = (mantissa.split(".")[1] ?? "").length;
+        const exponent = Math.log10(parseShown(`1 × 10${power}`) || 1);
+        const tol = 0.5001 * 10 ** (Math.round(exponent) - decimals);
+        if (!near(x, tol)) stray.push(`"${t.caption}" row ${r + 1} column ${c + 1}: ${text}`);
+      }),
+    );
+  }
+  return { read, stray };
+}
 const table = (panels, re) => panels.flatMap((p) => p.tables).find((t) => re.test(t.caption));
 
 /** Tables whose cells must equal the solution's numbers, as the figures format them. */
@@ -172,6 +225,8 @@ const CELLS = {
 describe("figure data", () => {
   test("every example: each figure has a name and a description with the result's key numbers, and a Data view of tables", { timeout: TEST_TIMEOUT * 3 }, async () => {
     assert.ok(CATALOG_IDS.length >= 26);
+    const cellsRead = [];
+    const strays = [];
     for (const id of CATALOG_IDS) {
       await show(id);
       const s = solution(id);
@@ -196,7 +251,14 @@ describe("figure data", () => {
         }
       }
       CELLS[id]?.(panels, s);
+      const { read, stray } = strayCells(panels, s);
+      cellsRead.push([id, read]);
+      strays.push(...stray.map((x) => `${id}: ${x}`));
     }
+    assert.deepEqual(strays, [], "table cells not in the solution");
+    // most examples' tables hold numbers (a few figures are schematic: their tables are words)
+    const withNumbers = cellsRead.filter(([, n]) => n > 0).map(([id]) => id);
+    assert.ok(withNumbers.length >= 20, `tables with numbers: ${withNumbers.join(", ")}`);
     assert.deepEqual(log.pageErrors, []);
     assert.deepEqual(log.consoleErrors, []);
   });

@@ -101,8 +101,12 @@ export async function settled(page) {
  */
 export async function readSteps(page) {
   for (let pass = 0; pass < 2; pass++) {
-    await page.evaluate(async () => {
+    const asked = await page.evaluate(async () => {
       const frame = () => new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      // a font the steps asked for while read: the second pass reads them with it
+      let loading = document.fonts.status === "loading";
+      const mark = () => (loading = true);
+      document.fonts.addEventListener("loading", mark);
       for (const step of document.querySelectorAll(".steps-body .step")) {
         step.scrollIntoView({ block: "start" });
         // the step rendered (a frame), its formulas fitted (the next)
@@ -112,7 +116,11 @@ export async function readSteps(page) {
       window.scrollTo(0, 0);
       await document.fonts.ready;
       await frame();
+      document.fonts.removeEventListener("loading", mark);
+      return loading;
     });
+    // no font asked for (all there from an earlier view of the same document): a second pass would read the same
+    if (!asked) break;
   }
 }
 
@@ -157,9 +165,16 @@ export async function cellText(page, key, column) {
   return (await page.locator(`.result-table tr[data-key="${key}"] td.${column}`).innerText({ timeout: WAIT })).trim();
 }
 
-/** A number as the page writes it (a real minus sign, maybe a "+"). */
+/** A number as the page writes it (format.js formatNumber: a real minus sign, maybe a "+", "1.8777 × 10⁻⁶"). */
 export function parseShown(text) {
-  return Number(text.replace(/\u2212/g, "-").replace(/^\+/, "").trim());
+  const power = (sup) => [...sup].map((c) => "-0123456789"["⁻⁰¹²³⁴⁵⁶⁷⁸⁹".indexOf(c)]).join("");
+  return Number(
+    text
+      .replace(/\u2212/g, "-")
+      .replace(/ × 10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/, (_, sup) => `e${power(sup)}`)
+      .replace(/^\+/, "")
+      .trim(),
+  );
 }
 
 /** Waits until a result's exact value is within `tol` of `expected`. */

@@ -2,17 +2,74 @@
 // formulas that changed are rendered and fitted again). What it shows must be
 // what a cold load of the same inputs shows, for every example: the steps'
 // markup is compared, after a change and after the change back.
+//
+// Lean: two lanes of two pages each (each page in a context of its own, its
+// HTTP cache warm after the first load), the examples shared between the
+// lanes (node:test runs two at a time). A lane's first page goes from example
+// to example by the address's hash (a route of the page already loaded, as a
+// reader's link would); its second page is the cold load: about:blank, then
+// the changed address loaded afresh (a new document: nothing of the first
+// page's state).
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
 import { CATALOG_IDS, TEST_TIMEOUT, open, settled, start, stepsHtml, visit } from "./harness.mjs";
 
+/** Pages at work at once: the page waits on frames most of the time, so two share two cores well. */
+const LANES = 2;
+
 let env;
+const contexts = [];
+const pageErrors = [];
+const lanes = [];
+const waiting = [];
 before(async () => {
   env = await start();
+  // a context for each page: in one context only the page opened last gets its frames at full
+  // rate (the others' requestAnimationFrame runs about once a second in headless Chromium)
+  const page = async () => {
+    const { context, page: p } = await open(env.browser);
+    contexts.push(context);
+    p.on("pageerror", (e) => pageErrors.push(e.message));
+    return p;
+  };
+  for (let i = 0; i < LANES; i++) lanes.push({ a: await page(), b: await page(), file: null });
 });
 after(async () => {
+  for (const c of contexts) await c.close();
   await env?.close();
 });
+
+/** A free lane (waits for one), given back by `release`. */
+async function lane() {
+  const free = lanes.find((l) => !l.busy);
+  if (free) {
+    free.busy = true;
+    return free;
+  }
+  return new Promise((resolve) => waiting.push(resolve));
+}
+function release(l) {
+  const next = waiting.shift();
+  if (next) next(l);
+  else l.busy = false;
+}
+
+/**
+ * Shows `file#hash` on the lane's first page: a route of the page already
+ * there when it is the same file (the status set aside first, so that the
+ * old "ok" is not taken for the new one), else a load.
+ */
+async function show(l, file, hash) {
+  if (l.file !== file) {
+    l.file = file;
+    return visit(l.a, env.url, file, hash);
+  }
+  await l.a.evaluate((h) => {
+    document.body.dataset.status = "routing";
+    location.hash = h;
+  }, hash);
+  return settled(l.a);
+}
 
 /**
  * Changes one number of the first input that has one (a nearby value that
@@ -48,31 +105,30 @@ async function changeOne(page) {
   });
 }
 
-describe("the steps after an input change are those of a cold load", () => {
+describe("the steps after an input change are those of a cold load", { concurrency: LANES }, () => {
   for (const [file, id, options] of [...CATALOG_IDS.map((id) => ["index.html", id, ""]), ["embed.html", "gsd", "?steps=collapsed&step=2"]]) {
     test(`${file} ${id}${options}`, { timeout: TEST_TIMEOUT }, async () => {
-      const a = await open(env.browser);
-      const b = await open(env.browser);
+      const l = await lane();
       try {
-        assert.equal(await visit(a.page, env.url, file, `#/${id}${options}`), "ok");
-        const seedHash = await a.page.evaluate(() => location.hash);
-        const seedHtml = await stepsHtml(a.page);
-        const hash = await changeOne(a.page);
+        assert.equal(await show(l, file, `#/${id}${options}`), "ok");
+        const seedHash = await l.a.evaluate(() => location.hash);
+        const seedHtml = await stepsHtml(l.a);
+        const hash = await changeOne(l.a);
         assert.ok(hash, `${id}: a nearby value of some input solves`);
         assert.notEqual(hash, seedHash);
-        const changed = await stepsHtml(a.page);
-        // the same inputs, cold (the embed's options ride along in the address)
-        assert.equal(await visit(b.page, env.url, file, hash), "ok");
-        const cold = await stepsHtml(b.page);
+        const changed = await stepsHtml(l.a);
+        // the same inputs, cold (the embed's options ride along in the address): a new document
+        await l.b.goto("about:blank");
+        assert.equal(await visit(l.b, env.url, file, hash), "ok");
+        const cold = await stepsHtml(l.b);
         assert.equal(changed, cold, `${id}: the updated steps differ from a cold load of ${hash}`);
         // and back to the seed's values
-        await a.page.evaluate(() => document.querySelector(".actions button").click());
-        assert.equal(await settled(a.page), "ok");
-        assert.equal(await stepsHtml(a.page), seedHtml, `${id}: back to the seed's values`);
-        assert.deepEqual(a.log.pageErrors, []);
+        await l.a.evaluate(() => document.querySelector(".actions button").click());
+        assert.equal(await settled(l.a), "ok");
+        assert.equal(await stepsHtml(l.a), seedHtml, `${id}: back to the seed's values`);
+        assert.deepEqual(pageErrors, []);
       } finally {
-        await a.context.close();
-        await b.context.close();
+        release(l);
       }
     });
   }
