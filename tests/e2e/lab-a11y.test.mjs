@@ -152,6 +152,25 @@ test("a matching template placed by keyboard: the cursor, Enter, the matching ru
   assert.equal(await page.textContent("#lab-template-pos"), "Template 15×15 centred on column 40, row 30.");
   // the same photo: the best match is the template's own place, ρ = 1
   assert.match(await page.textContent("#lab-match"), /c 40, r 30, ρ = 1(?![\d.])/);
+  // the search photo's Data view: its description, and its grey values and ρ around the best match
+  await page.focus("#lab-search-data-toggle");
+  await page.keyboard.press("Enter");
+  assert.equal(await page.getAttribute("#lab-search-data-toggle", "aria-expanded"), "true");
+  assert.match(await page.textContent("#lab-search-data-desc"), /^ramp: 96 × 64 pixels; the search box is columns 3 to 77, rows 0 to 63\..* ρ from [-−\d.]+ to 1\. The best match is at column 40, row 30, ρ = 1\.$/);
+  const around = (id) => page.$$eval(`${id} tr`, (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+  const greyRows = await around("#lab-search-data-grey");
+  assert.deepEqual(greyRows[0].slice(1), ["37", "38", "39", "40", "41", "42", "43"]);
+  assert.deepEqual(greyRows.slice(1).map((row) => row.slice(1).map((t) => t.replace(", the cursor", ""))), [27, 28, 29, 30, 31, 32, 33].map((r) => [37, 38, 39, 40, 41, 42, 43].map((c) => fmt(grey(c, r)))));
+  assert.equal((await around("#lab-search-data-layer"))[4][4], "1, the cursor");
+  // the search photo's own cursor moves the tables
+  await page.focus(".lab-pair .lab-canvas");
+  await page.keyboard.press("ArrowRight");
+  await page.waitForFunction(() => {
+    const at = /^column (\d+), row (\d+)/.exec(document.querySelector(".lab-pair .lab-cursor-live")?.textContent ?? "");
+    return at && document.querySelector("#lab-search-data-grey caption")?.textContent.includes(`the cursor (column ${at[1]}, row ${at[2]})`);
+  });
+  assert.deepEqual(await page.getAttribute(".lab-pair .lab-canvas", "aria-describedby"), "lab-search-data-desc");
+  assert.deepEqual((await axe())[0], [], "the lab with the search photo's Data view open");
   // and moved by its handle's keys, matched again where it rests
   await page.focus("#lab-template-handle");
   await page.keyboard.press("ArrowLeft");

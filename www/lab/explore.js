@@ -143,19 +143,54 @@ export class Explorer {
       this.tables.replaceChildren();
       return;
     }
-    const [c, r] = v.cursor ?? (this.lab.picked ?? v.centrePixel());
-    const cols = span(c, img.width);
-    const rows = span(r, img.height);
+    const at = v.cursor ?? (this.lab.picked ?? v.centrePixel());
     const layer = this.lab.layers[Number(this.lab.layerSelect.value)] ?? null;
-    const tables = [table("lab-data-grey", "Grey values", cols, rows, [c, r], (x, y) => img.grey[y * img.width + x])];
-    if (layer) {
-      tables.push(table("lab-data-layer", `Layer “${layer.name}”`, cols, rows, [c, r], (x, y) => {
-        if (x < layer.c0 || y < layer.r0 || x >= layer.c0 + layer.width || y >= layer.r0 + layer.height) return null;
-        return layer.data[(y - layer.r0) * layer.width + (x - layer.c0)];
-      }));
-    }
-    this.tables.replaceChildren(...tables);
+    this.tables.replaceChildren(...aroundTables("lab-data", img, layer, at));
   }
+}
+
+/**
+ * The Data view's tables around pixel `at` [c, r] of a view: the grey values
+ * of `img` and, when there is one, the values of `layer` (its own origin
+ * c0, r0), with ids `${prefix}-grey` and `${prefix}-layer`. The photo's view
+ * (Explorer) and the search photo's (families/correlation.js) show them.
+ */
+export function aroundTables(prefix, img, layer, [c, r]) {
+  const cols = span(c, img.width);
+  const rows = span(r, img.height);
+  const tables = [table(`${prefix}-grey`, "Grey values", cols, rows, [c, r], (x, y) => img.grey[y * img.width + x])];
+  if (layer) {
+    tables.push(table(`${prefix}-layer`, `Layer “${layer.name}”`, cols, rows, [c, r], (x, y) => {
+      if (x < layer.c0 || y < layer.r0 || x >= layer.c0 + layer.width || y >= layer.r0 + layer.height) return null;
+      return layer.data[(y - layer.r0) * layer.width + (x - layer.c0)];
+    }));
+  }
+  return tables;
+}
+
+/**
+ * A second view's Data disclosure (the search photo's): a "Data" button
+ * (aria-expanded, aria-controls) and its panel — a description (`desc`, the
+ * view's aria-describedby) and the tables `fill()` makes while it is open.
+ */
+export function viewData(id, title, fill) {
+  const button = el("button", { type: "button", id: `${id}-toggle`, class: "lab-data-button", "aria-expanded": "false", "aria-controls": id }, "Data");
+  const desc = el("p", { id: `${id}-desc`, class: "lab-view-desc" }, "Nothing matched yet.");
+  const tables = el("div", { class: "lab-data-tables" });
+  const panel = el("section", { class: "lab-data", id, hidden: true, "aria-labelledby": `${id}-title` },
+    el("h3", { id: `${id}-title` }, title),
+    desc,
+    el("p", { class: "muted" }, "Focus the view and move its cursor with the arrow keys: the tables show the pixels around it."),
+    tables);
+  const update = () => {
+    if (!panel.hidden) tables.replaceChildren(...fill());
+  };
+  button.addEventListener("click", () => {
+    panel.hidden = !panel.hidden;
+    button.setAttribute("aria-expanded", String(!panel.hidden));
+    update();
+  });
+  return { button, panel, desc, update };
 }
 
 /** The indices HALF either side of `i`, inside 0 … n − 1. */

@@ -6,6 +6,7 @@
 import { el } from "../../dom.js";
 import { Viewer, fmt } from "../view.js";
 import * as X from "../explain.js";
+import { aroundTables, viewData } from "../explore.js";
 import { testHook } from "../../test-hooks.js";
 import { link, needImage, number, select, showPixel } from "./common.js";
 
@@ -30,9 +31,15 @@ const correlation = {
     const viewerB = new Viewer(fig, {
       label: "The search photo with the NCC surface and the match",
       onPick: (c, r) => explainSurface(c, r),
+      onCursor: () => data.update(),
+      describedBy: "lab-search-data-desc",
     });
     let bImage = null;
     let last = null;
+    // the search photo's Data view: its grey values and ρ around its cursor (the best match until it moves)
+    const data = viewData("lab-search-data", "Data: the search photo", () =>
+      bImage && last ? aroundTables("lab-search-data", bImage, last.layers[0], viewerB.cursor ?? last.best ?? viewerB.centrePixel()) : []);
+    holder.append(el("div", { class: "lab-viewbar" }, data.button), data.panel);
     const loadPair = async () => {
       const pairName = lab.source?.sample ? (lab.source.sample === "aero1.jpg" ? "aero3.jpg" : lab.source.sample === "aero3.jpg" ? "aero1.jpg" : null) : null;
       if (second.value !== "pair" || !pairName) {
@@ -159,6 +166,9 @@ const correlation = {
         }
         viewerB.setShapes(shapes);
         if (res.best) viewerB.zoomTo(Math.max(2, 300 / (n + 2 * m)), res.best[0], res.best[1]);
+        viewerB.cursor = null;
+        data.desc.textContent = searchWords(bImage, res.layers[0], res.best, s);
+        data.update();
         const rows = [];
         const links = [];
         if (res.best) {
@@ -221,5 +231,20 @@ const correlation = {
     };
   },
 };
+
+/** The search photo in words: its size, the search box, the range of ρ over it and the best match. */
+function searchWords(img, layer, best, [c0, r0, w, h]) {
+  let [lo, hi] = [Infinity, -Infinity];
+  for (const v of layer.data) {
+    if (v < lo) lo = v;
+    if (v > hi) hi = v;
+  }
+  const rho = best ? layer.data[(best[1] - layer.r0) * layer.width + (best[0] - layer.c0)] : null;
+  return [
+    `${img.name}: ${img.width} × ${img.height} pixels; the search box is columns ${c0} to ${c0 + w - 1}, rows ${r0} to ${r0 + h - 1}.`,
+    `The NCC surface (the template centred on each pixel) covers columns ${layer.c0} to ${layer.c0 + layer.width - 1}, rows ${layer.r0} to ${layer.r0 + layer.height - 1}${Number.isFinite(lo) ? `, ρ from ${fmt(lo, 4)} to ${fmt(hi, 4)}` : ""}.`,
+    best ? `The best match is at column ${best[0]}, row ${best[1]}, ρ = ${fmt(rho, 6)}.` : "No best match.",
+  ].join(" ");
+}
 
 export default correlation;
