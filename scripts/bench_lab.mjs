@@ -12,6 +12,9 @@
 //    Förstner window);
 //  - peak wasm memory of the main worker and of a pool worker;
 //  - what a lab visit downloads (lab JS + wasm, gzip -9), against 350 KB.
+// BENCH_LAB_COLOUR=1: the operators on the colour JPEG of the texture (its
+// BT.601 greys, as a phone photo opens) instead of the 8-bit texture;
+// BENCH_LAB_OPS=regex: only the operators whose names match.
 // Benchmarks, not tests. Timing rules of ../shared/bench/TASKS.md: BENCH_WARMUP
 // (1) untimed calls, then n = clamp(floor(BENCH_BUDGET_S (3) / t_last_warmup),
 // BENCH_MIN_REPS (3), BENCH_MAX_REPS (15)) timed calls; the median.
@@ -59,6 +62,7 @@ function texture(w, h) {
 }
 
 const [hc, hr] = [W >> 1, H >> 1];
+const COLOUR = process.env.BENCH_LAB_COLOUR === "1";
 /** The operators, as [name, worker request type, arguments, the bench's fast path (FastImage) or null]; "frame" ones run on the scanned frame. */
 const OPS = [
   ["filter mean 3×3", "filter", { kernel: "mean", border: "replicate" }, (f) => f.mean3("replicate")],
@@ -77,7 +81,7 @@ const OPS = [
   ["resample rotate 7°, ×1.15 (nearest, bilinear, bicubic)", "resample", { kind: "rotate", params: [7, 1.15], width: W, height: H }, null],
   ["boundary: threshold 128, region at the centre, trace", "boundary", { threshold: 128, c: hc, r: hr }, null],
   ["fiducials: four marks + fits (scanned frame)", "fiducials", { frame: true }, null],
-];
+].filter(([name]) => !process.env.BENCH_LAB_OPS || new RegExp(process.env.BENCH_LAB_OPS).test(name));
 
 /** The built site (BENCH_DIST: another build of it). */
 const DIST = process.env.BENCH_DIST || "dist";
@@ -140,7 +144,7 @@ try {
     console.error(`bench lab: ${n} worker${n > 1 ? "s" : ""} …`);
     chrome.ops[n] = {};
     for (const [name, type, a] of OPS) {
-      const r = await page.evaluate(async ({ n, name, type, a, RULES, timedSrc }) => {
+      const r = await page.evaluate(async ({ n, name, type, a, RULES, timedSrc, colour }) => {
         const timed = new Function(`return ${timedSrc}`)();
         if (!window.benchClient || window.benchClient.threads !== n) {
           window.benchClient?.close();
@@ -152,7 +156,22 @@ try {
         const want = a.frame ? "frame" : "big";
         if (window.benchLoaded !== want) {
           if (want === "frame") await client.call("frame");
-          else {
+          else if (colour) {
+            // the texture as a colour JPEG (R = g, G = 255 − g, B = 3g mod 256), opened as a photo is
+            const [w, h] = window.benchSize;
+            const rgba = new Uint8ClampedArray(w * h * 4);
+            const g = window.benchBytes;
+            for (let i = 0; i < g.length; i++) {
+              rgba[4 * i] = g[i];
+              rgba[4 * i + 1] = 255 - g[i];
+              rgba[4 * i + 2] = (g[i] * 3) & 255;
+              rgba[4 * i + 3] = 255;
+            }
+            const cv = new OffscreenCanvas(w, h);
+            cv.getContext("2d").putImageData(new ImageData(rgba, w, h), 0, 0);
+            const b = new Uint8Array(await (await cv.convertToBlob({ type: "image/jpeg", quality: 0.9 })).arrayBuffer());
+            await client.call("load", { name: "texture.jpg", bytes: b.buffer }, [b.buffer]);
+          } else {
             const [w, h] = window.benchSize;
             const b = window.benchBytes.slice();
             await client.call("raw", { width: w, height: h, bytes: b.buffer }, [b.buffer]);
@@ -172,7 +191,7 @@ try {
         } catch (e) {
           return { error: e.message };
         }
-      }, { n, name, type, a, RULES, timedSrc: timed.toString() });
+      }, { n, name, type, a, RULES, timedSrc: timed.toString(), colour: COLOUR });
       chrome.ops[n][name] = r;
       console.error(`  ${name}: ${r.error ?? `${r.median.toFixed(0)} ms (n = ${r.n})`}`);
     }
@@ -184,6 +203,8 @@ try {
     });
   }
   await page.evaluate(() => window.benchClient?.close());
+  // (BENCH_LAB_OPS: the operators only)
+  if (process.env.BENCH_LAB_OPS) throw Object.assign(new Error("operators only"), { opsOnly: true });
 
   // a 12 MP JPEG picked → on screen; slider → preview painted
   const jpeg = Buffer.from(await page.evaluate(async () => {
@@ -263,6 +284,8 @@ try {
   await visit.waitForLoadState("networkidle");
   chrome.visit = [...new Set(fetched.slice(before))].filter((f) => /\.(js|wasm)$/.test(f));
   await context.close();
+} catch (e) {
+  if (!e.opsOnly) throw e;
 } finally {
   await browser.close();
   await server.close();
@@ -270,7 +293,7 @@ try {
 
 const ms = (t) => (!t ? "—" : t.error ? "error" : t.median.toFixed(t.median < 10 ? 1 : 0));
 const [one, many] = [chrome.counts[0], chrome.counts.at(-1)];
-console.log(`\nThe image lab on a ${W} × ${H} texture (${((W * H) / 1e6).toFixed(1)} MP) in Chromium, ${chrome.cores} cores: ms from the request to the whole result on the page,`);
+console.log(`\nThe image lab on a ${W} × ${H} ${COLOUR ? "colour JPEG of the texture (its BT.601 greys; the fast path's column: the 8-bit texture)" : "texture"} (${((W * H) / 1e6).toFixed(1)} MP) in Chromium, ${chrome.cores} cores: ms from the request to the whole result on the page,`);
 console.log(`median of n calls after ${RULES.warm} warm-up (n = clamp(${RULES.budget} s / last warm-up, ${RULES.min}, ${RULES.max})); the fast path: FastImage in Node, one call, same image`);
 const cols = [["operator", 58], ["fast path", 10], [`1 worker`, 10], [`${many} workers`, 10], [`${many} vs 1`, 8], ["1 w / fast", 10]];
 console.log(`  ${cols.map(([t, n], i) => (i ? t.padStart(n) : t.padEnd(n))).join(" ")}`);
@@ -280,18 +303,20 @@ for (const [name] of OPS) {
   console.log(`  ${name.padEnd(58)} ${ms(f).padStart(10)} ${ms(a).padStart(10)} ${ms(b).padStart(10)} ${ratio(a, b).padStart(8)} ${ratio(a, f).padStart(10)}`);
 }
 const num = (v, d = 0) => (Number.isFinite(v) ? v.toFixed(d) : "—");
-console.log(`  ${"12 MP colour JPEG picked → photo on screen".padEnd(58)} ${"".padStart(10)} ${num(chrome.shown).padStart(10)}   (median of 3; JPEG ${(chrome.jpegBytes / 1e6).toFixed(1)} MB)`);
-console.log(`  ${"slider change → preview painted: k × k mean size".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.mean, 1).padStart(10)}   (median of ${chrome.preview.n.mean})`);
-console.log(`  ${"slider change → preview painted: Förstner window".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.forstner, 1).padStart(10)}   (median of ${chrome.preview.n.forstner})`);
+if (chrome.preview) console.log(`  ${"12 MP colour JPEG picked → photo on screen".padEnd(58)} ${"".padStart(10)} ${num(chrome.shown).padStart(10)}   (median of 3; JPEG ${(chrome.jpegBytes / 1e6).toFixed(1)} MB)`);
+if (chrome.preview) console.log(`  ${"slider change → preview painted: k × k mean size".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.mean, 1).padStart(10)}   (median of ${chrome.preview.n.mean})`);
+if (chrome.preview) console.log(`  ${"slider change → preview painted: Förstner window".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.forstner, 1).padStart(10)}   (median of ${chrome.preview.n.forstner})`);
 const mib = (b) => `${(b / 2 ** 20).toFixed(0)} MiB`;
 for (const n of chrome.counts) {
   const m = chrome.memory[n];
   console.log(`  peak wasm memory, pool of ${n}: main worker ${mib(m.main)}, a pool worker ${mib(m.pool)} (${m.instances} instances)`);
 }
-const gz = (f) => zlib.gzipSync(fs.readFileSync(path.join(DIST, f)), { level: 9 }).length;
-const total = chrome.visit.reduce((s, f) => s + gz(f), 0);
-console.log(`\nA lab visit (#/lab after the home page) fetched these JS and wasm files (gzip -9):`);
-for (const f of chrome.visit) console.log(`  ${(gz(f) / 1024).toFixed(1).padStart(7)} KiB  ${f}`);
-console.log(`  ${(total / 1024).toFixed(1).padStart(7)} KiB  in all (aim: ≤ 350 KB = ${(350000 / 1024).toFixed(1)} KiB)`);
-const wasm = chrome.visit.filter((f) => f.endsWith(".wasm"));
-console.log(`  lab wasm builds fetched: ${wasm.length} (${wasm.map((f) => (f === built("lab/pkg-simd/photogrammetry_lab_bg.wasm") ? "SIMD" : f === built("lab/pkg/photogrammetry_lab_bg.wasm") ? "scalar" : f)).join(", ")})`);
+if (chrome.visit) {
+  const gz = (f) => zlib.gzipSync(fs.readFileSync(path.join(DIST, f)), { level: 9 }).length;
+  const total = chrome.visit.reduce((s, f) => s + gz(f), 0);
+  console.log(`\nA lab visit (#/lab after the home page) fetched these JS and wasm files (gzip -9):`);
+  for (const f of chrome.visit) console.log(`  ${(gz(f) / 1024).toFixed(1).padStart(7)} KiB  ${f}`);
+  console.log(`  ${(total / 1024).toFixed(1).padStart(7)} KiB  in all (aim: ≤ 350 KB = ${(350000 / 1024).toFixed(1)} KiB)`);
+  const wasm = chrome.visit.filter((f) => f.endsWith(".wasm"));
+  console.log(`  lab wasm builds fetched: ${wasm.length} (${wasm.map((f) => (f === built("lab/pkg-simd/photogrammetry_lab_bg.wasm") ? "SIMD" : f === built("lab/pkg/photogrammetry_lab_bg.wasm") ? "scalar" : f)).join(", ")})`);
+}
