@@ -45,7 +45,7 @@ try {
     await page.waitForSelector(".motion:not([hidden])");
     const r = await page.evaluate(async (want) => {
       const m = document.querySelector(".motion").motion;
-      const frames = Number(document.querySelector(".motion-slider").max);
+      const frames = m.count;
       m.benchEveryFrame(true);
       m.benchTimes.length = 0;
       const intervals = [];

@@ -12,7 +12,7 @@ import { keepFitted } from "./math.js";
 import { buildHash, parseHash } from "./url.js";
 import { el, keepTallest } from "./dom.js";
 import { buildForm } from "./form.js";
-import { renderAnswer, renderNotes, renderResult, updateSteps } from "./render.js";
+import { markStep, renderAnswer, renderNotes, renderResult, updateSteps } from "./render.js";
 import { figuresPending, hasFigure, loadFigures, mountFigures } from "./figures/index.js";
 import { formatValue } from "./format.js";
 import * as embedPage from "./embed-page.js";
@@ -197,7 +197,14 @@ function buildView(entry) {
       v.form.set(texts);
       inputChanged();
     };
-    v.figure = mountFigures(figureHost, id, { onInputs });
+    // a moving figure (issue 34): its frame's step marked in the list, the frame it stops at in the link (play=)
+    const onStep = (k) => markStep(stepsList, k);
+    const onPosition = (i) => {
+      if (view !== v) return;
+      embedPage.setPlay(i);
+      writeUrl();
+    };
+    v.figure = mountFigures(figureHost, id, { onInputs, onStep, onPosition });
   }
 
   v.parts = { heading, answerLine, urlNotice, errorBox, staleBanner, stepsList, resultBody, notesBody, solutionArea, sweepHost, sweepButton };
@@ -681,6 +688,13 @@ async function route({ focus = false } = {}) {
     notice.textContent = "";
   }
   recompute();
+  // play= in the address: the moving figure opens at that frame (or plays)
+  const play = embedPage.currentOptions().play;
+  if (play && v.figure?.hasMotion) v.figure.play(play);
+  else if (play) {
+    notice.textContent = `${notice.textContent} Ignored the option play: the figure of this example does not move.`.trim();
+    notice.hidden = false;
+  }
   // sweep= / plot= in the address: the sweep opens with them
   const { sweep, plot } = embedPage.currentOptions();
   if (sweep || plot) openSweep(v, { spec: sweep, plot });

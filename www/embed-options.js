@@ -10,19 +10,23 @@
 //   step=3                       the step to start at: marked, and open when collapsed
 //   host=https://course.example  the embedding page's origin: messages go only there
 //   id=ex1                       echoed in every message to the host page
+//   play=7 | play=auto           a moving figure (issue 34): open at frame 7, paused,
+//                                or play from the first frame (paused at it under reduced motion)
 //   sweep=key:from:to:steps      a sweep of one number input (issue 34; www/sweep/link.js)
 //   plot=gsd_cm,pixel_size_mm    the results the sweep plots
 
 import { parsePlot, parseSweep } from "./sweep/link.js";
 
 export const PARTS = Object.freeze(["inputs", "steps", "figure", "result", "notes", "tools"]);
-export const OPTION_KEYS = Object.freeze(["theme", "show", "hide", "steps", "lock", "step", "host", "id", "sweep", "plot"]);
+export const OPTION_KEYS = Object.freeze(["theme", "show", "hide", "steps", "lock", "step", "host", "id", "play", "sweep", "plot"]);
 const THEMES = ["auto", "light", "dark"];
 const MAX_QUOTED = 40;
 const MAX_STEP = 1000;
+/** The highest frame play= may name (a 64 × 64 search gives a few thousand positions). */
+export const MAX_FRAME = 100000;
 
 export function defaults() {
-  return { theme: "auto", hide: [], steps: "open", lock: false, step: null, host: null, id: null, sweep: null, plot: null };
+  return { theme: "auto", hide: [], steps: "open", lock: false, step: null, host: null, id: null, play: null, sweep: null, plot: null };
 }
 
 function quote(text) {
@@ -113,6 +117,15 @@ export function parseOptions(params) {
           options.step = Number(v);
           keep(key, String(options.step));
         } else bad("give a step number, 1 or more");
+        break;
+      case "play":
+        if (v.toLowerCase() === "auto") {
+          options.play = { auto: true };
+          keep(key, "auto");
+        } else if (/^\d{1,6}$/.test(v) && Number(v) >= 1 && Number(v) <= MAX_FRAME) {
+          options.play = { frame: Number(v) };
+          keep(key, String(options.play.frame));
+        } else bad(`give a frame number from 1 to ${MAX_FRAME} (opens paused there) or auto (plays from the first frame)`);
         break;
       case "sweep": {
         const read = parseSweep(v);

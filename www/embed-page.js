@@ -46,6 +46,15 @@ export function optionEntries() {
   return optionList;
 }
 
+/**
+ * The frame a moving figure stopped at (0-based; null: every position shown),
+ * written into the address as play=N (1-based) so a copied link opens there.
+ */
+export function setPlay(index) {
+  optionList = optionList.filter(([k]) => k !== "play");
+  if (Number.isInteger(index) && index >= 0) optionList.push(["play", String(index + 1)]);
+}
+
 /** The sweep's part of the address (sweep=key:from:to:steps&plot=a,b; www/sweep/): null removes it. */
 export function setSweep(sweep, plot) {
   optionList = optionList.filter(([k]) => k !== "sweep" && k !== "plot");

@@ -65,7 +65,7 @@ const state = () =>
       playing: m.dataset.playing === "true",
       caption: m.querySelector(".motion-caption").textContent,
       live: m.querySelector(".motion-live").textContent,
-      counter: m.querySelector(".motion-counter").textContent,
+      counter: m.querySelector(".motion-counter")?.textContent ?? null,
       slider: m.querySelector(".motion-slider")?.value ?? null,
       playHidden: m.querySelector(".motion-play").hidden,
       marked: [...document.querySelectorAll(".steps .step-playing")].map((s) => s.id),
@@ -189,15 +189,23 @@ describe("motion", { timeout: TEST_TIMEOUT * 2 }, () => {
     for (let k = 0; k < n; k++) {
       await press(".motion-forward");
       const st = await state();
-      assert.equal(st.counter, `Iteration ${k + 1} of ${n}`);
+      assert.equal(st.frame, k + 1);
+      // the figure's own iteration slider is the scrub: it follows, and names the frame
+      assert.equal(await page.locator(".figure-slider span").first().textContent(), `Iteration ${k + 1} of ${n}`);
       const num = (key) => readNumber(new RegExp(`(?:^|[ (])${key} = (−?[\\d.]+(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)`).exec(st.caption)?.[1] ?? "");
       for (const key of ["c", "r", "a", "b", "dc", "dr", "da", "db"]) {
         assert.ok(Math.abs(num(key) - v[key][k]) <= 1e-4 * Math.max(1, Math.abs(v[key][k])), `iteration ${k + 1}: ${key} in “${st.caption}” vs ${v[key][k]}`);
       }
       assert.ok(Math.abs(lastNumber(st.caption) - v.sigma0[k]) <= 1e-4 * Math.max(1, v.sigma0[k]), st.caption);
-      assert.equal(await page.locator(".figure-slider input").first().inputValue(), String(k + 1), "the iteration slider follows");
+      assert.equal(await page.locator(".figure-slider input").first().inputValue(), String(k + 1));
       assert.deepEqual(st.marked, [`step-${s.steps.findIndex((x) => x.title === "Every iteration") + 1}`]);
     }
+    // that slider scrubs the motion
+    await page.locator(".figure-slider input").first().focus();
+    await page.keyboard.press("Home");
+    const st = await state();
+    assert.equal(st.frame, 1);
+    assert.match(st.caption, new RegExp(`^Iteration 1 of ${n}:`));
   });
 
   test("play= opens at a frame, paused; a bad value is named", async () => {

@@ -562,8 +562,12 @@ function drawSurface(ctx, width, height, solution, state) {
   // ρ as the seed prints it: four decimals where they fit, two otherwise
   const decimals = L.heat >= HEAT_MAX - 4 ? 4 : 2;
   cells(ctx, d.rho, L.xh, L.y2, L.heat, rhoShade, (v) => v.toFixed(decimals).replace("-", "\u2212"));
-  ctx.fillStyle = COLORS.background;
-  for (let i = f ? f.index + 1 : d.h * d.w; i < d.h * d.w; i += 1) ctx.fillRect(L.xh + (i % d.w) * L.heat + 1, L.y2 + Math.floor(i / d.w) * L.heat + 1, L.heat - 2, L.heat - 2);
+  for (let i = f ? f.index + 1 : d.h * d.w; i < d.h * d.w; i += 1) {
+    const [x, y] = [L.xh + (i % d.w) * L.heat, L.y2 + Math.floor(i / d.w) * L.heat];
+    ctx.fillStyle = COLORS.background;
+    ctx.fillRect(x, y, L.heat, L.heat);
+    outline(ctx, x, y, L.heat, L.heat, COLORS.grid, 1);
+  }
   if (best && final) {
     const [br, bc] = best;
     // the 3×3 neighbourhood Example 9 fits, clipped to the surface

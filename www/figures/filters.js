@@ -83,7 +83,7 @@ function rowTerms(nums, vals) {
 
 function sumLines(d) {
   // a motion frame at another pixel than the selected one: its output values (the solution writes out the selected pixel's sum only)
-  if (d.frame && !d.frame.selected) return [{ text: d.frame.values, weight: "bold", color: COLORS.highlight }, { text: "The sum is written out for the selected pixel (click one); the solution's steps give it.", color: COLORS.muted }];
+  if (d.frame && !d.frame.selected) return [{ text: d.frame.values, weight: "bold", color: COLORS.highlight }, { text: `The multiply-and-sum is written out for the selected pixel (row ${d.frame.sel.r}, column ${d.frame.sel.c}), here and in the steps.`, color: COLORS.muted }];
   const nb = d.neighbourhood;
   const at = `row ${d.sel.r}, column ${d.sel.c}`;
   if (!Array.isArray(nb)) {
@@ -371,6 +371,7 @@ function moving(spec, dataOf, noun) {
           index: k,
           ...at,
           selected,
+          sel: d.sel,
           values: `At row ${at.r}, column ${at.c}: ${values}`,
           step: selected && index(solution) >= 0 ? index(solution) : last(solution) >= 0 ? last(solution) : null,
           caption: `${noun[0].toUpperCase()}${noun.slice(1)} ${k + 1}: the kernel over rows ${at.r - Math.floor(kh / 2)}–${at.r - Math.floor(kh / 2) + kh - 1}, columns ${at.c - Math.floor(kw / 2)}–${at.c - Math.floor(kw / 2) + kw - 1} of the window; at row ${at.r}, column ${at.c}: ${values}.`,

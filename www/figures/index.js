@@ -202,18 +202,24 @@ function paint(panel, solution, shared = { selected: null }, light = false) {
   if (!solution || room <= 0) return;
   // a figure whose targets would be smaller than 24 × 24 px (WCAG 2.5.8) asks for a wider canvas: the panel scrolls
   let width = room;
-  try {
-    if (typeof spec.minWidth === "function") width = Math.max(room, Math.ceil(spec.minWidth(solution)));
-  } catch {
-    width = room;
-  }
-  figure.classList.toggle("figure-wide", width > room);
   const dpr = window.devicePixelRatio || 1;
   let height;
-  try {
-    height = Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, spec.height(width, solution))));
-  } catch {
-    height = MIN_HEIGHT;
+  // a frame while playing keeps the canvas's size (the solution and the width are the same)
+  const kept = light && panel.size?.room === room && panel.size.solution === solution ? panel.size : null;
+  if (kept) ({ width, height } = kept);
+  else {
+    try {
+      if (typeof spec.minWidth === "function") width = Math.max(room, Math.ceil(spec.minWidth(solution)));
+    } catch {
+      width = room;
+    }
+    figure.classList.toggle("figure-wide", width > room);
+    try {
+      height = Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, spec.height(width, solution))));
+    } catch {
+      height = MIN_HEIGHT;
+    }
+    panel.size = { room, solution, width, height };
   }
   canvas.style.width = `${width}px`;
   canvas.style.height = `${height}px`;
@@ -239,7 +245,11 @@ function paint(panel, solution, shared = { selected: null }, light = false) {
     // the legend of every grey scale drawn, in words
     const scales = (canvas.greyScales ?? []).map((g) => `${g.text}.`);
     canvas.setAttribute("aria-label", [spec.describe(solution, state), ...scales].join(" "));
-    if (panel.status) panel.status.textContent = spec.status(solution, state) ?? "";
+    if (panel.status) {
+      panel.status.textContent = spec.status(solution, state) ?? "";
+      // a motion frame's caption (and its live line) says it: the selection's line would say it twice
+      panel.status.hidden = frame !== null;
+    }
     showData(panel, solution, state, width, height, ctx);
     operable(canvas);
   } catch (e) {
@@ -527,7 +537,7 @@ export function mountFigures(host, id, { onInputs = null, onStep = null, onPosit
           onStep: (k) => onStep?.(k),
           onPosition: (i) => onPosition?.(i),
         });
-        canvas.after(panel.motion.element);
+        (panel.slider?.label ?? canvas).after(panel.motion.element);
         if (solution) panel.motion.setFrames(panel.frames);
         openRequested();
       });

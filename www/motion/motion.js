@@ -74,7 +74,8 @@ export function createMotion({ noun = "position", show, onStep = () => {}, onPos
   const all = button("Show all", "all");
   const slider = el("input", { type: "range", min: "1", max: "1", step: "1", value: "1", id: `${id}-slider`, class: "motion-slider" });
   const counter = el("span", { class: "motion-counter", id: `${id}-counter` });
-  const sliderLabel = scrub ? el("label", { for: `${id}-slider`, class: "motion-slider-label" }, counter, slider) : el("p", { class: "motion-slider-label" }, counter);
+  // without a scrub of its own the figure's slider (above) names the frame: no counter
+  const sliderLabel = scrub ? el("label", { for: `${id}-slider`, class: "motion-slider-label" }, counter, slider) : null;
   const speed = el("select", { id: `${id}-speed`, class: "motion-speed" }, ...RATES.map((r) => el("option", { value: String(r) }, `${r} per second`)));
   speed.value = String(rate);
   const speedLabel = el("label", { for: `${id}-speed`, class: "motion-speed-label" }, "Speed ", speed);
@@ -208,6 +209,10 @@ export function createMotion({ noun = "position", show, onStep = () => {}, onPos
       }
       onStep(index === null ? null : frames[index]?.step ?? null);
       sync();
+    },
+    /** How many frames there are. */
+    get count() {
+      return frames.length;
     },
     /** The frame shown (0-based) or null. */
     get index() {
