@@ -167,6 +167,44 @@ test("edges: gx, gy and the magnitude of the clicked pixel are the example's ans
   await context.close();
 });
 
+test("a colour photo: the filters' and edges' layers (fast, from its BT.601 greys) are the explained window's numbers", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await sample(page, "aero1.jpg");
+  assert.match(await page.textContent("#lab-info"), /colour/i);
+  // the layer is the exact value rounded to f32, within half a step (and the reference's own f64 roundings)
+  const f32near = (layer, exact, what) => assert.ok(Math.abs(layer - exact) <= Math.abs(exact) * 2 ** -24 * (1 + 1e-6) + 1e-9, `${what}: the layer's ${layer} beside the exact ${exact}`);
+  await page.selectOption("#lab-family", "filters");
+  for (const [kernel, side, taps] of [["gaussian-3", 5, [1, 2, 1, 2, 4, 2, 1, 2, 1].map((k) => k / 16)], ["median", 5, null]]) {
+    await page.selectOption("#lab-kernel", kernel);
+    await page.click("#lab-run");
+    await idle(page);
+    const x = await explainAt(page, 301, 203);
+    const q = new URLSearchParams(x.href.split("?")[1]);
+    // the explained window: the colour photo's greys (BT.601, three decimals at most), the ones the layer was made from
+    const win = q.get("window").split(";").map((row) => row.split(",").map(Number));
+    assert.equal(win.length, side);
+    assert.ok(win.flat().some((v) => !Number.isInteger(v)) && win.flat().every((v) => Math.abs(v * 1000 - Math.round(v * 1000)) < 1e-6), q.get("window"));
+    const inner = win.slice(1, 4).map((row) => row.slice(1, 4)).flat();
+    const fromWindow = taps ? inner.reduce((s, v, i) => s + taps[i] * v, 0) : [...inner].sort((a, b) => a - b)[4];
+    assert.ok(near(fromWindow, x.value, 1e-9), `${kernel}: the window's ${fromWindow} vs the lab's exact ${x.value}`);
+    const a = await answerOf(context, page.url(), x.href, "selected");
+    assert.equal(a.exact, x.value, `${kernel} at (${x.c}, ${x.r}): the example's ${a.exact}, the lab's ${x.value}`);
+    f32near(x.layer, x.value, kernel);
+  }
+  await page.selectOption("#lab-family", "edges");
+  await page.selectOption("#lab-operator", "sobel");
+  await page.click("#lab-run");
+  await idle(page);
+  const names = await page.locator("#lab-layer option").allTextContents();
+  await page.selectOption("#lab-layer", String(names.indexOf("magnitude")));
+  const x = await explainAt(page, 250, 170);
+  const a = await answerOf(context, page.url(), x.href, "selected_magnitude");
+  assert.equal(a.exact, x.value, `magnitude at (${x.c}, ${x.r})`);
+  f32near(x.layer, x.value, "magnitude");
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
 test("interest operators: w and q of Förstner's window and Moravec's mean are the example's answer line", { timeout: TEST_TIMEOUT * 2 }, async () => {
   const { page, log, context } = await openLab();
   await sample(page, "left01.jpg");

@@ -375,8 +375,9 @@ const handlers = {
     const halo = lab.op_halo(op, args) ?? 0;
     const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
     const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
-    // (a photo that is not 8-bit rounded to 8 bits: the fast paths; the result's own numbers come with it)
-    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0, true);
+    // (a photo that is not 8-bit: the filters and edges read its greys as they are — a colour photo's
+    // take the fast paths, ops::Levels —, the others rounded to 8 bits for the fast paths; the result's own numbers come with it)
+    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0, !(op === "filter" || op === "edges"));
     try {
       const r = cut(run(img, args), [rect[0] - c0, rect[1] - r0, rect[2], rect[3]], [c0, r0]);
       const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];
