@@ -152,20 +152,32 @@ impl Levels {
 /// must give the value back bit for bit), else `None`.
 pub fn levels_of(values: &[f64]) -> Option<Levels> {
     const LIMIT: f64 = 16_777_216.0;
-    'scales: for scale in LEVEL_SCALES {
-        let mut data = Vec::with_capacity(values.len());
-        let mut max = 0.0f32;
-        for &v in values {
-            // (floor, not round: a wasm instruction, not a libm call; v ≥ 0)
-            let n = (v * scale + 0.5).floor();
-            if !(v >= 0.0 && n < LIMIT && n / scale == v) {
-                continue 'scales;
-            }
+    // (floor, not round: a wasm instruction, not a libm call; v ≥ 0)
+    let level = |v: f64, scale: f64| {
+        let n = (v * scale + 0.5).floor();
+        (v >= 0.0 && n < LIMIT && n / scale == v, n)
+    };
+    // a scale is tried on every value only when a spread of 64 of them fit
+    // (a photo's greys fail a wrong scale at once; a dark top rows' whole
+    // numbers would fit scale 1 for a long way)
+    let step = (values.len() / 64).max(1);
+    for scale in LEVEL_SCALES {
+        if !values.iter().step_by(step).all(|&v| level(v, scale).0) {
+            continue;
+        }
+        // one pass without a branch per value (the check folded into `ok`)
+        let mut data = vec![0.0f32; values.len()];
+        let (mut ok, mut max) = (true, 0.0f32);
+        for (d, &v) in data.iter_mut().zip(values) {
+            let (fits, n) = level(v, scale);
+            ok &= fits;
             let n = n as f32;
             max = if n > max { n } else { max };
-            data.push(n);
+            *d = n;
         }
-        return Some(Levels { data, scale, max });
+        if ok {
+            return Some(Levels { data, scale, max });
+        }
     }
     None
 }

@@ -369,3 +369,18 @@ fn other_greys_keep_the_reference_paths() {
         |g, v| g.to_bits() == (v as f32).to_bits(),
     );
 }
+
+/// A scale that fits the values `levels_of` looks at first but not one
+/// further on is not taken: every value gives its grey back.
+#[test]
+fn levels_fit_every_value_not_a_sample() {
+    let mut v: Vec<f64> = (0..10_000).map(|i| (i % 251) as f64).collect();
+    v[5_001] = 0.1;
+    let l = ops::levels_of(&v).expect("whole numbers over 1000 … 16000");
+    assert_eq!(l.scale, 1000.0);
+    for (n, g) in l.data.iter().zip(&v) {
+        assert_eq!((f64::from(*n) / l.scale).to_bits(), g.to_bits());
+    }
+    v[5_001] = std::f64::consts::PI;
+    assert!(ops::levels_of(&v).is_none());
+}
