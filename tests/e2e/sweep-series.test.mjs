@@ -8,7 +8,7 @@
 import assert from "node:assert/strict";
 import { test } from "node:test";
 import { nodeModule } from "./harness.mjs";
-import { chooseRange, computeSeries, fieldApplies, numericResultKeys, seriesCsv, sweepableFields, sweepValues, valueText } from "../../www/sweep/series.js";
+import { chooseRange, computeGrid, computeSeries, fieldApplies, numericResultKeys, seriesCsv, sweepableFields, sweepValues, valueText } from "../../www/sweep/series.js";
 
 const core = await nodeModule("all");
 const entries = core.catalog().filter((e) => e.status === "ready");
@@ -77,3 +77,24 @@ for (const entry of swept) {
     });
   });
 }
+
+test("two inputs at once: every cell of a grid is solve(id, inputs with both values), a refused one null with its message", () => {
+  const xs = [-100, 0, 600, 1200];
+  const ys = [100, 152, 300];
+  const grid = computeGrid(core.solve, "gsd", {}, "dpi", xs, "focal_length_mm", ys, "gsd_cm");
+  ys.forEach((f, i) =>
+    xs.forEach((d, j) => {
+      let v = null;
+      let message = null;
+      try {
+        v = core.solve("gsd", { dpi: d, focal_length_mm: f }).result.gsd_cm;
+      } catch (e) {
+        message = e.message;
+      }
+      assert.equal(grid.values[i][j], v, `dpi ${d}, f ${f}`);
+      assert.equal(grid.errors[i][j], message);
+    }),
+  );
+  assert.equal(grid.errors[0][0]?.startsWith("dpi: "), true);
+  assert.equal(grid.values[1][2], core.solve("gsd", { dpi: 600 }).result.gsd_cm);
+});

@@ -10,6 +10,7 @@ import assert from "node:assert/strict";
 import fs from "node:fs";
 import { createRequire } from "node:module";
 import { TEST_TIMEOUT, nodeModule, open, start, startHost } from "./harness.mjs";
+import { sweepValues } from "../../www/sweep/series.js";
 
 const WAIT = 20_000;
 const AXE = createRequire(import.meta.url).resolve("axe-core/axe.min.js");
@@ -138,6 +139,32 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
       assert.match(await page.textContent(".sweep-errors-fold summary"), new RegExp(`^${refused.length} of 15 points have no solution`));
       assert.equal(await page.locator(".sweep-legend li").count(), 3, "two results and the worked example");
       assert.match(await page.textContent(".sweep-legend"), /left axis.*right axis/);
+      // two inputs at once: dpi (columns) × focal length (rows), gsd_cm in each cell
+      if (!(await page.$eval(".sweep-grid", (d) => d.open))) await page.click(".sweep-grid summary");
+      await page.selectOption("[id$=-grid-field]", "focal_length_mm");
+      await page.selectOption("[id$=-grid-result]", "gsd_cm");
+      await page.fill("[id$=-grid-from]", "100");
+      await page.fill("[id$=-grid-to]", "200");
+      await page.fill("[id$=-grid-steps]", "3");
+      await page.click("[data-tool=sweep-grid]");
+      const cells = await page.$$eval(".sweep-grid-table tbody tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+      assert.equal(cells.length, 3);
+      // the columns: 11 points over the sweep's range (grid.js MAX_CELLS_SIDE)
+      const xs = sweepValues({ from: -200, to: 1200, steps: 11 });
+      assert.deepEqual(await page.$$eval(".sweep-grid-table thead th", (ths) => ths.slice(1).map((th) => Number(th.textContent.replace("−", "-")))), xs);
+      cells.forEach(([f, ...row], i) => {
+        assert.equal(Number(f), [100, 150, 200][i]);
+        row.forEach((text, j) => {
+          let v = null;
+          try {
+            v = core.solve("gsd", { dpi: xs[j], focal_length_mm: Number(f) }).result.gsd_cm;
+          } catch {
+            // refused: the cell says so
+          }
+          if (v === null) assert.equal(text, "no solution");
+          else assert.ok(Math.abs(Number(text) - v) <= 1e-5 * Math.abs(v), `${text} vs ${v}`);
+        });
+      });
       // the first point is refused: its message is read on the keyboard's cursor
       await page.focus(".sweep-frame");
       await page.keyboard.press("Home");

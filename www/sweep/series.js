@@ -162,6 +162,16 @@ export function computeSeries(solve, id, inputs, key, values, plot) {
   return { key, plot: [...plot], xs: [...values], ys, points };
 }
 
+/**
+ * One result over a grid of two inputs: values[i][j] = result `k` of
+ * solve(id, { ...inputs, [keyY]: ys[i], [keyX]: xs[j] }) (null where it has
+ * none), errors[i][j] the solver's message or null.
+ */
+export function computeGrid(solve, id, inputs, keyX, xs, keyY, ys, k) {
+  const rows = ys.map((y) => computeSeries(solve, id, { ...inputs, [keyY]: y }, keyX, xs, [k]));
+  return { keyX, keyY, k, xs: [...xs], ys: [...ys], values: rows.map((r) => r.ys[k]), errors: rows.map((r) => r.points.map((p) => p.error)) };
+}
+
 /** Why point i has no value for result k (the solver's message, or that the result has none there). */
 export function gapReason(series, i, k) {
   const p = series.points[i];

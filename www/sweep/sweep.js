@@ -14,6 +14,7 @@ import { testData } from "../test-hooks.js";
 import { labelOf } from "../render.js";
 import { dataView, num, renderData, seriesTable } from "../figures/data-view.js";
 import { axesOf, colour, makeChart, strokeOf } from "./chart.js";
+import { gridFold } from "./grid.js";
 import {
   checkPlot,
   checkSweep,
@@ -80,6 +81,19 @@ export function mountSweep(host, api) {
   const csvButton = el("button", { type: "button", class: "button keep-enabled", "data-tool": "sweep-csv" }, "Series (CSV)");
   const pngButton = el("button", { type: "button", class: "button keep-enabled", "data-tool": "sweep-png" }, "Chart (PNG)");
   const closeButton = el("button", { type: "button", class: "button keep-enabled" }, "Close the sweep");
+  // two inputs at once: the sweep's input and a second one, one result, as a shaded table (grid.js)
+  const grid = gridFold({
+    core,
+    id,
+    entry,
+    prefix,
+    first: () => ({ field: state.field, range: state.range }),
+    results: () => plotted().shown,
+    base: () => {
+      const b = baseInputs();
+      return b.error ? b : { inputs: { ...b.inputs, [state.field.key]: currentValue() ?? state.field.default } };
+    },
+  });
   const section = el(
     "section",
     { class: "panel sweep-section", "aria-labelledby": heading.id, "data-sweep": "" },
@@ -96,6 +110,7 @@ export function mountSweep(host, api) {
     data.body,
     errorsBox,
     el("div", { class: "tools" }, csvButton, pngButton, closeButton),
+    grid.element,
     status,
   );
   // the sweep's controls stay usable in a locked embed: they change no input of the exercise
@@ -391,6 +406,7 @@ export function mountSweep(host, api) {
     frame.setAttribute("aria-label", `Sweep chart: ${shown.map((s) => s.label).join(", ")} against ${state.field.label}`);
     if (data.open) showData();
     renderErrors();
+    grid.refresh();
     if (state.idx !== null && state.idx >= values.length) state.idx = null;
     const js = performance.now() - t0;
     // for `npm run bench -- sweep`: the series and its chart, after the frame that paints them

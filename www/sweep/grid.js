@@ -1,0 +1,126 @@
+// Two inputs at once (docs/sweeps.md): one result over a grid of two number
+// inputs, as a table whose cells are shaded by their value (a small heat map
+// that is also the numbers). Every cell is solve(id, inputs with both values)
+// (series.js computeGrid). Part of the sweep panel (sweep.js), loaded with it.
+
+import { el } from "../dom.js";
+import { num } from "../figures/data-view.js";
+import { SIGNED_NEGATIVE, rgbText } from "../colour-scales.js";
+import { chooseRange, computeGrid, sweepableFields, sweepValues } from "./series.js";
+
+/** Columns and rows of the table at most (a phone's width; a solve per cell). */
+export const MAX_CELLS_SIDE = 11;
+/** The strongest shade (alpha of the blue over the panel): the cell's text keeps its contrast. */
+const MAX_ALPHA = 0.45;
+
+const fieldText = (f) => `${f.label}${f.unit ? ` (${f.unit})` : ""}`;
+
+/**
+ * The "Two inputs at once" fold. `ctx`: { core, id, entry, prefix, first(): { field, range },
+ * results(): [{ key, label, unit }], base(): { inputs } | { error } }.
+ */
+export function gridFold(ctx) {
+  const { core, id, entry, prefix } = ctx;
+  const fields = sweepableFields(entry);
+  const second = el("select", { id: `${prefix}-grid-field`, class: "keep-enabled" });
+  const from = el("input", { id: `${prefix}-grid-from`, type: "number", step: "any", class: "keep-enabled" });
+  const to = el("input", { id: `${prefix}-grid-to`, type: "number", step: "any", class: "keep-enabled" });
+  const steps = el("input", { id: `${prefix}-grid-steps`, type: "number", step: "1", min: "2", max: String(MAX_CELLS_SIDE), value: "6", class: "keep-enabled" });
+  const result = el("select", { id: `${prefix}-grid-result`, class: "keep-enabled" });
+  const make = el("button", { type: "button", class: "button keep-enabled", "data-tool": "sweep-grid" }, "Make the table");
+  const message = el("p", { class: "sweep-message", role: "status" });
+  const out = el("div", { class: "sweep-grid-out" });
+  const labelled = (input, text) => el("div", { class: "sweep-control" }, el("label", { for: input.id }, text), input);
+  const fold = el(
+    "details",
+    { class: "sweep-grid" },
+    el("summary", {}, "Two inputs at once (a table)"),
+    el("p", { class: "sweep-intro" }, `One result over the sweep’s input (columns, at most ${MAX_CELLS_SIDE} of its points) and a second input (rows); the stronger the blue, the higher the value.`),
+    el("div", { class: "sweep-controls" }, labelled(second, "Second input"), labelled(from, "From"), labelled(to, "To"), labelled(steps, "Rows"), labelled(result, "Result")),
+    el("div", { class: "tools" }, make),
+    message,
+    out,
+  );
+
+  /** The choices follow the sweep (its input is not a second one; its results are the table's). */
+  function refresh() {
+    const { field } = ctx.first();
+    const keep = second.value;
+    second.replaceChildren(...fields.filter((f) => f.key !== field.key).map((f) => el("option", { value: f.key }, fieldText(f))));
+    if ([...second.options].some((o) => o.value === keep)) second.value = keep;
+    const keepResult = result.value;
+    result.replaceChildren(...ctx.results().map((r) => el("option", { value: r.key }, `${r.label}${r.unit ? ` (${r.unit})` : ""}`)));
+    if ([...result.options].some((o) => o.value === keepResult)) result.value = keepResult;
+    fold.hidden = !second.options.length || !result.options.length;
+    if (!fold.hidden && keep !== second.value) aim();
+  }
+
+  /** A range around the second input's value (as the sweep's own). */
+  function aim() {
+    const f = fields.find((g) => g.key === second.value);
+    const base = ctx.base();
+    if (!f || base.error) return;
+    const r = chooseRange(core.solve, id, base.inputs, f, base.inputs[f.key] ?? f.default);
+    from.value = String(r.from);
+    to.value = String(r.to);
+    steps.value = String(Math.min(6, f.kind === "integer" ? r.to - r.from + 1 : 6));
+  }
+  second.addEventListener("change", aim);
+
+  make.addEventListener("click", () => {
+    const base = ctx.base();
+    if (base.error) return void (message.textContent = base.error);
+    const f2 = fields.find((g) => g.key === second.value);
+    const r = ctx.results().find((x) => x.key === result.value);
+    const n = steps.valueAsNumber;
+    if (!f2 || !r) return void (message.textContent = "Choose a second input and a result.");
+    if (!Number.isFinite(from.valueAsNumber) || !Number.isFinite(to.valueAsNumber) || from.valueAsNumber === to.valueAsNumber) return void (message.textContent = "“From” and “To” must be two different numbers.");
+    if (!Number.isInteger(n) || n < 2 || n > MAX_CELLS_SIDE) return void (message.textContent = `“Rows” must be a whole number from 2 to ${MAX_CELLS_SIDE}.`);
+    const { field, range } = ctx.first();
+    const xs = sweepValues({ ...range, steps: Math.min(range.steps, MAX_CELLS_SIDE) }, field.kind === "integer");
+    const ys = sweepValues({ from: from.valueAsNumber, to: to.valueAsNumber, steps: n }, f2.kind === "integer");
+    const inputs = { ...base.inputs };
+    delete inputs[f2.key];
+    const grid = computeGrid(core.solve, id, inputs, field.key, xs, f2.key, ys, r.key);
+    out.replaceChildren(table(grid, field, f2, r));
+    const bad = grid.errors.flat().filter(Boolean).length;
+    message.textContent = `${ys.length} × ${xs.length} solutions${bad ? `, ${bad} without a solution (their cells say so; the message is in each cell’s title and in the Data table of the sweep)` : ""}.`;
+  });
+
+  function table(grid, fx, fy, r) {
+    const vals = grid.values.flat().filter((v) => v !== null);
+    const lo = Math.min(...vals);
+    const hi = Math.max(...vals);
+    const shade = (v) => (hi > lo ? (MAX_ALPHA * (v - lo)) / (hi - lo) : MAX_ALPHA / 2);
+    const caption = `${r.label}${r.unit ? ` (${r.unit})` : ""}: ${fieldText(fy)} down, ${fieldText(fx)} across`;
+    const t = el(
+      "table",
+      { class: "figure-table sweep-grid-table", id: `${prefix}-grid-table` },
+      el("caption", { class: "visually-hidden" }, caption),
+      el("thead", {}, el("tr", {}, el("th", { scope: "col" }, `${fy.key} \\ ${fx.key}`), ...grid.xs.map((x) => el("th", { scope: "col" }, num(x))))),
+      el(
+        "tbody",
+        {},
+        ...grid.ys.map((y, i) =>
+          el(
+            "tr",
+            {},
+            el("th", { scope: "row" }, num(y)),
+            ...grid.xs.map((x, j) => {
+              const v = grid.values[i][j];
+              const err = grid.errors[i][j];
+              const td = el("td", err ? { class: "figure-text", title: err } : {}, v === null ? (err ? "no solution" : "no value") : num(v));
+              if (v !== null) td.style.backgroundColor = `rgba(${rgbText(SIGNED_NEGATIVE)}, ${shade(v).toFixed(3)})`;
+              return td;
+            }),
+          ),
+        ),
+      ),
+    );
+    // the caption's words above the scrolling box (a wide table's own caption would scroll away with it)
+    const wrap = el("div", { class: "figure-table-wrap", tabindex: "0", role: "region", "aria-label": `${caption}: scroll to see all of it` }, t);
+    return el("div", {}, el("p", { class: "figure-table-title", "aria-hidden": "true" }, caption), wrap);
+  }
+
+  return { element: fold, refresh };
+}
