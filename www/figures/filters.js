@@ -83,7 +83,7 @@ function rowTerms(nums, vals) {
 
 function sumLines(d) {
   // a motion frame at another pixel than the selected one: its output values (the solution writes out the selected pixel's sum only)
-  if (d.frame && !d.frame.selected) return [{ text: d.frame.values, weight: "bold", color: COLORS.highlight }, { text: `The multiply-and-sum is written out for the selected pixel (row ${d.frame.sel.r}, column ${d.frame.sel.c}), here and in the steps.`, color: COLORS.muted }];
+  if (d.frame && !d.frame.selected) return [{ text: d.frame.values, weight: "bold", color: COLORS.highlight }, { text: `The multiply-and-sum is written out at the selected pixel (row ${d.frame.sel.r}, column ${d.frame.sel.c}) and in the steps.`, color: COLORS.muted }];
   const nb = d.neighbourhood;
   const at = `row ${d.sel.r}, column ${d.sel.c}`;
   if (!Array.isArray(nb)) {
