@@ -291,6 +291,12 @@ export function mountSweep(host, api) {
   /** Point i's value into the form: the page solves it (its whole solution above). */
   function pick(i) {
     if (!state.series || i == null) return;
+    // a locked embed (lock=true): the exercise's inputs stay; the chart is still read point by point
+    if (document.body.classList.contains("locked")) {
+      say("The inputs of this exercise are fixed: the chart and its table show every point.");
+      slider.value = String(nearestIndex(currentValue()));
+      return;
+    }
     slider.value = String(i);
     showSlider(i);
     api.setInput(state.field.key, valueText(state.series.xs[i]));
