@@ -198,7 +198,10 @@ function buildView(entry) {
       inputChanged();
     };
     // a moving figure (issue 34): its frame's step marked in the list, the frame it stops at in the link (play=)
-    const onStep = (k) => markStep(stepsList, k);
+    const onStep = (k) => {
+      v.markedStep = k;
+      markStep(stepsList, k);
+    };
     const onPosition = (i) => {
       if (view !== v) return;
       embedPage.setPlay(i);
@@ -280,6 +283,7 @@ function renderQuick(solution) {
 function renderRest(solution) {
   const { stepsList, resultBody, notesBody } = view.parts;
   updateSteps(stepsList, solution); // in place: only the formulas that changed are rendered and fitted again
+  if (Number.isInteger(view.markedStep)) markStep(stepsList, view.markedStep); // a moving figure's step, on a rebuilt item too
   resultBody.replaceChildren(...renderResult(solution));
   notesBody.replaceChildren(...renderNotes(solution));
 }
