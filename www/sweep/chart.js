@@ -42,9 +42,12 @@ const withUnit = (label, unit) => (unit ? `${label} (${unit})` : label);
  */
 export function axesOf(series) {
   const units = [];
-  for (const s of series) if (!units.includes(s.unit ?? "")) units.push(s.unit ?? "");
+  for (const s of series) if (!units.includes(groupOf(s))) units.push(groupOf(s));
   return units.slice(0, 2);
 }
+
+/** The axis group of a series: its unit, or what the caller set (`group`: results of one unit but far apart in size). */
+export const groupOf = (s) => s.group ?? s.unit ?? "";
 
 /**
  * Makes the chart in `host`.
@@ -54,15 +57,17 @@ export function axesOf(series) {
  */
 export function makeChart(host, spec) {
   const units = axesOf(spec.series);
-  const scaleOf = (s) => (units.indexOf(s.unit ?? "") === 1 ? "y2" : "y");
+  const scaleOf = (s) => (units.indexOf(groupOf(s)) === 1 ? "y2" : "y");
   let xs = [];
   let errors = [];
   let current = null;
   const width = () => Math.max(260, Math.floor(host.clientWidth));
   const height = () => (width() < NARROW ? HEIGHT_NARROW : HEIGHT_WIDE);
   /** One result's name and unit; several (the legend names them): the unit, else "value". */
-  const axisLabel = (unit) => {
-    const names = spec.series.filter((s) => (s.unit ?? "") === unit).map((s) => s.label);
+  const axisLabel = (group) => {
+    const members = spec.series.filter((s) => groupOf(s) === group);
+    const names = members.map((s) => s.label);
+    const unit = members[0]?.unit ?? "";
     const one = withUnit(names[0], unit);
     if (names.length === 1 && one.length <= AXIS_LABEL_MAX) return one;
     return unit || (names.length === 1 ? `${names[0].slice(0, AXIS_LABEL_MAX - 1)}…` : "value");

@@ -13,7 +13,7 @@ import { download } from "../export.js";
 import { testData } from "../test-hooks.js";
 import { labelOf } from "../render.js";
 import { dataView, num, renderData, seriesTable } from "../figures/data-view.js";
-import { axesOf, colour, makeChart, strokeOf } from "./chart.js";
+import { axesOf, colour, groupOf, makeChart, strokeOf } from "./chart.js";
 import { gridFold } from "./grid.js";
 import {
   checkPlot,
@@ -243,7 +243,7 @@ export function mountSweep(host, api) {
   }
 
   function ensureChart(shown) {
-    const keys = `${state.field.key}|${shown.map((s) => s.key).join(",")}`;
+    const keys = `${state.field.key}|${shown.map((s) => `${s.key}:${groupOf(s)}`).join(",")}`;
     if (state.chart && state.chartKeys === keys) return;
     state.chart?.destroy();
     chartHost.replaceChildren();
@@ -262,7 +262,7 @@ export function mountSweep(host, api) {
         const swatch = el("span", { class: "sweep-swatch", "aria-hidden": "true" });
         swatch.style.borderTopColor = colour(strokeOf(i).color);
         swatch.style.borderTopStyle = strokeOf(i).dash.length ? "dashed" : "solid";
-        const side = units.length > 1 ? (units.indexOf(s.unit ?? "") === 0 ? ", left axis" : ", right axis") : "";
+        const side = units.length > 1 ? (units.indexOf(groupOf(s)) === 0 ? ", left axis" : ", right axis") : "";
         return el("li", {}, swatch, `${s.label}${s.unit ? ` (${s.unit})` : ""}${side}`);
       }),
       el("li", { class: "sweep-legend-mark" }, el("span", { class: "sweep-swatch sweep-swatch-seed", "aria-hidden": "true" }), `worked example: ${state.field.label} = ${withUnit(state.field.default, state.field.unit)}`),
@@ -396,6 +396,7 @@ export function mountSweep(host, api) {
     const values = sweepValues(r.range, state.field.kind === "integer");
     state.series = computeSeries(core.solve, id, base.inputs, state.field.key, values, shown.map((s) => s.key));
     const compute = performance.now() - t0;
+    splitBySize(shown, state.series);
     ensureChart(shown);
     const errors = state.series.points.map((p) => p.error);
     const v = currentValue();
@@ -555,4 +556,23 @@ function scrollable(node, label) {
   node.setAttribute("tabindex", "0");
   node.setAttribute("role", "region");
   node.setAttribute("aria-label", label);
+}
+
+/** How far apart (a factor) two results of one unit may be and still share an axis. */
+const SHARED_AXIS_RATIO = 10;
+
+/**
+ * Results that all have one unit but sizes far apart (Förstner's weight in
+ * thousands beside its roundness below 1) get the right axis for the later
+ * ones (their `group`), so that none is drawn flat along zero.
+ */
+function splitBySize(shown, series) {
+  for (const s of shown) delete s.group;
+  if (shown.length < 2 || axesOf(shown).length > 1) return;
+  const size = (s) => Math.max(0, ...series.ys[s.key].filter((v) => v !== null).map(Math.abs));
+  const first = size(shown[0]);
+  for (const s of shown.slice(1)) {
+    const m = size(s);
+    if (first > 0 && m > 0 && (first / m > SHARED_AXIS_RATIO || m / first > SHARED_AXIS_RATIO)) s.group = `${s.unit ?? ""}\u0000right`;
+  }
 }
