@@ -10,8 +10,18 @@ describe("view options", () => {
     const r = parseOptions([["dpi", "1200"], ["theme", "Dark"], ["hide", "notes, inputs,notes"], ["steps", "collapsed"], ["lock", ""], ["step", "2"], ["host", "https://course.example.org/page?x=1"], ["id", "ex-1"]]);
     assert.deepEqual(r.rest, [["dpi", "1200"]]);
     assert.deepEqual(r.notices, []);
-    assert.deepEqual(r.options, { theme: "dark", hide: ["notes", "inputs"], steps: "collapsed", lock: true, step: 2, host: "https://course.example.org", id: "ex-1" });
+    assert.deepEqual(r.options, { theme: "dark", hide: ["notes", "inputs"], steps: "collapsed", lock: true, step: 2, host: "https://course.example.org", id: "ex-1", play: null, sweep: null, plot: null });
     assert.deepEqual(r.entries, [["theme", "dark"], ["hide", "notes,inputs"], ["steps", "collapsed"], ["lock", "true"], ["step", "2"], ["host", "https://course.example.org"], ["id", "ex-1"]]);
+  });
+
+  test("play: a frame (paused there) or auto; anything else named in a notice", () => {
+    assert.deepEqual(parseOptions([["play", "7"]]).options.play, { frame: 7 });
+    assert.deepEqual(parseOptions([["play", " AUTO "]]).entries, [["play", "auto"]]);
+    for (const bad of ["0", "-3", "seven", "1.5", "1000001"]) {
+      const r = parseOptions([["play", bad]]);
+      assert.equal(r.options.play, null, bad);
+      assert.match(r.notices[0], /play=“.*”: give a frame number from 1 to 100000 \(opens paused there\) or auto/, bad);
+    }
   });
 
   test("show keeps only the parts named; hide adds to it", () => {
