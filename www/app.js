@@ -472,7 +472,7 @@ function closeSweep(v) {
 function recompute({ defer = false } = {}) {
   if (!defer) view?.sweep?.changed();
   recomputeSolution({ defer });
-  if (defer) view?.sweep?.changed();
+  if (defer) view?.sweep?.changed({ defer });
 }
 
 /**

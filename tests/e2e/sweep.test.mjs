@@ -16,8 +16,10 @@ const WAIT = 20_000;
 const AXE = createRequire(import.meta.url).resolve("axe-core/axe.min.js");
 const TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa"];
 const LINK = "sweep=flying_height_m:500:3000:100&plot=gsd_cm";
-/** Two units (cm, mm: a second axis) and points the solver refuses (dpi ≤ 0). */
-const GAPS = "sweep=dpi:-200:1200:15&plot=gsd_cm,pixel_size_mm";
+/** Points the solver refuses: lsm-1d's patch does not fit the signal when it starts at c0 < 4 or c0 > 9. */
+const GAPS = "sweep=c0:2:16:15";
+/** Two units (cm, mm: a second axis). */
+const AXES = "sweep=dpi:100:1200:12&plot=gsd_cm,pixel_size_mm";
 
 let env;
 let core;
@@ -127,18 +129,35 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
     assertSolved("gsd", data);
   });
 
-  test("errors are gaps with the solver's message; two units get two axes; axe: no WCAG 2.2 AA violation at 1280 and 390 px", async () => {
+  test("errors are gaps with the solver's message; an end outside the input's bounds is refused in the reader's words; two units get two axes; axe: no WCAG 2.2 AA violation at 1280 and 390 px", async () => {
     for (const width of [1280, 390]) {
       await page.setViewportSize({ width, height: 900 });
-      await go(`#/gsd?${GAPS}`);
+      await go(`#/lsm-1d?${GAPS}`);
+      const gaps = await plotted();
+      assertSolved("lsm-1d", gaps);
+      const refused = gaps.errors.filter(Boolean);
+      assert.equal(refused.length, 9, "c0 = 2, 3 and 10…16 do not fit");
+      assert.match(refused[0], /^c0: the patch does not fit/);
+      assert.match(await page.textContent(".sweep-errors-fold summary"), /^9 of 15 points have no solution/);
+      // the last point is refused: its message is read on the keyboard's cursor
+      await page.focus(".sweep-frame");
+      await page.keyboard.press("End");
+      assert.match(await page.textContent(".sweep-section .figure-cursor"), /no solution — c0: /);
+
+      // the range's ends are read by the core's reader, as the input's own box: units, a comma, its bounds
+      await go(`#/gsd?${AXES}`);
       const data = await plotted();
       assertSolved("gsd", data);
-      const refused = data.errors.filter(Boolean);
-      assert.ok(refused.length >= 2, "dpi ≤ 0 is refused");
-      assert.match(refused[0], /^dpi: /);
-      assert.match(await page.textContent(".sweep-errors-fold summary"), new RegExp(`^${refused.length} of 15 points have no solution`));
+      assert.deepEqual(data.errors.filter(Boolean), []);
       assert.equal(await page.locator(".sweep-legend li").count(), 3, "two results and the worked example");
       assert.match(await page.textContent(".sweep-legend"), /left axis.*right axis/);
+      await page.fill("[id$=-from]", "-200");
+      await page.press("[id$=-from]", "Enter");
+      await page.waitForFunction(() => /“From”: must be greater than 0/.test(document.querySelector(".sweep-message")?.textContent), null, { timeout: WAIT });
+      await page.fill("[id$=-from]", "150,5");
+      await page.press("[id$=-from]", "Tab");
+      await page.waitForFunction(() => JSON.parse(document.querySelector(".sweep-section").dataset.plotted).xs[0] === 150.5, null, { timeout: WAIT });
+      assertSolved("gsd", await plotted());
       // two inputs at once: dpi (columns) × focal length (rows), gsd_cm in each cell
       if (!(await page.$eval(".sweep-grid", (d) => d.open))) await page.click(".sweep-grid summary");
       await page.selectOption("[id$=-grid-field]", "focal_length_mm");
@@ -150,25 +169,16 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
       const cells = await page.$$eval(".sweep-grid-table tbody tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
       assert.equal(cells.length, 3);
       // the columns: 11 points over the sweep's range (grid.js MAX_CELLS_SIDE)
-      const xs = sweepValues({ from: -200, to: 1200, steps: 11 });
-      assert.deepEqual(await page.$$eval(".sweep-grid-table thead th", (ths) => ths.slice(1).map((th) => Number(th.textContent.replace("−", "-")))), xs);
+      const xs = sweepValues({ from: 150.5, to: 1200, steps: 11 });
+      const heads = await page.$$eval(".sweep-grid-table thead th", (ths) => ths.slice(1).map((th) => Number(th.textContent.replace("−", "-"))));
+      heads.forEach((h, j) => assert.ok(Math.abs(h - xs[j]) <= 1e-5 * Math.abs(xs[j]), `column ${j}: ${h} vs ${xs[j]}`));
       cells.forEach(([f, ...row], i) => {
         assert.equal(Number(f), [100, 150, 200][i]);
         row.forEach((text, j) => {
-          let v = null;
-          try {
-            v = core.solve("gsd", { dpi: xs[j], focal_length_mm: Number(f) }).result.gsd_cm;
-          } catch {
-            // refused: the cell says so
-          }
-          if (v === null) assert.equal(text, "no solution");
-          else assert.ok(Math.abs(Number(text) - v) <= 1e-5 * Math.abs(v), `${text} vs ${v}`);
+          const v = core.solve("gsd", { dpi: xs[j], focal_length_mm: Number(f) }).result.gsd_cm;
+          assert.ok(Math.abs(Number(text) - v) <= 1e-5 * Math.abs(v), `${text} vs ${v}`);
         });
       });
-      // the first point is refused: its message is read on the keyboard's cursor
-      await page.focus(".sweep-frame");
-      await page.keyboard.press("Home");
-      assert.match(await page.textContent(".sweep-section .figure-cursor"), /no solution — dpi: /);
       await page.addScriptTag({ path: AXE });
       const result = await page.evaluate((tags) => window.axe.run({ include: [[".sweep-section"]] }, { runOnly: { type: "tag", values: tags }, resultTypes: ["violations"] }), TAGS);
       assert.deepEqual(

@@ -56,13 +56,14 @@ export function mountSweep(host, api) {
   const { core, view } = api;
   const { entry, id } = view;
   const prefix = `sweep-${idPart(id)}`;
-  const state = { field: null, range: null, plot: [], series: null, base: null, idx: null, chart: null, chartKeys: "", labels: null };
+  const state = { field: null, range: null, plot: [], series: null, base: null, idx: null, chart: null, chartKeys: "", labels: null, cost: 0, settle: 0 };
 
   const heading = el("h3", { id: `${prefix}-h`, tabindex: "-1" }, "Sweep an input");
   const intro = el("p", { class: "sweep-intro" }, "Solve this example over a range of one input and plot the results against it. Each point is the example solved with that value; move the slider or click the chart to see that point’s whole solution above.");
   const fieldSelect = el("select", { id: `${prefix}-field` });
-  const fromInput = el("input", { id: `${prefix}-from`, type: "number", step: "any", inputmode: "decimal" });
-  const toInput = el("input", { id: `${prefix}-to`, type: "number", step: "any", inputmode: "decimal" });
+  // the ends are read as the form's own box is (the core's one reader: units, a decimal comma, ×10^)
+  const fromInput = el("input", { id: `${prefix}-from`, type: "text", inputmode: "decimal", autocomplete: "off", spellcheck: "false" });
+  const toInput = el("input", { id: `${prefix}-to`, type: "text", inputmode: "decimal", autocomplete: "off", spellcheck: "false" });
   const stepsInput = el("input", { id: `${prefix}-steps`, type: "number", step: "1", min: String(MIN_STEPS), max: String(MAX_STEPS), inputmode: "numeric" });
   const labelled = (input, text) => el("div", { class: "sweep-control" }, el("label", { for: input.id }, text), input);
   const plotBox = el("fieldset", { class: "sweep-plot" }, el("legend", {}, "Plot"));
@@ -211,24 +212,36 @@ export function mountSweep(host, api) {
       const value = currentValue() ?? state.field.default;
       state.range = base.error ? chooseRange(() => null, id, {}, state.field, value) : chooseRange(core.solve, id, base.inputs, state.field, value);
     }
-    fromInput.value = String(state.range.from);
-    toInput.value = String(state.range.to);
+    fromInput.value = valueText(state.range.from);
+    toInput.value = valueText(state.range.to);
     stepsInput.value = String(state.range.steps);
-    const integer = state.field.kind === "integer";
-    fromInput.step = integer ? "1" : "any";
-    toInput.step = integer ? "1" : "any";
   }
 
   /** Reads the range controls: a range, or a worded message. */
   function readRange() {
-    const from = fromInput.valueAsNumber;
-    const to = toInput.valueAsNumber;
+    const from = readEnd(fromInput.value, "From");
+    if (from.error) return from;
+    const to = readEnd(toInput.value, "To");
+    if (to.error) return to;
     const steps = stepsInput.valueAsNumber;
-    if (!Number.isFinite(from)) return { error: "“From” must be a number." };
-    if (!Number.isFinite(to)) return { error: "“To” must be a number." };
     if (from === to) return { error: "“From” and “To” are the same value: a sweep needs a range." };
     if (!Number.isInteger(steps) || steps < MIN_STEPS || steps > MAX_STEPS) return { error: `“Steps” must be a whole number from ${MIN_STEPS} to ${MAX_STEPS}.` };
-    return { range: { from, to, steps } };
+    return { range: { from: from.value, to: to.value, steps } };
+  }
+
+  /** One end of the range, read by the core as the swept input's own box (its unit, bounds and message). */
+  function readEnd(text, name) {
+    const key = state.field.key;
+    let r;
+    try {
+      r = core.parseInputs(id, { [key]: text });
+    } catch (e) {
+      return { error: `“${name}”: ${e.message}` };
+    }
+    const v = r.inputs?.[key];
+    if (typeof v === "number") return { value: v };
+    const m = r.errors?.[key] ?? "not a number";
+    return { error: `“${name}”: ${m.startsWith(`${key}: `) ? m.slice(key.length + 2) : m}` };
   }
 
   function writeLink() {
@@ -396,6 +409,7 @@ export function mountSweep(host, api) {
     const values = sweepValues(r.range, state.field.kind === "integer");
     state.series = computeSeries(core.solve, id, base.inputs, state.field.key, values, shown.map((s) => s.key));
     const compute = performance.now() - t0;
+    state.cost = compute;
     splitBySize(shown, state.series);
     ensureChart(shown);
     const errors = state.series.points.map((p) => p.error);
@@ -530,8 +544,20 @@ export function mountSweep(host, api) {
       if (focus) heading.focus();
     },
     /** An input of the page changed (app.js recompute): the series follows. */
-    changed() {
-      if (state.field) run();
+    changed({ defer = false } = {}) {
+      if (!state.field) return;
+      clearTimeout(state.settle);
+      // while a student types, a slow series (LSM, UTM: 200 solutions) waits until the typing settles
+      if (defer && state.cost > SLOW_SERIES_MS) {
+        section.classList.add("sweep-updating");
+        state.settle = setTimeout(() => {
+          section.classList.remove("sweep-updating");
+          run();
+          api.posted();
+        }, SETTLE_MS);
+        return;
+      }
+      run();
     },
     /** The series for the host page's change event (embed-page.js). */
     payload() {
@@ -542,6 +568,7 @@ export function mountSweep(host, api) {
     /** The sweep as the link writes it: { sweep: "key:from:to:steps", plot: "a,b" } (the embed panel's snippets). */
     linkEntries: () => (state.field && state.range ? { sweep: formatSweep({ key: state.field.key, ...state.range }), plot: state.plot.join(",") || null } : {}),
     destroy() {
+      clearTimeout(state.settle);
       themeObserver.disconnect();
       scheme.removeEventListener("change", retheme);
       state.chart?.destroy();
@@ -557,6 +584,10 @@ function scrollable(node, label) {
   node.setAttribute("role", "region");
   node.setAttribute("aria-label", label);
 }
+
+/** A series that took longer than this waits for typing to settle (SETTLE_MS after the last key). */
+const SLOW_SERIES_MS = 40;
+const SETTLE_MS = 250;
 
 /** How far apart (a factor) two results of one unit may be and still share an axis. */
 const SHARED_AXIS_RATIO = 10;
