@@ -237,7 +237,24 @@ describe("at 390 px and 320 px", { timeout: TEST_TIMEOUT * 4 }, () => {
       assert.ok(grid.cell[0] >= 24 && grid.cell[1] >= 24, `${name}: cells ${grid.cell.map((x) => x.toFixed(1)).join(" × ")} px`);
       assert.equal(grid.page, 0, `${name}: the page itself scrolls sideways`);
       assert.ok(grid.focusable, `${name}: the grid takes the keyboard's focus`);
-      if (grid.wide) assert.ok(grid.scroller?.wider && grid.scroller.inside && grid.scroller.label.length > 10, `${name}: a grid ${grid.canvas} px wide needs a named scrolling region: ${JSON.stringify(grid.scroller)}`);
+      if (grid.wide) {
+        assert.ok(grid.scroller?.wider && grid.scroller.inside && grid.scroller.label.length > 10, `${name}: a grid ${grid.canvas} px wide needs a named scrolling region: ${JSON.stringify(grid.scroller)}`);
+        // the cell cursor's cell is scrolled into view as the keys move it (index.js keepInView)
+        await page.focus(".figure-canvas");
+        const scrolled = async (key) => {
+          await page.keyboard.press(key);
+          return page.evaluate(() => {
+            const panel = document.querySelector(".figure-canvas").closest(".figure-panel");
+            return { left: panel.scrollLeft, max: panel.scrollWidth - panel.clientWidth, line: panel.querySelector(".figure-cursor")?.textContent ?? "" };
+          });
+        };
+        await scrolled("Home");
+        const atEnd = await scrolled("End");
+        assert.ok(atEnd.left > 0 && Math.abs(atEnd.left - atEnd.max) <= 1, `${name}: End puts the last column in view: ${JSON.stringify(atEnd)}`);
+        assert.match(atEnd.line, /column/, `${name}: the cursor line reads the cell`);
+        const atHome = await scrolled("Home");
+        assert.equal(atHome.left, 0, `${name}: Home scrolls back to the first column`);
+      }
     }
   });
 

@@ -324,6 +324,7 @@ function showData(panel, solution, state, width, height, ctx) {
   if (document.activeElement !== panel.canvas) return;
   const box = grid.explore.rect(panel.cursor.r, panel.cursor.c, width, height);
   if (!box) return;
+  keepInView(panel.figure, panel.canvas, box);
   ctx.save();
   for (const [color, lw, dash] of [["#ffffff", 5, []], [COLORS.ink, 2.5, [5, 3]]]) {
     ctx.strokeStyle = color;
@@ -332,6 +333,20 @@ function showData(panel, solution, state, width, height, ctx) {
     ctx.strokeRect(box.x, box.y, box.w, box.h);
   }
   ctx.restore();
+}
+
+/**
+ * A grid wider than its panel scrolls inside it (figures.css .figure-wide, a phone): the
+ * cursor's cell is scrolled into view, with a cell's margin, as the arrow keys move it.
+ */
+function keepInView(scroller, canvas, box) {
+  if (scroller.scrollWidth <= scroller.clientWidth) return;
+  // the canvas's left edge in the panel's scrolled content
+  const x0 = canvas.getBoundingClientRect().left - scroller.getBoundingClientRect().left - scroller.clientLeft + scroller.scrollLeft;
+  const left = x0 + box.x - box.w;
+  const right = x0 + box.x + 2 * box.w;
+  if (left < scroller.scrollLeft) scroller.scrollLeft = Math.max(0, left);
+  else if (right > scroller.scrollLeft + scroller.clientWidth) scroller.scrollLeft = right - scroller.clientWidth;
 }
 
 /** Wires a spec's optional `interact` hooks to its canvas (pointer and keyboard); returns its click at a point. */
