@@ -345,8 +345,10 @@ function keepInView(scroller, canvas, box) {
   const x0 = canvas.getBoundingClientRect().left - scroller.getBoundingClientRect().left - scroller.clientLeft + scroller.scrollLeft;
   const left = x0 + box.x - box.w;
   const right = x0 + box.x + 2 * box.w;
-  if (left < scroller.scrollLeft) scroller.scrollLeft = Math.max(0, left);
-  else if (right > scroller.scrollLeft + scroller.clientWidth) scroller.scrollLeft = right - scroller.clientWidth;
+  const max = scroller.scrollWidth - scroller.clientWidth;
+  // near an end, the whole way (the row labels left of the first column come with it)
+  if (left < scroller.scrollLeft) scroller.scrollLeft = left < 2 * box.w ? 0 : left;
+  else if (right > scroller.scrollLeft + scroller.clientWidth) scroller.scrollLeft = right - scroller.clientWidth > max - 2 * box.w ? max : right - scroller.clientWidth;
 }
 
 /** Wires a spec's optional `interact` hooks to its canvas (pointer and keyboard); returns its click at a point. */
