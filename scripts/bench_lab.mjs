@@ -139,6 +139,20 @@ try {
   await page.evaluate(({ W, H, bytes }) => {
     window.benchBytes = Uint8Array.from(atob(bytes), (ch) => ch.charCodeAt(0));
     window.benchSize = [W, H];
+    // the texture as a colour JPEG (R = g, G = 255 − g, B = 3g mod 256): the photo a phone would give
+    window.benchColourJpeg = async () => {
+      const g = window.benchBytes;
+      const rgba = new Uint8ClampedArray(W * H * 4);
+      for (let i = 0; i < g.length; i++) {
+        rgba[4 * i] = g[i];
+        rgba[4 * i + 1] = 255 - g[i];
+        rgba[4 * i + 2] = (g[i] * 3) & 255;
+        rgba[4 * i + 3] = 255;
+      }
+      const cv = new OffscreenCanvas(W, H);
+      cv.getContext("2d").putImageData(new ImageData(rgba, W, H), 0, 0);
+      return new Uint8Array(await (await cv.convertToBlob({ type: "image/jpeg", quality: 0.9 })).arrayBuffer());
+    };
   }, { W, H, bytes: Buffer.from(bytes).toString("base64") });
   for (const n of chrome.counts) {
     console.error(`bench lab: ${n} worker${n > 1 ? "s" : ""} …`);
@@ -157,19 +171,8 @@ try {
         if (window.benchLoaded !== want) {
           if (want === "frame") await client.call("frame");
           else if (colour) {
-            // the texture as a colour JPEG (R = g, G = 255 − g, B = 3g mod 256), opened as a photo is
-            const [w, h] = window.benchSize;
-            const rgba = new Uint8ClampedArray(w * h * 4);
-            const g = window.benchBytes;
-            for (let i = 0; i < g.length; i++) {
-              rgba[4 * i] = g[i];
-              rgba[4 * i + 1] = 255 - g[i];
-              rgba[4 * i + 2] = (g[i] * 3) & 255;
-              rgba[4 * i + 3] = 255;
-            }
-            const cv = new OffscreenCanvas(w, h);
-            cv.getContext("2d").putImageData(new ImageData(rgba, w, h), 0, 0);
-            const b = new Uint8Array(await (await cv.convertToBlob({ type: "image/jpeg", quality: 0.9 })).arrayBuffer());
+            // the texture as a colour JPEG, opened as a photo is
+            const b = await window.benchColourJpeg();
             await client.call("load", { name: "texture.jpg", bytes: b.buffer }, [b.buffer]);
           } else {
             const [w, h] = window.benchSize;
@@ -208,19 +211,7 @@ try {
 
   // a 12 MP JPEG picked → on screen; slider → preview painted
   const jpeg = Buffer.from(await page.evaluate(async () => {
-    const [w, h] = window.benchSize;
-    const rgba = new Uint8ClampedArray(w * h * 4);
-    const g = window.benchBytes;
-    for (let i = 0; i < g.length; i++) {
-      rgba[4 * i] = g[i];
-      rgba[4 * i + 1] = 255 - g[i];
-      rgba[4 * i + 2] = (g[i] * 3) & 255;
-      rgba[4 * i + 3] = 255;
-    }
-    const cv = new OffscreenCanvas(w, h);
-    cv.getContext("2d").putImageData(new ImageData(rgba, w, h), 0, 0);
-    const blob = await cv.convertToBlob({ type: "image/jpeg", quality: 0.9 });
-    const b = new Uint8Array(await blob.arrayBuffer());
+    const b = await window.benchColourJpeg();
     let s = "";
     for (let i = 0; i < b.length; i += 0x8000) s += String.fromCharCode(...b.subarray(i, i + 0x8000));
     return btoa(s);

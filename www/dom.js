@@ -28,6 +28,12 @@ export function append(node, children) {
 }
 
 /** A string safe to use in an element id. */
+/** Adds the stylesheet at `href` to the page once (a module's own rules, loaded with it). */
+export function addStylesheet(href) {
+  if (typeof document === "undefined" || document.querySelector(`link[rel="stylesheet"][href="${href}"]`)) return;
+  document.head.append(el("link", { rel: "stylesheet", href }));
+}
+
 export function idPart(text) {
   return String(text).replace(/[^A-Za-z0-9_-]/g, (ch) => `_${ch.charCodeAt(0).toString(16)}`);
 }

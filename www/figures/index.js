@@ -107,17 +107,12 @@
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { COLORS, clearLabelBoxes, font, FONT_SIZE, pageTheme, usePalette } from "./draw.js";
+import { addStylesheet } from "../dom.js";
 import { testData } from "../test-hooks.js";
 import { cursorText, dataView, moveCursor, renderData } from "./data-view.js";
 
 // the figures' own rules (the Data view, the cell cursor's line), loaded with the registry
-if (typeof document !== "undefined" && !document.getElementById("figures-css")) {
-  const link = document.createElement("link");
-  link.rel = "stylesheet";
-  link.id = "figures-css";
-  link.href = new URL("./figures.css", import.meta.url).href;
-  document.head.append(link);
-}
+addStylesheet(new URL("./figures.css", import.meta.url).href);
 
 /** While the page prints, figures are drawn on the light paper whatever the theme. */
 let printing = false;

@@ -174,7 +174,8 @@ export function aroundTables(prefix, img, layer, [c, r]) {
  * view's aria-describedby) and the tables `fill()` makes while it is open.
  */
 export function viewData(id, title, fill) {
-  const button = el("button", { type: "button", id: `${id}-toggle`, class: "lab-data-button", "aria-expanded": "false", "aria-controls": id }, "Data");
+  // named by its view ("Data: the search photo"): the photo's own Data button is beside it
+  const button = el("button", { type: "button", id: `${id}-toggle`, class: "lab-data-button", "aria-expanded": "false", "aria-controls": id, "aria-label": title }, "Data");
   const desc = el("p", { id: `${id}-desc`, class: "lab-view-desc" }, "Nothing matched yet.");
   const tables = el("div", { class: "lab-data-tables" });
   const panel = el("section", { class: "lab-data", id, hidden: true, "aria-labelledby": `${id}-title` },

@@ -3,7 +3,7 @@
 // example. Loaded by app.js only when #/lab opens; the computing runs in a
 // Web Worker (worker.js) with the lab's own wasm module.
 
-import { el } from "../dom.js";
+import { addStylesheet, el } from "../dom.js";
 import { GREY_WORDS, SIGNED_NEGATIVE, SIGNED_POSITIVE, SIGNED_WORDS, rgbText } from "../colour-scales.js";
 import { buildHash, parseHash } from "../url.js";
 import { loadCatalog } from "../core.js";
@@ -168,9 +168,7 @@ let current = null;
  */
 export function openLab(root, { family = null, params = [] } = {}) {
   closeLab();
-  if (!document.getElementById("lab-css")) {
-    document.head.append(el("link", { rel: "stylesheet", id: "lab-css", href: new URL("./lab.css", import.meta.url).href }));
-  }
+  addStylesheet(new URL("./lab.css", import.meta.url).href);
   current = new Lab(root, family, params);
   return current;
 }

@@ -1,10 +1,9 @@
 // The LMS kit's stylesheet, added once by whichever of its views opens first.
 
-import { el } from "../dom.js";
+import { addStylesheet } from "../dom.js";
 
 const STYLESHEET = new URL("./lms.css", import.meta.url).href; // (the build gives it its hashed name)
 
 export function lmsStyles() {
-  if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
-  document.head.append(el("link", { rel: "stylesheet", href: STYLESHEET }));
+  addStylesheet(STYLESHEET);
 }

@@ -24,7 +24,7 @@
 // and `play=auto` opens at the first frame, paused. The live region speaks
 // on a step, a scrub and a pause, never frame by frame while playing.
 
-import { el } from "../dom.js";
+import { addStylesheet, el } from "../dom.js";
 
 /** Positions per second the reader can choose, and the default. */
 export const RATES = Object.freeze([2, 5, 10]);
@@ -33,13 +33,7 @@ export const DEFAULT_RATE = 5;
 const REDUCE = "(prefers-reduced-motion: reduce)";
 
 // the controls' rules, loaded once with the first motion
-if (typeof document !== "undefined" && !document.getElementById("motion-css")) {
-  const link = document.createElement("link");
-  link.rel = "stylesheet";
-  link.id = "motion-css";
-  link.href = new URL("./motion.css", import.meta.url).href;
-  document.head.append(link);
-}
+addStylesheet(new URL("./motion.css", import.meta.url).href);
 
 let serial = 0;
 

@@ -8,7 +8,7 @@
 // Everything shown is text (textContent) or KaTeX; nothing from the URL or
 // the student's boxes becomes HTML.
 
-import { el } from "../dom.js";
+import { addStylesheet, el } from "../dom.js";
 import { messageOf } from "../core.js";
 import { formulaSource, renderFormula, texSource } from "../math.js";
 import { renderGivens } from "./common.js";
@@ -67,8 +67,7 @@ export function verdictSentence(verdict, message) {
 
 /** Adds the practice stylesheet once. */
 function ensureStyles() {
-  if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
-  document.head.append(el("link", { rel: "stylesheet", href: STYLESHEET }));
+  addStylesheet(STYLESHEET);
 }
 
 /**

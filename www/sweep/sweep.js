@@ -8,7 +8,7 @@
 // put that value into the form, and the page's own recompute shows that
 // point's whole solution. The link carries sweep=key:from:to:steps&plot=a,b.
 
-import { el, idPart } from "../dom.js";
+import { addStylesheet, el, idPart } from "../dom.js";
 import { download } from "../export.js";
 import { testData } from "../test-hooks.js";
 import { labelOf } from "../render.js";
@@ -35,10 +35,7 @@ import {
 const STYLESHEET = new URL("./sweep.css", import.meta.url).href; // (the build gives it its hashed name)
 const STATUS_MS = 4000;
 
-function styles() {
-  if (document.querySelector(`link[href="${STYLESHEET}"]`)) return;
-  document.head.append(el("link", { rel: "stylesheet", href: STYLESHEET }));
-}
+const styles = () => addStylesheet(STYLESHEET);
 
 const fieldText = (f) => `${f.label}${f.unit ? ` (${f.unit})` : ""}`;
 /** "1200 m", "13.75°" (no space before a degree sign). */
