@@ -54,8 +54,12 @@ try {
         performance.clearMeasures("sweep");
         const steps = document.querySelector(".sweep-section input[id$=-steps]");
         const to = document.querySelector(".sweep-section input[id$=-to]");
+        // the ends are text boxes the core reads (the page writes them as plain numbers)
+        const from = Number(document.querySelector(".sweep-section input[id$=-from]").value);
         if (act === "steps") steps.value = String(n);
-        else to.value = String(to.valueAsNumber + (act === "up" ? 1 : -1) * Math.abs(to.valueAsNumber - document.querySelector(".sweep-section input[id$=-from]").valueAsNumber) * 1e-6);
+        // (whole-number ends move by 1: an integer input's box refuses a fraction)
+        else if (/^-?\d+$/.test(to.value)) to.value = String(Number(to.value) + (act === "up" ? 1 : -1));
+        else to.value = String(Number(to.value) + (act === "up" ? 1 : -1) * Math.abs(Number(to.value) - from) * 1e-6);
         (act === "steps" ? steps : to).dispatchEvent(new Event("change"));
         for (let i = 0; i < 200 && !performance.getEntriesByName("sweep").length; i++) await new Promise((r) => setTimeout(r, 10));
         const m = performance.getEntriesByName("sweep")[0];
