@@ -35,9 +35,15 @@ fi
 want=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
 [ -n "$want" ] || { say "cannot read the wasm-bindgen version from Cargo.lock" >&2; exit 1; }
 have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}' || true)
+# It compiles (CPU) while npm and apt download (network, disk) below: on a
+# fresh machine the two overlap instead of adding up.
+bindgen_pid=""
+bindgen_log=""
 if [ "$have" != "$want" ] || ! command -v wasm-bindgen-test-runner >/dev/null; then
-  say "installing wasm-bindgen-cli $want (have: ${have:-none}); this compiles for a few minutes, once"
-  cargo install wasm-bindgen-cli --version "$want"
+  say "installing wasm-bindgen-cli $want (have: ${have:-none}); this compiles for a few minutes, once, beside the other downloads"
+  bindgen_log=$(mktemp)
+  cargo install wasm-bindgen-cli --version "$want" >"$bindgen_log" 2>&1 &
+  bindgen_pid=$!
 fi
 
 if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
@@ -57,5 +63,16 @@ if [ ! -x /usr/bin/chromium ] || { [ "$for_tests" = 1 ] && [ ! -x /usr/bin/chrom
     export DEBIAN_FRONTEND=noninteractive
     $sudo apt-get update
     $sudo apt-get install -y chromium chromium-driver
+  fi
+fi
+
+if [ -n "$bindgen_pid" ]; then
+  if wait "$bindgen_pid"; then
+    say "wasm-bindgen-cli $want installed"
+    rm -f "$bindgen_log"
+  else
+    cat "$bindgen_log" >&2
+    say "cargo install wasm-bindgen-cli --version $want failed (its output is above)" >&2
+    exit 1
   fi
 fi
