@@ -145,6 +145,35 @@ impl Levels {
     pub fn view(&self, width: usize, height: usize) -> Option<GrayF32<'_>> {
         GrayF32::new("image", &self.data, width, height).ok()
     }
+
+    /// The `size × size` window whose reference pixel is `(c, r)` in a
+    /// `width`-wide image, as the reference functions read it: each grey
+    /// `n / scale` (bit for bit the photo's grey). `None` where it does not
+    /// fit.
+    pub fn window(&self, width: usize, c: usize, r: usize, size: usize) -> Option<Grid> {
+        let a = photogrammetry_playground::interest::anchor(size);
+        let (c0, r0) = (c.checked_sub(a)?, r.checked_sub(a)?);
+        if width == 0 || c0 + size > width || (r0 + size) * width > self.data.len() {
+            return None;
+        }
+        let data = (r0..r0 + size)
+            .flat_map(|y| &self.data[y * width + c0..y * width + c0 + size])
+            .map(|&n| f64::from(n) / self.scale)
+            .collect();
+        Grid::new("window", size, size, data).ok()
+    }
+
+    /// A bound on the relative distance between a sum of squared
+    /// differences of the levels over `scale²` (exact integers, then three
+    /// `f64` roundings) and the reference's sum of `terms` squared
+    /// differences of the divided greys: each grey `n / scale` is within
+    /// `2⁻⁵³·max/scale` of its value, a difference of at least `1/scale`
+    /// within `2⁻⁵²·max + 2⁻⁵³` of its own (relative), its square twice that,
+    /// and a sum of positive terms adds `2⁻⁵³` a term — doubled for safety.
+    pub fn sum_slack(&self, terms: usize) -> f64 {
+        let max = f64::from(self.max).max(1.0);
+        2.0 * (4.0 * max + 1.0 + terms as f64 + 8.0) * 2f64.powi(-53)
+    }
 }
 
 /// `values` as [`Levels`] when they are such numbers over one of the

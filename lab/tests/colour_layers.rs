@@ -384,3 +384,151 @@ fn levels_fit_every_value_not_a_sample() {
     v[5_001] = std::f64::consts::PI;
     assert!(ops::levels_of(&v).is_none());
 }
+
+/// `a` and `b` the same points: pixel and score bit for bit.
+fn same_points(what: &str, a: &[ops::Point], b: &[ops::Point]) {
+    let key = |p: &ops::Point| (p.c, p.r, p.score.to_bits());
+    assert_eq!(
+        a.iter().map(key).collect::<Vec<_>>(),
+        b.iter().map(key).collect::<Vec<_>>(),
+        "{what}: points"
+    );
+}
+
+/// A layer's `f32` within `rel` (relative) plus half an `f32` step of the
+/// reference layer's `f64` value, NaN where it is NaN (the reference
+/// layer's `f32`s are its `f64`s rounded: their own half step is allowed).
+fn close_layers(what: &str, got: &Layer, want: &Layer, rel: f64) {
+    assert_eq!((got.width, got.height), (want.width, want.height), "{what}");
+    for (i, (&g, &v)) in got.data.iter().zip(&want.data).enumerate() {
+        let (g, v) = (f64::from(g), f64::from(v));
+        let ok = (g.is_nan() && v.is_nan())
+            || (g - v).abs() <= v.abs() * (2f64.powi(-23) * 1.000_001 + rel);
+        assert!(
+            ok,
+            "{what} at ({}, {}): layer {g}, reference {v}",
+            i % got.width,
+            i / got.width
+        );
+    }
+}
+
+/// Moravec on a colour photo's levels: the means within `Levels::sum_slack`
+/// of the reference's (1e-8 covers it for these photos), the points exactly
+/// the reference's (threshold and near-ties decided by the reference's own
+/// windows, their scores the reference's means).
+#[test]
+fn colour_photos_take_the_fast_moravec() {
+    for (name, img, scale) in images() {
+        let lv = ops::levels_of(img.data()).expect("levels");
+        assert_eq!(lv.scale, scale, "{name}");
+        for size in [3, 4, 5, 8] {
+            let Ok((rl, rp)) = ops::moravec_reference(&img, size, 0.0) else {
+                assert!(
+                    ops::moravec(Image::from(&img), size, 0.0).is_err(),
+                    "{name}"
+                );
+                continue;
+            };
+            // thresholds: none, the median mean, one above every mean but a few, one at a mean
+            let mut means: Vec<f64> = rl
+                .data
+                .iter()
+                .filter(|v| v.is_finite())
+                .map(|&v| f64::from(v))
+                .collect();
+            means.sort_by(f64::total_cmp);
+            let at = ops::moravec_reference(&img, size, 0.0).unwrap();
+            let exact_mean = at.1.first().map_or(0.0, |p| p.score);
+            for t in [
+                0.0,
+                means[means.len() / 2],
+                means[means.len() * 19 / 20],
+                exact_mean,
+            ] {
+                let what = format!("{name}, Moravec {size}×{size}, threshold {t}");
+                let (fl, fp) = ops::moravec(Image::from(&img), size, t).unwrap();
+                let (rl, rp) = if t == 0.0 {
+                    (rl.clone(), rp.clone())
+                } else {
+                    ops::moravec_reference(&img, size, t).unwrap()
+                };
+                close_layers(&what, &fl, &rl, 1e-8);
+                same_points(&what, &fp, &rp);
+                assert!(
+                    t > 0.0 || !fp.is_empty() || name.contains("checkerboard"),
+                    "{what}: no points"
+                );
+            }
+        }
+    }
+}
+
+/// Förstner on a colour photo's levels: `w` and `q` within `10⁻⁸·trace N`
+/// and `10⁻⁷` of the reference's (plus the `f32` roundings), and the points
+/// with their scores and ellipses, the automatic threshold's `w_min`, and a
+/// kept map's points for another threshold exactly the reference's.
+#[test]
+fn colour_photos_take_the_fast_forstner() {
+    use photogrammetry_playground::interest;
+    for (name, img, _) in images() {
+        let mut found = 0;
+        for size in [3, 4, 5, 7] {
+            let Ok(map) = interest::forstner_map(&img, size) else {
+                assert!(
+                    ops::forstner(Image::from(&img), size, 8.0, 0.5, 0.5).is_err(),
+                    "{name}"
+                );
+                continue;
+            };
+            // the reference's w_min, and the thresholds tried: the photo's own, twice it, 0.5 px
+            let mut w: Vec<f64> = map.cells.iter().flatten().map(|m| m.w).collect();
+            let k = ops::top_rank(w.len());
+            let w_min = *w.select_nth_unstable_by(k, f64::total_cmp).1;
+            let sigma_n = 8.0;
+            let kept = ops::ForstnerKept::new(Image::from(&img), size).unwrap();
+            let auto = kept.auto_threshold(sigma_n);
+            assert_eq!(
+                auto.map(|a| a.w_min.to_bits()),
+                (w_min > 0.0).then(|| w_min.to_bits()),
+                "{name} {size}: w_min"
+            );
+            let own = auto.map_or(0.5, |a| a.threshold_px);
+            for (t, q_min) in [(own, 0.5), (2.0 * own, 0.0), (0.5, 0.5)] {
+                let what = format!("{name}, Förstner {size}×{size}, T {t}, q_min {q_min}");
+                let (fl, fp) = ops::forstner(Image::from(&img), size, sigma_n, t, q_min).unwrap();
+                let (rl, rp) = ops::forstner_reference(&img, size, sigma_n, t, q_min).unwrap();
+                for (i, m) in map.cells.iter().enumerate() {
+                    let (gw, gq) = (f64::from(fl[0].data[i]), f64::from(fl[1].data[i]));
+                    let (vw, vq) = (f64::from(rl[0].data[i]), f64::from(rl[1].data[i]));
+                    let Some(m) = m else {
+                        assert!(
+                            gw.is_nan() && gq.is_nan(),
+                            "{what}: a value where no window fits"
+                        );
+                        continue;
+                    };
+                    let at = (i % img.width(), i / img.width());
+                    assert!(
+                        (gw - vw).abs() <= vw.abs() * 2f64.powi(-23) + 1e-8 * m.trace,
+                        "{what} w at {at:?}: {gw} vs {vw}"
+                    );
+                    assert!(
+                        (gq.is_nan() && vq.is_nan()) || (gq - vq).abs() <= 2f64.powi(-23) + 1e-7,
+                        "{what} q at {at:?}: {gq} vs {vq}"
+                    );
+                }
+                assert_eq!(fp, rp, "{what}: points");
+                found += fp.len();
+            }
+            // the kept map's points for another threshold
+            let mut kept = kept;
+            for t in [own, 0.5 * own] {
+                let got = kept.points(sigma_n, t, 0.5).unwrap();
+                let (_, want) = ops::forstner_reference(&img, size, sigma_n, t, 0.5).unwrap();
+                assert_eq!(got, want, "{name} {size}: kept map's points for T {t}");
+            }
+        }
+        assert!(found > 0 || img.width() < 30, "{name}: no points at all");
+    }
+}

@@ -7,12 +7,18 @@
 //! sums (`interest::fast::stream`): `w`, `q`, `λmin` and the measures of a
 //! point are `Measures::from_sums`'s numbers bit for bit, the layers their
 //! `f32` roundings, the points exactly the reference's (same candidates,
-//! same scores, the same suppression rule row by row). Other images take
-//! the reference: `interest::forstner_map` and `interest::forstner_points`.
+//! same scores, the same suppression rule row by row). A colour photo's
+//! levels take the same sums in `i64` (`levels`: decisions near a bound by
+//! the reference's own window, so the points are still the reference's).
+//! Other images take the reference: `interest::forstner_map` and
+//! `interest::forstner_points`.
 
 use super::*;
 use photogrammetry_playground::interest::fast::stream::{self, Sums4, Suppressor};
 use photogrammetry_playground::interest::{self, Measures};
+
+mod levels;
+pub use levels::{exact_measures, levels_w_min};
 
 /// Förstner's `w` and `q` layers and seed 003's points for one threshold
 /// (`interest::forstner_map`, `interest::forstner_points`), each point with
@@ -228,6 +234,13 @@ enum Source {
         /// Where the windows that fit lie (`w_min`'s cells).
         fit: stream::Fit,
     },
+    /// A colour photo's levels (the window sums recomputed row by row, in
+    /// `i64`; a window's exact measures from its greys `n / scale`).
+    Levels {
+        levels: Levels,
+        width: usize,
+        height: usize,
+    },
     /// The reference's map of every window's measures.
     Reference(interest::Map<Measures>),
 }
@@ -295,6 +308,28 @@ impl ForstnerKept {
     ) -> Result<Self> {
         let img = img.into();
         let Some(g) = img.gray() else {
+            if let Some(lv) = img.levels() {
+                let (width, height) = (img.width(), img.height());
+                let (layers, _, maxima) = levels::build(lv, width, height, size, detect)?;
+                return Ok(ForstnerKept {
+                    size,
+                    layers,
+                    w_min: std::cell::OnceCell::new(),
+                    source: Source::Levels {
+                        levels: lv.clone(),
+                        width,
+                        height,
+                    },
+                    suppressed: detect.zip(maxima).map(|((sigma_n, q_min, limit), maxima)| {
+                        Suppressed {
+                            sigma_n,
+                            q_min,
+                            limit,
+                            maxima,
+                        }
+                    }),
+                });
+            }
             let map = interest::forstner_map(img.grid(), size)?;
             let mut w: Vec<f64> = map.cells.iter().flatten().map(|m| m.w).collect();
             let w_min = (!w.is_empty()).then(|| {
@@ -375,6 +410,14 @@ impl ForstnerKept {
                 let wl = self.layers.first().map_or(&[][..], |l| &l.data[..]);
                 exact_w_min(bytes, *width, *height, self.size, wl, *fit)
             }
+            Source::Levels {
+                levels,
+                width,
+                height,
+            } => {
+                let wl = self.layers.first().map_or(&[][..], |l| &l.data[..]);
+                levels_w_min(levels, *width, *height, self.size, wl)
+            }
             // (the reference route finds it with its map)
             Source::Reference(_) => None,
         }))?;
@@ -404,6 +447,18 @@ impl ForstnerKept {
                 if stream::forstner_rows(g, self.size, |r, xx, yy, xy| d.row(r, xx, yy, xy)).is_ok()
                 {
                     maxima = d.finish();
+                }
+            }
+            Source::Levels {
+                levels,
+                width,
+                height,
+            } => {
+                let detect = Some((sigma_n, q_min, limit));
+                if let Ok((_, _, Some(m))) =
+                    levels::build(levels, *width, *height, self.size, detect)
+                {
+                    maxima = m;
                 }
             }
             Source::Reference(map) => {
@@ -466,6 +521,10 @@ impl ForstnerKept {
                 let (ms, lambda) = match (&self.source, x.sums) {
                     (_, Some(sums)) => (sums.measures(m), var / sums.lambda_min()),
                     (Source::Reference(map), None) => (map.get(x.c, x.r)?, x.lambda),
+                    (Source::Levels { levels, width, .. }, None) => (
+                        exact_measures(levels, *width, self.size, x.c, x.r)?,
+                        x.lambda,
+                    ),
                     _ => return None,
                 };
                 (lambda <= t2).then_some(())?;
@@ -492,7 +551,7 @@ const REFINE: f64 = 1e-12;
 /// the exact one ([`ForstnerKept::points`]) — the reference's decisions and
 /// numbers.
 struct Detector {
-    sup: Suppressor<Sums4>,
+    sup: Suppressor<'static, Sums4>,
     maxima: Vec<Maximum>,
     next: usize,
     height: usize,

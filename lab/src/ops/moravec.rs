@@ -3,7 +3,12 @@
 //! 8-bit image by the core's row-by-row window sums
 //! (`interest::fast::stream::moravec_rows`: each mean the reference's bit
 //! for bit, the layer its `f32` rounding, the points the reference's);
-//! otherwise `interest::moravec_map` and `interest::moravec_points`.
+//! on a colour photo's levels (`ops::Levels`) by the same sums in `i64`
+//! (`stream::moravec_rows_levels`: each mean within `Levels::sum_slack` of
+//! the reference's, the points the reference's — a mean near the threshold
+//! and near-ties compared by the reference's own window, the points' scores
+//! the reference's); otherwise `interest::moravec_map` and
+//! `interest::moravec_points`.
 
 use super::*;
 use photogrammetry_playground::interest;
@@ -31,6 +36,9 @@ pub fn moravec<'a>(
     }
     let img = img.into();
     let Some(g) = img.gray() else {
+        if let Some(lv) = img.levels() {
+            return moravec_levels(lv, img.width(), img.height(), size, threshold);
+        }
         return moravec_reference(img.grid(), size, threshold);
     };
     let (w, h) = (g.width(), g.height());
@@ -71,6 +79,76 @@ pub fn moravec<'a>(
         next += 1;
     }
     sup.finish(&mut keep);
+    Ok((Layer::new("moravec", whole(w, h), data, false), points))
+}
+
+/// [`moravec`] of a colour photo's levels (`w × h`): the sums of squared
+/// differences of `n` exact in `i64`, each mean `sum / scale² / (size − 2)²`
+/// within `slack` (relative) of the reference's; a mean within `slack` of
+/// the threshold is the reference's own window's, near-ties are compared by
+/// the reference's windows (`Suppressor::refined`), and a point's score is
+/// its window's reference mean.
+fn moravec_levels(
+    lv: &Levels,
+    w: usize,
+    h: usize,
+    size: usize,
+    threshold: f64,
+) -> Result<(Layer, Vec<Point>)> {
+    let view = lv
+        .view(w, h)
+        .ok_or_else(|| Error::input("image", "has levels of another size"))?;
+    let m = (size.max(2) - 2) * (size.max(2) - 2);
+    let n = m as f64;
+    let unit = lv.scale * lv.scale;
+    let slack = lv.sum_slack(4 * m);
+    let a = interest::anchor(size);
+    let exact = |&(c, r): &(usize, usize)| {
+        lv.window(w, c, r, size)
+            .and_then(|win| interest::moravec(&win).ok())
+            .map_or(f64::NAN, |m| m.mean)
+    };
+    let mut data = vec![f32::NAN; w * h];
+    let mut kept = Vec::new();
+    let mut sup = Suppressor::<(usize, usize)>::new(w, h, size / 2).refined(4.0 * slack, exact);
+    let mut keep = |c: usize, r: usize, _: f64, p: (usize, usize)| kept.push((c, r, p));
+    let mut row = vec![(f64::NAN, (0, 0)); w];
+    let mut next = 0;
+    let empty = |w: usize| std::iter::repeat_n((f64::NAN, (0, 0)), w);
+    stream::moravec_rows_levels(view, size, |r, sums| {
+        while next < r {
+            sup.push(empty(w), &mut keep);
+            next += 1;
+        }
+        let out = &mut data[r * w + a..r * w + a + sums.len()];
+        for ((&s, o), (j, cell)) in sums
+            .iter()
+            .zip(out.iter_mut())
+            .zip(row[a..].iter_mut().enumerate())
+        {
+            let v = s as f64 / unit / n;
+            *o = v as f32;
+            // above the threshold beyond the slack, or the reference's own mean
+            let v = if (v - threshold).abs() <= slack * v.abs().max(threshold.abs()) {
+                exact(&(a + j, r))
+            } else {
+                v
+            };
+            *cell = (if v > threshold { v } else { f64::NAN }, (a + j, r));
+        }
+        sup.push(row.iter().copied(), &mut keep);
+        next = r + 1;
+    })?;
+    while next < h {
+        sup.push(empty(w), &mut keep);
+        next += 1;
+    }
+    sup.finish(&mut keep);
+    drop(sup);
+    let points = kept
+        .into_iter()
+        .map(|(c, r, p)| point(c, r, exact(&p)))
+        .collect();
     Ok((Layer::new("moravec", whole(w, h), data, false), points))
 }
 

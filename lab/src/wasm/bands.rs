@@ -13,7 +13,8 @@ use photogrammetry_playground::interest::{self, fast::stream};
 /// together) for `size × size` windows and `σn`: `{ thresholdPx, wMin,
 /// share }` (as `ForstnerMaps.auto_threshold`), or null when no pixel is
 /// textured. `w_min` is the one whole-image map gives: on an 8-bit photo
-/// [`ops::exact_w_min`] (the fast route's sums), otherwise the `w` of rank
+/// [`ops::exact_w_min`] (the fast route's sums), on a colour photo's levels
+/// [`ops::levels_w_min`], otherwise the `w` of rank
 /// [`ops::top_rank`] found on the layer (rounding keeps the order) and the
 /// windows whose `f32` is that value recomputed by `interest::forstner`.
 #[wasm_bindgen]
@@ -34,7 +35,14 @@ pub fn forstner_auto_threshold(
     let fit = stream::fit(width, height, size).map_err(js_error)?;
     let w_min = match img.bytes() {
         Some(bytes) => ops::exact_w_min(bytes, width, height, size, w, fit),
-        None => reference_w_min(img.grid(), size, w),
+        None => {
+            // a colour photo's levels: the layer's w are within their error of the reference's
+            let levels = ops::Image::with_bytes(img.grid(), None).with_levels(&img.levels);
+            match levels.levels() {
+                Some(lv) => ops::levels_w_min(lv, width, height, size, w),
+                None => reference_w_min(img.grid(), size, w),
+            }
+        }
     };
     match w_min {
         Some(w_min) if w_min > 0.0 && sigma_n > 0.0 => obj(&[

@@ -25,7 +25,7 @@
 
 use crate::error::{Error, Result};
 use crate::interest::{anchor, Measures, Sums, MAX_WINDOW, MIN_WINDOW, SINGULAR_TOL};
-use crate::raster::Gray;
+use crate::raster::{Gray, GrayF32};
 
 /// Where the `size × size` windows fit in a `width × height` image:
 /// reference pixels `(c, r)` with `c0 ≤ c < c0 + columns`,
@@ -68,38 +68,53 @@ pub fn reach(size: usize) -> usize {
     size.saturating_sub(1) - anchor(size)
 }
 
-/// Window sums of `channels` per-pixel integer values: `value(y, rows)`
-/// fills `rows[k][x]` for image row `y` (`1 ≤ y ≤ h − 2`, columns
-/// `1 … w − 2`; the others are not read), and `emit(r, sums)` gets, for
-/// every row `r` of the fit, `sums[k][j]` = the sum over the interior of
-/// the window whose reference pixel is `(fit.c0 + j, r)`.
-fn window_rows(
-    img: &Gray,
+/// The integers [`window_rows`] sums: `i32` for bytes' products, `i64`
+/// for a colour photo's levels (`n < 2²⁴`: products up to 2⁴⁸).
+trait Whole:
+    Copy
+    + Default
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::AddAssign
+    + std::ops::SubAssign
+    + std::iter::Sum
+{
+}
+impl Whole for i32 {}
+impl Whole for i64 {}
+
+/// Window sums of `channels` per-pixel integer values over a `w × h`
+/// image: `value(y, rows)` fills `rows[k][x]` for image row `y`
+/// (`1 ≤ y ≤ h − 2`, columns `1 … w − 2`; the others are not read), and
+/// `emit(r, sums)` gets, for every row `r` of the fit, `sums[k][j]` = the
+/// sum over the interior of the window whose reference pixel is
+/// `(fit.c0 + j, r)`.
+fn window_rows<T: Whole>(
+    (w, h): (usize, usize),
     size: usize,
     channels: usize,
-    mut value: impl FnMut(usize, &mut [Vec<i32>]),
-    mut emit: impl FnMut(usize, &[Vec<i32>]),
+    mut value: impl FnMut(usize, &mut [Vec<T>]),
+    mut emit: impl FnMut(usize, &[Vec<T>]),
 ) -> Result<Fit> {
-    let (w, h) = (img.width(), img.height());
     let f = fit(w, h, size)?;
     let k = size - 2;
     // ring of k value rows (slot y % k), column sums over the k rows of
     // the current windows, the window sums of one output row
-    let mut ring = vec![vec![vec![0i32; w]; channels]; k];
-    let mut col = vec![vec![0i32; w]; channels];
-    let mut out = vec![vec![0i32; f.columns]; channels];
+    let mut ring = vec![vec![vec![T::default(); w]; channels]; k];
+    let mut col = vec![vec![T::default(); w]; channels];
+    let mut out = vec![vec![T::default(); f.columns]; channels];
     // out[j] = Σ cs[j + 1 … j + k]: a running sum, the entering and
     // leaving columns as two slices of equal length (no index checks)
-    let horizontal = |col: &[Vec<i32>], out: &mut [Vec<i32>]| {
+    let horizontal = |col: &[Vec<T>], out: &mut [Vec<T>]| {
         for (cs, o) in col.iter().zip(out.iter_mut()) {
             let Some((first, rest)) = o.split_first_mut() else {
                 continue;
             };
-            let mut s: i32 = cs.iter().skip(1).take(k).sum();
+            let mut s: T = cs.iter().skip(1).take(k).copied().sum();
             *first = s;
             let n = rest.len();
             let (enter, leave) = (&cs[k + 1..k + 1 + n], &cs[1..1 + n]);
-            for ((ov, e), l) in rest.iter_mut().zip(enter).zip(leave) {
+            for ((ov, &e), &l) in rest.iter_mut().zip(enter).zip(leave) {
                 s += e - l;
                 *ov = s;
             }
@@ -109,7 +124,7 @@ fn window_rows(
         let slot = &mut ring[y % k];
         value(y, slot);
         for (c, s) in col.iter_mut().zip(slot.iter()) {
-            for (a, b) in c.iter_mut().zip(s) {
+            for (a, &b) in c.iter_mut().zip(s) {
                 *a += b;
             }
         }
@@ -122,13 +137,13 @@ fn window_rows(
         let y = i + k;
         let slot = &mut ring[y % k];
         for (c, s) in col.iter_mut().zip(slot.iter()) {
-            for (a, b) in c.iter_mut().zip(s) {
+            for (a, &b) in c.iter_mut().zip(s) {
                 *a -= b;
             }
         }
         value(y, slot);
         for (c, s) in col.iter_mut().zip(slot.iter()) {
-            for (a, b) in c.iter_mut().zip(s) {
+            for (a, &b) in c.iter_mut().zip(s) {
                 *a += b;
             }
         }
@@ -289,7 +304,7 @@ pub fn forstner_rows(
     mut emit: impl FnMut(usize, &[i32], &[i32], &[i32]),
 ) -> Result<Fit> {
     window_rows(
-        &img,
+        (img.width(), img.height()),
         size,
         3,
         |y, rows| {
@@ -322,7 +337,7 @@ pub fn forstner_rows(
 /// reference's mean is `sum as f64 / ((size − 2)² as f64)`.
 pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32])) -> Result<Fit> {
     window_rows(
-        &img,
+        (img.width(), img.height()),
         size,
         1,
         |y, rows| {
@@ -335,6 +350,88 @@ pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32]))
                     d * d
                 };
                 // image column i + 1: its neighbours i, i + 1, i + 2
+                let (ml, mr) = (&mid[..n], &mid[2..2 + n]);
+                let (ul, uc, ur) = (&up[..n], &up[1..=n], &up[2..2 + n]);
+                let (dl, dc, dr) = (&down[..n], &down[1..=n], &down[2..2 + n]);
+                for i in 0..n {
+                    s[i] =
+                        sq(mr[i], ml[i]) + sq(dc[i], uc[i]) + sq(dr[i], ul[i]) + sq(dl[i], ur[i]);
+                }
+            }
+        },
+        |r, s| {
+            if let [s] = s {
+                emit(r, s);
+            }
+        },
+    )
+}
+
+/// The three rows `y − 1`, `y`, `y + 1` of levels as whole numbers
+/// (`1 ≤ y ≤ h − 2`; every level an integer below 2²⁴, exact in `i64`).
+fn three_levels(img: &GrayF32, y: usize, rows: &mut [Vec<i64>; 3]) {
+    for (k, row) in rows.iter_mut().enumerate() {
+        let src = img.row(y + k - 1).unwrap_or(&[]);
+        row.clear();
+        row.extend(src.iter().map(|&v| v as i64));
+    }
+}
+
+/// [`forstner_rows`] of a [`GrayF32`] of whole-number levels (a colour
+/// photo's `n = scale · grey`, each below 2²⁴): the same integer sums of
+/// the levels' central differences, in `i64` (they pass 2³¹).
+pub fn forstner_rows_levels(
+    img: GrayF32,
+    size: usize,
+    mut emit: impl FnMut(usize, &[i64], &[i64], &[i64]),
+) -> Result<Fit> {
+    let mut three: [Vec<i64>; 3] = Default::default();
+    window_rows(
+        (img.width(), img.height()),
+        size,
+        3,
+        |y, rows| {
+            three_levels(&img, y, &mut three);
+            let [up, mid, down] = &three;
+            let n = mid.len().saturating_sub(2);
+            if let [xx, yy, xy] = rows {
+                let (xx, yy, xy) = (&mut xx[1..=n], &mut yy[1..=n], &mut xy[1..=n]);
+                let (r, l, d, u) = (&mid[2..2 + n], &mid[..n], &down[1..=n], &up[1..=n]);
+                for i in 0..n {
+                    let dx = r[i] - l[i];
+                    let dy = d[i] - u[i];
+                    xx[i] = dx * dx;
+                    yy[i] = dy * dy;
+                    xy[i] = dx * dy;
+                }
+            }
+        },
+        |r, s| {
+            if let [xx, yy, xy] = s {
+                emit(r, xx, yy, xy);
+            }
+        },
+    )
+}
+
+/// [`moravec_rows`] of a [`GrayF32`] of whole-number levels, in `i64`.
+pub fn moravec_rows_levels(
+    img: GrayF32,
+    size: usize,
+    mut emit: impl FnMut(usize, &[i64]),
+) -> Result<Fit> {
+    let mut three: [Vec<i64>; 3] = Default::default();
+    window_rows(
+        (img.width(), img.height()),
+        size,
+        1,
+        |y, rows| {
+            three_levels(&img, y, &mut three);
+            let [up, mid, down] = &three;
+            let n = mid.len().saturating_sub(2);
+            if let [s] = rows {
+                let s = &mut s[1..=n];
+                let sq = |a: i64, b: i64| (a - b) * (a - b);
                 let (ml, mr) = (&mid[..n], &mid[2..2 + n]);
                 let (ul, uc, ur) = (&up[..n], &up[1..=n], &up[2..2 + n]);
                 let (dl, dc, dr) = (&down[..n], &down[1..=n], &down[2..2 + n]);
@@ -365,7 +462,7 @@ pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32]))
 /// (within a quarter of `tol`, relative): two scores closer than `tol` are
 /// compared by `exact(payload)` instead, so the decisions are the exact
 /// scores' (the reported score is the pushed one).
-pub struct Suppressor<P> {
+pub struct Suppressor<'e, P> {
     width: usize,
     height: usize,
     radius: usize,
@@ -379,7 +476,7 @@ pub struct Suppressor<P> {
     scratch: Vec<f64>,
     pushed: usize,
     decided: usize,
-    refine: Option<Refine<P>>,
+    refine: Option<Refine<'e, P>>,
 }
 
 /// One row of the ring as `decide` reads it: row, scores, payloads, the
@@ -387,9 +484,9 @@ pub struct Suppressor<P> {
 type RingRow<'a, P> = (usize, &'a [f64], &'a [P], &'a [f64]);
 
 /// [`Suppressor::refined`]'s tolerance and exact score.
-type Refine<P> = (f64, Box<dyn Fn(&P) -> f64>);
+type Refine<'e, P> = (f64, Box<dyn Fn(&P) -> f64 + 'e>);
 
-impl<P: Copy + Default> Suppressor<P> {
+impl<'e, P: Copy + Default> Suppressor<'e, P> {
     pub fn new(width: usize, height: usize, radius: usize) -> Self {
         let n = 2 * radius + 1;
         Suppressor {
@@ -408,7 +505,7 @@ impl<P: Copy + Default> Suppressor<P> {
     }
 
     /// Scores closer than `tol` (relative) compared by `exact(payload)`.
-    pub fn refined(mut self, tol: f64, exact: impl Fn(&P) -> f64 + 'static) -> Self {
+    pub fn refined(mut self, tol: f64, exact: impl Fn(&P) -> f64 + 'e) -> Self {
         self.refine = Some((tol, Box::new(exact)));
         self
     }
