@@ -14,7 +14,12 @@
 //  - what a lab visit downloads (lab JS + wasm, gzip -9), against 350 KB.
 // BENCH_LAB_COLOUR=1: the operators on the colour JPEG of the texture (its
 // BT.601 greys, as a phone photo opens) instead of the 8-bit texture;
-// BENCH_LAB_OPS=regex: only the operators whose names match.
+// BENCH_LAB_OPS=regex: only the operators whose names match (and nothing
+// else, unless BENCH_LAB_REST=1: the photo on screen, the previews, the
+// visit; BENCH_LAB_OPS='^$' BENCH_LAB_REST=1 runs those alone).
+// Each result replaces the one before as on the page (client.release: its
+// layers' buffers carry the next result's); BENCH_LAB_REUSE=0 keeps every
+// result's layers fresh instead (the lab before the reuse).
 // Benchmarks, not tests. Timing rules of ../shared/bench/TASKS.md: BENCH_WARMUP
 // (1) untimed calls, then n = clamp(floor(BENCH_BUDGET_S (3) / t_last_warmup),
 // BENCH_MIN_REPS (3), BENCH_MAX_REPS (15)) timed calls; the median.
@@ -63,6 +68,7 @@ function texture(w, h) {
 
 const [hc, hr] = [W >> 1, H >> 1];
 const COLOUR = process.env.BENCH_LAB_COLOUR === "1";
+const REUSE = process.env.BENCH_LAB_REUSE !== "0";
 /** The operators, as [name, worker request type, arguments, the bench's fast path (FastImage) or null]; "frame" ones run on the scanned frame. */
 const OPS = [
   ["filter mean 3×3", "filter", { kernel: "mean", border: "replicate" }, (f) => f.mean3("replicate")],
@@ -158,7 +164,7 @@ try {
     console.error(`bench lab: ${n} worker${n > 1 ? "s" : ""} …`);
     chrome.ops[n] = {};
     for (const [name, type, a] of OPS) {
-      const r = await page.evaluate(async ({ n, name, type, a, RULES, timedSrc, colour }) => {
+      const r = await page.evaluate(async ({ n, name, type, a, RULES, timedSrc, colour, reuse }) => {
         const timed = new Function(`return ${timedSrc}`)();
         if (!window.benchClient || window.benchClient.threads !== n) {
           window.benchClient?.close();
@@ -187,19 +193,24 @@ try {
           if (type === "forstnerPoints") await client.call("forstnerMaps", { size: 5, sigmaN: 8 });
           const t = await timed(async () => {
             const t0 = performance.now();
-            await client.call(type, args);
-            return performance.now() - t0;
+            const res = await client.call(type, args);
+            const ms = performance.now() - t0;
+            // the page shows it in place of the one before (lab.js setLayers)
+            if (reuse) client.release(window.benchLast?.layers);
+            window.benchLast = res;
+            return ms;
           }, RULES);
           return t;
         } catch (e) {
           return { error: e.message };
         }
-      }, { n, name, type, a, RULES, timedSrc: timed.toString(), colour: COLOUR });
+      }, { n, name, type, a, RULES, timedSrc: timed.toString(), colour: COLOUR, reuse: REUSE });
       chrome.ops[n][name] = r;
       console.error(`  ${name}: ${r.error ?? `${r.median.toFixed(0)} ms (n = ${r.n})`}`);
     }
     chrome.memory[n] = await page.evaluate(async () => {
       const client = window.benchClient;
+      if (!client) return null;
       const main = (await client.call("memory")).bytes;
       const pool = await Promise.all(client.tiles.workers.filter(Boolean).map((w) => w.ask("memory", {}).then((m) => m.bytes)));
       return { main, pool: Math.max(0, ...pool), instances: 1 + pool.length };
@@ -207,7 +218,7 @@ try {
   }
   await page.evaluate(() => window.benchClient?.close());
   // (BENCH_LAB_OPS: the operators only)
-  if (process.env.BENCH_LAB_OPS) throw Object.assign(new Error("operators only"), { opsOnly: true });
+  if (process.env.BENCH_LAB_OPS && process.env.BENCH_LAB_REST !== "1") throw Object.assign(new Error("operators only"), { opsOnly: true });
 
   // a 12 MP JPEG picked → on screen; slider → preview painted
   const jpeg = Buffer.from(await page.evaluate(async () => {
@@ -285,7 +296,7 @@ try {
 const ms = (t) => (!t ? "—" : t.error ? "error" : t.median.toFixed(t.median < 10 ? 1 : 0));
 const [one, many] = [chrome.counts[0], chrome.counts.at(-1)];
 console.log(`\nThe image lab on a ${W} × ${H} ${COLOUR ? "colour JPEG of the texture (its BT.601 greys; the fast path's column: the 8-bit texture)" : "texture"} (${((W * H) / 1e6).toFixed(1)} MP) in Chromium, ${chrome.cores} cores: ms from the request to the whole result on the page,`);
-console.log(`median of n calls after ${RULES.warm} warm-up (n = clamp(${RULES.budget} s / last warm-up, ${RULES.min}, ${RULES.max})); the fast path: FastImage in Node, one call, same image`);
+console.log(`${REUSE ? "each result replacing the one before (its layers reused)" : "every result's layers fresh (BENCH_LAB_REUSE=0)"}, median of n calls after ${RULES.warm} warm-up (n = clamp(${RULES.budget} s / last warm-up, ${RULES.min}, ${RULES.max})); the fast path: FastImage in Node, one call, same image`);
 const cols = [["operator", 58], ["fast path", 10], [`1 worker`, 10], [`${many} workers`, 10], [`${many} vs 1`, 8], ["1 w / fast", 10]];
 console.log(`  ${cols.map(([t, n], i) => (i ? t.padStart(n) : t.padEnd(n))).join(" ")}`);
 for (const [name] of OPS) {
@@ -300,6 +311,7 @@ if (chrome.preview) console.log(`  ${"slider change → preview painted: Förstn
 const mib = (b) => `${(b / 2 ** 20).toFixed(0)} MiB`;
 for (const n of chrome.counts) {
   const m = chrome.memory[n];
+  if (!m) continue;
   console.log(`  peak wasm memory, pool of ${n}: main worker ${mib(m.main)}, a pool worker ${mib(m.pool)} (${m.instances} instances)`);
 }
 if (chrome.visit) {

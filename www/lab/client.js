@@ -95,6 +95,11 @@ export class LabClient {
     });
   }
 
+  /** The page no longer reads these result layers (a newer result replaced them): their buffers carry the next result's (tiles.js `release`). */
+  release(layers) {
+    this.tiles.release(layers);
+  }
+
   /** `layer` painted in a pool worker: { bitmap: ImageBitmap, scale }. */
   paint(layer) {
     return this.tiles.paint(layer);

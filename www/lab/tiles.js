@@ -27,6 +27,8 @@ const BAND_PIXELS = 1 << 21;
 const PAINT_SPLIT = 1 << 21;
 /** Buffers of bands' layers kept for the next bands (2 workers × 4 layers). */
 const SPARE = 8;
+/** Whole layers the page has released (replaced results), kept to carry the next result's (2 results × 2 layers). */
+const FREE = 4;
 /** Images with fewer pixels run on the main worker whole (bands would cost more than they save). */
 export const MIN_PIXELS = 1 << 19;
 
@@ -65,6 +67,9 @@ export class Tiles {
     this.nextId = 1;
     this.image = null; // { width, height, bytes: Uint8Array }
     this.spare = []; // ArrayBuffers of bands' layers, to be filled again (recycle)
+    this.free = []; // ArrayBuffers of whole layers the page released, to carry the next result's (release)
+    this.owned = new WeakSet(); // the whole layers' buffers this pool made (only those come back)
+    this.reused = 0; // whole layers made in a released buffer (the tests count them)
     this.running = new Set();
     this.halos = new Map();
     this.kept = null; // the bands' Förstner maps: { job, size, holders: Map(band → slot), bands }
@@ -81,6 +86,32 @@ export class Tiles {
     this.image = img && (img.bytes || img.grey) ? img : null;
     this.kept = null;
     this.spare = [];
+    this.free = [];
+  }
+
+  /**
+   * The page no longer reads `layers` (a newer result replaced them): the
+   * buffers of those this pool put together carry the next result's layers
+   * of the same size. A fresh 48 MB layer costs its pages on first write
+   * (100–170 ms at 12 MP), a reused one does not. At most FREE are kept.
+   */
+  release(layers) {
+    for (const l of layers ?? []) {
+      const b = l?.data?.buffer;
+      if (!b || !this.owned.has(b) || this.free.includes(b)) continue;
+      this.owned.delete(b);
+      this.free.push(b);
+      if (this.free.length > FREE) this.free.shift();
+    }
+  }
+
+  /** A whole layer of `length` values of `Type` (Float32Array …): in a released buffer of that size when there is one. */
+  alloc(Type, length) {
+    const i = this.free.findIndex((b) => b.byteLength === length * Type.BYTES_PER_ELEMENT);
+    const out = i >= 0 ? new Type(this.free.splice(i, 1)[0]) : new Type(length);
+    if (i >= 0) this.reused++;
+    this.owned.add(out.buffer);
+    return out;
   }
 
   /** Keeps `buffers` (bands' layers already copied into the whole ones) for the next bands, at most SPARE of them. */
@@ -207,7 +238,7 @@ export class Tiles {
     const job = ++this.jobs;
     const keep = type === "forstnerMaps";
     const holders = new Map();
-    const whole = new Whole(height);
+    const whole = new Whole(height, (T, n) => this.alloc(T, n));
     const parts = await this.lanes(bands, height, onProgress, async (w, k, [start, end]) => {
       const [r0, r1] = [Math.max(0, start - halo), Math.min(height, end + halo)];
       const [data, transfer] = this.rows(r0, r1);
@@ -280,7 +311,7 @@ export class Tiles {
   async resample(args, onProgress) {
     const img = this.image;
     const bands = bandsOf(args.width, args.height, this.n, this.minRows);
-    const whole = new Whole(args.height);
+    const whole = new Whole(args.height, (T, n) => this.alloc(T, n));
     const parts = await this.lanes(bands, args.height, onProgress, async (w, k, [row0, row1]) => {
       if (w.image !== img) {
         const [data, transfer] = this.rows(0, img.height);
@@ -338,14 +369,16 @@ export class Tiles {
  * in band order (row-major, as one call finds them).
  */
 export class Whole {
-  constructor(height) {
+  /** `alloc(Type, length)`: a whole layer's array (Tiles.alloc: a released one when it fits). */
+  constructor(height, alloc = (Type, length) => new Type(length)) {
     this.height = height;
+    this.alloc = alloc;
     this.layers = null;
   }
 
   /** Copies `part`'s layers in; returns their buffers (free now). */
   add(part) {
-    this.layers ??= part.layers.map((l) => ({ data: new l.data.constructor(this.height * l.width), top: Infinity, rows: 0, signed: false }));
+    this.layers ??= part.layers.map((l) => ({ data: this.alloc(l.data.constructor, this.height * l.width), top: Infinity, rows: 0, signed: false }));
     return part.layers.map((l, i) => {
       const whole = this.layers[i];
       if (l.height > 0) {

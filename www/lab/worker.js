@@ -363,7 +363,8 @@ const handlers = {
    * A preview of `op` (a band type of OPS) on image "a": the box `rect`
    * [c, r, w, h] at full resolution, read with the operator's halo of real
    * neighbours around it (op_halo), so its pixels are the whole result's
-   * (on an 8-bit photo; others are rounded to 8 bits for it: crop_image).
+   * (an 8-bit photo's bytes, a colour photo's greys as they are: every
+   * operator here has its fast path on both).
    * Answers the layer named `name` (else the first) painted: `{ bitmap,
    * scale, name, rect }`, `rect` the image pixels it covers.
    */
@@ -375,9 +376,8 @@ const handlers = {
     const halo = lab.op_halo(op, args) ?? 0;
     const [c0, r0] = [Math.max(0, rect[0] - halo), Math.max(0, rect[1] - halo)];
     const [c1, r1] = [Math.min(W, rect[0] + rect[2] + halo), Math.min(H, rect[1] + rect[3] + halo)];
-    // (a photo that is not 8-bit: the filters and edges read its greys as they are — a colour photo's
-    // take the fast paths, ops::Levels —, the others rounded to 8 bits for the fast paths; the result's own numbers come with it)
-    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0, !(op === "filter" || op === "edges"));
+    // (a photo that is not 8-bit: its greys as they are — a colour photo's take the fast paths, ops::Levels)
+    const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0, false);
     try {
       const r = cut(run(img, args), [rect[0] - c0, rect[1] - r0, rect[2], rect[3]], [c0, r0]);
       const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];
