@@ -27,6 +27,21 @@ export function append(node, children) {
   return node;
 }
 
+/**
+ * Sets the text of an element that holds one text node by changing that node's
+ * data (else as textContent). A frame of a motion rewrites its counter and
+ * caption 60 times a second: textContent replaces the text node, a change of
+ * the element's children, which makes the page's `:has()` rules (style.css
+ * `html:has(.update-notice)`, …) recalculate the style of the document (2–7 ms
+ * on an example page of 12 000 elements); the node's data is a text change only.
+ */
+export function setText(node, text) {
+  const first = node.firstChild;
+  if (first && first === node.lastChild && first.nodeType === Node.TEXT_NODE) {
+    if (first.data !== text) first.data = text;
+  } else node.textContent = text;
+}
+
 /** A string safe to use in an element id. */
 /** Adds the stylesheet at `href` to the page once (a module's own rules, loaded with it). */
 export function addStylesheet(href) {

@@ -107,7 +107,7 @@
 // device-pixel-ratio scaling, resizing and errors are handled here.
 
 import { COLORS, clearLabelBoxes, font, FONT_SIZE, pageTheme, usePalette } from "./draw.js";
-import { addStylesheet } from "../dom.js";
+import { addStylesheet, setText } from "../dom.js";
 import { testData } from "../test-hooks.js";
 import { cursorText, dataView, moveCursor, renderData } from "./data-view.js";
 
@@ -542,7 +542,7 @@ export function mountFigures(host, id, { onInputs = null, onStep = null, onPosit
             if (panel.slider && i !== null && panel.frames[i]?.slider !== undefined) {
               panel.sliderValue = panel.frames[i].slider;
               panel.slider.input.value = String(panel.sliderValue);
-              panel.slider.name.textContent = panel.sliderText?.(panel.sliderValue) ?? "";
+              setText(panel.slider.name, panel.sliderText?.(panel.sliderValue) ?? ""); // a frame: the text node's data (dom.js)
             }
             paint(panel, solution, shared, !how.full);
           },
@@ -751,6 +751,8 @@ export function mountFigures(host, id, { onInputs = null, onStep = null, onPosit
     },
     /** The motion controllers (for `npm run bench -- motion`). */
     motions: () => panels.map((p) => p.motion).filter(Boolean),
+    /** The frame a moving figure shows (its spec's frame object), or null (the lab outlines it on the photo). */
+    frame: () => (moving() ? frameOf(moving()) : null),
     destroy() {
       destroyed = true;
       panels.forEach((p) => p.motion?.destroy());

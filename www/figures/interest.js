@@ -33,7 +33,7 @@ const windowScale = (win) => greyScaleOf(win, { name: "Window", format: (v) => f
  * The window grid with its numbers; arrows of (gx, gy) at the interior
  * pixels. Returns its grey scale (for the legend).
  */
-function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
+function drawWindow(ctx, x0, y0, cell, win, gx, gy, arrowAt = () => true) {
   const scale = windowScale(win);
   const rows = win.length;
   const cols = win[0].length;
@@ -65,6 +65,7 @@ function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
   const reach = 0.46 * cell;
   gx.forEach((row, r) =>
     row.forEach((vx, c) => {
+      if (!arrowAt(r, c)) return;
       const vy = gy[r][c];
       const cx = x0 + (c + 1.5) * cell;
       const cy = y0 + (r + 1.5) * cell + 4;
@@ -82,6 +83,132 @@ function drawWindow(ctx, x0, y0, cell, win, gx, gy) {
   return scale;
 }
 
+/**
+ * The gradient table of the solution ("Gradient table: central differences":
+ * per interior pixel c, r, g, g′x, g′y, g′x·g′y, g′x², g′y²), its sums and
+ * N, w, q: what the window's sums block and its motion show (nothing computed).
+ */
+function sumsOf(solution) {
+  const table = stepValue(solution, "table");
+  const rows = isMatrix(table) && table[0].length >= 8 ? table.map((t) => ({ c: t[0], r: t[1], g: t[2], gx: t[3], gy: t[4], gxgy: t[5], gx2: t[6], gy2: t[7] })) : [];
+  const res = solution.result ?? {};
+  const sum = { gx2: stepValue(solution, "sum_gx2"), gy2: stepValue(solution, "sum_gy2"), gxgy: stepValue(solution, "sum_gxgy") };
+  return { rows, sum, n: res.n, det: res.det_n, trace: res.trace_n, w: res.w, q: res.q };
+}
+
+/** The sums block under the window: a header, the rows (at most SUMS.rows), "…", the Σ row and three lines for N, w and q. */
+const SUMS = Object.freeze({ rows: 9, gap: 16, lines: 3 });
+const sumsRowH = () => FONT_SIZE_SMALL * LINE_HEIGHT + 4;
+function sumsHeight(solution) {
+  const { rows } = sumsOf(solution);
+  if (!rows.length) return 0;
+  const shown = Math.min(rows.length, SUMS.rows) + (rows.length > SUMS.rows ? 1 : 0);
+  return SUMS.gap + (shown + 2) * sumsRowH() + SUMS.lines * (FONT_SIZE * LINE_HEIGHT + 2) + 6;
+}
+const SUMS_HEAD = ["pixel", "g′x", "g′y", "g′x²", "g′y²", "g′x·g′y"];
+
+/** The lines of N, w and q (for frames: those reached; `upTo` 0: N, 1: and w, 2: and q). */
+function sumsLines(t, upTo = 2) {
+  const n = isMatrix(t.n) ? t.n : null;
+  const lines = [
+    n ? `N = [Σg′x²  Σg′x·g′y; Σg′x·g′y  Σg′y²] = [${fmt(n[0][0], 6)}  ${fmt(n[0][1], 6)}; ${fmt(n[1][0], 6)}  ${fmt(n[1][1], 6)}]` : "N: —",
+    `w = det N / trace N = ${fmt(t.det, 7)} / ${fmt(t.trace, 6)} = ${fmt(t.w)}`,
+    `q = 4 det N / trace² N = 4 · ${fmt(t.det, 7)} / ${fmt(t.trace, 6)}² = ${fmt(t.q)}`,
+  ];
+  return lines.slice(0, upTo + 1);
+}
+
+/**
+ * Draws the sums block from y: the table of each interior pixel's terms (in
+ * a frame: the rows up to its pixel, that row marked), the Σ row (the
+ * solution's sums, from the sums frame on) and N, w, q (frame by frame).
+ */
+function drawSums(ctx, width, y, solution, frame) {
+  const t = sumsOf(solution);
+  if (!t.rows.length) return;
+  const m = t.rows.length;
+  const k = frame ? frame.k : m + 3; // the pixel (0…m−1), then m: sums, m+1: N, m+2: w, m+3: q
+  const rh = sumsRowH();
+  const left = GRID.margin;
+  const avail = width - 2 * GRID.margin;
+  const colW = Math.min(84, avail / SUMS_HEAD.length);
+  const firstW = Math.max(colW, textWidth("P(c22, r22)", FONT_SIZE_SMALL) + 6);
+  const restW = Math.min(84, (avail - firstW) / (SUMS_HEAD.length - 1));
+  const xs = SUMS_HEAD.map((_, i) => (i === 0 ? left : left + firstW + (i - 1) * restW));
+  const right = (i) => (i === 0 ? xs[0] : xs[i] + restW - 4);
+  let yy = y + SUMS.gap + rh / 2;
+  SUMS_HEAD.forEach((h, i) => text(ctx, h, right(i), yy, { size: FONT_SIZE_SMALL, weight: "bold", align: i ? "right" : "left", color: COLORS.muted }));
+  line(ctx, left, yy + rh / 2, left + firstW + (SUMS_HEAD.length - 1) * restW, yy + rh / 2, { color: COLORS.grid });
+  // the rows shown: the last SUMS.rows up to the frame's pixel (all of them if they fit)
+  const lastRow = Math.min(k, m - 1);
+  const from = m > SUMS.rows ? Math.max(0, Math.min(lastRow - SUMS.rows + 1, m - SUMS.rows)) : 0;
+  if (m > SUMS.rows) {
+    yy += rh;
+    text(ctx, from > 0 ? `… ${from} row${from === 1 ? "" : "s"} above` : "", left, yy, { size: FONT_SIZE_SMALL, color: COLORS.muted });
+  }
+  for (let i = from; i < from + Math.min(m, SUMS.rows); i++) {
+    yy += rh;
+    if (i > k) continue;
+    const row = t.rows[i];
+    if (frame && i === k) {
+      ctx.fillStyle = COLORS.highlightFill;
+      ctx.fillRect(left - 4, yy - rh / 2, firstW + (SUMS_HEAD.length - 1) * restW + 4, rh);
+    }
+    [`P(c${row.c}, r${row.r})`, fmt(row.gx), fmt(row.gy), fmt(row.gx2), fmt(row.gy2), fmt(row.gxgy)].forEach((v, j) =>
+      text(ctx, v, right(j), yy, { size: FONT_SIZE_SMALL, align: j ? "right" : "left" }),
+    );
+  }
+  yy += rh;
+  line(ctx, left, yy - rh / 2, left + firstW + (SUMS_HEAD.length - 1) * restW, yy - rh / 2, { color: COLORS.grid });
+  if (k >= m) {
+    ["Σ", "", "", fmt(t.sum.gx2), fmt(t.sum.gy2), fmt(t.sum.gxgy)].forEach((v, j) =>
+      text(ctx, v, right(j), yy, { size: FONT_SIZE_SMALL, weight: "bold", align: j ? "right" : "left", color: frame?.k === m ? COLORS.highlight : COLORS.ink }),
+    );
+  }
+  yy += rh / 2 + 4;
+  if (k > m) {
+    const lines = sumsLines(t, k - m - 1);
+    lines.forEach((str, i) =>
+      text(ctx, str, left, yy + (i + 0.5) * (FONT_SIZE * LINE_HEIGHT + 2), { size: FONT_SIZE_SMALL, weight: frame && i === lines.length - 1 ? "bold" : "normal" }),
+    );
+  }
+}
+
+/**
+ * The motion of the window (issue 34: "the window and its sums"): pixel by
+ * pixel its gradient and the three terms (the solution's gradient table), then
+ * the sums, N, w and q (the solution's steps).
+ */
+function windowFrames(solution) {
+  const t = sumsOf(solution);
+  const win = fromAny(solution);
+  if (!t.rows.length || !isMatrix(win)) return [];
+  const steps = solution.steps ?? [];
+  const stepOf = (key) => {
+    const i = steps.findIndex((x) => x.values && Object.hasOwn(x.values, key));
+    return i >= 0 ? i : null;
+  };
+  const m = t.rows.length;
+  const v = (c, r) => win[r - 1]?.[c - 1];
+  const sub = (x) => (typeof x === "number" && x < 0 ? `(${fmt(x)})` : fmt(x));
+  const pixels = t.rows.map((p, k) => ({
+    k,
+    c: p.c,
+    r: p.r,
+    step: stepOf("table"),
+    caption: `Pixel ${k + 1} of ${m}: P(c${p.c}, r${p.r}) = ${fmt(p.g)}: g′x = (${fmt(v(p.c + 1, p.r))} − ${sub(v(p.c - 1, p.r))}) / 2 = ${fmt(p.gx)}, g′y = (${fmt(v(p.c, p.r + 1))} − ${sub(v(p.c, p.r - 1))}) / 2 = ${fmt(p.gy)}; g′x² = ${fmt(p.gx2)}, g′y² = ${fmt(p.gy2)}, g′x·g′y = ${fmt(p.gxgy)}.`,
+  }));
+  const lines = sumsLines(t);
+  return [
+    ...pixels,
+    { k: m, step: stepOf("sum_gx2"), caption: `The sums over the ${m} interior pixels: Σg′x² = ${fmt(t.sum.gx2)}, Σg′y² = ${fmt(t.sum.gy2)}, Σg′x·g′y = ${fmt(t.sum.gxgy)}.` },
+    { k: m + 1, step: stepOf("n"), caption: `${lines[0]}.` },
+    { k: m + 2, step: stepOf("w"), caption: `${lines[1]}.` },
+    { k: m + 3, step: stepOf("q"), caption: `${lines[2]}.` },
+  ];
+}
+const fromAny = (solution) => (isMatrix(solution.result?.window) ? solution.result.window : solution.inputs?.window);
+
 function windowCell(width, win) {
   const cols = win[0].length;
   return Math.max(GRID.minCell, Math.min(GRID.maxCell, (width - 2 * GRID.margin) / cols));
@@ -92,6 +219,7 @@ const windowTables = (source) => (solution) => {
   const { window: win, gx, gy } = source(solution);
   if (!isMatrix(win)) return { summary: "The window.", tables: [] };
   const hasG = isMatrix(gx) && isMatrix(gy);
+  const t = sumsOf(solution);
   const mark = (r, c) => {
     const g = hasG && r > 0 && c > 0 ? gx[r - 1]?.[c - 1] : undefined;
     if (typeof g !== "number") return null;
@@ -111,6 +239,15 @@ const windowTables = (source) => (solution) => {
           },
         },
       }),
+      ...(t.rows.length
+        ? [
+            seriesTable(
+              "The gradient table under the window: each interior pixel's gradient and terms, and their sums (the entries of N)",
+              SUMS_HEAD,
+              [...t.rows.map((p) => [`P(c${p.c}, r${p.r})`, fmt(p.gx), fmt(p.gy), fmt(p.gx2), fmt(p.gy2), fmt(p.gxgy)]), ["Σ", "", "", fmt(t.sum.gx2), fmt(t.sum.gy2), fmt(t.sum.gxgy)]],
+            ),
+          ]
+        : []),
     ],
   };
 };
@@ -122,7 +259,7 @@ const windowSpec = (source) => ({
   height(width, solution) {
     const win = source(solution).window;
     if (!isMatrix(win)) return 120;
-    return win.length * windowCell(width, win) + 2 * GRID.margin + GRID.greyLegend + GRID.legend;
+    return win.length * windowCell(width, win) + 2 * GRID.margin + GRID.greyLegend + GRID.legend + sumsHeight(solution);
   },
   describe(solution) {
     const { window: win, gx, gy } = source(solution);
@@ -134,18 +271,39 @@ const windowSpec = (source) => ({
     }));
     return `A ${win.length}×${win[0].length} window of grey values with the gradient arrows of its ${gx.length * gx[0].length} interior pixels; the longest is at P(c${best.c}, r${best.r}): g′x = ${fmt(best.gx)}, g′y = ${fmt(best.gy)}.`;
   },
-  draw(ctx, width, height, solution) {
+  draw(ctx, width, height, solution, state) {
     const { window: win, gx, gy } = source(solution);
     if (!isMatrix(win)) return;
     const cell = windowCell(width, win);
     const x0 = Math.max(GRID.margin, (width - win[0].length * cell) / 2);
-    const scale = drawWindow(ctx, x0, GRID.margin, cell, win, gx, gy);
-    greyLegend(ctx, GRID.margin, GRID.margin + win.length * cell + 6, scale, { maxWidth: width - 2 * GRID.margin });
-    text(ctx, "c →  r ↓  (from 1)   arrow = (g′x, g′y) at an interior pixel", GRID.margin, height - GRID.legend / 2, {
+    const f = state?.frame ?? null;
+    const rows = f ? sumsOf(solution).rows : [];
+    // a frame of a pixel: the arrows so far (the gradient table's rows up to it)
+    const done = new Set(rows.slice(0, f ? f.k + 1 : 0).map((p) => `${p.c},${p.r}`));
+    const scale = drawWindow(ctx, x0, GRID.margin, cell, win, gx, gy, f ? (r, c) => done.has(`${c + 2},${r + 2}`) : undefined);
+    if (f && f.c !== undefined) {
+      // the pixel and the four neighbours of its central differences
+      ctx.save();
+      ctx.strokeStyle = COLORS.highlight;
+      ctx.setLineDash([4, 3]);
+      ctx.lineWidth = 2;
+      for (const [dc, dr] of [[-1, 0], [1, 0], [0, -1], [0, 1]]) ctx.strokeRect(x0 + (f.c - 1 + dc) * cell + 2, GRID.margin + (f.r - 1 + dr) * cell + 2, cell - 4, cell - 4);
+      ctx.setLineDash([]);
+      ctx.lineWidth = 3;
+      ctx.strokeRect(x0 + (f.c - 1) * cell + 1.5, GRID.margin + (f.r - 1) * cell + 1.5, cell - 3, cell - 3);
+      ctx.restore();
+    }
+    const gridBottom = GRID.margin + win.length * cell;
+    greyLegend(ctx, GRID.margin, gridBottom + 6, scale, { maxWidth: width - 2 * GRID.margin });
+    text(ctx, "c →  r ↓  (from 1)   arrow = (g′x, g′y) at an interior pixel", GRID.margin, gridBottom + GRID.margin + GRID.greyLegend + GRID.legend / 2, {
       size: FONT_SIZE_SMALL,
       color: COLORS.muted,
     });
+    drawSums(ctx, width, gridBottom + GRID.greyLegend + GRID.legend, solution, f);
   },
+  // motion (issue 34; index.js `frames`): pixel by pixel its gradient and terms, then the sums, N, w and q
+  frames: windowFrames,
+  motion: { noun: "frame" },
 });
 
 /** The error ellipse (or its degenerate forms) centred at (cx, cy): `unit` CSS px per px of σ. */

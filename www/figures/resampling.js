@@ -47,23 +47,44 @@ function data(solution) {
     r: inp.r,
     res,
     bl: { c: stepValue(solution, "bilinear_c"), r: stepValue(solution, "bilinear_r"), w: stepValue(solution, "weights") },
-    bc: { c: stepValue(solution, "bicubic_c"), r: stepValue(solution, "bicubic_r"), wc: stepValue(solution, "weights_c"), wr: stepValue(solution, "weights_r") },
+    bc: { c: stepValue(solution, "bicubic_c"), r: stepValue(solution, "bicubic_r"), wc: stepValue(solution, "weights_c"), wr: stepValue(solution, "weights_r"), s: stepValue(solution, "s"), t: stepValue(solution, "t"), rows: stepValue(solution, "row_values") },
+    x: stepValue(solution, "x"),
+    y: stepValue(solution, "y"),
+    corners: stepValue(solution, "corners"),
   };
 }
 
-function valueLines(d) {
+/** Whether the cubic convolution was possible here (its 4×4 and row values are in the solution). */
+const cubic = (d) => Number.isFinite(d.bc.c) && d.res.bicubic !== null && d.res.bicubic !== undefined && Array.isArray(d.bc.rows);
+
+/**
+ * The stages of the interpolation, in the solution's order (the motion's
+ * frames; the value box's lines are reached stage by stage): the position,
+ * the nearest pixel, the four pixels of bilinear with their weights, the
+ * upper row, the lower row, between the rows; then, where the 4×4 exists,
+ * the cubic weights, its four rows one by one and the column.
+ */
+const STAGE = Object.freeze({ position: 0, nearest: 1, four: 2, upper: 3, lower: 4, between: 5, cubicWeights: 6, row: 7, column: 11 });
+
+/** The value box's lines; in a frame (`stage`), a line not reached yet keeps its place, muted, with "…". */
+function valueLines(d, stage = null) {
   const { res } = d;
-  return [
-    { text: `Position (c, r) = (${fmt(d.c, 7)}, ${fmt(d.r, 7)})`, weight: "bold" },
-    { text: `Nearest pixel (${fmt(res.nearest_c)}, ${fmt(res.nearest_r)}): ${fmt(res.nearest)}`, color: COLORS.pixelSystem },
-    { text: `dc = ${fmt(res.dc)}, dr = ${fmt(res.dr)}` },
-    { text: `I₁ (row ${fmt(d.bl.r)}) = ${fmt(res.i1, 6)}`, color: COLORS.imageSystem },
-    { text: `I₂ (row ${fmt((d.bl.r ?? 0) + 1)}) = ${fmt(res.i2, 6)}`, color: COLORS.imageSystem },
-    { text: `Bilinear I = ${fmt(res.bilinear, 6)} ≈ ${fmt(res.bilinear_rounded)}`, weight: "bold", color: COLORS.highlight },
-    res.bicubic === null || res.bicubic === undefined
-      ? { text: "Bicubic: no 4×4 neighbourhood here", color: COLORS.muted }
-      : { text: `Bicubic (4×4) = ${fmt(res.bicubic, 6)}`, weight: "bold", color: COLORS.point },
+  const lines = [
+    [STAGE.position, { text: `Position (c, r) = (${fmt(d.c, 7)}, ${fmt(d.r, 7)})`, weight: "bold" }, "Position (c, r)"],
+    [STAGE.nearest, { text: `Nearest pixel (${fmt(res.nearest_c)}, ${fmt(res.nearest_r)}): ${fmt(res.nearest)}`, color: COLORS.pixelSystem }, "Nearest pixel"],
+    [STAGE.four, { text: `dc = ${fmt(res.dc)}, dr = ${fmt(res.dr)}` }, "dc, dr"],
+    [STAGE.upper, { text: `I₁ (row ${fmt(d.bl.r)}) = ${fmt(res.i1, 6)}`, color: COLORS.imageSystem }, "I₁"],
+    [STAGE.lower, { text: `I₂ (row ${fmt((d.bl.r ?? 0) + 1)}) = ${fmt(res.i2, 6)}`, color: COLORS.imageSystem }, "I₂"],
+    [STAGE.between, { text: `Bilinear I = ${fmt(res.bilinear, 6)} ≈ ${fmt(res.bilinear_rounded)}`, weight: "bold", color: COLORS.highlight }, "Bilinear I"],
   ];
+  if (cubic(d)) {
+    // the rows of the 4×4 weighted along the columns: reached one by one
+    const reached = stage === null ? 4 : Math.max(0, Math.min(4, stage - STAGE.row + 1));
+    const rows = d.bc.rows.map((v, j) => (j < reached ? fmt(v, 6) : "…")).join(", ");
+    lines.push([STAGE.row, { text: `Rows P·w_c = ${rows}`, color: COLORS.point }, "Rows P·w_c"]);
+    lines.push([STAGE.column, { text: `Bicubic (4×4) = ${fmt(res.bicubic, 6)}`, weight: "bold", color: COLORS.point }, "Bicubic (4×4)"]);
+  } else lines.push([STAGE.column, { text: "Bicubic: no 4×4 neighbourhood here", color: COLORS.muted }, "Bicubic"]);
+  return lines.map(([at, line, name]) => (stage === null || at <= stage ? line : { text: `${name} …`, color: COLORS.muted }));
 }
 
 function layout(width, d) {
@@ -112,8 +133,12 @@ function avoidFrame(labels, g, c, r, w, h, halfWidth) {
   );
 }
 
-function draw(ctx, width, d) {
+function draw(ctx, width, d, frame = null) {
   const L = layout(width, d);
+  // a frame of the motion shows the marks of its stage (the position always); without one, every mark
+  const stage = frame ? frame.stage : null;
+  const upTo = (k) => stage === null || stage >= k;
+  const only = (from, to) => stage === null || (stage >= from && stage <= to);
   const labels = new Labels(ctx, width, L.height);
   const shade = { fill: () => "rgba(87, 96, 106, 0.06)" };
   const g = drawGrid(ctx, d.patch, L.x0, L.y0, L.cell, { first: { c: d.fc, r: d.fr }, shade, valueDy: L.cell >= 40 ? R.valueDy : 0 });
@@ -130,8 +155,13 @@ function draw(ctx, width, d) {
   }
   const { res } = d;
   // the sixteen pixels of the cubic convolution
-  if (Number.isFinite(d.bc.c) && res.bicubic !== null) {
-    outline(ctx, g, d.bc.c - d.fc, d.bc.r - d.fr, 4, 4, { color: COLORS.point, width: 2, dash: [6, 4] });
+  if (Number.isFinite(d.bc.c) && res.bicubic !== null && upTo(STAGE.cubicWeights)) {
+    // a row's frame: that row of the 4×4, the rows before it done
+    if (stage !== null && stage >= STAGE.row && stage < STAGE.column) {
+      const j = stage - STAGE.row;
+      outline(ctx, g, d.bc.c - d.fc, d.bc.r - d.fr + j, 4, 1, { fill: COLORS.highlightFill, color: COLORS.point, width: 2.5 });
+    }
+    outline(ctx, g, d.bc.c - d.fc, d.bc.r - d.fr, 4, 4, { color: COLORS.point, width: stage === STAGE.column ? 3 : 2, dash: stage === STAGE.column ? null : [6, 4] });
     avoidFrame(labels, g, d.bc.c - d.fc, d.bc.r - d.fr, 4, 4, 1);
     // each pixel's cubic weight f(row) · f(column), at the bottom of its cell
     if (Array.isArray(d.bc.wc) && Array.isArray(d.bc.wr) && L.cell >= 44) {
@@ -147,12 +177,14 @@ function draw(ctx, width, d) {
   // the four pixels of the bilinear interpolation
   const bc = d.bl.c - d.fc;
   const br = d.bl.r - d.fr;
-  if (Number.isFinite(bc) && Number.isFinite(br)) {
+  if (Number.isFinite(bc) && Number.isFinite(br) && only(STAGE.four, STAGE.between)) {
     outline(ctx, g, bc, br, 2, 2, { fill: "rgba(217, 119, 6, 0.16)", width: 2 });
     avoidFrame(labels, g, bc, br, 2, 2, 1);
+    // a row's frame of bilinear: its two pixels
+    if (stage === STAGE.upper || stage === STAGE.lower) outline(ctx, g, bc, br + (stage === STAGE.lower ? 1 : 0), 2, 1, { color: COLORS.imageSystem, width: 3 });
   }
   // the nearest pixel
-  if (Number.isFinite(res.nearest_c)) {
+  if (Number.isFinite(res.nearest_c) && only(STAGE.nearest, STAGE.between)) {
     outline(ctx, g, res.nearest_c - d.fc, res.nearest_r - d.fr, 1, 1, { color: COLORS.pixelSystem, width: 2.5, dash: [3, 3] });
     avoidFrame(labels, g, res.nearest_c - d.fc, res.nearest_r - d.fr, 1, 1, 1.5);
   }
@@ -170,6 +202,7 @@ function draw(ctx, width, d) {
   ];
   const weightLabels = [];
   corners.forEach(([c, r, spots], i) => {
+    if (!only(STAGE.four, STAGE.between)) return;
     const [x, y] = at(L, d, c, r);
     const lw = 1 + 3 * (w[i] ?? 0);
     line(ctx, px, py, x, y, { color: COLORS.highlight, width: lw });
@@ -179,9 +212,13 @@ function draw(ctx, width, d) {
   // I1 and I2 on the two rows, the final value between them
   const [ix, iy1] = at(L, d, d.c, d.bl.r);
   const [, iy2] = at(L, d, d.c, d.bl.r + 1);
-  line(ctx, ix, iy1, ix, iy2, { color: COLORS.imageSystem, width: 1.5, dash: [4, 3] });
-  labels.avoidLine(ix, iy1, ix, iy2, 1);
-  for (const y of [iy1, iy2]) {
+  // I₁ from the upper row's frame, I₂ from the lower's, the line between them at "between"
+  const marks = [iy1, iy2].filter((_, i) => only(STAGE.upper + i, STAGE.between));
+  if (only(STAGE.between, STAGE.between)) {
+    line(ctx, ix, iy1, ix, iy2, { color: COLORS.imageSystem, width: 1.5, dash: [4, 3] });
+    labels.avoidLine(ix, iy1, ix, iy2, 1);
+  }
+  for (const y of marks) {
     ctx.save();
     ctx.fillStyle = COLORS.imageSystem;
     ctx.beginPath();
@@ -197,15 +234,15 @@ function draw(ctx, width, d) {
   dot(ctx, px, py, R.dot, COLORS.highlight);
   dot(ctx, px, py, 2.5, COLORS.background);
   labels.avoidDot(px, py, R.dot, 2);
-  labels.avoid(textBlock(ctx, L.lines, L.boxX, L.boxY, { size: FONT_SIZE_SMALL }));
+  labels.avoid(textBlock(ctx, stage === null ? L.lines : valueLines(d, stage), L.boxX, L.boxY, { size: FONT_SIZE_SMALL }));
   // a small key to the marks
   L.key.forEach((k, i) => labels.avoid(text(ctx, k, GRID.margin, L.keyTop + (i + 0.5) * R.keyLine, { size: R.keySize, color: COLORS.muted })));
   const iStyle = { size: FONT_SIZE_SMALL, color: COLORS.imageSystem, weight: "bold", gap: R.marker + 2 };
   const withLabels = (short) => {
     const all = labels.copy();
     for (const [str, x, y, spots, number] of weightLabels) all.add(short ? number : str, x, y, { size: 10, weight: "bold", color: COLORS.highlight, gap: 3, pad: 1.5, candidates: spots, farther: R.dot + 3, shorter: short ? [{ text: number, size: 9 }] : [] });
-    all.add("I₁", ix, iy1, { ...iStyle, candidates: ["NE", "NW", "E", "W", "N", "SE", "SW"], farther: R.dot + 3 });
-    all.add("I₂", ix, iy2, { ...iStyle, candidates: ["SE", "SW", "E", "W", "S", "NE", "NW"], farther: R.dot + 3 });
+    if (marks.includes(iy1)) all.add("I₁", ix, iy1, { ...iStyle, candidates: ["NE", "NW", "E", "W", "N", "SE", "SW"], farther: R.dot + 3 });
+    if (marks.includes(iy2)) all.add("I₂", ix, iy2, { ...iStyle, candidates: ["SE", "SW", "E", "W", "S", "NE", "NW"], farther: R.dot + 3 });
     return all;
   };
   // the weights as "w=0.426" where they all fit, else all as plain numbers
@@ -281,6 +318,57 @@ const spec = layoutSpec({
     },
   },
 });
+
+// motion (issue 34, "resampling: the neighbourhood and weights as the point
+// moves"): the solution holds one position, so its frames are the stages of
+// the interpolation at it (STAGE): the nearest pixel, bilinear's four pixels
+// and weights, the upper row, the lower row, between them; then the 4×4 of
+// the cubic convolution, its rows one by one and the column. Every number is
+// the solution's (its steps' values); the substitutions are written out.
+const withFrame = spec.draw;
+spec.draw = (ctx, width, height, solution, state) => {
+  const d = state?.frame ? data(solution) : null;
+  if (d) draw(ctx, width, d, state.frame);
+  else withFrame(ctx, width, height, solution);
+};
+spec.motion = { noun: "stage" };
+spec.frames = (solution) => {
+  const d = data(solution);
+  if (!d) return [];
+  const steps = solution.steps ?? [];
+  const stepOf = (key) => {
+    const i = steps.findIndex((x) => x.values && Object.hasOwn(x.values, key));
+    return i >= 0 ? i : null;
+  };
+  const { res, bl, bc } = d;
+  const k = Array.isArray(d.corners) ? d.corners : [];
+  const w = Array.isArray(bl.w) ? bl.w : [];
+  const list = [
+    { stage: STAGE.position, step: stepOf("x"), caption: `Position (c, r) = (${fmt(d.c, 7)}, ${fmt(d.r, 7)}): in the patch x = c − ${fmt(d.fc)} = ${fmt(d.x)}, y = r − ${fmt(d.fr)} = ${fmt(d.y)}.` },
+    { stage: STAGE.nearest, step: stepOf("nearest"), caption: `Nearest neighbour: pixel (${fmt(res.nearest_c)}, ${fmt(res.nearest_r)}) = ${fmt(res.nearest)}.` },
+    {
+      stage: STAGE.four,
+      step: stepOf("corners"),
+      caption: `Bilinear: the four pixels of columns ${fmt(bl.c)}–${fmt(bl.c + 1)}, rows ${fmt(bl.r)}–${fmt(bl.r + 1)}: ${k.map((v) => fmt(v)).join(", ")}; dc = ${fmt(res.dc)}, dr = ${fmt(res.dr)}; their weights (1 − dc)(1 − dr), dc(1 − dr), (1 − dc)dr, dc·dr = ${w.map((v) => fmt(v)).join(", ")}.`,
+    },
+    { stage: STAGE.upper, step: stepOf("i1"), caption: `Along the upper row ${fmt(bl.r)}: I₁ = (1 − dc)·${fmt(k[0])} + dc·${fmt(k[1])} = ${fmt(res.i1, 6)}.` },
+    { stage: STAGE.lower, step: stepOf("i2"), caption: `Along the lower row ${fmt(bl.r + 1)}: I₂ = (1 − dc)·${fmt(k[2])} + dc·${fmt(k[3])} = ${fmt(res.i2, 6)}.` },
+    { stage: STAGE.between, step: stepOf("bilinear"), caption: `Between the rows: I = (1 − dr)·I₁ + dr·I₂ = ${fmt(res.bilinear, 6)} ≈ ${fmt(res.bilinear_rounded)}.` },
+  ];
+  if (!cubic(d)) return list;
+  const P = stepValue(solution, "neighbourhood");
+  const vec = (v) => `[${(Array.isArray(v) ? v : []).map((x) => fmt(x)).join(", ")}]`;
+  list.push({
+    stage: STAGE.cubicWeights,
+    step: stepOf("weights_c"),
+    caption: `Bicubic: the 4×4 from column ${fmt(bc.c)}, row ${fmt(bc.r)}; s = ${fmt(bc.s)}, t = ${fmt(bc.t)}; the weights along the columns w_c = ${vec(bc.wc)}, along the rows w_r = ${vec(bc.wr)}.`,
+  });
+  bc.rows.forEach((v, j) =>
+    list.push({ stage: STAGE.row + j, step: stepOf("row_values"), caption: `Bicubic, row ${fmt(bc.r + j)}: ${vec(isMatrix(P) ? P[j] : [])} · w_c = ${fmt(v, 6)}.` }),
+  );
+  list.push({ stage: STAGE.column, step: stepOf("bicubic"), caption: `Bicubic, the column: w_r · [${bc.rows.map((v) => fmt(v, 6)).join(", ")}] = ${fmt(res.bicubic, 6)}.` });
+  return list;
+};
 
 // Preset buttons: the seed's two patches with their positions (the help text lists them too).
 const grid = (rows) => rows.map((r) => r.join(" ")).join("\n");

@@ -24,7 +24,7 @@
 // and `play=auto` opens at the first frame, paused. The live region speaks
 // on a step, a scrub and a pause, never frame by frame while playing.
 
-import { addStylesheet, el } from "../dom.js";
+import { addStylesheet, el, keepTallest, setText } from "../dom.js";
 
 /** Positions per second the reader can choose, and the default. */
 export const RATES = Object.freeze([2, 5, 10]);
@@ -79,6 +79,8 @@ export function createMotion({ noun = "position", show, onStep = () => {}, onPos
   const bar = el("div", { class: "motion-bar", role: "group", "aria-label": "Motion" }, play, back, forward, showAll ? all : null, speedLabel);
   const element = el("div", { class: "motion", "data-motion": "" }, bar, sliderLabel, caption, note, live);
   slider.setAttribute("aria-describedby", caption.id);
+  // the caption keeps its tallest height: a shorter frame's caption does not move the page below (a repaint of it all)
+  const stopTallest = keepTallest(caption);
 
   const shownIndex = () => (index === null ? frames.length - 1 : index);
   const position = (i) => `${noun} ${i + 1} of ${frames.length}`;
@@ -91,9 +93,10 @@ export function createMotion({ noun = "position", show, onStep = () => {}, onPos
     slider.max = String(Math.max(1, n));
     slider.value = String(i + 1);
     slider.setAttribute("aria-valuetext", index === null ? `all ${n} ${noun}s` : position(i));
-    counter.textContent = index === null ? `All ${n} ${noun}s` : position(i)[0].toUpperCase() + position(i).slice(1);
-    caption.textContent = index === null ? `Press Play or Step forward to follow the ${noun}s one by one.` : frames[i]?.caption ?? "";
-    play.textContent = playing ? "❚❚ Pause" : "▶ Play";
+    // each frame: the text nodes' data, not new nodes (dom.js setText: a new node costs a style recalculation of the page)
+    setText(counter, index === null ? `All ${n} ${noun}s` : position(i)[0].toUpperCase() + position(i).slice(1));
+    setText(caption, index === null ? `Press Play or Step forward to follow the ${noun}s one by one.` : frames[i]?.caption ?? "");
+    setText(play, playing ? "❚❚ Pause" : "▶ Play");
     play.setAttribute("aria-pressed", String(playing));
     play.hidden = reduce.matches;
     note.hidden = !reduce.matches;
@@ -239,6 +242,7 @@ export function createMotion({ noun = "position", show, onStep = () => {}, onPos
       if (raf) cancelAnimationFrame(raf);
       raf = 0;
       reduce.removeEventListener("change", onReduce);
+      stopTallest();
       element.remove();
     },
   };
