@@ -9,6 +9,7 @@ import { buildHash, parseHash } from "../url.js";
 import { loadCatalog } from "../core.js";
 import { LabClient } from "./client.js";
 import { useCatalog } from "./explain.js";
+import { watchMotion } from "./motion.js";
 
 // for the tests and for pages that drive the lab: its worker client and its links,
 // reached through the lab module (the build bundles them into it)
@@ -430,6 +431,7 @@ class Lab {
     this.client.close();
     this.viewer?.destroy();
     this.family?.destroy?.();
+    this.motion?.destroy();
   }
 
   // ------------------------------------------------------------- the page
@@ -498,6 +500,7 @@ class Lab {
       this.explorer.bar, stage, this.inspector, this.explorer.panel, this.explain, this.extra);
     this.root.replaceChildren(section);
     this.section = section;
+    this.motion = watchMotion(this); // "Watch it move" under an explanation (motion.js)
     this.viewer = new Viewer(stage, {
       label: "The photo and the result layer (drag to pan, wheel to zoom)",
       onPick: (c, r, ev, pos) => this.pick(c, r, pos),
@@ -809,6 +812,7 @@ class Lab {
 
   clearResult() {
     this.say("");
+    this.client?.release(this.layers);
     this.layers = [];
     this.layerSelect.replaceChildren();
     this.layerBar.hidden = true;
@@ -823,6 +827,8 @@ class Lab {
 
   /** Shows result layers (the first, or the one named `show`); all of them painted now (the pool), so that another is shown at once. */
   setLayers(layers, show = 0) {
+    // the replaced layers' buffers carry the next result's (tiles.js release)
+    this.client?.release(this.layers.filter((l) => !layers.includes(l)));
     this.layers = layers;
     for (const l of layers) if (l.width * l.height <= PREPAINT) paintOf(l);
     if (layers.length) this.ran = true;
