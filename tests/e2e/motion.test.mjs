@@ -6,6 +6,11 @@
 //    belongs to is marked in the step list;
 //  - ncc-1d: every position's ρ; the chain code: the follower's moves are the
 //    solution's pixels and codes, move by move;
+//  - filter-window, edge-window: every output pixel's values (the output
+//    grids); moravec-window: every pixel's four differences and sum, the mean;
+//    forstner-window: every pixel's gradient and terms (the gradient table),
+//    then the sums, N, w and q; resample (a position with its 4×4): every
+//    stage's numbers, bilinear then the cubic rows and column;
 //  - keyboard only (focus and keys, no mouse event): Play, Pause, Step
 //    forward and back, the slider (Home, End, arrows);
 //  - play= in the link: opens at that frame, paused; a bad value is named;
@@ -206,6 +211,135 @@ describe("motion", { timeout: TEST_TIMEOUT * 2 }, () => {
     const st = await state();
     assert.equal(st.frame, 1);
     assert.match(st.caption, new RegExp(`^Iteration 1 of ${n}:`));
+  });
+
+  /** Steps through every frame by the slider's keys (Home, then →), giving each frame's state to `check`. */
+  async function everyFrame(count, check) {
+    await press(".motion-slider", "Home");
+    for (let k = 0; k < count; k++) {
+      if (k) await page.keyboard.press("ArrowRight");
+      const st = await state();
+      assert.equal(st.frame, k + 1);
+      await check(k, st);
+    }
+  }
+  const NUM = "(−?\\d+(?:\\.\\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)";
+  /** The number after `label` (a regular expression's source) in `text`. */
+  const after = (text, label) => {
+    const m = new RegExp(`${label}${NUM}`).exec(text);
+    assert.ok(m, `${label} in “${text}”`);
+    return readNumber(m[1]);
+  };
+  const near = (a, b, what) => assert.ok(Math.abs(a - b) <= 0.5e-4 * Math.max(1, Math.abs(b)), `${what}: ${a} vs ${b}`);
+
+  for (const [id, grids] of [
+    ["filter-window", (s) => [["g", s.result.output]]],
+    ["edge-window", (s) => [["Gx", s.result.gx], ["Gy", s.result.gy], ["\\|G\\|", s.result.magnitude]]],
+  ]) {
+    test(`${id}: every output pixel's values are the solution's output grids`, async () => {
+      const s = core.solve(id, {});
+      const g = grids(s);
+      const rows = g[0][1].length;
+      const cols = g[0][1][0].length;
+      await show(id);
+      await everyFrame(rows * cols, async (k, st) => {
+        const [r, c] = [Math.floor(k / cols), k % cols];
+        const at = { c: s.result.output_first_c + c, r: s.result.output_first_r + r };
+        assert.match(st.caption, new RegExp(`^Output pixel ${k + 1}: the kernel over rows ${at.r - 1}–${at.r + 1}, columns ${at.c - 1}–${at.c + 1} of the window; at row ${at.r}, column ${at.c}: `));
+        for (const [name, m] of g) near(after(st.caption, `${name} = `), m[r][c], `${id} frame ${k + 1} ${name}`);
+      });
+    });
+  }
+
+  test("moravec-window: pixel by pixel its four differences and their sum, then the mean", async () => {
+    const s = core.solve("moravec-window", {});
+    const rows = s.result.differences;
+    await show("moravec-window");
+    await everyFrame(rows.length, async (k, st) => {
+      const [c, r, g, d1, d2, d3, d4, sum] = rows[k];
+      assert.match(st.caption, new RegExp(`^Pixel ${k + 1}: P\\(c${c}, r${r}\\) = `));
+      near(after(st.caption, "\\) = "), g, "grey value");
+      [["→ ", d1], ["↓ ", d2], ["↘ ", d3], ["↙ ", d4]].forEach(([glyph, v]) => near(after(st.caption, glyph), v, `pixel ${k + 1} ${glyph}`));
+      near(after(st.caption, "the sum of their squares "), sum, `pixel ${k + 1} sum`);
+      if (k === rows.length - 1) near(after(st.caption, `The mean of the ${rows.length} sums: `), s.result.mean, "mean");
+      else assert.doesNotMatch(st.caption, /mean/);
+    });
+  });
+
+  test("forstner-window: pixel by pixel the gradient table's terms, then the sums, N, w and q", async () => {
+    const s = core.solve("forstner-window", {});
+    const table = s.steps.find((x) => x.values?.table).values.table;
+    const sums = s.steps.find((x) => x.values && "sum_gx2" in x.values).values;
+    const m = table.length;
+    const stepOf = (key) => `step-${s.steps.findIndex((x) => x.values && key in x.values) + 1}`;
+    await show("forstner-window");
+    await everyFrame(m + 4, async (k, st) => {
+      if (k < m) {
+        const [c, r, g, gx, gy, gxgy, gx2, gy2] = table[k];
+        assert.match(st.caption, new RegExp(`^Pixel ${k + 1} of ${m}: P\\(c${c}, r${r}\\) = `));
+        near(after(st.caption, "\\) = "), g, "grey value");
+        near(after(st.caption, "g′x = \\([^)]*\\) / 2 = "), gx, `pixel ${k + 1} g′x`);
+        near(after(st.caption, "g′y = \\([^)]*\\) / 2 = "), gy, `pixel ${k + 1} g′y`);
+        near(after(st.caption, "g′x² = "), gx2, `pixel ${k + 1} g′x²`);
+        near(after(st.caption, "g′y² = "), gy2, `pixel ${k + 1} g′y²`);
+        near(after(st.caption, "g′x·g′y = "), gxgy, `pixel ${k + 1} g′x·g′y`);
+        assert.deepEqual(st.marked, [stepOf("table")]);
+      } else if (k === m) {
+        near(after(st.caption, "Σg′x² = "), sums.sum_gx2, "Σg′x²");
+        near(after(st.caption, "Σg′y² = "), sums.sum_gy2, "Σg′y²");
+        near(after(st.caption, "Σg′x·g′y = "), sums.sum_gxgy, "Σg′x·g′y");
+        assert.deepEqual(st.marked, [stepOf("sum_gx2")]);
+      } else if (k === m + 1) {
+        const n = /= \[(\S+)  (\S+); (\S+)  (\S+)\]\.$/.exec(st.caption);
+        assert.ok(n, st.caption);
+        n.slice(1).forEach((v, i) => near(readNumber(v), s.result.n[i >> 1][i & 1], `N ${i}`));
+        assert.deepEqual(st.marked, [stepOf("n")]);
+      } else if (k === m + 2) {
+        assert.match(st.caption, /^w = det N \/ trace N = /);
+        near(lastNumber(st.caption), s.result.w, "w");
+        assert.deepEqual(st.marked, [stepOf("w")]);
+      } else {
+        assert.match(st.caption, /^q = 4 det N \/ trace² N = /);
+        near(lastNumber(st.caption), s.result.q, "q");
+        assert.deepEqual(st.marked, [stepOf("q")]);
+      }
+    });
+  });
+
+  test("resample: the stages at the position, bilinear then the 4×4's rows and column", async () => {
+    const inputs = { c: 546.44, r: 818.24 };
+    const s = core.solve("resample", inputs);
+    const v = (key) => s.steps.find((x) => x.values && key in x.values).values[key];
+    const res = s.result;
+    assert.equal(typeof res.bicubic, "number", "this position has its 4×4");
+    await show(`resample?c=${inputs.c}&r=${inputs.r}`);
+    const rows = v("row_values");
+    const weights = v("weights");
+    const corners = v("corners");
+    await everyFrame(12, async (k, st) => {
+      const cap = st.caption;
+      if (k === 0) [["x = c − \\S+ = ", v("x")], ["y = r − \\S+ = ", v("y")]].forEach(([l, x]) => near(after(cap, l), x, l));
+      if (k === 1) {
+        assert.ok(cap.includes(`pixel (${res.nearest_c}, ${res.nearest_r})`), cap);
+        near(lastNumber(cap), res.nearest, "nearest");
+      }
+      if (k === 2) {
+        const w = cap.split("dc·dr = ")[1].replace(/\.$/, "").split(", ").map(readNumber);
+        assert.equal(w.length, 4);
+        w.forEach((x, i) => near(x, weights[i], `weight ${i}`));
+        assert.ok(cap.includes(`: ${corners.join(", ")};`), cap);
+      }
+      if (k === 3) near(lastNumber(cap), res.i1, "I₁");
+      if (k === 4) near(lastNumber(cap), res.i2, "I₂");
+      if (k === 5) near(after(cap, "I = \\(1 − dr\\)·I₁ \\+ dr·I₂ = "), res.bilinear, "bilinear");
+      if (k === 6) v("weights_c").forEach((x, i) => near(readNumber(/w_c = \[([^\]]+)\]/.exec(cap)[1].split(", ")[i]), x, `w_c ${i}`));
+      if (k >= 7 && k <= 10) {
+        assert.ok(cap.startsWith(`Bicubic, row ${v("bicubic_r") + k - 7}: [${v("neighbourhood")[k - 7].join(", ")}] · w_c = `), cap);
+        near(lastNumber(cap), rows[k - 7], `row ${k - 7}`);
+      }
+      if (k === 11) near(lastNumber(cap), res.bicubic, "bicubic");
+    });
+    assert.equal((await state()).counter, "Stage 12 of 12");
   });
 
   test("play= opens at a frame, paused; a bad value is named", async () => {

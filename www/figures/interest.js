@@ -154,14 +154,14 @@ function drawSums(ctx, width, y, solution, frame) {
       ctx.fillStyle = COLORS.highlightFill;
       ctx.fillRect(left - 4, yy - rh / 2, firstW + (SUMS_HEAD.length - 1) * restW + 4, rh);
     }
-    [`P(c${row.c}, r${row.r})`, fmt(row.gx), fmt(row.gy), fmt(row.gx2), fmt(row.gy2), fmt(row.gxgy)].forEach((v, j) =>
+    [`P(c${row.c}, r${row.r})`, fmt(row.gx, 6), fmt(row.gy, 6), fmt(row.gx2, 6), fmt(row.gy2, 6), fmt(row.gxgy, 6)].forEach((v, j) =>
       text(ctx, v, right(j), yy, { size: FONT_SIZE_SMALL, align: j ? "right" : "left" }),
     );
   }
   yy += rh;
   line(ctx, left, yy - rh / 2, left + firstW + (SUMS_HEAD.length - 1) * restW, yy - rh / 2, { color: COLORS.grid });
   if (k >= m) {
-    ["Σ", "", "", fmt(t.sum.gx2), fmt(t.sum.gy2), fmt(t.sum.gxgy)].forEach((v, j) =>
+    ["Σ", "", "", fmt(t.sum.gx2, 6), fmt(t.sum.gy2, 6), fmt(t.sum.gxgy, 6)].forEach((v, j) =>
       text(ctx, v, right(j), yy, { size: FONT_SIZE_SMALL, weight: "bold", align: j ? "right" : "left", color: frame?.k === m ? COLORS.highlight : COLORS.ink }),
     );
   }
@@ -196,12 +196,12 @@ function windowFrames(solution) {
     c: p.c,
     r: p.r,
     step: stepOf("table"),
-    caption: `Pixel ${k + 1} of ${m}: P(c${p.c}, r${p.r}) = ${fmt(p.g)}: g′x = (${fmt(v(p.c + 1, p.r))} − ${sub(v(p.c - 1, p.r))}) / 2 = ${fmt(p.gx)}, g′y = (${fmt(v(p.c, p.r + 1))} − ${sub(v(p.c, p.r - 1))}) / 2 = ${fmt(p.gy)}; g′x² = ${fmt(p.gx2)}, g′y² = ${fmt(p.gy2)}, g′x·g′y = ${fmt(p.gxgy)}.`,
+    caption: `Pixel ${k + 1} of ${m}: P(c${p.c}, r${p.r}) = ${fmt(p.g)}: g′x = (${fmt(v(p.c + 1, p.r))} − ${sub(v(p.c - 1, p.r))}) / 2 = ${fmt(p.gx, 6)}, g′y = (${fmt(v(p.c, p.r + 1))} − ${sub(v(p.c, p.r - 1))}) / 2 = ${fmt(p.gy, 6)}; g′x² = ${fmt(p.gx2, 6)}, g′y² = ${fmt(p.gy2, 6)}, g′x·g′y = ${fmt(p.gxgy, 6)}.`,
   }));
   const lines = sumsLines(t);
   return [
     ...pixels,
-    { k: m, step: stepOf("sum_gx2"), caption: `The sums over the ${m} interior pixels: Σg′x² = ${fmt(t.sum.gx2)}, Σg′y² = ${fmt(t.sum.gy2)}, Σg′x·g′y = ${fmt(t.sum.gxgy)}.` },
+    { k: m, step: stepOf("sum_gx2"), caption: `The sums over the ${m} interior pixels: Σg′x² = ${fmt(t.sum.gx2, 6)}, Σg′y² = ${fmt(t.sum.gy2, 6)}, Σg′x·g′y = ${fmt(t.sum.gxgy, 6)}.` },
     { k: m + 1, step: stepOf("n"), caption: `${lines[0]}.` },
     { k: m + 2, step: stepOf("w"), caption: `${lines[1]}.` },
     { k: m + 3, step: stepOf("q"), caption: `${lines[2]}.` },
@@ -244,7 +244,7 @@ const windowTables = (source) => (solution) => {
             seriesTable(
               "The gradient table under the window: each interior pixel's gradient and terms, and their sums (the entries of N)",
               SUMS_HEAD,
-              [...t.rows.map((p) => [`P(c${p.c}, r${p.r})`, fmt(p.gx), fmt(p.gy), fmt(p.gx2), fmt(p.gy2), fmt(p.gxgy)]), ["Σ", "", "", fmt(t.sum.gx2), fmt(t.sum.gy2), fmt(t.sum.gxgy)]],
+              [...t.rows.map((p) => [`P(c${p.c}, r${p.r})`, fmt(p.gx, 6), fmt(p.gy, 6), fmt(p.gx2, 6), fmt(p.gy2, 6), fmt(p.gxgy, 6)]), ["Σ", "", "", fmt(t.sum.gx2, 6), fmt(t.sum.gy2, 6), fmt(t.sum.gxgy, 6)]],
             ),
           ]
         : []),
