@@ -15,7 +15,7 @@ import fs from "node:fs";
 import { createRequire } from "node:module";
 import { after, before, test } from "node:test";
 import { TEST_TIMEOUT, nodeModule, start } from "./harness.mjs";
-import { clickPixel, idle, openLab, sample } from "./lab-harness.mjs";
+import { clickPixel, idle, openLab, sample, viewOf } from "./lab-harness.mjs";
 import { parseHash } from "../../www/url.js";
 import { formatNumber } from "../../www/format.js";
 
@@ -115,6 +115,9 @@ test("filters: the kernel moves over the clicked pixel's window of the photo; ev
   const [fc, fr] = [solution.result.output_first_c, solution.result.output_first_r];
   const side = inputs.window.length;
   const o = [pick[0] - (side - 1) / 2, pick[1] - (side - 1) / 2];
+  // the fitted photo is zoomed in about the window: at least 72 CSS px across
+  const g = await viewOf(page);
+  assert.ok((side * g.zoom * g.w) / g.cw >= 71.9, `the window is ${(side * g.zoom * g.w) / g.cw} CSS px across`);
   let f = await shown();
   assert.equal(f.count, out.length * out[0].length);
   for (let k = 0; k < f.count; k++) {
@@ -132,7 +135,7 @@ test("filters: the kernel moves over the clicked pixel's window of the photo; ev
   }
   await escape();
   // a new click follows: the motion offered is the new pixel's
-  await clickPixel(page, 320, 240);
+  await clickPixel(page, 305, 203);
   await page.waitForFunction(() => document.getElementById("lab-motion-link")?.getAttribute("href")?.includes("select_c"));
   assert.deepEqual(log.pageErrors, []);
 });
@@ -144,6 +147,9 @@ test("Moravec: pixel by pixel the four differences and their sum; the last frame
   await idle(page);
   await page.selectOption("#lab-layer", { label: "moravec" });
   const pick = [250, 190];
+  // the whole photo again (the view's 0 key)
+  await page.focus("#lab-stage .lab-canvas");
+  await page.keyboard.press("0");
   const before = await page.getAttribute("#lab-motion-link", "href").catch(() => null);
   await clickPixel(page, ...pick);
   await page.waitForFunction((b) => document.getElementById("lab-explain-link")?.getAttribute("href") !== b && document.getElementById("lab-explain-link")?.getAttribute("href")?.includes("moravec"), before?.replace("&play=auto", ""));

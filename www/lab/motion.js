@@ -57,13 +57,19 @@ export function windowBoxes(family, pick, inputs, solution, frame) {
   return [];
 }
 
-/** The outline shapes of `boxes` for the view (a dark halo under a bright line, visible on any grey). */
+/** The outline shapes of `boxes` for the view (a dark halo under a bright line, visible on any grey); a single pixel also gets a ring of 9 screen px, seen at any zoom. */
 function outline(boxes) {
   return boxes.flatMap((b, i) => [
     { kind: "rect", c0: b.c0, r0: b.r0, w: b.w, h: b.h, colour: "#000", width: i ? 5 : 4, [OWN]: true },
     { kind: "rect", c0: b.c0, r0: b.r0, w: b.w, h: b.h, colour: i ? "#00e5ff" : "#ffe600", width: i ? 2.5 : 2, [OWN]: true },
+    ...(b.w === 1 && b.h === 1
+      ? [{ kind: "dot", c: b.c0, r: b.r0, size: 9, colour: "#000", width: 4, [OWN]: true }, { kind: "dot", c: b.c0, r: b.r0, size: 9, colour: "#00e5ff", width: 2, [OWN]: true }]
+      : []),
   ]);
 }
+
+/** The least size (CSS px) the window has on the photo view while it moves: a smaller one is zoomed in to. */
+const MIN_WINDOW_PX = 72;
 
 /** The lab's motion: watches `lab.explain`; returns { close(), destroy() }. */
 export function watchMotion(lab) {
@@ -124,6 +130,13 @@ export function watchMotion(lab) {
       current.mounted.update(current.solution);
     }
     current.mounted.play({ auto: true });
+    // a window of a few pixels is a speck on a fitted photo: the view zooms in about it (the student zooms out as ever)
+    const box = windowBoxes(current.family, current.pick, current.inputs, current.solution, null)[0];
+    const viewer = lab.viewer;
+    const dpr = viewer?.dpr || 1;
+    if (box && box.w > 1 && viewer && (Math.max(box.w, box.h) * viewer.zoom) / dpr < MIN_WINDOW_PX) {
+      viewer.zoomTo((MIN_WINDOW_PX * dpr) / Math.max(box.w, box.h), box.c0 + (box.w - 1) / 2, box.r0 + (box.h - 1) / 2);
+    }
     outlineNow();
     // the keyboard lands on the motion's first control (Play, or Step forward with reduced motion)
     requestAnimationFrame(() => {
