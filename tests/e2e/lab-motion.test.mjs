@@ -60,11 +60,15 @@ async function openMotion(selector) {
   assert.equal(await page.getAttribute("#lab-motion-open", "aria-expanded"), "true");
   // it plays; the focus goes to the motion's controls; the slider (the keyboard's scrub) stops it, End then Home: frame 1
   await page.waitForFunction(() => document.activeElement?.closest("#lab-motion .motion-bar") !== null);
+  const opened = await page.evaluate(() => {
+    const m = document.querySelector("#lab-motion .motion");
+    return { frame: m.dataset.frame, playing: m.dataset.playing === "true", playHidden: m.querySelector(".motion-play").hidden, focus: document.activeElement.className };
+  });
   await page.focus("#lab-motion .motion-slider");
   await page.keyboard.press("End");
   await page.keyboard.press("Home");
   await page.waitForFunction(() => document.querySelector("#lab-motion .motion").dataset.frame === "1" && document.querySelector("#lab-motion .motion").dataset.playing === "false");
-  return { href, ...solveLink(href) };
+  return { href, opened, ...solveLink(href) };
 }
 
 /** The frame shown: its number, caption, the motion's frame count and the outlined window(s) on the photo. */
@@ -134,9 +138,19 @@ test("filters: the kernel moves over the clicked pixel's window of the photo; ev
     if (r === inputs.select_r && c === inputs.select_c) shows(m[3], await labValue(), 6, "the explained pixel against the lab's value");
   }
   await escape();
-  // a new click follows: the motion offered is the new pixel's
+  // open again (Enter on the button), then a new click: the open motion follows it, the new pixel's window outlined
+  await page.keyboard.press("Enter");
+  await page.waitForSelector("#lab-motion:not([hidden])");
+  const old = await page.getAttribute("#lab-motion-link", "href");
   await clickPixel(page, 305, 203);
-  await page.waitForFunction(() => document.getElementById("lab-motion-link")?.getAttribute("href")?.includes("select_c"));
+  await page.waitForFunction((h) => {
+    const a = document.getElementById("lab-motion-link");
+    return a.getAttribute("href") !== h && !document.getElementById("lab-motion").hidden && (document.getElementById("lab-motion-host").dataset.window || "").startsWith(`${305 - 2},${203 - 2},5,5`);
+  }, old);
+  assert.equal(await page.getAttribute("#lab-motion-open", "aria-expanded"), "true");
+  await page.focus("#lab-motion-close");
+  await page.keyboard.press("Enter");
+  await page.waitForSelector("#lab-motion", { state: "hidden" });
   assert.deepEqual(log.pageErrors, []);
 });
 
@@ -192,13 +206,16 @@ test("Moravec: pixel by pixel the four differences and their sum; the last frame
 });
 
 test("chain code: the follower walks the traced boundary of the photo; the last frame's code is the lab's", { timeout: TEST_TIMEOUT }, async () => {
+  // with reduced motion asked for, it opens at the first move, paused, without a Play button (motion.js)
+  await page.emulateMedia({ reducedMotion: "reduce" });
   await sample(page, "frame");
   await page.selectOption("#lab-family", "boundaries");
   const truth = await page.evaluate(async () => (await import("./lab/lab.js")).truthForTests());
   await clickPixel(page, Math.round(truth.marks[0]), Math.round(truth.marks[1]));
   await page.waitForSelector("#lab-boundary");
-  const { id, solution } = await openMotion("#lab-explain a");
+  const { id, solution, opened } = await openMotion("#lab-explain a");
   assert.equal(id, "chain-code");
+  assert.deepEqual(opened, { frame: "1", playing: false, playHidden: true, focus: "button motion-forward" });
   const { code, pixels } = solution.result;
   const path = [...pixels, pixels[0]];
   let f = await shown();
@@ -219,6 +236,7 @@ test("chain code: the follower walks the traced boundary of the photo; the last 
   check(code.length - 1);
   assert.equal(f.caption.match(/The code so far: ([\d ]+)\./)[1].replace(/ /g, ""), await page.evaluate(() => document.body.dataset.code));
   await escape();
+  await page.emulateMedia({ reducedMotion: "no-preference" });
   assert.deepEqual(log.pageErrors, []);
 });
 
