@@ -108,12 +108,12 @@ function sumsHeight(solution) {
 const SUMS_HEAD = ["pixel", "g′x", "g′y", "g′x²", "g′y²", "g′x·g′y"];
 
 /** The lines of N, w and q (for frames: those reached; `upTo` 0: N, 1: and w, 2: and q). */
-function sumsLines(t, upTo = 2) {
+function sumsLines(t, upTo = 2, { short = false } = {}) {
   const n = isMatrix(t.n) ? t.n : null;
   const lines = [
-    n ? `N = [Σg′x²  Σg′x·g′y; Σg′x·g′y  Σg′y²] = [${fmt(n[0][0], 6)}  ${fmt(n[0][1], 6)}; ${fmt(n[1][0], 6)}  ${fmt(n[1][1], 6)}]` : "N: —",
-    `w = det N / trace N = ${fmt(t.det, 7)} / ${fmt(t.trace, 6)} = ${fmt(t.w)}`,
-    `q = 4 det N / trace² N = 4 · ${fmt(t.det, 7)} / ${fmt(t.trace, 6)}² = ${fmt(t.q)}`,
+    n ? `N = ${short ? "" : "[Σg′x²  Σg′x·g′y; Σg′x·g′y  Σg′y²] = "}[${fmt(n[0][0], 6)}  ${fmt(n[0][1], 6)}; ${fmt(n[1][0], 6)}  ${fmt(n[1][1], 6)}]` : "N: —",
+    `w = det N / trace N = ${short ? "" : `${fmt(t.det, 8)} / ${fmt(t.trace, 6)} = `}${fmt(t.w)}`,
+    `q = 4 det N / trace² N = ${short ? "" : `4 · ${fmt(t.det, 8)} / ${fmt(t.trace, 6)}² = `}${fmt(t.q)}`,
   ];
   return lines.slice(0, upTo + 1);
 }
@@ -168,9 +168,11 @@ function drawSums(ctx, width, y, solution, frame) {
   yy += rh / 2 + 4;
   if (k > m) {
     const lines = sumsLines(t, k - m - 1);
-    lines.forEach((str, i) =>
-      text(ctx, str, left, yy + (i + 0.5) * (FONT_SIZE * LINE_HEIGHT + 2), { size: FONT_SIZE_SMALL, weight: frame && i === lines.length - 1 ? "bold" : "normal" }),
-    );
+    const shortLines = sumsLines(t, k - m - 1, { short: true }); // a narrow canvas: without the substitution (the caption has it)
+    lines.forEach((str, i) => {
+      const weight = frame && i === lines.length - 1 ? "bold" : "normal";
+      text(ctx, textWidth(str, FONT_SIZE_SMALL, weight) > avail ? shortLines[i] : str, left, yy + (i + 0.5) * (FONT_SIZE * LINE_HEIGHT + 2), { size: FONT_SIZE_SMALL, weight });
+    });
   }
 }
 
