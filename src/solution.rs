@@ -5,6 +5,7 @@
 use crate::error::{Error, Result};
 use serde::de::{self, Deserialize, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::ser::{Serialize, SerializeMap, Serializer};
+use std::cell::Cell;
 use std::fmt;
 
 /// A plain data value: what inputs, results and step values are made of.
@@ -486,6 +487,34 @@ pub fn with_unit(value: &str, unit: &str) -> String {
 /// The separator of the relations of one step in its LaTeX strings.
 const RELATIONS_APART: &str = r",\quad ";
 
+thread_local! {
+    /// False inside [`without_steps`].
+    static STEPS_WANTED: Cell<bool> = const { Cell::new(true) };
+}
+
+/// Whether the solution being built keeps its steps: false inside
+/// [`without_steps`] (a sweep's series, `crate::examples::series`, reads only the
+/// results). A solver may skip work whose only output is a step (a
+/// figure's data) when it is false — never work a result depends on.
+pub fn steps_wanted() -> bool {
+    STEPS_WANTED.with(Cell::get)
+}
+
+/// Runs `f` (a solver) without building steps: [`Solution::step`] drops
+/// them and [`Step::relation`] joins no LaTeX. Results, notes and errors
+/// are the solver's own, as with steps.
+pub fn without_steps<T>(f: impl FnOnce() -> T) -> T {
+    /// Puts the flag back however `f` ends.
+    struct Restore(bool);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            STEPS_WANTED.with(|c| c.set(self.0));
+        }
+    }
+    let _restore = Restore(STEPS_WANTED.with(|c| c.replace(false)));
+    f()
+}
+
 /// One step of a worked solution.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Step {
@@ -517,6 +546,9 @@ impl Step {
     /// Adds a relation; `formula` and `substituted` are made again from
     /// all the relations (the one place LaTeX of a step is put together).
     pub fn relation(mut self, r: Relation) -> Self {
+        if !steps_wanted() {
+            return self; // the step is dropped: no LaTeX to join
+        }
         self.parts.push(r);
         let join = |f: fn(&Relation) -> String| {
             self.parts
@@ -596,8 +628,11 @@ impl Solution {
             }
         }
     }
+    /// Adds a step (dropped inside [`without_steps`]).
     pub fn step(&mut self, step: Step) {
-        self.steps.push(step);
+        if steps_wanted() {
+            self.steps.push(step);
+        }
     }
     /// Adds a note; chain [`Note::about`] to name the keys it concerns:
     /// `s.note(NoteKind::Rounding, "…").about(&["gsd_cm"]);`

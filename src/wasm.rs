@@ -4,8 +4,8 @@
 //! The page loads one small wasm module per topic (the crates under `web/`)
 //! and practice mode one more; each is a three-line crate that invokes a
 //! macro of this file, so the exports are written once, here:
-//! - [`export_examples!`]`(examples::coordinates::TOPIC, …)`: `catalog`, `solve`
-//!   and `parse_inputs` over those entries only (link-time optimisation
+//! - [`export_examples!`]`(examples::coordinates::TOPIC, …)`: `catalog`, `solve`,
+//!   `solve_series`, `read_count` and `parse_inputs` over those entries only (link-time optimisation
 //!   drops every other topic);
 //! - [`export_all!`]`()`: the same over the whole catalog, plus `practice`
 //!   and `grade` (practice mode and the compatibility package).
@@ -152,6 +152,90 @@ pub fn parse_inputs_in(
     to_js(&parsed)
 }
 
+/// A JS array argument `what` read as values: `items` says what its
+/// elements must be ("numbers"), `one` what one must be ("a number"), and
+/// `item` takes one (`Err`: refused, given back).
+fn list_arg<T>(
+    what: &str,
+    items: &str,
+    one: &str,
+    v: JsValue,
+    item: impl Fn(Value) -> Result<T, Value>,
+) -> Result<Vec<T>, JsError> {
+    if !js_is_array(&v) {
+        return Err(JsError::new(&format!(
+            "{what}: must be an array of {items}, got {}",
+            js_kind(&v)
+        )));
+    }
+    let list = match serde_wasm_bindgen::from_value::<Value>(v) {
+        Ok(Value::List(list)) => list,
+        Ok(other) => {
+            return Err(JsError::new(&format!(
+                "{what}: must be an array of {items}, got {}",
+                other.type_name()
+            )))
+        }
+        Err(e) => return Err(JsError::new(&format!("{what}: cannot be read: {e}"))),
+    };
+    list.into_iter()
+        .enumerate()
+        .map(|(i, x)| {
+            item(x).map_err(|x| {
+                JsError::new(&format!(
+                    "{what}[{i}]: must be {one}, got {}",
+                    x.type_name()
+                ))
+            })
+        })
+        .collect()
+}
+
+/// `solve_series(id, inputs, key, values, plot)` among `topics`: see
+/// [`crate::series`].
+pub fn solve_series_in(
+    topics: &'static [Topic],
+    id: &JsValue,
+    inputs: JsValue,
+    key: &JsValue,
+    values: JsValue,
+    plot: JsValue,
+) -> Result<JsValue, JsError> {
+    let id = id_arg(id)?;
+    let inputs = record_from_js("inputs", inputs)?;
+    let key = name_arg("key", "naming an input of the example", key)?;
+    let values = list_arg("values", "numbers", "a number", values, |x| match x {
+        Value::Number(_) => Ok(x),
+        other => Err(other),
+    })?;
+    let plot = list_arg(
+        "plot",
+        "strings (result keys)",
+        "a string",
+        plot,
+        |x| match x {
+            Value::Text(t) => Ok(t),
+            other => Err(other),
+        },
+    )?;
+    let series =
+        crate::examples::series::solve_series_in(topics, &id, &inputs, &key, &values, &plot)
+            .map_err(js_error)?;
+    to_js(&series)
+}
+
+/// `read_count(text, min, max)`: see [`crate::examples::series::read_count`].
+pub fn read_count(text: &JsValue, min: &JsValue, max: &JsValue) -> Result<JsValue, JsError> {
+    let text = string_arg("text", "(a count typed in a box)", text)?;
+    let number = |what: &str, v: &JsValue| {
+        v.as_f64()
+            .ok_or_else(|| JsError::new(&format!("{what}: must be a number, got {}", js_kind(v))))
+    };
+    let (min, max) = (number("min", min)?, number("max", max)?);
+    let n = crate::examples::series::read_count(&text, min, max).map_err(js_error)?;
+    Ok(JsValue::from_f64(n))
+}
+
 #[wasm_bindgen]
 extern "C" {
     /// The page's random numbers, for a fresh practice variant.
@@ -225,6 +309,33 @@ macro_rules! export_examples {
             inputs: ::wasm_bindgen::JsValue,
         ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
             $crate::wasm::solve_in(TOPICS, &id, inputs)
+        }
+
+        /// A sweep's series: example `id` solved with `inputs` and input
+        /// `key` set to each of `values` (numbers), results `plot` (keys)
+        /// read off each: `{ results: { key: [value…] }, errors: [message
+        /// or null…] }`, each point exactly `solve(id, inputs with that
+        /// value)`'s, without building steps.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn solve_series(
+            id: ::wasm_bindgen::JsValue,
+            inputs: ::wasm_bindgen::JsValue,
+            key: ::wasm_bindgen::JsValue,
+            values: ::wasm_bindgen::JsValue,
+            plot: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::solve_series_in(TOPICS, &id, inputs, &key, values, plot)
+        }
+
+        /// A count typed in a box (a sweep's steps): a whole number within
+        /// `min..=max`, read as an integer input's text; throws in its words.
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn read_count(
+            text: ::wasm_bindgen::JsValue,
+            min: ::wasm_bindgen::JsValue,
+            max: ::wasm_bindgen::JsValue,
+        ) -> ::std::result::Result<::wasm_bindgen::JsValue, ::wasm_bindgen::JsError> {
+            $crate::wasm::read_count(&text, &min, &max)
         }
 
         /// Parses form or URL texts `{ key: text }` into `{ inputs, errors }`.

@@ -442,8 +442,8 @@ async function openSweep(v, options = {}) {
       v.form.set({ [key]: text });
       inputChanged();
     },
-    setLink: (sweep, plot) => {
-      embedPage.setSweep(sweep, plot);
+    setLink: (sweep, plot, grid) => {
+      embedPage.setSweep(sweep, plot, grid);
       if (view === v) writeUrl();
     },
     posted: () => embedPage.sweepChanged(),
@@ -700,8 +700,8 @@ async function route({ focus = false } = {}) {
     notice.hidden = false;
   }
   // sweep= / plot= in the address: the sweep opens with them
-  const { sweep, plot } = embedPage.currentOptions();
-  if (sweep || plot) openSweep(v, { spec: sweep, plot });
+  const { sweep, plot, grid } = embedPage.currentOptions();
+  if (sweep || plot || grid) openSweep(v, { spec: sweep, plot, grid });
   else if (v.sweep) closeSweep(v);
   embedPage.afterRoute();
   if (focus) v.parts.heading.focus({ preventScroll: false });

@@ -128,6 +128,8 @@ function loadModule(name) {
  *   loaded: (id: string) => boolean,
  *   parseInputs: (id: string, texts: object) => { inputs: object, errors: object },
  *   solve: (id: string, inputs: object) => any,
+ *   solveSeries: (id: string, inputs: object, key: string, values: number[], plot: string[]) => { results: object, errors: (string|null)[] },
+ *   readCount: (id: string, text: string, min: number, max: number) => number,
  *   loadPractice: () => Promise<void>,
  *   practice: (id: string, code?: string | null) => any,
  *   grade: (id: string, code: string, answers: object) => any,
@@ -189,6 +191,14 @@ export async function loadCore() {
     loaded: (id) => ready.has(moduleById.get(id)) || ready.has(practiceOf(moduleById.get(id))) || ready.has("all"),
     parseInputs: (id, texts) => packageFor(id).parse_inputs(id, texts),
     solve: (id, inputs) => packageFor(id).solve(id, inputs),
+    /**
+     * A sweep's series in one call (docs/API.md, solve_series): `id` solved with
+     * `inputs` and `key` set to each of `values`; `{ results: { k: [value…] },
+     * errors: [message|null…] }` for the results `plot`, each point solve()'s.
+     */
+    solveSeries: (id, inputs, key, values, plot) => packageFor(id).solve_series(id, inputs, key, values, plot),
+    /** A count typed in a box (a sweep's steps): a whole number from `min` to `max`, read by example `id`'s module; throws in the core's words. */
+    readCount: (id, text, min, max) => packageFor(id).read_count(text, min, max),
     /** Practice mode of example `id` (its topic's practice module), or of every example (no id: worksheets). */
     loadPractice: async (id) => {
       if (ready.has("all")) return;

@@ -14,11 +14,12 @@
 //                                or play from the first frame (paused at it under reduced motion)
 //   sweep=key:from:to:steps      a sweep of one number input (issue 34; www/sweep/link.js)
 //   plot=gsd_cm,pixel_size_mm    the results the sweep plots
+//   grid=key:from:to:rows        the sweep's two-input table: a second input's rows (of plot='s first result)
 
-import { parsePlot, parseSweep } from "./sweep/link.js";
+import { parseGrid, parsePlot, parseSweep } from "./sweep/link.js";
 
 export const PARTS = Object.freeze(["inputs", "steps", "figure", "result", "notes", "tools"]);
-export const OPTION_KEYS = Object.freeze(["theme", "show", "hide", "steps", "lock", "step", "host", "id", "play", "sweep", "plot"]);
+export const OPTION_KEYS = Object.freeze(["theme", "show", "hide", "steps", "lock", "step", "host", "id", "play", "sweep", "plot", "grid"]);
 const THEMES = ["auto", "light", "dark"];
 const MAX_QUOTED = 40;
 const MAX_STEP = 1000;
@@ -26,7 +27,7 @@ const MAX_STEP = 1000;
 export const MAX_FRAME = 100000;
 
 export function defaults() {
-  return { theme: "auto", hide: [], steps: "open", lock: false, step: null, host: null, id: null, play: null, sweep: null, plot: null };
+  return { theme: "auto", hide: [], steps: "open", lock: false, step: null, host: null, id: null, play: null, sweep: null, plot: null, grid: null };
 }
 
 function quote(text) {
@@ -131,6 +132,14 @@ export function parseOptions(params) {
         const read = parseSweep(v);
         if (read.spec) {
           options.sweep = read.spec;
+          keep(key, v);
+        } else bad(read.error);
+        break;
+      }
+      case "grid": {
+        const read = parseGrid(v);
+        if (read.spec) {
+          options.grid = read.spec;
           keep(key, v);
         } else bad(read.error);
         break;

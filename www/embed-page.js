@@ -55,11 +55,12 @@ export function setPlay(index) {
   if (Number.isInteger(index) && index >= 0) optionList.push(["play", String(index + 1)]);
 }
 
-/** The sweep's part of the address (sweep=key:from:to:steps&plot=a,b; www/sweep/): null removes it. */
-export function setSweep(sweep, plot) {
-  optionList = optionList.filter(([k]) => k !== "sweep" && k !== "plot");
+/** The sweep's part of the address (sweep=key:from:to:steps&plot=a,b&grid=key:from:to:rows; www/sweep/): null removes it. */
+export function setSweep(sweep, plot, grid = null) {
+  optionList = optionList.filter(([k]) => k !== "sweep" && k !== "plot" && k !== "grid");
   if (sweep) optionList.push(["sweep", sweep]);
   if (sweep && plot) optionList.push(["plot", plot]);
+  if (sweep && grid) optionList.push(["grid", grid]);
 }
 
 /** The sweep changed by its own controls (no input did): the host hears of it with the series. */

@@ -65,6 +65,10 @@ export function snippets({ base, id, title, texts, options, height = DEFAULT_HEI
       attrs.push(`data-plot="${options.plot}"`);
       params.push(["plot", options.plot]);
     }
+    if (options.grid) {
+      attrs.push(`data-grid="${options.grid}"`);
+      params.push(["grid", options.grid]);
+    }
   }
   const attrText = (s) => s.replace(/&/g, "&amp;").replace(/"/g, "&quot;").replace(/</g, "&lt;");
   const script = `<script src="${attrText(embedJs)}" defer></script>\n<div data-playground="${attrText(query)}"${attrs.length ? ` ${attrs.join(" ")}` : ""}></div>`;
@@ -200,7 +204,7 @@ export function toggleEmbedPanel(view, button, bar) {
   const refresh = ({ reload = true } = {}) => {
     // the sweep open on the page, as its link writes it (sweep=…&plot=…)
     const sweep = view.sweep?.linkEntries() ?? {};
-    const s = snippets({ base, id: view.id, title: view.entry.title, texts: view.form.entries(), options: { ...state, sweep: sweep.sweep ?? null, plot: sweep.plot ?? null }, height: state.height });
+    const s = snippets({ base, id: view.id, title: view.entry.title, texts: view.form.entries(), options: { ...state, sweep: sweep.sweep ?? null, plot: sweep.plot ?? null, grid: sweep.grid ?? null }, height: state.height });
     script.area.value = s.script;
     iframe.area.value = s.iframe;
     heightNote.textContent = state.measured

@@ -18,6 +18,7 @@ pub mod interest;
 pub mod matching;
 pub mod projection;
 pub mod resampling;
+pub mod series;
 pub mod transformations;
 
 use crate::error::{Error, Result};

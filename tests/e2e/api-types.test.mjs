@@ -48,6 +48,8 @@ function kinds() {
 const PARAMS = {
   catalog: [],
   solve: ["id", "inputs"],
+  solve_series: ["id", "inputs", "key", "values", "plot"],
+  read_count: ["text", "min", "max"],
   parse_inputs: ["id", "texts"],
   practice: ["id", "code"],
   grade: ["id", "code", "answers"],
@@ -65,6 +67,8 @@ function validArgs(id) {
   return {
     catalog: [],
     solve: [id, {}],
+    solve_series: [id, {}, "dpi", [1200], []],
+    read_count: ["5", 2, 500],
     parse_inputs: [id, {}],
     practice: [id, "1K7Q2"],
     grade: [id, "1K7Q2", {}],
@@ -149,6 +153,14 @@ describe("every export of every module, called with every kind of JS value", () 
     assert.equal(message(() => m.solve("gsd", new Float64Array(2))), "inputs: must be an object of fields like { dpi: 1200 }, got a typed array");
     assert.equal(message(() => m.parse_inputs("gsd", "dpi=5")), "texts: must be an object of fields like { dpi: 1200 }, got a string");
     assert.equal(message(() => m.grade("gsd", "1K7Q2", () => 1)), "answers: must be an object of fields like { dpi: 1200 }, got a function");
+    assert.equal(message(() => m.solve_series("gsd", {}, 5, [1], [])), "key: must be a string naming an input of the example, got a number");
+    assert.equal(message(() => m.solve_series("gsd", {}, "dpi", new Float64Array(2), [])), "values: must be an array of numbers, got a typed array");
+    assert.equal(message(() => m.solve_series("gsd", {}, "dpi", [1, "2"], [])), "values[1]: must be a number, got a string");
+    assert.equal(message(() => m.solve_series("gsd", {}, "dpi", [1], ["gsd_cm", 3])), "plot[1]: must be a string, got a number");
+    assert.equal(message(() => m.solve_series("gsd", {}, "dpi", Array(10001).fill(1), [])), "values: at most 10000 points, got 10001");
+    assert.equal(message(() => m.read_count("800", 2, 500)), "text: must be at most 500 (got 800)");
+    assert.equal(message(() => m.read_count(200, 2, 500)), "text: must be a string (a count typed in a box), got a number");
+    assert.equal(m.read_count(" 2e2 ", 2, 500), 200);
     assert.equal(message(() => m.solve(null)), "id: must be a string naming an example, got null");
     assert.equal(message(() => m.solve()), "id: must be a string naming an example, got undefined");
     assert.match(message(() => m.solve("x".repeat(1 << 20), {})), /^unknown example id "x{24}…" \(see catalog\(\) for the ids\)$/);

@@ -10,7 +10,7 @@ describe("view options", () => {
     const r = parseOptions([["dpi", "1200"], ["theme", "Dark"], ["hide", "notes, inputs,notes"], ["steps", "collapsed"], ["lock", ""], ["step", "2"], ["host", "https://course.example.org/page?x=1"], ["id", "ex-1"]]);
     assert.deepEqual(r.rest, [["dpi", "1200"]]);
     assert.deepEqual(r.notices, []);
-    assert.deepEqual(r.options, { theme: "dark", hide: ["notes", "inputs"], steps: "collapsed", lock: true, step: 2, host: "https://course.example.org", id: "ex-1", play: null, sweep: null, plot: null });
+    assert.deepEqual(r.options, { theme: "dark", hide: ["notes", "inputs"], steps: "collapsed", lock: true, step: 2, host: "https://course.example.org", id: "ex-1", play: null, sweep: null, plot: null, grid: null });
     assert.deepEqual(r.entries, [["theme", "dark"], ["hide", "notes,inputs"], ["steps", "collapsed"], ["lock", "true"], ["step", "2"], ["host", "https://course.example.org"], ["id", "ex-1"]]);
   });
 
@@ -21,6 +21,23 @@ describe("view options", () => {
       const r = parseOptions([["play", bad]]);
       assert.equal(r.options.play, null, bad);
       assert.match(r.notices[0], /play=“.*”: give a frame number from 1 to 100000 \(opens paused there\) or auto/, bad);
+    }
+  });
+
+  test("grid: the sweep's two-input table, key:from:to:rows (2–11), read like sweep=; anything else named in a notice", () => {
+    const r = parseOptions([["grid", "focal_length_mm:100:3e2:5"]]);
+    assert.deepEqual(r.options.grid, { key: "focal_length_mm", from: 100, to: 300, steps: 5 });
+    assert.deepEqual(r.entries, [["grid", "focal_length_mm:100:3e2:5"]]);
+    for (const [bad, why] of [
+      ["focal_length_mm:100:300:12", /the rows must be a whole number from 2 to 11/],
+      ["focal_length_mm:100:300", /it has 3 parts; write it as field:from:to:rows/],
+      ["focal_length_mm:100:x:5", /“to” is not a number/],
+      ["focal_length_mm:100:100:5", /“from” and “to” are the same value: a table needs a range/],
+      ["f<b>:1:2:3", /the field name must be letters, digits and _/],
+    ]) {
+      const b = parseOptions([["grid", bad]]);
+      assert.equal(b.options.grid, null, bad);
+      assert.match(b.notices[0], why, bad);
     }
   });
 

@@ -36,10 +36,10 @@ for (const entry of swept) {
     assert.deepEqual(errors, {});
     const plot = numericResultKeys(core.solve(entry.id, inputs));
     assert.ok(plot.length > 0, "the seed solution has numeric results");
-    const values = sweepValues({ ...chooseRange(core.solve, entry.id, inputs, field, field.default), steps: 5 }, field.kind === "integer");
+    const values = sweepValues({ ...chooseRange(core.solve_series, entry.id, inputs, field, field.default), steps: 5 }, field.kind === "integer");
     const bad = outside(field);
     if (bad !== null) values.push(bad);
-    const series = computeSeries(core.solve, entry.id, inputs, field.key, values, plot);
+    const series = computeSeries(core.solve_series, entry.id, inputs, field.key, values, plot);
     assert.deepEqual(series.xs, values);
     let refused = 0;
     values.forEach((x, i) => {
@@ -81,7 +81,7 @@ for (const entry of swept) {
 test("two inputs at once: every cell of a grid is solve(id, inputs with both values), a refused one null with its message", () => {
   const xs = [-100, 0, 600, 1200];
   const ys = [100, 152, 300];
-  const grid = computeGrid(core.solve, "gsd", {}, "dpi", xs, "focal_length_mm", ys, "gsd_cm");
+  const grid = computeGrid(core.solve_series, "gsd", {}, "dpi", xs, "focal_length_mm", ys, "gsd_cm");
   ys.forEach((f, i) =>
     xs.forEach((d, j) => {
       let v = null;

@@ -41,6 +41,9 @@ async function plotted(p = page) {
   return JSON.parse(await section.getAttribute("data-plotted"));
 }
 
+/** The two-input table's cells, row by row (the row's value first). */
+const tableCells = () => page.$$eval(".sweep-grid-table tbody tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+
 async function go(hash) {
   await page.goto(`${env.url}index.html${hash}`);
   await page.waitForFunction(() => document.body.dataset.status === "ok", null, { timeout: WAIT });
@@ -63,6 +66,7 @@ function assertSolved(id, data, inputs = {}) {
 }
 
 describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
+  let gridLink = null;
   let linkFromUi = null;
   let fromUi = null;
 
@@ -155,7 +159,12 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
       await page.press("[id$=-from]", "Enter");
       await page.waitForFunction(() => /“From”: must be greater than 0/.test(document.querySelector(".sweep-message")?.textContent), null, { timeout: WAIT });
       await page.fill("[id$=-from]", "150,5");
-      await page.press("[id$=-from]", "Tab");
+      // the Steps box too: the core's reader (a whole number, 2–500), its words
+      await page.fill("[id$=-steps]", "800");
+      await page.press("[id$=-steps]", "Enter");
+      await page.waitForFunction(() => /“Steps”: must be at most 500 \(got 800\)/.test(document.querySelector(".sweep-message")?.textContent), null, { timeout: WAIT });
+      await page.fill("[id$=-steps]", "1,2e1");
+      await page.press("[id$=-steps]", "Tab");
       await page.waitForFunction(() => JSON.parse(document.querySelector(".sweep-section").dataset.plotted).xs[0] === 150.5, null, { timeout: WAIT });
       assertSolved("gsd", await plotted());
       // two inputs at once: dpi (columns) × focal length (rows), gsd_cm in each cell
@@ -166,8 +175,12 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
       await page.fill("[id$=-grid-to]", "200");
       await page.fill("[id$=-grid-steps]", "3");
       await page.click("[data-tool=sweep-grid]");
-      const cells = await page.$$eval(".sweep-grid-table tbody tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+      const cells = await tableCells();
       assert.equal(cells.length, 3);
+      // the table is in the link, its result first in plot=
+      await page.waitForFunction(() => /[?&]grid=focal_length_mm:100:200:3(&|$)/.test(location.hash), null, { timeout: WAIT });
+      assert.match(page.url(), /plot=gsd_cm,pixel_size_mm/);
+      if (width === 390) gridLink = new URL(page.url()).hash;
       // the columns: 11 points over the sweep's range (grid.js MAX_CELLS_SIDE)
       const xs = sweepValues({ from: 150.5, to: 1200, steps: 11 });
       const heads = await page.$$eval(".sweep-grid-table thead th", (ths) => ths.slice(1).map((th) => Number(th.textContent.replace("−", "-"))));
@@ -189,6 +202,26 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
     await page.setViewportSize({ width: 1280, height: 900 });
   });
 
+  test("a grid= link opens the same table; folding the table takes it out of the link; a wrong grid= is named", async () => {
+    assert.ok(gridLink, "the table was made");
+    const made = await tableCells();
+    await go(gridLink);
+    await plotted();
+    await page.waitForSelector(".sweep-grid[open] .sweep-grid-table", { timeout: WAIT });
+    assert.deepEqual(await tableCells(), made);
+    assert.equal(await page.inputValue("[id$=-grid-field]"), "focal_length_mm");
+    assert.equal(await page.inputValue("[id$=-grid-result]"), "gsd_cm");
+    await page.click(".sweep-grid summary");
+    await page.waitForFunction(() => !/grid=/.test(location.hash) && /sweep=dpi:/.test(location.hash), null, { timeout: WAIT });
+    await go(gridLink.replace(/grid=[^&]*/, "grid=dpi:1:2:3"));
+    await plotted();
+    assert.match(await page.textContent(".sweep-message"), /Ignored grid=dpi:…: dpi is the sweep’s own input/);
+    assert.equal(await page.locator(".sweep-grid-table").count(), 0);
+    await go(gridLink.replace(/grid=[^&]*/, "grid=focal_length_mm:100:200:<i>12</i>"));
+    assert.match(await page.textContent(".options-notice"), /Ignored the option grid=“focal_length_mm:100:200:<i>12<\/i>”: the rows must be a whole number from 2 to 11/);
+    assert.equal(await page.locator(".options-notice i").count(), 0);
+  });
+
   test("a wrong sweep= is named in words (never HTML) and the page keeps working", async () => {
     await go("#/gsd?sweep=flying_height_m:500:<b>x</b>:100");
     assert.match(await page.textContent(".options-notice"), /Ignored the option sweep=“flying_height_m:500:<b>x<\/b>:100”: “to” is not a number/);
@@ -203,16 +236,19 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
     await page.waitForFunction(() => document.body.dataset.status === "ok" && document.querySelector(".answer-line")?.textContent.includes("26.7"), null, { timeout: WAIT });
   });
 
-  test("an embed with sweep= draws the same series and the host page gets it with the change event", async () => {
+  test("an embed with sweep= (and grid=) draws the same series and table, and the host page gets the series with the change event", async () => {
     const link = await (async () => {
-      await go(`#/gsd?${LINK}`);
+      await go(`#/gsd?${LINK}&grid=dpi:600:1200:3`);
       return plotted();
     })();
+    await page.waitForSelector(".sweep-grid-table", { timeout: WAIT });
+    const table = await tableCells();
+    assert.equal(table.length, 3);
     const host = await startHost({
       "/course.html": `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Course</title></head><body>
         <script>window.events = []; document.addEventListener("playground:change", (e) => window.events.push(e.detail));</script>
         <script src="${env.url}embed.js" defer></script>
-        <div id="a" data-playground="gsd?${LINK}" data-id="a"></div></body></html>`,
+        <div id="a" data-playground="gsd?${LINK}" data-grid="dpi:600:1200:3" data-id="a"></div></body></html>`,
     });
     try {
       const p = await context.newPage();
@@ -220,6 +256,8 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
       await p.waitForFunction(() => window.events.some((d) => d.sweep), null, { timeout: WAIT });
       const frame = await (await p.waitForSelector("#a iframe")).contentFrame();
       assert.deepEqual(await plotted(frame), link);
+      await frame.waitForSelector(".sweep-grid-table", { timeout: WAIT });
+      assert.deepEqual(await frame.$$eval(".sweep-grid-table tbody tr", (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent))), table);
       const sweep = await p.evaluate(() => window.events.findLast((d) => d.sweep).sweep);
       assert.equal(sweep.input, "flying_height_m");
       assert.deepEqual(sweep.xs, link.xs);

@@ -2,14 +2,17 @@
 // inputs, as a table whose cells are shaded by their value (a small heat map
 // that is also the numbers). Every cell is solve(id, inputs with both values)
 // (series.js computeGrid). Part of the sweep panel (sweep.js), loaded with it.
+// While the table is shown, the link carries it: grid=<field>:<from>:<to>:<rows>,
+// its result plot='s first (link.js parseGrid; restore() makes it on load).
 
 import { el } from "../dom.js";
 import { num } from "../figures/data-view.js";
 import { SIGNED_NEGATIVE, rgbText } from "../colour-scales.js";
-import { chooseRange, computeGrid, sweepableFields, sweepValues } from "./series.js";
+import { chooseRange, computeGrid, formatSweep, sweepableFields, sweepValues } from "./series.js";
+import { MAX_GRID_ROWS } from "./link.js";
 
 /** Columns and rows of the table at most (a phone's width; a solve per cell). */
-export const MAX_CELLS_SIDE = 11;
+export const MAX_CELLS_SIDE = MAX_GRID_ROWS;
 /** The strongest shade (alpha of the blue over the panel): the cell's text keeps its contrast. */
 const MAX_ALPHA = 0.45;
 
@@ -17,7 +20,9 @@ const fieldText = (f) => `${f.label}${f.unit ? ` (${f.unit})` : ""}`;
 
 /**
  * The "Two inputs at once" fold. `ctx`: { core, id, entry, prefix, first(): { field, range },
- * results(): [{ key, label, unit }], base(): { inputs } | { error } }.
+ * results(): [{ key, label, unit }], base(): { inputs } | { error },
+ * made(resultKey | null): the table was made (its result) or put away: the link follows }.
+ * @returns {{ element, refresh(), restore(spec): string|null, clear(), linkValue(): string|null }}
  */
 export function gridFold(ctx) {
   const { core, id, entry, prefix } = ctx;
@@ -25,7 +30,8 @@ export function gridFold(ctx) {
   const second = el("select", { id: `${prefix}-grid-field`, class: "keep-enabled" });
   const from = el("input", { id: `${prefix}-grid-from`, type: "number", step: "any", class: "keep-enabled" });
   const to = el("input", { id: `${prefix}-grid-to`, type: "number", step: "any", class: "keep-enabled" });
-  const steps = el("input", { id: `${prefix}-grid-steps`, type: "number", step: "1", min: "2", max: String(MAX_CELLS_SIDE), value: "6", class: "keep-enabled" });
+  // a count: read by the core as the sweep's Steps (a whole number, 2–11, refused in its words)
+  const steps = el("input", { id: `${prefix}-grid-steps`, type: "text", inputmode: "numeric", autocomplete: "off", spellcheck: "false", value: "6", class: "keep-enabled" });
   const result = el("select", { id: `${prefix}-grid-result`, class: "keep-enabled" });
   const make = el("button", { type: "button", class: "button keep-enabled", "data-tool": "sweep-grid" }, "Make the table");
   const message = el("p", { class: "sweep-message", role: "status" });
@@ -53,6 +59,12 @@ export function gridFold(ctx) {
     if ([...result.options].some((o) => o.value === keepResult)) result.value = keepResult;
     fold.hidden = !second.options.length || !result.options.length;
     if (!fold.hidden && keep !== second.value) aim();
+    // a table whose input became the sweep's, or whose result is no longer plotted, is gone
+    if (shown && (shown.key !== second.value || shown.result !== result.value || fold.hidden)) {
+      shown = null;
+      out.replaceChildren();
+      message.textContent = "";
+    }
   }
 
   /** A range around the second input's value (as the sweep's own). */
@@ -60,32 +72,85 @@ export function gridFold(ctx) {
     const f = fields.find((g) => g.key === second.value);
     const base = ctx.base();
     if (!f || base.error) return;
-    const r = chooseRange(core.solve, id, base.inputs, f, base.inputs[f.key] ?? f.default);
+    const r = chooseRange(core.solveSeries, id, base.inputs, f, base.inputs[f.key] ?? f.default);
     from.value = String(r.from);
     to.value = String(r.to);
     steps.value = String(Math.min(6, f.kind === "integer" ? r.to - r.from + 1 : 6));
   }
   second.addEventListener("change", aim);
 
+  /** The table on screen: { key, from, to, steps, result } (what the link carries), or null. */
+  let shown = null;
+
   make.addEventListener("click", () => {
+    makeTable();
+    ctx.made(shown?.result ?? null);
+  });
+  // a folded table leaves the link; unfolded again, it is back
+  fold.addEventListener("toggle", () => ctx.made(fold.open ? (shown?.result ?? null) : null));
+
+  /** Makes the table from the controls; false (with the reason shown) when they cannot be read. */
+  function makeTable() {
     const base = ctx.base();
-    if (base.error) return void (message.textContent = base.error);
+    if (base.error) return fail(base.error);
     const f2 = fields.find((g) => g.key === second.value);
     const r = ctx.results().find((x) => x.key === result.value);
-    const n = steps.valueAsNumber;
-    if (!f2 || !r) return void (message.textContent = "Choose a second input and a result.");
-    if (!Number.isFinite(from.valueAsNumber) || !Number.isFinite(to.valueAsNumber) || from.valueAsNumber === to.valueAsNumber) return void (message.textContent = "“From” and “To” must be two different numbers.");
-    if (!Number.isInteger(n) || n < 2 || n > MAX_CELLS_SIDE) return void (message.textContent = `“Rows” must be a whole number from 2 to ${MAX_CELLS_SIDE}.`);
+    let n;
+    try {
+      n = core.readCount(id, steps.value, 2, MAX_CELLS_SIDE);
+    } catch (e) {
+      return fail(`“Rows”: ${e.message.replace(/^text: /, "")}.`);
+    }
+    if (!f2 || !r) return fail("Choose a second input and a result.");
+    if (!Number.isFinite(from.valueAsNumber) || !Number.isFinite(to.valueAsNumber) || from.valueAsNumber === to.valueAsNumber) return fail("“From” and “To” must be two different numbers.");
     const { field, range } = ctx.first();
     const xs = sweepValues({ ...range, steps: Math.min(range.steps, MAX_CELLS_SIDE) }, field.kind === "integer");
     const ys = sweepValues({ from: from.valueAsNumber, to: to.valueAsNumber, steps: n }, f2.kind === "integer");
     const inputs = { ...base.inputs };
     delete inputs[f2.key];
-    const grid = computeGrid(core.solve, id, inputs, field.key, xs, f2.key, ys, r.key);
+    const grid = computeGrid(core.solveSeries, id, inputs, field.key, xs, f2.key, ys, r.key);
     out.replaceChildren(table(grid, field, f2, r));
     const bad = grid.errors.flat().filter(Boolean).length;
     message.textContent = `${ys.length} × ${xs.length} solutions${bad ? `, ${bad} without a solution (their cells say so; the message is in each cell’s title and in the Data table of the sweep)` : ""}.`;
-  });
+    shown = { key: f2.key, from: from.valueAsNumber, to: to.valueAsNumber, steps: n, result: r.key };
+    return true;
+  }
+
+  function fail(text) {
+    message.textContent = text;
+    shown = null;
+    out.replaceChildren();
+    return false;
+  }
+
+  /**
+   * The table from a link's grid= ({ key, from, to, steps }: link.js parseGrid), of
+   * the sweep's first plotted result, opened and made: null, or why it cannot be.
+   */
+  function restore(spec) {
+    const f = fields.find((g) => g.key === spec.key);
+    if (!f) return `this example has no number input ${spec.key}`;
+    if (f.key === ctx.first().field.key) return `${spec.key} is the sweep’s own input; the table needs a second one`;
+    if (fold.hidden || ![...second.options].some((o) => o.value === f.key)) return `${spec.key} cannot be the table’s second input here`;
+    const r = ctx.results()[0];
+    if (!r) return "there is no plotted result to put in the table";
+    second.value = f.key;
+    from.value = String(spec.from);
+    to.value = String(spec.to);
+    steps.value = String(spec.steps);
+    result.value = r.key;
+    fold.open = true;
+    return makeTable() ? null : message.textContent;
+  }
+
+  /** No table (a link without grid=, or a wrong one): folded and empty. */
+  function clear() {
+    fail("");
+    fold.open = false;
+  }
+
+  /** grid=… for the link while the table is shown (null otherwise). */
+  const linkValue = () => (shown && fold.open ? formatSweep(shown) : null);
 
   function table(grid, fx, fy, r) {
     const vals = grid.values.flat().filter((v) => v !== null);
@@ -122,5 +187,5 @@ export function gridFold(ctx) {
     return el("div", {}, el("p", { class: "figure-table-title", "aria-hidden": "true" }, caption), wrap);
   }
 
-  return { element: fold, refresh };
+  return { element: fold, refresh, restore, clear, linkValue };
 }

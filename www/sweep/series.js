@@ -1,8 +1,11 @@
 // A sweep (issue 34; docs/sweeps.md): one numeric input of an example run over
 // a range, every point solved by the core exactly as the page solves it —
 // solve(id, inputs with that value) — and the chosen numeric results read off.
-// Pure functions, no DOM: the page (www/sweep/sweep.js) and Node's tests
-// (tests/e2e/sweep-series.test.mjs, with the real core) call the same code.
+// The points are solved in one call of the core's solveSeries (the wasm export
+// solve_series: the same solver per point, without building the steps, only
+// the chosen results coming back). Pure functions, no DOM: the page
+// (www/sweep/sweep.js) and Node's tests (tests/e2e/sweep-series.test.mjs, with
+// the real core, point by point against solve) call the same code.
 //
 // The link's form (url.js carries it beside the inputs, embed-options.js
 // checks its syntax): sweep=<field>:<from>:<to>:<steps>&plot=<key>,<key>
@@ -83,23 +86,17 @@ const PROBE = 11;
  * A sensible range around the current value: the widest candidate range
  * (candidateRanges) on which at least half of a few probe points solve (a
  * window position, say, solves only near its value), else the one where
- * most do.
+ * most do. `solveSeries` is the core's (see computeSeries); null takes the
+ * first candidate (nothing to probe with).
  */
-export function chooseRange(solve, id, inputs, field, value) {
+export function chooseRange(solveSeries, id, inputs, field, value) {
   const candidates = candidateRanges(field, value);
+  if (!solveSeries) return candidates[0];
   let best = candidates[0];
   let bestCount = -1;
   for (const r of candidates) {
     const xs = sweepValues({ ...r, steps: PROBE }, field.kind === "integer");
-    let ok = 0;
-    for (const x of xs) {
-      try {
-        solve(id, { ...inputs, [field.key]: x });
-        ok++;
-      } catch {
-        // a refused point
-      }
-    }
+    const ok = computeSeries(solveSeries, id, inputs, field.key, xs, []).points.filter((p) => !p.error).length;
     if (ok * 2 >= xs.length) return r;
     if (ok > bestCount) [best, bestCount] = [r, ok];
   }
@@ -135,30 +132,36 @@ function messageOf(e) {
 
 /**
  * Solves every point: solve(id, { ...inputs, [key]: x }) for each x of
- * `values`, and reads `plot`'s results off each solution.
- * @param {(id: string, inputs: object) => any} solve  the core's solve (throws on an error)
+ * `values`, and reads `plot`'s results off each solution — in one call of
+ * `solveSeries` (the core's: www/core.js solveSeries, the wasm export
+ * solve_series), which runs the same solver per point without building its
+ * steps and returns { results: { k: [value…] }, errors: [message|null…] }.
+ * A call that throws (an example whose module is not loaded, say) gives
+ * every point its message, as solve would have at each.
+ * @param {(id: string, inputs: object, key: string, values: number[], plot: string[]) =>
+ *          { results: Record<string, any[]>, errors: (string|null)[] }} solveSeries
  * @returns {{ key, plot, xs: number[], ys: Record<string, (number|null)[]>,
  *             points: Array<{ x: number, error: string|null, result: object|null }> }}
  *   ys[k][i] is null where point i has no number: the solver's error (points[i].error), or a result without a value
  */
-export function computeSeries(solve, id, inputs, key, values, plot) {
+export function computeSeries(solveSeries, id, inputs, key, values, plot) {
+  let out = null;
+  let failed = null;
+  try {
+    out = solveSeries(id, inputs, key, [...values], [...plot]);
+  } catch (e) {
+    failed = messageOf(e);
+  }
   const ys = Object.fromEntries(plot.map((k) => [k, []]));
-  const points = [];
-  for (const x of values) {
-    let solution = null;
-    let error = null;
-    try {
-      solution = solve(id, { ...inputs, [key]: x });
-    } catch (e) {
-      error = messageOf(e);
-    }
-    const result = solution?.result ?? null;
+  const points = values.map((x, i) => {
+    const error = failed ?? out.errors[i] ?? null;
+    const result = error ? null : Object.fromEntries(plot.map((k) => [k, out.results[k][i] ?? null]));
     for (const k of plot) {
       const y = result?.[k];
       ys[k].push(typeof y === "number" && Number.isFinite(y) ? y : null);
     }
-    points.push({ x, error, result: result && Object.fromEntries(plot.map((k) => [k, result[k] ?? null])) });
-  }
+    return { x, error, result };
+  });
   return { key, plot: [...plot], xs: [...values], ys, points };
 }
 
@@ -167,8 +170,8 @@ export function computeSeries(solve, id, inputs, key, values, plot) {
  * solve(id, { ...inputs, [keyY]: ys[i], [keyX]: xs[j] }) (null where it has
  * none), errors[i][j] the solver's message or null.
  */
-export function computeGrid(solve, id, inputs, keyX, xs, keyY, ys, k) {
-  const rows = ys.map((y) => computeSeries(solve, id, { ...inputs, [keyY]: y }, keyX, xs, [k]));
+export function computeGrid(solveSeries, id, inputs, keyX, xs, keyY, ys, k) {
+  const rows = ys.map((y) => computeSeries(solveSeries, id, { ...inputs, [keyY]: y }, keyX, xs, [k]));
   return { keyX, keyY, k, xs: [...xs], ys: [...ys], values: rows.map((r) => r.ys[k]), errors: rows.map((r) => r.points.map((p) => p.error)) };
 }
 

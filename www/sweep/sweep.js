@@ -44,7 +44,7 @@ const withUnit = (v, unit) => `${num(v)}${unit ? `${unit === "°" ? "" : " "}${u
 /**
  * Mounts the sweep panel in `host`.
  * @param {HTMLElement} host
- * @param {{ core, view, setInput: (key: string, text: string) => void, setLink: (sweep: string|null, plot: string|null) => void,
+ * @param {{ core, view, setInput: (key: string, text: string) => void, setLink: (sweep: string|null, plot: string|null, grid: string|null) => void,
  *           posted: () => void, hashFor: (key: string, text: string) => string }} api
  * @returns {{ open(options), changed(), payload(), destroy() }}
  */
@@ -61,7 +61,8 @@ export function mountSweep(host, api) {
   // the ends are read as the form's own box is (the core's one reader: units, a decimal comma, ×10^)
   const fromInput = el("input", { id: `${prefix}-from`, type: "text", inputmode: "decimal", autocomplete: "off", spellcheck: "false" });
   const toInput = el("input", { id: `${prefix}-to`, type: "text", inputmode: "decimal", autocomplete: "off", spellcheck: "false" });
-  const stepsInput = el("input", { id: `${prefix}-steps`, type: "number", step: "1", min: String(MIN_STEPS), max: String(MAX_STEPS), inputmode: "numeric" });
+  // the count too: the core's reader (a whole number, 2–500, refused in its words)
+  const stepsInput = el("input", { id: `${prefix}-steps`, type: "text", inputmode: "numeric", autocomplete: "off", spellcheck: "false" });
   const labelled = (input, text) => el("div", { class: "sweep-control" }, el("label", { for: input.id }, text), input);
   const plotBox = el("fieldset", { class: "sweep-plot" }, el("legend", {}, "Plot"));
   const message = el("p", { class: "sweep-message", role: "status" });
@@ -90,6 +91,14 @@ export function mountSweep(host, api) {
     base: () => {
       const b = baseInputs();
       return b.error ? b : { inputs: { ...b.inputs, [state.field.key]: currentValue() ?? state.field.default } };
+    },
+    // the table of result `key` was made (or closed: null): the link carries it, with its result first in plot=
+    made: (key) => {
+      if (key && state.plot[0] !== key && state.plot.includes(key)) {
+        state.plot = [key, ...state.plot.filter((k) => k !== key)];
+        buildPlotChoices();
+        run({ own: true });
+      } else writeLink();
     },
   });
   const section = el(
@@ -207,7 +216,7 @@ export function mountSweep(host, api) {
     else {
       const base = baseInputs();
       const value = currentValue() ?? state.field.default;
-      state.range = base.error ? chooseRange(() => null, id, {}, state.field, value) : chooseRange(core.solve, id, base.inputs, state.field, value);
+      state.range = base.error ? chooseRange(null, id, {}, state.field, value) : chooseRange(core.solveSeries, id, base.inputs, state.field, value);
     }
     fromInput.value = valueText(state.range.from);
     toInput.value = valueText(state.range.to);
@@ -220,10 +229,19 @@ export function mountSweep(host, api) {
     if (from.error) return from;
     const to = readEnd(toInput.value, "To");
     if (to.error) return to;
-    const steps = stepsInput.valueAsNumber;
-    if (from === to) return { error: "“From” and “To” are the same value: a sweep needs a range." };
-    if (!Number.isInteger(steps) || steps < MIN_STEPS || steps > MAX_STEPS) return { error: `“Steps” must be a whole number from ${MIN_STEPS} to ${MAX_STEPS}.` };
-    return { range: { from: from.value, to: to.value, steps } };
+    const steps = readCount(stepsInput.value, "Steps", MIN_STEPS, MAX_STEPS);
+    if (steps.error) return steps;
+    if (from.value === to.value) return { error: "“From” and “To” are the same value: a sweep needs a range." };
+    return { range: { from: from.value, to: to.value, steps: steps.value } };
+  }
+
+  /** A count typed in a box, read by the core (a whole number from `min` to `max`), or the core's words. */
+  function readCount(text, name, min, max) {
+    try {
+      return { value: core.readCount(id, text, min, max) };
+    } catch (e) {
+      return { error: `“${name}”: ${e.message.replace(/^text: /, "")}.` };
+    }
   }
 
   /** One end of the range, read by the core as the swept input's own box (its unit, bounds and message). */
@@ -242,7 +260,7 @@ export function mountSweep(host, api) {
   }
 
   function writeLink() {
-    api.setLink(formatSweep({ key: state.field.key, ...state.range }), state.plot.join(","));
+    api.setLink(formatSweep({ key: state.field.key, ...state.range }), state.plot.join(","), grid.linkValue());
   }
 
   /** The plotted results that fit two axes; a third unit is left out with a message. */
@@ -404,7 +422,7 @@ export function mountSweep(host, api) {
     if (!state.plot.length) notes.push("Choose a result to plot.");
     if (left.length) notes.push(`Not plotted: ${left.map((s) => s.label).join(", ")} (a third unit: two axes at most).`);
     const values = sweepValues(r.range, state.field.kind === "integer");
-    state.series = computeSeries(core.solve, id, base.inputs, state.field.key, values, shown.map((s) => s.key));
+    state.series = computeSeries(core.solveSeries, id, base.inputs, state.field.key, values, shown.map((s) => s.key));
     const compute = performance.now() - t0;
     state.cost = compute;
     splitBySize(shown, state.series);
@@ -513,7 +531,7 @@ export function mountSweep(host, api) {
 
   return {
     /** Opens (or re-aims) the sweep: a spec from the link (checked here against the example), the results to plot. */
-    open({ spec = null, plot = null, focus = false } = {}) {
+    open({ spec = null, plot = null, grid: gridSpec = null, focus = false } = {}) {
       const notes = [];
       const texts = view.form.texts();
       let field = fields.find((f) => fieldApplies(entry, f, texts)) ?? fields[0];
@@ -537,6 +555,12 @@ export function mountSweep(host, api) {
       if (!state.plot.length) state.plot = defaultPlot();
       buildPlotChoices();
       run({ own: true });
+      // grid= from the link: the table of plot='s first result, made now (none without it)
+      const wrong = gridSpec ? grid.restore(gridSpec) : (grid.clear(), null);
+      if (wrong) {
+        grid.clear();
+        notes.push(`Ignored grid=${gridSpec.key}:…: ${wrong}.`);
+      } else if (gridSpec) writeLink();
       if (notes.length) message.textContent = `${notes.join(" ")} ${message.textContent}`.trim();
       if (focus) heading.focus();
     },
@@ -563,7 +587,7 @@ export function mountSweep(host, api) {
       return { input: s.key, from: state.range.from, to: state.range.to, steps: state.range.steps, plot: [...s.plot], xs: [...s.xs], ys: Object.fromEntries(s.plot.map((k) => [k, [...s.ys[k]]])), errors: s.points.map((p) => p.error) };
     },
     /** The sweep as the link writes it: { sweep: "key:from:to:steps", plot: "a,b" } (the embed panel's snippets). */
-    linkEntries: () => (state.field && state.range ? { sweep: formatSweep({ key: state.field.key, ...state.range }), plot: state.plot.join(",") || null } : {}),
+    linkEntries: () => (state.field && state.range ? { sweep: formatSweep({ key: state.field.key, ...state.range }), plot: state.plot.join(",") || null, grid: grid.linkValue() } : {}),
     destroy() {
       clearTimeout(state.settle);
       themeObserver.disconnect();

@@ -6,12 +6,18 @@ use crate::error::Result;
 use crate::projection::krueger;
 use crate::projection::utm::{self, K0};
 use crate::projection::{snyder, Ellipsoid};
-use crate::solution::{Step, Value};
+use crate::solution::{steps_wanted, Step, Value};
 
 /// The figure's data: the zone's graticule on the map, k across the zone,
 /// and the classical series' error against the distance from the central
 /// meridian, all from the core functions.
 pub(super) fn figure_step(ell: &Ellipsoid, lat: f64, u: &utm::Forward) -> Result<Step> {
+    if !steps_wanted() {
+        // a sweep's series (no steps): nothing else reads the figure's data,
+        // and it cannot fail once `u` was projected (latitudes within the
+        // UTM range, offsets under 41° from the central meridian)
+        return Ok(Step::new("The zone on the map", ""));
+    }
     let fnorth = u.hemisphere.false_northing();
     let span = (u.dlon.abs().ceil()).max(3.0);
     let lon_step = if span <= 6.0 { 1.0 } else { 5.0 };
