@@ -237,10 +237,12 @@ pub(super) fn build(
 /// `w_min` (the `w` of rank [`top_rank`] among the windows that fit) of the
 /// levels `lv` from their `w` layer `wl` (this module's, or the pool's
 /// bands' put together): the layer's value `v` of that rank; the windows
-/// whose sums put them within their error of `[v(1 − 10⁻⁶), v(1 + 10⁻⁶)]`
-/// recomputed by the reference's window; the value of the rank among them,
-/// when it lies in that range (then it is the reference's); otherwise every
-/// window's reference `w` (not met in the tests).
+/// whose layer value lies within one bound for all windows (from the
+/// largest trace the photo's levels allow) of `[v(1 − 10⁻⁶), v(1 + 10⁻⁶)]`
+/// recomputed by the reference's window; the value of the rank among them
+/// when it lies in that range (then it is the reference's). Else the same
+/// with each window's own bound from its sums (a pass over the levels),
+/// and else every window's reference `w` (neither met in the tests).
 pub fn levels_w_min(
     lv: &Levels,
     width: usize,
@@ -267,6 +269,41 @@ pub fn levels_w_min(
     let (lo, hi) = (v * (1.0 - 1e-6), v * (1.0 + 1e-6));
     let m = (size - 2) * (size - 2);
     let (unit, slack) = (4.0 * lv.scale * lv.scale, lv.sum_slack(m));
+    // first from the layer alone, with one bound for every window: a
+    // trace is at most m·(max/scale)²/2 (|g′| ≤ max/2), so a layer value
+    // is within `e` of the reference's w (its f32 rounding included)
+    let top = f64::from(lv.max) / lv.scale;
+    let t_max = 1.01 * m as f64 * top * top / 2.0;
+    let e = 2.0 * (4.0 * slack + 1e-15) * t_max
+        + 4.0 * SINGULAR_TOL * t_max
+        + 2.0 * (4.0 * slack + 1e-14 + 2f64.powi(-23)) * v;
+    let (mut below, mut group) = (0, Vec::new());
+    for r in fit.r0..fit.r0 + fit.rows {
+        for (j, &x) in cells(r).iter().enumerate() {
+            let x = f64::from(x);
+            if x + e < lo {
+                below += 1;
+            } else if x - e <= hi {
+                group.push((fit.c0 + j, r));
+            }
+        }
+        if group.len() > 1 << 16 {
+            break;
+        }
+    }
+    if group.len() <= 1 << 16 {
+        let mut exact: Vec<f64> = group
+            .iter()
+            .filter_map(|&(c, r)| exact_measures(lv, width, size, c, r).map(|m| m.w))
+            .collect();
+        exact.sort_by(f64::total_cmp);
+        if let Some(&x) = k.checked_sub(below).and_then(|i| exact.get(i)) {
+            if (lo..=hi).contains(&x) {
+                return Some(x);
+            }
+        }
+    }
+    // (the bound of one window at a time: the sums again)
     let mut below = 0;
     let mut group = Vec::new();
     stream::forstner_rows_levels(view, size, |r, xx, yy, xy| {
