@@ -113,8 +113,12 @@ test("filters: the kernel moves over the clicked pixel's window of the photo; ev
   await idle(page);
   const pick = [300, 200];
   await clickPixel(page, ...pick);
+  // the offer fetches no topic wasm: the filters' module comes when the motion is asked for
+  await page.waitForSelector("#lab-motion-offer:not([hidden])");
+  assert.deepEqual(log.requests.filter((u) => /filters_bg[^/]*\.wasm/.test(u)), []);
   const { id, inputs, solution } = await openMotion("#lab-explain-link");
   assert.equal(id, "filter-window");
+  assert.equal(log.requests.filter((u) => /filters_bg[^/]*\.wasm/.test(u)).length, 1);
   const out = solution.result.output;
   const [fc, fr] = [solution.result.output_first_c, solution.result.output_first_r];
   const side = inputs.window.length;

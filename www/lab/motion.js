@@ -120,11 +120,23 @@ export function watchMotion(lab) {
     host.dataset.window = "";
   }
 
-  function show() {
+  async function show() {
     if (!current) return;
     open = true;
     panel.hidden = false;
     button.setAttribute("aria-expanded", "true");
+    const shown = current;
+    if (!shown.solution) {
+      // the topic's wasm is fetched when a student first asks for a motion, not with every explanation
+      where.textContent = `${shown.title}: loading…`;
+      const message = await solve(shown).catch((e) => e?.message ?? String(e));
+      if (current !== shown || !open) return;
+      if (message) {
+        where.textContent = `${shown.title}: ${message}`;
+        return;
+      }
+      where.textContent = windowWords(shown);
+    }
     if (!figures.firstChild) {
       figures.append(current.host);
       current.mounted.update(current.solution);
@@ -167,7 +179,7 @@ export function watchMotion(lab) {
       current = next;
       playing.href = `${href}&play=auto`;
       playing.setAttribute("aria-label", `${next.id}, open it playing`);
-      where.textContent = windowWords(next);
+      where.textContent = next.title;
       offer.hidden = false;
       if (reopen) show();
       return;
@@ -195,17 +207,13 @@ export function watchMotion(lab) {
   };
 }
 
-/** The example of `href` solved with its link's inputs, its figure mounted (not yet shown; `onFrame` after each frame drawn); null when it does not move. */
+/** The example of `href` with its link's texts and its figure mounted (not yet solved nor shown; `onFrame` after each frame drawn); null when it does not move. */
 async function prepare(href, pick, onFrame) {
   const { id, texts } = linkTexts(href);
-  const [{ loadCore, loadCatalog }, figs] = await Promise.all([import("../core.js"), import("../figures/index.js")]);
+  const [{ loadCatalog }, figs] = await Promise.all([import("../core.js"), import("../figures/index.js")]);
   const entry = (await loadCatalog()).find((e) => e.id === id);
   if (!entry) return null;
-  const core = await loadCore();
-  await Promise.all([core.load(id), figs.loadFigures(entry.module)]);
-  const parsed = core.parseInputs(id, texts);
-  if (Object.keys(parsed?.errors ?? {}).length) return null;
-  const solution = core.solve(id, parsed.inputs ?? {});
+  await figs.loadFigures(entry.module);
   const host = el("div", { class: "lab-motion-figures", "data-id": id });
   // every frame drawn (the controller's onStep) moves the outline on the photo
   const mounted = figs.mountFigures(host, id, { onStep: () => onFrame() });
@@ -213,7 +221,20 @@ async function prepare(href, pick, onFrame) {
     mounted?.destroy();
     return null;
   }
-  return { href, id, family: entry.lab, title: entry.title, inputs: parsed.inputs, solution, mounted, host, pick };
+  return { href, id, texts, family: entry.lab, title: entry.title, inputs: null, solution: null, mounted, host, pick };
+}
+
+/** Solves the prepared example with its link's inputs (the page's core, `solve(id, inputs)`): null, or what went wrong in words. */
+async function solve(p) {
+  const { loadCore } = await import("../core.js");
+  const core = await loadCore();
+  await core.load(p.id);
+  const parsed = core.parseInputs(p.id, p.texts);
+  const errors = Object.entries(parsed?.errors ?? {});
+  if (errors.length) return `the link's inputs are not valid (${errors.map(([k, m]) => `${k}: ${m}`).join("; ")})`;
+  p.inputs = parsed.inputs;
+  p.solution = core.solve(p.id, parsed.inputs ?? {});
+  return null;
 }
 
 /** What the panel shows, in words: the example and where its window is on the photo. */
