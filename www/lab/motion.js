@@ -16,6 +16,7 @@
 
 import { el } from "../dom.js";
 import { parseHash } from "../url.js";
+import { testData } from "../test-hooks.js";
 
 /** The marker of this module's shapes on the photo view (the families' own shapes stay). */
 const OWN = "labMotion";
@@ -95,7 +96,7 @@ export function watchMotion(lab) {
     const viewer = lab.viewer;
     if (!viewer) return;
     const boxes = open && current ? windowBoxes(current.family, current.pick, current.inputs, current.solution, current.mounted.frame?.() ?? null) : [];
-    host.dataset.window = boxes.map((b) => [b.c0, b.r0, b.w, b.h].join(",")).join(" ");
+    testData(host, "window", boxes.map((b) => [b.c0, b.r0, b.w, b.h].join(",")).join(" "));
     const base = ownShapes(viewer);
     if (!boxes.length && base.length === viewer.shapes.length) return;
     viewer.setShapes([...base, ...outline(boxes)]);
@@ -117,7 +118,7 @@ export function watchMotion(lab) {
     current = null;
     figures.replaceChildren();
     offer.hidden = true;
-    host.dataset.window = "";
+    testData(host, "window", "");
   }
 
   async function show() {
