@@ -18,6 +18,10 @@ function offer(worker) {
     worker.postMessage({ type: "skip-waiting" });
   });
   document.body.append(notice);
+  // a class, not `html:has(.update-notice)`: a :has() over the document makes
+  // every text change anywhere recalculate the document's style (2 ms a frame
+  // of a figure's motion, docs/figures.md)
+  document.documentElement.classList.add("has-update-notice");
 }
 
 function watch(registration) {
