@@ -171,6 +171,10 @@ describe("the sweep", { timeout: TEST_TIMEOUT * 4 }, () => {
       if (!(await page.$eval(".sweep-grid", (d) => d.open))) await page.click(".sweep-grid summary");
       await page.selectOption("[id$=-grid-field]", "focal_length_mm");
       await page.selectOption("[id$=-grid-result]", "gsd_cm");
+      // its ends too are read as the second input's own box: its bounds, in the reader's words
+      await page.fill("[id$=-grid-from]", "-5");
+      await page.click("[data-tool=sweep-grid]");
+      assert.match(await page.textContent(".sweep-grid .sweep-message"), /^“From”: must be greater than 0/);
       await page.fill("[id$=-grid-from]", "100");
       await page.fill("[id$=-grid-to]", "200");
       await page.fill("[id$=-grid-steps]", "3");

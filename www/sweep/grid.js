@@ -8,7 +8,7 @@
 import { el } from "../dom.js";
 import { num } from "../figures/data-view.js";
 import { SIGNED_NEGATIVE, rgbText } from "../colour-scales.js";
-import { chooseRange, computeGrid, formatSweep, sweepableFields, sweepValues } from "./series.js";
+import { chooseRange, computeGrid, formatSweep, readEnd, sweepableFields, sweepValues } from "./series.js";
 import { MAX_GRID_ROWS } from "./link.js";
 
 /** Columns and rows of the table at most (a phone's width; a solve per cell). */
@@ -28,8 +28,10 @@ export function gridFold(ctx) {
   const { core, id, entry, prefix } = ctx;
   const fields = sweepableFields(entry);
   const second = el("select", { id: `${prefix}-grid-field`, class: "keep-enabled" });
-  const from = el("input", { id: `${prefix}-grid-from`, type: "number", step: "any", class: "keep-enabled" });
-  const to = el("input", { id: `${prefix}-grid-to`, type: "number", step: "any", class: "keep-enabled" });
+  // the ends are read as the second input's own box (the core's reader: a unit, a decimal comma; its bounds)
+  const textBox = (name) => el("input", { id: `${prefix}-grid-${name}`, type: "text", inputmode: "decimal", autocomplete: "off", spellcheck: "false", class: "keep-enabled" });
+  const from = textBox("from");
+  const to = textBox("to");
   // a count: read by the core as the sweep's Steps (a whole number, 2–11, refused in its words)
   const steps = el("input", { id: `${prefix}-grid-steps`, type: "text", inputmode: "numeric", autocomplete: "off", spellcheck: "false", value: "6", class: "keep-enabled" });
   const result = el("select", { id: `${prefix}-grid-result`, class: "keep-enabled" });
@@ -102,17 +104,21 @@ export function gridFold(ctx) {
       return fail(`“Rows”: ${e.message.replace(/^text: /, "")}.`);
     }
     if (!f2 || !r) return fail("Choose a second input and a result.");
-    if (!Number.isFinite(from.valueAsNumber) || !Number.isFinite(to.valueAsNumber) || from.valueAsNumber === to.valueAsNumber) return fail("“From” and “To” must be two different numbers.");
+    const a = readEnd(core.parseInputs, id, f2.key, from.value, "From");
+    if (a.error) return fail(a.error);
+    const b = readEnd(core.parseInputs, id, f2.key, to.value, "To");
+    if (b.error) return fail(b.error);
+    if (a.value === b.value) return fail("“From” and “To” are the same value: the table needs a range.");
     const { field, range } = ctx.first();
     const xs = sweepValues({ ...range, steps: Math.min(range.steps, MAX_CELLS_SIDE) }, field.kind === "integer");
-    const ys = sweepValues({ from: from.valueAsNumber, to: to.valueAsNumber, steps: n }, f2.kind === "integer");
+    const ys = sweepValues({ from: a.value, to: b.value, steps: n }, f2.kind === "integer");
     const inputs = { ...base.inputs };
     delete inputs[f2.key];
     const grid = computeGrid(core.solveSeries, id, inputs, field.key, xs, f2.key, ys, r.key);
     out.replaceChildren(table(grid, field, f2, r));
     const bad = grid.errors.flat().filter(Boolean).length;
     message.textContent = `${ys.length} × ${xs.length} solutions${bad ? `, ${bad} without a solution (their cells say so; the message is in each cell’s title and in the Data table of the sweep)` : ""}.`;
-    shown = { key: f2.key, from: from.valueAsNumber, to: to.valueAsNumber, steps: n, result: r.key };
+    shown = { key: f2.key, from: a.value, to: b.value, steps: n, result: r.key };
     return true;
   }
 

@@ -125,6 +125,24 @@ export function numericResultKeys(solution) {
     .map(([k]) => k);
 }
 
+/**
+ * One end of a range typed in a box, read by the core as input `key`'s own
+ * box (`parseInputs`: its unit, a decimal comma, its bounds): { value }, or
+ * { error } in the reader's words, named by the box (`name`: "From").
+ */
+export function readEnd(parseInputs, id, key, text, name) {
+  let r;
+  try {
+    r = parseInputs(id, { [key]: text });
+  } catch (e) {
+    return { error: `“${name}”: ${messageOf(e)}` };
+  }
+  const v = r.inputs?.[key];
+  if (typeof v === "number") return { value: v };
+  const m = r.errors?.[key] ?? "not a number";
+  return { error: `“${name}”: ${m.startsWith(`${key}: `) ? m.slice(key.length + 2) : m}` };
+}
+
 /** An error's message, whatever was thrown. */
 function messageOf(e) {
   return e && typeof e.message === "string" ? e.message : String(e);

@@ -20,6 +20,7 @@ import {
   checkSweep,
   chooseRange,
   computeSeries,
+  readEnd as readTypedEnd,
   fieldApplies,
   formatSweep,
   MAX_PLOTTED,
@@ -246,17 +247,7 @@ export function mountSweep(host, api) {
 
   /** One end of the range, read by the core as the swept input's own box (its unit, bounds and message). */
   function readEnd(text, name) {
-    const key = state.field.key;
-    let r;
-    try {
-      r = core.parseInputs(id, { [key]: text });
-    } catch (e) {
-      return { error: `“${name}”: ${e.message}` };
-    }
-    const v = r.inputs?.[key];
-    if (typeof v === "number") return { value: v };
-    const m = r.errors?.[key] ?? "not a number";
-    return { error: `“${name}”: ${m.startsWith(`${key}: `) ? m.slice(key.length + 2) : m}` };
+    return readTypedEnd(core.parseInputs, id, state.field.key, text, name);
   }
 
   function writeLink() {
