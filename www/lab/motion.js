@@ -14,6 +14,8 @@
 // (every family writes its explanation there: showExplain, or its own table
 // with links), so no family knows of it.
 
+import { loadCatalog, loadCore } from "../core.js";
+import { loadFigures, mountFigures } from "../figures/index.js";
 import { el } from "../dom.js";
 import { parseHash } from "../url.js";
 import { testData } from "../test-hooks.js";
@@ -211,13 +213,12 @@ export function watchMotion(lab) {
 /** The example of `href` with its link's texts and its figure mounted (not yet solved nor shown; `onFrame` after each frame drawn); null when it does not move. */
 async function prepare(href, pick, onFrame) {
   const { id, texts } = linkTexts(href);
-  const [{ loadCatalog }, figs] = await Promise.all([import("../core.js"), import("../figures/index.js")]);
   const entry = (await loadCatalog()).find((e) => e.id === id);
   if (!entry) return null;
-  await figs.loadFigures(entry.module);
+  await loadFigures(entry.module);
   const host = el("div", { class: "lab-motion-figures", "data-id": id });
   // every frame drawn (the controller's onStep) moves the outline on the photo
-  const mounted = figs.mountFigures(host, id, { onStep: () => onFrame() });
+  const mounted = mountFigures(host, id, { onStep: () => onFrame() });
   if (!mounted?.hasMotion) {
     mounted?.destroy();
     return null;
@@ -227,7 +228,6 @@ async function prepare(href, pick, onFrame) {
 
 /** Solves the prepared example with its link's inputs (the page's core, `solve(id, inputs)`): null, or what went wrong in words. */
 async function solve(p) {
-  const { loadCore } = await import("../core.js");
   const core = await loadCore();
   await core.load(p.id);
   const parsed = core.parseInputs(p.id, p.texts);
