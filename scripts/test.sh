@@ -32,4 +32,6 @@ node --test tests/unit/
 step "build the page"
 SKIP_SETUP=1 bash scripts/build.sh
 step "end-to-end tests of the page in Chromium"
-node --test --test-concurrency=1 tests/e2e/
+# two files at a time: most of a page test is waiting (loads, frames, idle
+# callbacks), and two Chromiums keep both cores busy
+node --test --test-concurrency=2 tests/e2e/
