@@ -72,8 +72,14 @@ pub fn js_kind(v: &JsValue) -> &'static str {
 /// Argument `what` of an export, which must be a string; `meaning` says
 /// what it is for ("naming an example"). Every string argument of the
 /// exports (and of the lab's) comes through here: wasm-bindgen's own `&str`
-/// would copy a non-string into wasm memory and trap.
-pub fn string_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
+/// would copy a non-string into wasm memory and trap. Not an export itself:
+/// `what` and `meaning` are the export's own words (literals), and the JS
+/// value is the `JsValue`.
+pub fn string_arg(
+    what: &'static str,
+    meaning: &'static str,
+    v: &JsValue,
+) -> Result<String, JsError> {
     v.as_string().ok_or_else(|| {
         JsError::new(&format!(
             "{what}: must be a string {meaning}, got {}",
@@ -88,7 +94,7 @@ const LONGEST_NAME: usize = 64;
 
 /// A string argument that names something (an id, a code), cut short when
 /// it is too long to name anything.
-fn name_arg(what: &str, meaning: &str, v: &JsValue) -> Result<String, JsError> {
+fn name_arg(what: &'static str, meaning: &'static str, v: &JsValue) -> Result<String, JsError> {
     let s = string_arg(what, meaning, v)?;
     Ok(if s.chars().count() > LONGEST_NAME {
         crate::read::short(&s)

@@ -576,7 +576,7 @@ fn numbers_arg(args: &JsValue, key: &str) -> Result<Vec<f64>, JsError> {
     Ok(out)
 }
 
-fn str_arg(args: &JsValue, key: &str, what: &str) -> Result<String, JsError> {
+fn str_arg(args: &JsValue, key: &'static str, what: &'static str) -> Result<String, JsError> {
     string_arg(key, what, &field(args, key))
 }
 
