@@ -168,7 +168,7 @@ export function gridFold(ctx) {
       "table",
       { class: "figure-table sweep-grid-table", id: `${prefix}-grid-table` },
       el("caption", { class: "visually-hidden" }, caption),
-      el("thead", {}, el("tr", {}, el("th", { scope: "col" }, `${fy.key} \\ ${fx.key}`), ...grid.xs.map((x) => el("th", { scope: "col" }, num(x))))),
+      el("thead", {}, el("tr", {}, el("th", { scope: "col", title: `${fieldText(fy)} down, ${fieldText(fx)} across` }, `${fy.unit || fy.label} ↓ ${fx.unit || fx.label} →`), ...grid.xs.map((x) => el("th", { scope: "col" }, num(x))))),
       el(
         "tbody",
         {},
