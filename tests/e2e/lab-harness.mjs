@@ -43,3 +43,21 @@ export async function clickPixel(page, c, r) {
   const p = await pixelPos(page, c, r);
   await page.mouse.click(p.x, p.y);
 }
+
+/** Förstner's w and q of the size×size window centred on (c, r): central differences over its interior (Example 13). */
+export function forstner(g, c, r, size) {
+  const a = (size - 1) / 2;
+  let [xx, xy, yy] = [0, 0, 0];
+  for (let y = r - a + 1; y <= r + a - 1; y++) {
+    for (let x = c - a + 1; x <= c + a - 1; x++) {
+      const gx = (g(x + 1, y) - g(x - 1, y)) / 2;
+      const gy = (g(x, y + 1) - g(x, y - 1)) / 2;
+      xx += gx * gx;
+      xy += gx * gy;
+      yy += gy * gy;
+    }
+  }
+  const det = xx * yy - xy * xy;
+  const tr = xx + yy;
+  return { w: det / tr, q: (4 * det) / (tr * tr) };
+}

@@ -2,8 +2,9 @@
 // JPEGs with each EXIF orientation 1–8 shown upright (the size Chromium
 // itself gives them, the info line says what was done); WebP, BMP and GIF
 // open; a HEIC and an AVIF are refused with the way to a JPEG and the lab
-// keeps working; a 12 MP JPEG opens as it is; a 48 MP portrait JPEG is
-// offered reduced 2× and opens at 3024 × 4032 when accepted. The large
+// keeps working; a 12 MP JPEG opens as it is and Förstner runs over it end
+// to end; a 48 MP portrait JPEG is offered reduced 2× and opens at
+// 3024 × 4032 when accepted. The large
 // JPEGs are made here by Chromium's encoder (nothing big in git).
 
 import { test, before, after } from "node:test";
@@ -11,7 +12,7 @@ import assert from "node:assert/strict";
 import fs from "node:fs";
 import path from "node:path";
 import { start, TEST_TIMEOUT } from "./harness.mjs";
-import { idle, openLab, pixelPos } from "./lab-harness.mjs";
+import { idle, openLab, pixelPos, clickPixel, forstner } from "./lab-harness.mjs";
 
 const CORPUS = path.resolve("lab/tests/corpus");
 let env;
@@ -36,6 +37,7 @@ async function pick(name) {
 }
 
 const grey = (box) => page.evaluate(async (b) => (await import("./lab/lab.js")).greyForTests(b), box);
+const layerAt = (name, pixels) => page.evaluate(async ([n, p]) => (await import("./lab/lab.js")).layerForTests(n, p), [name, pixels]);
 
 /** The orientation JPEGs' stored pixels (lab/tests/decode.rs block6): 24 × 16 in six flat 8×8 blocks. */
 const block6 = (x, y) => 20 + 40 * (Math.floor(x / 8) + 3 * Math.floor(y / 8));
@@ -158,6 +160,47 @@ async function dropJpeg(name, w, h, orientation = 0) {
   }, [name, w, h, orientation]);
 }
 
+/**
+ * Förstner over the whole open 12 MP colour photo as a student runs it (the
+ * map by bands, the photo's own threshold, its points): w and q at a white
+ * square's corners as Example 13 works them out here from the photo's
+ * greys, points found, and a clicked pixel explained with the layer's number.
+ */
+async function forstnerEndToEnd() {
+  await page.evaluate(() => delete document.body.dataset.points);
+  await page.selectOption("#lab-family", "interest");
+  await page.selectOption("#lab-interest", "forstner");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.points !== undefined && document.body.dataset.forstnerLive !== "busy", null, { timeout: 120_000 });
+  await idle(page);
+  assert.ok(Number(await page.evaluate(() => document.body.dataset.points)) > 0, "points found");
+  // dropJpeg's white 32 × 32 squares: rows of 64, every 128 columns, from column 64 on even rows
+  const worked = async (c, r) => {
+    const box = await grey([c - 3, r - 3, 7, 7]);
+    return forstner((x, y) => box[(y - r + 3) * 7 + (x - c + 3)], c, r, 5);
+  };
+  const at = [[2112, 1024], [2143, 1024], [2112, 1055], [2143, 1055], [3167, 2079]];
+  const got = { w: await layerAt("w", at), q: await layerAt("q", at) };
+  for (const [i, [c, r]] of at.entries()) {
+    const want = await worked(c, r);
+    for (const k of ["w", "q"]) {
+      assert.ok(Number.isFinite(want[k]) && want.w > 0, `(${c}, ${r}): a corner has texture (${k} ${want[k]})`);
+      const v = got[k].values[i];
+      assert.ok(v !== null && Math.abs(v - want[k]) <= 1e-5 * Math.max(1, Math.abs(want[k])), `${k} at (${c}, ${r}): the lab ${v}, worked out here ${want[k]}`);
+    }
+  }
+  // a click at a corner explains the clicked pixel's w: the layer's number, the exact one beside it
+  await page.selectOption("#lab-layer", { label: "w" });
+  await clickPixel(page, 2112, 1024);
+  await page.waitForSelector("#lab-explain-link", { timeout: 30_000 });
+  const [, c, r] = (await page.textContent("#lab-explain")).match(/at column (\d+), row (\d+):/).map(Number);
+  const shown = Number(await page.getAttribute("#lab-explain-value", "data-value"));
+  assert.equal(Math.fround(shown), (await layerAt("w", [[c, r]])).values[0], `the explained w at (${c}, ${r}) is the layer's`);
+  const want = (await worked(c, r)).w;
+  assert.ok(Math.abs(shown - want) <= 1e-9 * Math.max(1, want), `explained w at (${c}, ${r}): ${shown}, worked out here ${want}`);
+  await page.selectOption("#lab-family", "filters");
+}
+
 /** The spread of the stage's grey values (0: nothing drawn). */
 const stageSpread = () => page.$eval("#lab-stage .lab-canvas", (cv) => {
   const d = cv.getContext("2d").getImageData(0, 0, cv.width, cv.height).data;
@@ -166,7 +209,7 @@ const stageSpread = () => page.$eval("#lab-stage .lab-canvas", (cv) => {
   return hi - lo;
 });
 
-test("a 12 MP phone JPEG opens as it is; a 48 MP portrait JPEG is offered reduced 2× and opens when accepted", { timeout: TEST_TIMEOUT * 4 }, async () => {
+test("a 12 MP phone JPEG opens as it is and Förstner runs over it end to end; a 48 MP portrait JPEG is offered reduced 2× and opens when accepted", { timeout: TEST_TIMEOUT * 4 }, async () => {
   await dropJpeg("phone-12mp.jpg", 4000, 3000);
   await page.waitForFunction(() => document.body.dataset.image === "phone-12mp.jpg", null, { timeout: 60_000 });
   await idle(page);
@@ -175,6 +218,7 @@ test("a 12 MP phone JPEG opens as it is; a 48 MP portrait JPEG is offered reduce
   assert.doesNotMatch(info, /reduced/);
   assert.equal(await page.locator("#lab-offer").count(), 0);
   assert.ok((await stageSpread()) > 150, "the stage shows the photo");
+  await forstnerEndToEnd();
   // 8064 × 6048 stored, EXIF 6: a portrait 6048 × 8064 (48.8 million pixels)
   await dropJpeg("camera-48mp.jpg", 8064, 6048, 6);
   await page.waitForSelector("#lab-offer", { timeout: 60_000 });

@@ -14,7 +14,7 @@ import fs from "node:fs";
 import path from "node:path";
 import zlib from "node:zlib";
 import { start, open, settled, TEST_TIMEOUT } from "./harness.mjs";
-import { idle, sample, openLab as openLabIn } from "./lab-harness.mjs";
+import { idle, sample, forstner, openLab as openLabIn } from "./lab-harness.mjs";
 
 const CORPUS = path.resolve("lab/tests/corpus");
 let env;
@@ -274,24 +274,6 @@ function median3(g, c, r) {
   const v = [];
   for (let j = -1; j <= 1; j++) for (let i = -1; i <= 1; i++) v.push(g(c + i, r + j));
   return v.sort((a, b) => a - b)[4];
-}
-
-/** Förstner's w and q of the size×size window centred on (c, r): central differences over its interior (Example 13). */
-function forstner(g, c, r, size) {
-  const a = (size - 1) / 2;
-  let [xx, xy, yy] = [0, 0, 0];
-  for (let y = r - a + 1; y <= r + a - 1; y++) {
-    for (let x = c - a + 1; x <= c + a - 1; x++) {
-      const gx = (g(x + 1, y) - g(x - 1, y)) / 2;
-      const gy = (g(x, y + 1) - g(x, y - 1)) / 2;
-      xx += gx * gx;
-      xy += gx * gy;
-      yy += gy * gy;
-    }
-  }
-  const det = xx * yy - xy * xy;
-  const tr = xx + yy;
-  return { w: det / tr, q: (4 * det) / (tr * tr) };
 }
 
 /** Moravec's mean of the four squared directional differences over the interior of the size×size window anchored at (c, r) (Example 14). */
