@@ -174,6 +174,25 @@ impl Levels {
         let max = f64::from(self.max).max(1.0);
         2.0 * (4.0 * max + 1.0 + terms as f64 + 8.0) * 2f64.powi(-53)
     }
+
+    /// The least level `n` whose grey is at least `threshold`: `n ≥ cut`
+    /// exactly when `n / scale ≥ threshold` in `f64` (the reference's
+    /// comparison of the divided grey). The division is correctly rounded,
+    /// so monotone in `n`: the levels on the upper side are those from one
+    /// cut on, `⌈scale·threshold⌉` moved by a step where the product or the
+    /// quotient rounds across it. Above every level: `2²⁵`.
+    pub fn cut(&self, threshold: f64) -> f32 {
+        const TOP: f64 = 33_554_432.0;
+        let s = self.scale;
+        let mut k = (threshold * s).ceil().clamp(0.0, TOP);
+        while k > 0.0 && (k - 1.0) / s >= threshold {
+            k -= 1.0;
+        }
+        while k < TOP && k / s < threshold {
+            k += 1.0;
+        }
+        k as f32
+    }
 }
 
 /// `values` as [`Levels`] when they are such numbers over one of the

@@ -532,3 +532,90 @@ fn colour_photos_take_the_fast_forstner() {
         assert!(found > 0 || img.width() < 30, "{name}: no points at all");
     }
 }
+
+/// `Levels::cut`: `n ≥ cut` exactly when `n / scale ≥ t` in `f64` (the
+/// reference's comparison), at the edges — `t` every grey `n / scale` of a
+/// colour photo (0 … 255 000 over 1000), and the `f64` next to it on each
+/// side — for the levels around it; and the cut is `⌈scale·t⌉` but where
+/// the product rounds across a whole number.
+#[test]
+fn a_threshold_on_levels_is_the_reference_comparison() {
+    let mut moved = 0;
+    for scale in [1000.0, 4000.0, 1.0] {
+        let l = ops::Levels {
+            data: Vec::new(),
+            scale,
+            max: 0.0,
+        };
+        let top: u32 = if scale == 1.0 { 65_535 } else { 255_000 };
+        for n in (0..=top).step_by(if scale == 4000.0 { 7 } else { 1 }) {
+            let g = f64::from(n) / scale;
+            for t in [g, g.next_down(), g.next_up(), g - 0.4 / scale] {
+                let cut = l.cut(t);
+                assert_eq!(cut.fract(), 0.0);
+                for m in n.saturating_sub(2)..=n + 2 {
+                    let m = m as f32;
+                    assert_eq!(
+                        m >= cut,
+                        f64::from(m) / scale >= t,
+                        "scale {scale}, threshold {t}, level {m}: cut {cut}"
+                    );
+                }
+                if f64::from(cut) != (t * scale).ceil().max(0.0) {
+                    moved += 1;
+                }
+            }
+        }
+    }
+    // the plain ceiling is wrong for some greys: the search moves it
+    assert!(moved > 0, "{moved}");
+    let l = ops::levels_of(&[0.0, 255.0]).unwrap();
+    assert_eq!(
+        (l.cut(-3.0), l.cut(0.0), l.cut(1e30)),
+        (0.0, 0.0, 33_554_432.0)
+    );
+}
+
+/// Boundary tracing on a colour photo's levels: the region, its boundary
+/// (pixels, chain code, area) and length exactly the reference's
+/// (`chain::region_at` on the greys, `chain::trace`), thresholds at the
+/// greys themselves and beside them.
+#[test]
+fn colour_photos_take_the_fast_boundary() {
+    use photogrammetry_playground::chain::{self, Connectivity};
+    let mut traced = 0;
+    for (name, img, _) in images() {
+        let (w, h) = (img.width(), img.height());
+        let mid = img.get(w / 2, h / 2).unwrap();
+        let levels = ops::levels_of(img.data()).expect("levels");
+        for threshold in [-1.0, 60.0, 128.0, mid, mid.next_up(), mid.next_down(), 1e6] {
+            for (c, r) in [(0, 0), (w / 2, h / 2), (w - 1, h / 3), (w / 5, h - 1)] {
+                let keep = std::cell::OnceCell::new();
+                keep.set(Some(levels.clone())).unwrap();
+                let image = Image::with_bytes(&img, None).with_levels(&keep);
+                let t = ops::boundary(&image, threshold, c, r).unwrap();
+                let mask = chain::region_at(&img, threshold, c, r, Connectivity::Eight).unwrap();
+                let want = chain::trace(&mask, Connectivity::Eight).remove(0);
+                let what = format!("{name} threshold {threshold} at ({c}, {r})");
+                check(
+                    &what,
+                    &t.region,
+                    |cc, rr| mask.get(cc, rr),
+                    |g, v| f64::from(g) == v,
+                );
+                assert_eq!(t.boundary, want, "{what}");
+                assert_eq!(
+                    t.length,
+                    chain::length(&want.code, Connectivity::Eight),
+                    "{what}"
+                );
+                traced += want.pixels.len();
+            }
+        }
+    }
+    assert!(traced > 1000, "{traced} boundary pixels");
+    // out of the image: the reference's message
+    let img = colour(7, 5, 1);
+    let e = ops::boundary(&img, 100.0, 7, 0).unwrap_err().to_string();
+    assert!(e.contains("(7, 0) is outside the 7×5 image"), "{e}");
+}

@@ -1,11 +1,12 @@
 //! Boundary tracing: threshold, the region at the picked pixel, its outer
 //! boundary with chain code, length and shape.
 //!
-//! On an 8-bit image: the region filled on bytes, its borders by the
-//! core's `chain::fast::contours` (Suzuki–Abe), the outer one walked the
-//! other way round from the same start — `chain::trace`'s boundary
-//! (`tests/web_fast.rs` ties the two). Otherwise `chain::region_at` and
-//! `chain::trace`.
+//! On an 8-bit image, and on a colour photo's levels (the threshold as a
+//! level, [`Levels::cut`]): the region filled on bytes or levels, its
+//! borders by the core's `chain::fast::contours` (Suzuki–Abe), the outer
+//! one walked the other way round from the same start — `chain::trace`'s
+//! boundary (`tests/web_fast.rs` ties the two). Otherwise
+//! `chain::region_at` and `chain::trace`.
 
 use super::*;
 use photogrammetry_playground::chain::{self, fast as cfast, Connectivity};
@@ -41,10 +42,18 @@ pub fn boundary<'a>(
     }
     let img = img.into();
     let (w, h) = (img.width(), img.height());
+    if c >= w || r >= h {
+        return Err(outside(c, r, w, h));
+    }
     let conn = Connectivity::Eight;
-    let (region, boundary) = match img.gray() {
-        Some(g) => {
-            let (mask, area) = fill(g, threshold, c, r).ok_or_else(|| outside(c, r, w, h))?;
+    let (mask, area) = match (img.gray(), img.levels()) {
+        (Some(g), _) => fill_bytes(g, threshold, c, r),
+        (None, Some(l)) => fill_levels(l, w, h, threshold, c, r),
+        (None, None) => None,
+    }
+    .map_or((None, 0), |(m, a)| (Some(m), a));
+    let (region, boundary) = match mask {
+        Some(mask) => {
             let b = outer(&mask, w, h, area)?;
             let data = mask.iter().map(|&m| f32::from(m)).collect();
             (Layer::new("region", whole(w, h), data, false), b)
@@ -73,20 +82,50 @@ pub fn boundary<'a>(
     })
 }
 
-/// The 8-connected region of the pixels on `(c, r)`'s side of `threshold`
-/// (`v ≥ threshold` or not, as `chain::region_at`): a mask of 1 and 0, and
-/// its pixel count. A scan-line fill: each seed is widened to its whole run
-/// of the row, then the rows above and below are searched over that run
-/// and one more pixel on each side (the diagonal neighbours).
-fn fill(g: Gray, threshold: f64, c: usize, r: usize) -> Option<(Vec<u8>, usize)> {
-    let (w, h) = (g.width(), g.height());
-    let data = g.data();
+/// [`fill`] on an 8-bit image: a table of each byte's side.
+fn fill_bytes(g: Gray, threshold: f64, c: usize, r: usize) -> Option<(Vec<u8>, usize)> {
+    let (w, h, data) = (g.width(), g.height(), g.data());
+    let side: Vec<bool> = (0..=255u8).map(|v| f64::from(v) >= threshold).collect();
+    let want = side[usize::from(*data.get(r * w + c).filter(|_| c < w)?)];
+    let same: Vec<bool> = side.iter().map(|&s| s == want).collect();
+    fill(w, h, c, r, |i| same[usize::from(data[i])])
+}
+
+/// [`fill`] on a colour photo's levels: the threshold compared as a level
+/// ([`Levels::cut`]: `n ≥ cut` exactly when the grey `n / scale` is at
+/// least the threshold).
+fn fill_levels(
+    l: &Levels,
+    w: usize,
+    h: usize,
+    threshold: f64,
+    c: usize,
+    r: usize,
+) -> Option<(Vec<u8>, usize)> {
+    let (cut, data) = (l.cut(threshold), &l.data[..]);
+    if data.len() != w * h {
+        return None;
+    }
+    let want = *data.get(r * w + c).filter(|_| c < w)? >= cut;
+    fill(w, h, c, r, |i| (data[i] >= cut) == want)
+}
+
+/// The 8-connected region of the pixels on `(c, r)`'s side of the
+/// threshold (`same(i)` for pixel `i = row·w + column`; `v ≥ threshold` or
+/// not, as `chain::region_at`): a mask of 1 and 0, and its pixel count. A
+/// scan-line fill: each seed is widened to its whole run of the row, then
+/// the rows above and below are searched over that run and one more pixel
+/// on each side (the diagonal neighbours).
+fn fill(
+    w: usize,
+    h: usize,
+    c: usize,
+    r: usize,
+    same: impl Fn(usize) -> bool,
+) -> Option<(Vec<u8>, usize)> {
     if c >= w || r >= h {
         return None;
     }
-    let side: Vec<bool> = (0..=255u8).map(|v| f64::from(v) >= threshold).collect();
-    let want = side[usize::from(data[r * w + c])];
-    let same: Vec<bool> = side.iter().map(|&s| s == want).collect();
     let mut mask = vec![0u8; w * h];
     let mut stack = vec![(c, r)];
     let mut area = 0;
@@ -96,10 +135,10 @@ fn fill(g: Gray, threshold: f64, c: usize, r: usize) -> Option<(Vec<u8>, usize)>
             continue;
         }
         let (mut x0, mut x1) = (x, x);
-        while x0 > 0 && mask[row + x0 - 1] == 0 && same[usize::from(data[row + x0 - 1])] {
+        while x0 > 0 && mask[row + x0 - 1] == 0 && same(row + x0 - 1) {
             x0 -= 1;
         }
-        while x1 + 1 < w && mask[row + x1 + 1] == 0 && same[usize::from(data[row + x1 + 1])] {
+        while x1 + 1 < w && mask[row + x1 + 1] == 0 && same(row + x1 + 1) {
             x1 += 1;
         }
         mask[row + x0..=row + x1].fill(1);
@@ -112,7 +151,7 @@ fn fill(g: Gray, threshold: f64, c: usize, r: usize) -> Option<(Vec<u8>, usize)>
             let nrow = ny * w;
             let mut in_run = false;
             for nx in s0..=s1 {
-                let open = mask[nrow + nx] == 0 && same[usize::from(data[nrow + nx])];
+                let open = mask[nrow + nx] == 0 && same(nrow + nx);
                 if open && !in_run {
                     stack.push((nx, ny));
                 }
