@@ -619,3 +619,73 @@ fn colour_photos_take_the_fast_boundary() {
     let e = ops::boundary(&img, 100.0, 7, 0).unwrap_err().to_string();
     assert!(e.contains("(7, 0) is outside the 7×5 image"), "{e}");
 }
+
+/// NCC on a colour photo's levels (exact integer sums, `ρ` scale-free):
+/// the surface within half an `f32` step plus 10⁻¹² of the reference's
+/// `correlate_2d` on the greys, flat windows where the reference's are;
+/// the best position and its `ρ` exactly the reference's.
+#[test]
+fn colour_photos_take_the_fast_ncc() {
+    use photogrammetry_playground::correlation;
+    use photogrammetry_playground::matching::Model;
+    let mut compared = 0;
+    for (name, img, _) in images() {
+        let (w, h) = (img.width(), img.height());
+        for n in [3, 5, 9] {
+            if w < n + 2 || h < n + 2 {
+                continue;
+            }
+            let t = ops::Rect {
+                c0: (w / 3).min(w - n),
+                r0: (h / 3).min(h - n),
+                width: n,
+                height: n,
+            };
+            let reach = 6;
+            let s0 = (t.c0.saturating_sub(reach), t.r0.saturating_sub(reach));
+            let s = ops::Rect {
+                c0: s0.0,
+                r0: s0.1,
+                width: (n + 2 * reach).min(w - s0.0),
+                height: (n + 2 * reach).min(h - s0.1),
+            };
+            // the same photo, and the photo shifted by (1, 2)
+            let other = Grid::from_fn(w, h, |cc, rr| {
+                img.get((cc + 1).min(w - 1), (rr + 2).min(h - 1)).unwrap()
+            });
+            for (bname, b) in [("same", &img), ("shifted", &other)] {
+                assert!(ops::levels_of(b.data()).is_some(), "{name}: levels");
+                let m = ops::correlate(&img, t, b, s, Model::ShiftRadiometric).unwrap();
+                let tg = img.window(t.c0, t.r0, n, n).unwrap();
+                let sg = b.window(s.c0, s.r0, s.width, s.height).unwrap();
+                let want = correlation::correlate_2d(&tg, &sg).unwrap();
+                let what = format!("NCC {n}×{n} {bname} {name}");
+                assert_eq!(
+                    (m.surface.width, m.surface.height),
+                    (want.width, want.height),
+                    "{what}"
+                );
+                for j in 0..want.height {
+                    for i in 0..want.width {
+                        let g = m.surface.rho[j * want.width + i];
+                        match want.rho(i, j) {
+                            Some(v) => assert!(
+                                near(1e-12)(g, v),
+                                "{what} ({i}, {j}): layer {g}, reference {v}"
+                            ),
+                            None => assert!(g.is_nan(), "{what} ({i}, {j}): {g}, flat"),
+                        }
+                        compared += 1;
+                    }
+                }
+                assert_eq!(m.surface.best, want.best, "{what}");
+                assert_eq!(
+                    m.surface.best_rho,
+                    want.best.and_then(|(i, j)| want.rho(i, j)),
+                    "{what}"
+                );
+            }
+        }
+    }
+    assert!(compared > 2000, "{compared}");
+}

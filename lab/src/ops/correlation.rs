@@ -7,7 +7,10 @@
 //! LSM use the reference's numbers (`correlation::ncc` of the windows at
 //! the positions within 10⁻⁶ of the fast maximum, the first largest in
 //! row-major order as `correlation::correlate_2d` picks it), so they are
-//! the reference's exactly. Other images take `correlation::correlate_2d`.
+//! the reference's exactly. A colour photo's levels (`ops::Levels`) take
+//! the same route with exact integer sums ([`zncc_levels`]: `ρ` is
+//! scale-free, so the levels serve as they are). Other images take
+//! `correlation::correlate_2d`.
 
 use super::*;
 use photogrammetry_playground::correlation::{self, fast as cfast};
@@ -47,16 +50,34 @@ fn exact_rho(t: &Grid, s: &Grid, i: usize, j: usize) -> Option<f64> {
     correlation::ncc(t.data(), win.data()).ok()?.rho
 }
 
-/// The surface of `t` over `s`: the fast path on bytes, the exact best.
-fn surface(t: &Grid, s: &Grid, bytes: Option<(&[u8], &[u8])>) -> Result<NccSurface> {
+/// The fast path's input: both boxes as bytes (8-bit images), or as a
+/// colour photo's levels (whole numbers; `ρ` is scale-free, so the levels
+/// serve as they are).
+enum Boxes {
+    Bytes(Vec<u8>, Vec<u8>),
+    Levels(Vec<i64>, Vec<i64>),
+}
+
+/// The surface of `t` over `s`: the fast path on bytes or levels, the
+/// exact best.
+fn surface(t: &Grid, s: &Grid, boxes: Option<Boxes>) -> Result<NccSurface> {
     let (tw, th, sw, sh) = (t.width(), t.height(), s.width(), s.height());
-    let fast = bytes.filter(|_| {
-        tw <= sw
-            && th <= sh
-            && tw * th <= cfast::MAX_TEMPLATE_PIXELS
-            && (sw - tw + 1) * (sh - th + 1) * tw * th <= correlation::MAX_PRODUCTS_2D
-    });
-    let Some((tb, sb)) = fast else {
+    let fits = tw <= sw
+        && th <= sh
+        && tw * th <= cfast::MAX_TEMPLATE_PIXELS
+        && (sw - tw + 1) * (sh - th + 1) * tw * th <= correlation::MAX_PRODUCTS_2D;
+    let (ow, oh) = (sw.saturating_sub(tw) + 1, sh.saturating_sub(th) + 1);
+    let mut rho = vec![0.0f32; if fits { ow * oh } else { 0 }];
+    let peak = match boxes.filter(|_| fits) {
+        Some(Boxes::Bytes(tb, sb)) => Some(cfast::zncc(
+            Gray::new("search", &sb, sw, sh)?,
+            Gray::new("template", &tb, tw, th)?,
+            &mut rho,
+        )?),
+        Some(Boxes::Levels(tl, sl)) => zncc_levels(&tl, (tw, th), &sl, (sw, sh), &mut rho),
+        None => None,
+    };
+    let Some(peak) = peak else {
         let r = correlation::correlate_2d(t, s)?;
         let rho = r
             .windows
@@ -72,13 +93,6 @@ fn surface(t: &Grid, s: &Grid, bytes: Option<(&[u8], &[u8])>) -> Result<NccSurfa
             best_rho,
         });
     };
-    let (ow, oh) = (sw - tw + 1, sh - th + 1);
-    let mut rho = vec![0.0f32; ow * oh];
-    let peak = cfast::zncc(
-        Gray::new("search", sb, sw, sh)?,
-        Gray::new("template", tb, tw, th)?,
-        &mut rho,
-    )?;
     // the fast ρ is within 10⁻⁷ of the reference's: the reference's best
     // is among the positions within 10⁻⁶ of the fast maximum
     let mut best: Option<((usize, usize), f64)> = None;
@@ -102,6 +116,99 @@ fn surface(t: &Grid, s: &Grid, bytes: Option<(&[u8], &[u8])>) -> Result<NccSurfa
         best: best.map(|b| b.0),
         best_rho: best.map(|b| b.1),
     })
+}
+
+/// `ρ` of a template of levels `t` (`tw × th`) at every position of the
+/// search levels `s` (`sw × sh`), into `out` (`(sw − tw + 1) × (sh − th + 1)`,
+/// `NaN` where the template or the window is flat), as
+/// `correlation::fast::zncc` does on bytes: `ΣI`, `ΣI²` of each window
+/// from sum tables, the cross sums `ΣI·T` direct, all exact `i64`
+/// integers, `n·ΣIT − ΣI·ΣT` and the variances exact in `i128`, then one
+/// `f64` quotient (within a few units of 10⁻¹⁶ of the exact `ρ`; the
+/// reference's, from deviations of the divided greys, is within its own
+/// roundings of it). The first largest `ρ` in row-major order, or
+/// `Some(None)` when every window is flat; `None` (take the reference)
+/// when the sums could leave `i64` (`max² · pixels ≥ 2⁶²`).
+fn zncc_levels(
+    t: &[i64],
+    (tw, th): (usize, usize),
+    s: &[i64],
+    (sw, sh): (usize, usize),
+    out: &mut [f32],
+) -> Option<Option<cfast::Peak>> {
+    let (ow, oh) = ((sw + 1).checked_sub(tw)?, (sh + 1).checked_sub(th)?);
+    if t.len() != tw * th || s.len() != sw * sh || out.len() != ow * oh || tw == 0 || th == 0 {
+        return None;
+    }
+    let max = t.iter().chain(s).fold(0i64, |m, &v| m.max(v.abs())) as f64;
+    if max * max * (sw * sh) as f64 >= 2f64.powi(62) {
+        return None;
+    }
+    let stride = sw + 1;
+    let mut s1 = vec![0i64; stride * (sh + 1)];
+    let mut s2 = vec![0i64; stride * (sh + 1)];
+    for (r, row) in s.chunks_exact(sw).enumerate() {
+        let (mut a, mut b) = (0i64, 0i64);
+        for (c, &v) in row.iter().enumerate() {
+            a += v;
+            b += v * v;
+            let i = (r + 1) * stride + c + 1;
+            s1[i] = s1[i - stride] + a;
+            s2[i] = s2[i - stride] + b;
+        }
+    }
+    let nn = (tw * th) as i128;
+    let st: i64 = t.iter().sum();
+    let st2: i64 = t.iter().map(|v| v * v).sum();
+    let (st, st2) = (i128::from(st), i128::from(st2));
+    let dt = (nn * st2 - st * st) as f64;
+    let mut best: Option<cfast::Peak> = None;
+    for (r, o) in out.chunks_exact_mut(ow).enumerate() {
+        for (c, ov) in o.iter_mut().enumerate() {
+            let mut sit = 0i64;
+            for (j, trow) in t.chunks_exact(tw).enumerate() {
+                let k = (r + j) * sw + c;
+                sit += trow
+                    .iter()
+                    .zip(&s[k..k + tw])
+                    .map(|(a, b)| a * b)
+                    .sum::<i64>();
+            }
+            let rect = |q: &[i64]| {
+                i128::from(
+                    q[(r + th) * stride + c + tw]
+                        - q[r * stride + c + tw]
+                        - q[(r + th) * stride + c]
+                        + q[r * stride + c],
+                )
+            };
+            let (si, si2) = (rect(&s1), rect(&s2));
+            let di = (nn * si2 - si * si) as f64;
+            let num = (nn * i128::from(sit) - si * st) as f64;
+            *ov = if di > 0.0 && dt > 0.0 {
+                let rho = (num / (di * dt).sqrt()).clamp(-1.0, 1.0) as f32;
+                if best.is_none_or(|b| rho > b.rho) {
+                    best = Some(cfast::Peak { c, r, rho });
+                }
+                rho
+            } else {
+                f32::NAN
+            };
+        }
+    }
+    Some(best)
+}
+
+/// The levels of a box of a colour photo (`None` for an 8-bit image).
+fn box_levels(img: &Image, r: Rect) -> Option<Vec<i64>> {
+    let l = img.levels()?;
+    let w = img.width();
+    let mut out = Vec::with_capacity(r.width * r.height);
+    for row in r.r0..r.r0 + r.height {
+        let k = row * w + r.c0;
+        out.extend(l.data.get(k..k + r.width)?.iter().map(|&n| n as i64));
+    }
+    Some(out)
 }
 
 /// The bytes of a box of an 8-bit image.
@@ -153,9 +260,13 @@ pub fn correlate<'a, 'b>(
     }
     let t = cut(a.grid(), "template", template)?;
     let s = cut(b.grid(), "search", search)?;
-    let tb = box_bytes(&a, template);
-    let sb = box_bytes(&b, search);
-    let surface = surface(&t, &s, tb.as_deref().zip(sb.as_deref()))?;
+    let boxes = match (box_bytes(&a, template), box_bytes(&b, search)) {
+        (Some(tb), Some(sb)) => Some(Boxes::Bytes(tb, sb)),
+        _ => box_levels(&a, template)
+            .zip(box_levels(&b, search))
+            .map(|(tl, sl)| Boxes::Levels(tl, sl)),
+    };
+    let surface = surface(&t, &s, boxes)?;
     let (hw, hh) = (template.width / 2, template.height / 2);
     let best = surface
         .best
