@@ -21,9 +21,109 @@
 //! `f64x2` per pixel. The output is stored as `f32`.
 
 use crate::error::{Error, Result};
-use crate::raster::{check_len, Gray};
+use crate::raster::{check_len, Gray, GrayF32};
 
 use super::Method;
+
+/// What the warps read: an 8-bit image ([`Gray`]) or whole-number levels
+/// over one scale ([`Levels`]: a colour photo's `n = 299·R + 587·G +
+/// 114·B` over 1000). Each value is read as `f64` (exact), interpolated as
+/// the reference interpolates, and the result divided by the scale once
+/// ([`Source::out`]).
+pub trait Source: Copy {
+    fn width(&self) -> usize;
+    fn height(&self) -> usize;
+    /// Pixel `i` (row-major) as `f64`, 0 outside.
+    fn get(&self, i: usize) -> f64;
+    /// Pixel `i`, unchecked.
+    ///
+    /// # Safety
+    /// `i < width · height`.
+    unsafe fn get_unchecked(&self, i: usize) -> f64;
+    /// An interpolated value of the levels as the output's grey.
+    fn out(&self, v: f64) -> f32;
+    /// Bilinear over a run of interior columns (see [`bilinear_scalar`]).
+    fn bilinear_run(self, m: &Affine, base: (f64, f64), c0: usize, run: &mut [f32]) {
+        bilinear_scalar(self, m, base, c0, run);
+    }
+    /// Bicubic over a run of interior columns (see [`bicubic_scalar`]).
+    fn bicubic_run(self, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: &mut [f32]) {
+        bicubic_scalar(self, m, base, c0, a, run);
+    }
+}
+
+impl Source for Gray<'_> {
+    fn width(&self) -> usize {
+        Gray::width(self)
+    }
+    fn height(&self) -> usize {
+        Gray::height(self)
+    }
+    fn get(&self, i: usize) -> f64 {
+        f64::from(self.data().get(i).copied().unwrap_or(0))
+    }
+    #[inline(always)]
+    unsafe fn get_unchecked(&self, i: usize) -> f64 {
+        debug_assert!(i < self.data().len());
+        f64::from(*self.data().get_unchecked(i))
+    }
+    #[inline(always)]
+    fn out(&self, v: f64) -> f32 {
+        v as f32
+    }
+    fn bilinear_run(self, m: &Affine, base: (f64, f64), c0: usize, run: &mut [f32]) {
+        bilinear_run(self, m, base, c0, run);
+    }
+    fn bicubic_run(self, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: &mut [f32]) {
+        bicubic_run(self, m, base, c0, a, run);
+    }
+}
+
+/// Whole-number levels `n` (exact in `f32`) whose greys are `n / scale`:
+/// interpolated in `f64` on `n` (the scalar runs), each result divided by
+/// `scale` once. Against the reference on the divided greys: the same
+/// expression scaled, so within a few `f64` roundings (≈ 10⁻¹⁵ relative
+/// of the neighbourhood's largest grey) before the `f32` rounding; nearest
+/// neighbours are the greys themselves.
+#[derive(Debug, Clone, Copy)]
+pub struct Levels<'a> {
+    img: GrayF32<'a>,
+    scale: f64,
+}
+
+impl<'a> Levels<'a> {
+    /// `img`'s values over `scale` (finite, greater than 0).
+    pub fn new(img: GrayF32<'a>, scale: f64) -> Result<Self> {
+        if !(scale.is_finite() && scale > 0.0) {
+            return Err(Error::input(
+                "scale",
+                "must be a finite number greater than 0",
+            ));
+        }
+        Ok(Levels { img, scale })
+    }
+}
+
+impl Source for Levels<'_> {
+    fn width(&self) -> usize {
+        self.img.width()
+    }
+    fn height(&self) -> usize {
+        self.img.height()
+    }
+    fn get(&self, i: usize) -> f64 {
+        f64::from(self.img.data().get(i).copied().unwrap_or(0.0))
+    }
+    #[inline(always)]
+    unsafe fn get_unchecked(&self, i: usize) -> f64 {
+        debug_assert!(i < self.img.data().len());
+        f64::from(*self.img.data().get_unchecked(i))
+    }
+    #[inline(always)]
+    fn out(&self, v: f64) -> f32 {
+        (v / self.scale) as f32
+    }
+}
 
 /// An affine output → input map `[[m00, m01, m02], [m10, m11, m12]]`.
 pub type Affine = [[f64; 3]; 2];
@@ -101,9 +201,10 @@ impl Rule {
 }
 
 /// One sample from a located neighbourhood.
-fn sample(src: &[u8], w: usize, method: Method, a: f64, loc: (usize, usize, f64, f64)) -> f32 {
+fn sample<S: Source>(src: S, method: Method, a: f64, loc: (usize, usize, f64, f64)) -> f32 {
     let (c, r, fu, fv) = loc;
-    let p = |i: usize, j: usize| f64::from(src.get((r + j) * w + c + i).copied().unwrap_or(0));
+    let w = src.width();
+    let p = |i: usize, j: usize| src.get((r + j) * w + c + i);
     let v = match method {
         Method::Nearest => p(0, 0),
         Method::Bilinear => {
@@ -122,7 +223,7 @@ fn sample(src: &[u8], w: usize, method: Method, a: f64, loc: (usize, usize, f64,
             v
         }
     };
-    v as f32
+    src.out(v)
 }
 
 /// The position of column `x` on a row whose constant part is `base`
@@ -181,8 +282,8 @@ fn interior_run(rule: Rule, m: &Affine, y: f64, width: usize) -> Option<(usize, 
 /// Warps `img` into an `out_w × out_h` image (`out`, row-major): output
 /// pixel `(x, y)` is the input at `m·(x, y, 1)` by `method` (bicubic with
 /// kernel parameter `a`), `fill` where the reference has no value.
-pub fn warp_affine(
-    img: Gray,
+pub fn warp_affine<S: Source>(
+    img: S,
     m: &Affine,
     method: Method,
     a: f64,
@@ -200,8 +301,8 @@ pub fn warp_affine(
 /// the reference's positions to the bit; `m` serves inside the runs,
 /// whose neighbourhoods lie inside with a column to spare.
 #[allow(clippy::too_many_arguments)]
-pub fn warp_affine_with(
-    img: Gray,
+pub fn warp_affine_with<S: Source>(
+    img: S,
     m: &Affine,
     exact: &dyn Fn(f64, f64) -> (f64, f64),
     method: Method,
@@ -219,13 +320,12 @@ pub fn warp_affine_with(
         h: img.height(),
         method,
     };
-    let (src, w) = (img.data(), img.width());
     for (y, row) in out.chunks_exact_mut(out_w.max(1)).enumerate() {
         let yf = y as f64;
         let checked = |x: usize| {
             let (u, v) = exact(x as f64, yf);
             rule.locate(u, v)
-                .map_or(fill, |loc| sample(src, w, method, a, loc))
+                .map_or(fill, |loc| sample(img, method, a, loc))
         };
         if method == Method::Nearest {
             nearest_row(img, m, yf, row, checked);
@@ -246,8 +346,8 @@ pub fn warp_affine_with(
         let run = row.get_mut(c0..=c1).unwrap_or(&mut []);
         let base = row_base(m, yf);
         match method {
-            Method::Bilinear => bilinear_run(img, m, base, c0, run),
-            Method::Bicubic => bicubic_run(img, m, base, c0, a, run),
+            Method::Bilinear => img.bilinear_run(m, base, c0, run),
+            Method::Bicubic => img.bicubic_run(m, base, c0, a, run),
             Method::Nearest => {
                 for (k, o) in run.iter_mut().enumerate() {
                     *o = checked(c0 + k);
@@ -263,9 +363,15 @@ pub fn warp_affine_with(
 /// inside (the caller's own position is within 10⁻¹² px of it there, so
 /// both round alike); `checked(x)` (the caller's position, the reference's
 /// rules) elsewhere.
-fn nearest_row(img: Gray, m: &Affine, y: f64, row: &mut [f32], checked: impl Fn(usize) -> f32) {
+fn nearest_row<S: Source>(
+    img: S,
+    m: &Affine,
+    y: f64,
+    row: &mut [f32],
+    checked: impl Fn(usize) -> f32,
+) {
     const EDGE: f64 = 1e-9;
-    let (src, w, h) = (img.data(), img.width() as f64, img.height() as f64);
+    let (w, h) = (img.width() as f64, img.height() as f64);
     let base = row_base(m, y);
     for (x, o) in row.iter_mut().enumerate() {
         let (u, v) = along(m, base, x as f64);
@@ -274,8 +380,7 @@ fn nearest_row(img: Gray, m: &Affine, y: f64, row: &mut [f32], checked: impl Fn(
         let (du, dv) = (fu - cu, fv - cv);
         let clear = du > EDGE && du < 1.0 - EDGE && dv > EDGE && dv < 1.0 - EDGE;
         *o = if clear && cu >= 0.0 && cv >= 0.0 && cu < w && cv < h {
-            let i = cv as usize * img.width() + cu as usize;
-            src.get(i).map_or(0.0, |&b| f32::from(b))
+            img.out(img.get(cv as usize * img.width() + cu as usize))
         } else {
             checked(x)
         };
@@ -287,8 +392,8 @@ fn nearest_row(img: Gray, m: &Affine, y: f64, row: &mut [f32], checked: impl Fn(
 /// where a value exists ([`super::warp`]), one checked sample per pixel
 /// from the 8-bit image (no allocation, no `f64` image).
 #[allow(clippy::too_many_arguments)]
-pub fn warp_map(
-    img: Gray,
+pub fn warp_map<S: Source>(
+    img: S,
     map: &dyn Fn(f64, f64) -> (f64, f64),
     method: Method,
     a: f64,
@@ -305,13 +410,12 @@ pub fn warp_map(
         h: img.height(),
         method,
     };
-    let (src, w) = (img.data(), img.width());
     for (y, row) in out.chunks_exact_mut(out_w.max(1)).enumerate() {
         for (x, o) in row.iter_mut().enumerate() {
             let (u, v) = map(x as f64, y as f64);
             *o = rule
                 .locate(u, v)
-                .map_or(fill, |loc| sample(src, w, method, a, loc));
+                .map_or(fill, |loc| sample(img, method, a, loc));
         }
     }
     Ok(())
@@ -319,14 +423,13 @@ pub fn warp_map(
 
 /// Pixel `i` of an interior neighbourhood, unchecked.
 ///
-/// Safety: `i < src.len()`. The runs call it only for columns between the
-/// two ends [`interior_run`] proved interior (positions monotone along the
+/// Safety: `i < w·h`. The runs call it only for columns between the two
+/// ends [`interior_run`] proved interior (positions monotone along the
 /// row, [`along`]), whose neighbourhoods lie inside the `w × h` image, and
-/// [`Gray`] holds exactly `w·h` bytes.
+/// [`Gray`] and [`GrayF32`] hold exactly `w·h` values.
 #[inline(always)]
-unsafe fn px(src: &[u8], i: usize) -> f64 {
-    debug_assert!(i < src.len());
-    f64::from(*src.get_unchecked(i))
+unsafe fn px<S: Source>(src: S, i: usize) -> f64 {
+    src.get_unchecked(i)
 }
 
 /// Bilinear over a run of interior columns starting at `c0`: positions
@@ -338,8 +441,8 @@ fn bilinear_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, run: &mut [f
 
 /// The `f64` bilinear of one run (the scalar build, and the SIMD build's
 /// last columns of a run).
-fn bilinear_scalar(img: Gray, m: &Affine, base: (f64, f64), c0: usize, run: &mut [f32]) {
-    let (src, w) = (img.data(), img.width());
+fn bilinear_scalar<S: Source>(img: S, m: &Affine, base: (f64, f64), c0: usize, run: &mut [f32]) {
+    let (src, w) = (img, img.width());
     for (k, o) in run.iter_mut().enumerate() {
         let (u, v) = along(m, base, (c0 + k) as f64);
         let (fu, fv) = (u.floor(), v.floor());
@@ -356,7 +459,7 @@ fn bilinear_scalar(img: Gray, m: &Affine, base: (f64, f64), c0: usize, run: &mut
         };
         let i1 = p0 + dc * (p1 - p0);
         let i2 = p2 + dc * (p3 - p2);
-        *o = (i1 + dr * (i2 - i1)) as f32;
+        *o = img.out(i1 + dr * (i2 - i1));
     }
 }
 
@@ -569,8 +672,15 @@ fn bicubic_run(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: 
 
 /// The `f64` bicubic of one run (the scalar build; the SIMD build's
 /// fallback).
-fn bicubic_scalar(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, run: &mut [f32]) {
-    let (src, w) = (img.data(), img.width());
+fn bicubic_scalar<S: Source>(
+    img: S,
+    m: &Affine,
+    base: (f64, f64),
+    c0: usize,
+    a: f64,
+    run: &mut [f32],
+) {
+    let (src, w) = (img, img.width());
     for (k, o) in run.iter_mut().enumerate() {
         let (u, v) = along(m, base, (c0 + k) as f64);
         let (fu, fv) = (u.floor(), v.floor());
@@ -589,7 +699,7 @@ fn bicubic_scalar(img: Gray, m: &Affine, base: (f64, f64), c0: usize, a: f64, ru
             };
             acc += wj * row;
         }
-        *o = acc as f32;
+        *o = img.out(acc);
     }
 }
 

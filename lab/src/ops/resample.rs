@@ -8,7 +8,10 @@
 //! of the runs, and every nearest-neighbour pixel — from the reference's
 //! own expression, so where a value exists and which pixel is nearest are
 //! the reference's decisions), the projective map pixel by pixel through
-//! its homography (`warp_map`). Otherwise `resample::warp`.
+//! its homography (`warp_map`). A colour photo's levels (`ops::Levels`)
+//! take the same functions through `resample::fast::Levels`: interpolated
+//! in `f64` on the whole numbers `n`, divided by the scale once. Otherwise
+//! `resample::warp`.
 
 use super::*;
 use photogrammetry_playground::resample::{self as rs, fast as rfast, Method};
@@ -213,25 +216,17 @@ pub fn resample<'a>(
     let shifted = |x: f64, y: f64| warp.position(x, y + r0 as f64);
     let mut out = Vec::with_capacity(3);
     for (method, name) in METHODS {
-        let data = match img.gray() {
-            Some(g) => {
-                let mut o = vec![0.0f32; band.width * band.height];
-                let size = (band.width, band.height);
-                let a = rs::SEED_A;
-                match (method, warp.affine) {
-                    (_, Some(m)) => {
-                        // the band's rows: the map's constant part moved down
-                        let m = [
-                            [m[0][0], m[0][1], m[0][2] + m[0][1] * r0 as f64],
-                            [m[1][0], m[1][1], m[1][2] + m[1][1] * r0 as f64],
-                        ];
-                        rfast::warp_affine_with(g, &m, &shifted, method, a, 0.0, size, &mut o)?
-                    }
-                    _ => rfast::warp_map(g, &shifted, method, a, 0.0, size, &mut o)?,
-                }
-                o
-            }
-            None => {
+        let levels = match img.gray() {
+            Some(_) => None,
+            None => img.levels().and_then(|l| {
+                let v = l.view(img.width(), img.height())?;
+                rfast::Levels::new(v, l.scale).ok()
+            }),
+        };
+        let data = match (img.gray(), levels) {
+            (Some(g), _) => fast_band(g, warp, method, r0, &shifted, band)?,
+            (None, Some(l)) => fast_band(l, warp, method, r0, &shifted, band)?,
+            (None, None) => {
                 let grid = rs::warp(img.grid(), band.width, band.height, shifted, method, 0.0);
                 grid.data().iter().map(|&v| v as f32).collect()
             }
@@ -239,4 +234,32 @@ pub fn resample<'a>(
         out.push(Layer::new(name, band, data, false));
     }
     Ok(out)
+}
+
+/// One method's band on the fast path (8-bit bytes or a colour photo's
+/// levels): the affine runs for a rotation, the map pixel by pixel for a
+/// projective warp.
+fn fast_band<S: rfast::Source>(
+    src: S,
+    warp: &Warp,
+    method: Method,
+    r0: usize,
+    shifted: &dyn Fn(f64, f64) -> (f64, f64),
+    band: Region,
+) -> Result<Vec<f32>> {
+    let mut o = vec![0.0f32; band.width * band.height];
+    let size = (band.width, band.height);
+    let a = rs::SEED_A;
+    match warp.affine {
+        Some(m) => {
+            // the band's rows: the map's constant part moved down
+            let m = [
+                [m[0][0], m[0][1], m[0][2] + m[0][1] * r0 as f64],
+                [m[1][0], m[1][1], m[1][2] + m[1][1] * r0 as f64],
+            ];
+            rfast::warp_affine_with(src, &m, shifted, method, a, 0.0, size, &mut o)?
+        }
+        None => rfast::warp_map(src, shifted, method, a, 0.0, size, &mut o)?,
+    }
+    Ok(o)
 }
