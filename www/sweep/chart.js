@@ -20,8 +20,9 @@ const STROKES = Object.freeze([
   { color: "point", dash: [2, 3] },
   { color: "green", dash: [10, 3, 2, 3] },
 ]);
-/** The longest y axis label (the axis is short on a phone). */
+/** The longest y axis label: on a wide chart, and on a phone's (its axis is 240 px tall: about 24 characters). */
 const AXIS_LABEL_MAX = 34;
+const AXIS_LABEL_NARROW = 24;
 const FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
 
 /** The stroke of series i: { color (a palette key), dash }. */
@@ -69,8 +70,9 @@ export function makeChart(host, spec) {
     const names = members.map((s) => s.label);
     const unit = members[0]?.unit ?? "";
     const one = withUnit(names[0], unit);
-    if (names.length === 1 && one.length <= AXIS_LABEL_MAX) return one;
-    return unit || (names.length === 1 ? `${names[0].slice(0, AXIS_LABEL_MAX - 1)}…` : "value");
+    const max = width() < NARROW ? AXIS_LABEL_NARROW : AXIS_LABEL_MAX;
+    if (names.length === 1 && one.length <= max) return one;
+    return unit || (names.length === 1 ? `${names[0].slice(0, max - 1)}…` : "value");
   };
 
   function options() {
@@ -165,12 +167,20 @@ export function makeChart(host, spec) {
   }
 
   let data = [[], ...spec.series.map(() => [])];
-  let u = new uPlot(options(), data, host);
-  u.over.addEventListener("click", () => {
-    if (u.cursor.idx != null) spec.onPick(u.cursor.idx);
-  });
+  let u = null;
+  /** (Re)makes the uPlot: its options (colours, the axis labels' length) are read when it is made. */
+  const build = () => {
+    u?.destroy();
+    u = new uPlot(options(), data, host);
+    u.over.addEventListener("click", () => {
+      if (u.cursor.idx != null) spec.onPick(u.cursor.idx);
+    });
+  };
+  build();
   const resize = new ResizeObserver(() => {
-    if (u.width !== width() || u.height !== height()) u.setSize({ width: width(), height: height() });
+    // across the phone width the axis labels change length: made again; otherwise resized
+    if (u.height !== height()) build();
+    else if (u.width !== width()) u.setSize({ width: width(), height: height() });
   });
   resize.observe(host);
 
@@ -202,11 +212,7 @@ export function makeChart(host, spec) {
     },
     /** Rebuilt in the page's theme (colours are read when uPlot draws). */
     theme() {
-      u.destroy();
-      u = new uPlot(options(), data, host);
-      u.over.addEventListener("click", () => {
-        if (u.cursor.idx != null) spec.onPick(u.cursor.idx);
-      });
+      build();
     },
     /** The chart's canvas (axes, ticks, lines and marks: what the PNG holds). */
     canvas: () => u.ctx.canvas,
