@@ -8,8 +8,9 @@
 //    beside the bench's fast path on the same image (the FastImage exports
 //    of `npm run bench -- ops`, in Node, one call) where there is one;
 //  - a 12 MP JPEG picked → photo on screen (decoded, painted, drawn);
-//  - a slider change → its preview painted (the k × k mean's size, the
-//    Förstner window);
+//  - a slider or parameter change → its preview painted (the k × k mean's
+//    size, the LoG's Run, the Förstner window), the Förstner threshold →
+//    its points drawn (no preview: the kept map re-thresholded);
 //  - peak wasm memory of the main worker and of a pool worker;
 //  - what a lab visit downloads (lab JS + wasm, gzip -9), against 350 KB.
 // BENCH_LAB_COLOUR=1: the operators on the colour JPEG of the texture (its
@@ -229,7 +230,15 @@ try {
   }), "base64");
   chrome.jpegBytes = jpeg.length;
   const shown = [];
-  const previews = { mean: [], forstner: [] };
+  // slider or parameter change → its preview painted (live.js: previewMs), or, where there is no
+  // preview (the Förstner threshold re-thresholds the kept map), → its points drawn
+  const PREVIEWS = [
+    ["mean", "slider change → preview painted: k × k mean size"],
+    ["log", "Run → preview painted: filter LoG 5×5"],
+    ["forstner", "slider change → preview painted: Förstner window"],
+    ["threshold", "slider change → points drawn: Förstner threshold (kept map)"],
+  ];
+  const previews = Object.fromEntries(PREVIEWS.map(([k]) => [k, []]));
   for (let run = 0; run < 3; run++) {
     const lab = await context.newPage();
     lab.on("pageerror", (e) => console.error(`bench lab: page error: ${e.message}`));
@@ -249,30 +258,48 @@ try {
     await lab.waitForFunction(() => window.benchShown, null, { timeout: 120_000 });
     // one frame more: the drawn canvas on screen
     shown.push(await lab.evaluate(() => new Promise((res) => requestAnimationFrame(() => res(window.benchShown - window.benchT0)))));
-    const previewOf = async (selector, value) => lab.evaluate(async ({ selector, value }) => {
-      delete document.body.dataset.previewMs;
+    // `mark`: the body's mark that says it is on screen (previewMs: the page's own ms from the change)
+    const previewOf = async (selector, value, mark = "previewMs") => lab.evaluate(async ({ selector, value, mark }) => {
+      delete document.body.dataset[mark];
       const input = document.querySelector(selector);
-      input.value = String(value);
-      input.dispatchEvent(new Event(input.type === "range" ? "input" : "change", { bubbles: true }));
-      for (let i = 0; i < 600 && !document.body.dataset.previewMs; i++) await new Promise((res) => setTimeout(res, 5));
-      const ms = Number(document.body.dataset.previewMs);
+      const t0 = performance.now();
+      const seen = new Promise((res) => {
+        const obs = new MutationObserver(() => {
+          if (document.body.dataset[mark] === undefined) return;
+          obs.disconnect();
+          res(mark === "previewMs" ? Number(document.body.dataset.previewMs) : performance.now() - t0);
+        });
+        obs.observe(document.body, { attributes: true });
+        setTimeout(() => res(NaN), 5000);
+      });
+      if (value === null) input.click();
+      else {
+        input.value = String(value);
+        input.dispatchEvent(new Event(input.type === "range" ? "input" : "change", { bubbles: true }));
+      }
+      const ms = await seen;
       const { settledForTests } = await import("./lab/lab.js");
       await settledForTests();
       return ms;
-    }, { selector, value });
+    }, { selector, value, mark });
     await lab.selectOption("#lab-family", "filters");
     await lab.selectOption("#lab-kernel", "mean-k");
     for (const k of [5, 7, 9]) previews.mean.push(await previewOf("#lab-size", k));
+    await lab.selectOption("#lab-kernel", "log");
+    for (let i = 0; i < 2; i++) previews.log.push(await previewOf("#lab-run", null));
     await lab.selectOption("#lab-family", "interest");
     await lab.click("#lab-run");
     await lab.evaluate(async () => (await import("./lab/lab.js")).settledForTests());
     for (const s of [7, 5]) previews.forstner.push(await previewOf("#lab-window", s));
+    for (const t of [0.3, 0.8]) previews.threshold.push(await previewOf("#lab-threshold", t, "threshold"));
     await lab.close();
   }
   const med = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
   chrome.shown = med(shown);
-  const ok = { mean: previews.mean.filter(Number.isFinite), forstner: previews.forstner.filter(Number.isFinite) };
-  chrome.preview = { mean: med(ok.mean), forstner: med(ok.forstner), n: { mean: `${ok.mean.length} of ${previews.mean.length}`, forstner: `${ok.forstner.length} of ${previews.forstner.length}` } };
+  chrome.preview = PREVIEWS.map(([k, label]) => {
+    const ok = previews[k].filter(Number.isFinite);
+    return { label, ms: med(ok), n: `${ok.length} of ${previews[k].length}` };
+  });
 
   // what a lab visit downloads
   const visit = await context.newPage();
@@ -306,8 +333,7 @@ for (const [name] of OPS) {
 }
 const num = (v, d = 0) => (Number.isFinite(v) ? v.toFixed(d) : "—");
 if (chrome.preview) console.log(`  ${"12 MP colour JPEG picked → photo on screen".padEnd(58)} ${"".padStart(10)} ${num(chrome.shown).padStart(10)}   (median of 3; JPEG ${(chrome.jpegBytes / 1e6).toFixed(1)} MB)`);
-if (chrome.preview) console.log(`  ${"slider change → preview painted: k × k mean size".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.mean, 1).padStart(10)}   (median of ${chrome.preview.n.mean})`);
-if (chrome.preview) console.log(`  ${"slider change → preview painted: Förstner window".padEnd(58)} ${"".padStart(10)} ${num(chrome.preview.forstner, 1).padStart(10)}   (median of ${chrome.preview.n.forstner})`);
+for (const p of chrome.preview ?? []) console.log(`  ${p.label.padEnd(58)} ${"".padStart(10)} ${num(p.ms, 1).padStart(10)}   (median of ${p.n})`);
 const mib = (b) => `${(b / 2 ** 20).toFixed(0)} MiB`;
 for (const n of chrome.counts) {
   const m = chrome.memory[n];
