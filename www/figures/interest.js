@@ -305,7 +305,7 @@ const windowSpec = (source) => ({
   },
   // motion (issue 34; index.js `frames`): pixel by pixel its gradient and terms, then the sums, N, w and q
   frames: windowFrames,
-  motion: { noun: "frame" },
+  motion: { noun: "stage" },
 });
 
 /** The error ellipse (or its degenerate forms) centred at (cx, cy): `unit` CSS px per px of σ. */
