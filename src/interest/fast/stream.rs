@@ -474,14 +474,14 @@ pub struct Suppressor<'e, P> {
     near: Vec<Vec<f64>>,
     /// A row of scratch for `near`.
     scratch: Vec<f64>,
+    /// Scratch for `decide`: the largest `near` over the rows of a
+    /// cell's neighbourhood, and the columns that need a closer look.
+    column_max: Vec<f64>,
+    open: Vec<usize>,
     pushed: usize,
     decided: usize,
     refine: Option<Refine<'e, P>>,
 }
-
-/// One row of the ring as `decide` reads it: row, scores, payloads, the
-/// largest score near each cell.
-type RingRow<'a, P> = (usize, &'a [f64], &'a [P], &'a [f64]);
 
 /// [`Suppressor::refined`]'s tolerance and exact score.
 type Refine<'e, P> = (f64, Box<dyn Fn(&P) -> f64 + 'e>);
@@ -498,6 +498,8 @@ impl<'e, P: Copy + Default> Suppressor<'e, P> {
                 .collect(),
             near: vec![vec![f64::NEG_INFINITY; width]; n],
             scratch: vec![0.0; width],
+            column_max: vec![f64::NEG_INFINITY; width],
+            open: vec![0; width],
             pushed: 0,
             decided: 0,
             refine: None,
@@ -590,33 +592,47 @@ impl<'e, P: Copy + Default> Suppressor<'e, P> {
         let r = self.decided;
         self.decided += 1;
         let (w, rad) = (self.width, self.radius);
-        let Some((scores, payload)) = self.row(r) else {
-            return;
-        };
+        let n = self.ring.len();
         // scores below `s − margin` never beat `s` (nor NaN): no closer look
         let tol = self.refine.as_ref().map_or(0.0, |(t, _)| 2.0 * t);
         let (lo, hi) = (r.saturating_sub(rad), (r + rad + 1).min(self.pushed));
-        let n = self.ring.len();
-        let rows: Vec<RingRow<P>> = (lo..hi)
-            .filter_map(|rr| {
-                let (row, pay) = self.row(rr)?;
-                Some((rr, row, pay, &self.near[rr % n][..]))
-            })
+        if self.row(r).is_none() {
+            return;
+        }
+        // a neighbour higher beyond the tolerance: out at once. Found for
+        // the whole row without a branch per cell (the largest `near` over
+        // the neighbourhood's rows, then the columns left written down):
+        // on a noisy photo which cells are out is a coin toss per cell
+        let mut column_max = std::mem::take(&mut self.column_max);
+        let mut open = std::mem::take(&mut self.open);
+        column_max.fill(f64::NEG_INFINITY);
+        for rr in lo..hi {
+            if self.row(rr).is_some() {
+                for (m, &t) in column_max.iter_mut().zip(&self.near[rr % n]) {
+                    *m = if t > *m { t } else { *m };
+                }
+            }
+        }
+        let (scores, payload) = self.row(r).unwrap_or_default();
+        let mut k = 0;
+        for (c, (&s, &m)) in scores.iter().zip(&column_max).enumerate() {
+            // (NaN: no score; `near` is never NaN)
+            let out = s.is_nan() || m > s + tol * s.abs();
+            if let Some(o) = open.get_mut(k) {
+                *o = c;
+            }
+            k += usize::from(!out);
+        }
+        let rows: Vec<(usize, &[f64], &[P])> = (lo..hi)
+            .filter_map(|rr| self.row(rr).map(|(row, pay)| (rr, row, pay)))
             .collect();
-        for (c, &s) in scores.iter().enumerate() {
-            if s.is_nan() {
-                continue;
-            }
+        for &c in &open[..k] {
+            let s = scores[c];
             let floor = s - tol * s.abs();
-            // a neighbour higher beyond the tolerance: out at once
-            let ceiling = s + tol * s.abs();
-            if rows.iter().any(|(_, _, _, near)| near[c] > ceiling) {
-                continue;
-            }
             let ps = &payload[c];
             let (c0, c1) = (c.saturating_sub(rad), (c + rad + 1).min(w));
             let mut best = true;
-            'scan: for &(rr, row, pay, _) in &rows {
+            'scan: for &(rr, row, pay) in &rows {
                 for cc in c0..c1 {
                     let t = row[cc];
                     // (NaN, no score: never ≥)
@@ -635,6 +651,9 @@ impl<'e, P: Copy + Default> Suppressor<'e, P> {
                 kept(c, r, s, *ps);
             }
         }
+        drop(rows);
+        self.column_max = column_max;
+        self.open = open;
     }
 }
 
