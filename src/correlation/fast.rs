@@ -47,52 +47,150 @@ pub fn zncc(search: Gray, template: Gray, out: &mut [f32]) -> Result<Option<Peak
     }
     let (ow, oh) = (sw - tw + 1, sh - th + 1);
     check_len("output", out, ow * oh)?;
-    // sum tables of I and I² with a zero first row and column
+    // sum tables of I and I² with a zero first row and column, in `i32`
+    // with wrapping adds: a window's sum taken from four entries with
+    // wrapping differences is exact (it is below 2³¹: `n·255² < 2³¹`)
     let stride = sw + 1;
-    let mut s1 = vec![0i64; stride * (sh + 1)];
-    let mut s2 = vec![0i64; stride * (sh + 1)];
+    let mut s1 = vec![0i32; stride * (sh + 1)];
+    let mut s2 = vec![0i32; stride * (sh + 1)];
     for r in 0..sh {
-        let (mut a, mut b) = (0i64, 0i64);
+        let (mut a, mut b) = (0i32, 0i32);
         let row = search.row(r).unwrap_or(&[]);
         for c in 0..sw {
-            let v = i64::from(row.get(c).copied().unwrap_or(0));
-            a += v;
-            b += v * v;
+            let v = i32::from(row.get(c).copied().unwrap_or(0));
+            a = a.wrapping_add(v);
+            b = b.wrapping_add(v * v);
             let i = (r + 1) * stride + c + 1;
-            s1[i] = s1[i - stride] + a;
-            s2[i] = s2[i - stride] + b;
+            s1[i] = s1[i - stride].wrapping_add(a);
+            s2[i] = s2[i - stride].wrapping_add(b);
         }
     }
     let t = template.data();
     let st: i64 = t.iter().map(|&v| i64::from(v)).sum();
     let st2: i64 = t.iter().map(|&v| i64::from(v) * i64::from(v)).sum();
     let nn = n as i64;
-    let dt = (nn * st2 - st * st) as f64;
+    let consts = RhoConsts {
+        n: nn as f64,
+        st: st as f64,
+        dt: (nn * st2 - st * st) as f64,
+    };
     let cross = CrossSums::new(search, template);
     let mut acc = vec![0i32; ow];
     let mut best: Option<Peak> = None;
     for (r, o) in out.chunks_exact_mut(ow).enumerate() {
         cross.row(r, &mut acc);
-        for (c, (ov, &sit)) in o.iter_mut().zip(&acc).enumerate() {
-            let rect = |s: &[i64]| {
-                s[(r + th) * stride + c + tw] - s[r * stride + c + tw] - s[(r + th) * stride + c]
-                    + s[r * stride + c]
-            };
-            let (si, si2) = (rect(&s1), rect(&s2));
-            let di = (nn * si2 - si * si) as f64;
-            let num = (nn * i64::from(sit) - si * st) as f64;
-            *ov = if di > 0.0 && dt > 0.0 {
-                let rho = (num / (di * dt).sqrt()).clamp(-1.0, 1.0) as f32;
-                if best.is_none_or(|b| rho > b.rho) {
-                    best = Some(Peak { c, r, rho });
-                }
-                rho
-            } else {
-                f32::NAN
-            };
+        let rows = [
+            table_rows(&s1, stride, r, th),
+            table_rows(&s2, stride, r, th),
+        ];
+        rho_row(rows[0], rows[1], tw, &acc, &consts, o);
+        for (c, &rho) in o.iter().enumerate() {
+            if !rho.is_nan() && best.is_none_or(|b| rho > b.rho) {
+                best = Some(Peak { c, r, rho });
+            }
         }
     }
     Ok(best)
+}
+
+/// Rows `r` and `r + th` of a sum table (`stride` entries each).
+fn table_rows(s: &[i32], stride: usize, r: usize, th: usize) -> [&[i32]; 2] {
+    [r, r + th].map(|i| s.get(i * stride..(i + 1) * stride).unwrap_or(&[]))
+}
+
+/// The template's terms of `ρ`: `n`, `ΣT` and `n·ΣT² − (ΣT)²`.
+struct RhoConsts {
+    n: f64,
+    st: f64,
+    dt: f64,
+}
+
+/// `ρ` of one output row from the sum tables' rows `[top, bottom]` (`top`
+/// = the window's first row, `bottom` = one past its last) and the cross
+/// sums `sit`: `(n·ΣIT − ΣI·ΣT) / √((n·ΣI² − (ΣI)²)·dt)`, clamped to
+/// `[−1, 1]`, `NaN` for a flat window or template. Every term before the
+/// square root is an integer below 2⁵³, so exact in `f64`: the value is
+/// the one the `i64` formula gives, 4 positions per step with `+simd128`.
+fn rho_row(s1: [&[i32]; 2], s2: [&[i32]; 2], tw: usize, sit: &[i32], k: &RhoConsts, o: &mut [f32]) {
+    let rect = |s: [&[i32]; 2], c: usize| {
+        let g = |row: &[i32], i: usize| row.get(i).copied().unwrap_or(0);
+        g(s[1], c + tw)
+            .wrapping_sub(g(s[0], c + tw))
+            .wrapping_sub(g(s[1], c))
+            .wrapping_add(g(s[0], c))
+    };
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    let done = 0;
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    let done = if s1.iter().chain(&s2).all(|row| row.len() >= o.len() + tw) && sit.len() >= o.len()
+    {
+        let ow = o.len();
+        let n4 = ow / 4 * 4;
+        let (nv, stv, dtv) = (f64x2_splat(k.n), f64x2_splat(k.st), f64x2_splat(k.dt));
+        let (m1, p1, zero) = (f64x2_splat(-1.0), f64x2_splat(1.0), f64x2_splat(0.0));
+        let dt_ok = if k.dt > 0.0 {
+            u64x2_splat(u64::MAX)
+        } else {
+            u64x2_splat(0)
+        };
+        let nan = f32x4_splat(f32::NAN);
+        // SAFETY (every load): i + 4 ≤ n4 + tw ≤ ow + tw ≤ the row's length
+        // (checked above), and sit.len() ≥ ow.
+        let ld = |row: &[i32], i: usize| unsafe { v128_load(row.as_ptr().add(i) as *const v128) };
+        let rect4 = |s: [&[i32]; 2], c: usize| {
+            i32x4_add(
+                i32x4_sub(i32x4_sub(ld(s[1], c + tw), ld(s[0], c + tw)), ld(s[1], c)),
+                ld(s[0], c),
+            )
+        };
+        // ρ of the two positions in the low lanes of the `i32x4`s, and
+        // whether each has one (all ones in its 64-bit lane)
+        let half = |si: v128, si2: v128, x: v128| {
+            let (si, si2, x) = (
+                f64x2_convert_low_i32x4(si),
+                f64x2_convert_low_i32x4(si2),
+                f64x2_convert_low_i32x4(x),
+            );
+            let di = f64x2_sub(f64x2_mul(nv, si2), f64x2_mul(si, si));
+            let num = f64x2_sub(f64x2_mul(nv, x), f64x2_mul(si, stv));
+            let rho = f64x2_div(num, f64x2_sqrt(f64x2_mul(di, dtv)));
+            let rho = f64x2_pmin(f64x2_pmax(rho, m1), p1);
+            (
+                f32x4_demote_f64x2_zero(rho),
+                v128_and(f64x2_gt(di, zero), dt_ok),
+            )
+        };
+        let mut c = 0;
+        while c < n4 {
+            let (si, si2, x) = (rect4(s1, c), rect4(s2, c), ld(sit, c));
+            let up = |v: v128| i32x4_shuffle::<2, 3, 2, 3>(v, v);
+            let (lo, ok_lo) = half(si, si2, x);
+            let (hi, ok_hi) = half(up(si), up(si2), up(x));
+            let rho = i32x4_shuffle::<0, 1, 4, 5>(lo, hi);
+            let ok = i32x4_shuffle::<0, 2, 4, 6>(ok_lo, ok_hi);
+            // SAFETY: c + 4 ≤ n4 ≤ ow = o.len().
+            unsafe {
+                v128_store(
+                    o.as_mut_ptr().add(c) as *mut v128,
+                    v128_bitselect(rho, nan, ok),
+                )
+            };
+            c += 4;
+        }
+        n4
+    } else {
+        0
+    };
+    for (c, ov) in o.iter_mut().enumerate().skip(done) {
+        let (si, si2) = (f64::from(rect(s1, c)), f64::from(rect(s2, c)));
+        let di = k.n * si2 - si * si;
+        let num = k.n * f64::from(sit.get(c).copied().unwrap_or(0)) - si * k.st;
+        *ov = if di > 0.0 && k.dt > 0.0 {
+            (num / (di * k.dt).sqrt()).clamp(-1.0, 1.0) as f32
+        } else {
+            f32::NAN
+        };
+    }
 }
 
 /// The cross sums `Σ I·T` of one output row.

@@ -22,6 +22,9 @@ use crate::raster::{check_len, fold, Border, Gray, GrayF32};
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 use core::arch::wasm32::*;
 
+mod median;
+pub use median::{median3, median3_f32};
+
 /// The border a fast path applies (`Crop` computed as `Replicate`).
 fn effective(border: Border) -> Border {
     match border {
@@ -161,13 +164,15 @@ pub(crate) fn convert_row(src: &[u8], dst: &mut [f32]) {
             // wasm loads and stores need no alignment.
             unsafe {
                 let v = v128_load(s.as_ptr() as *const v128);
+                // the signed conversion (one x86 instruction; the unsigned
+                // one is emulated) is exact for these values
                 let lo = u16x8_extend_low_u8x16(v);
                 let hi = u16x8_extend_high_u8x16(v);
                 let p = d.as_mut_ptr() as *mut v128;
-                v128_store(p, f32x4_convert_u32x4(u32x4_extend_low_u16x8(lo)));
-                v128_store(p.add(1), f32x4_convert_u32x4(u32x4_extend_high_u16x8(lo)));
-                v128_store(p.add(2), f32x4_convert_u32x4(u32x4_extend_low_u16x8(hi)));
-                v128_store(p.add(3), f32x4_convert_u32x4(u32x4_extend_high_u16x8(hi)));
+                v128_store(p, f32x4_convert_i32x4(u32x4_extend_low_u16x8(lo)));
+                v128_store(p.add(1), f32x4_convert_i32x4(u32x4_extend_high_u16x8(lo)));
+                v128_store(p.add(2), f32x4_convert_i32x4(u32x4_extend_low_u16x8(hi)));
+                v128_store(p.add(3), f32x4_convert_i32x4(u32x4_extend_high_u16x8(hi)));
             }
         }
         n
@@ -177,16 +182,46 @@ pub(crate) fn convert_row(src: &[u8], dst: &mut [f32]) {
     }
 }
 
-/// `dst[x] = Σ_j k[j] · rows[j][x]`.
+/// Whether `k` reads the same backwards (`k[j] = k[n − 1 − j]`): its
+/// symmetric taps are then applied once to the sum of their two inputs.
+fn symmetric(k: &[f32]) -> bool {
+    k.iter().eq(k.iter().rev())
+}
+
+/// `Σ_j k[j] · v(j)` for a symmetric `k` of odd length, in the order the
+/// SIMD loops use: `k[m]·v(m) + Σ_{j<m} k[j]·(v(j) + v(n − 1 − j))`.
+/// (With integer taps and inputs every sum is exact, so the value is the
+/// plain sum's; with fractional taps it differs by rounding only.)
+fn sym_dot(k: &[f32], v: impl Fn(usize) -> f32) -> f32 {
+    let (n, m) = (k.len(), k.len() / 2);
+    let mut acc = k.get(m).copied().unwrap_or(0.0) * v(m);
+    for (j, kj) in k.iter().enumerate().take(m) {
+        acc += kj * (v(j) + v(n - 1 - j));
+    }
+    acc
+}
+
+/// `dst[x] = Σ_j k[j] · rows[j][x]` (symmetric taps paired, [`sym_dot`]).
 pub(crate) fn vertical(rows: &[&[f32]], k: &[f32], dst: &mut [f32]) {
+    let sym = symmetric(k) && k.len() % 2 == 1 && rows.len() == k.len();
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
     let done = 0;
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
     let done = if let (Ok(r5), Ok(k5)) = (<&[&[f32]; 5]>::try_from(rows), <&[f32; 5]>::try_from(k))
     {
-        vertical_n(r5, k5, dst)
+        if sym {
+            vertical_sym(r5, k5, dst)
+        } else {
+            vertical_n(r5, k5, dst)
+        }
     } else if let (Ok(r3), Ok(k3)) = (<&[&[f32]; 3]>::try_from(rows), <&[f32; 3]>::try_from(k)) {
-        vertical_n(r3, k3, dst)
+        if sym {
+            vertical_sym(r3, k3, dst)
+        } else {
+            vertical_n(r3, k3, dst)
+        }
+    } else if sym {
+        0
     } else {
         let w = dst.len();
         if rows.iter().all(|r| r.len() >= w) {
@@ -210,23 +245,39 @@ pub(crate) fn vertical(rows: &[&[f32]], k: &[f32], dst: &mut [f32]) {
         }
     };
     for (x, d) in dst.iter_mut().enumerate().skip(done) {
-        *d = rows
-            .iter()
-            .zip(k)
-            .map(|(r, kv)| kv * r.get(x).copied().unwrap_or(0.0))
-            .sum();
+        let at = |j: usize| rows.get(j).and_then(|r| r.get(x)).copied().unwrap_or(0.0);
+        *d = if sym {
+            sym_dot(k, at)
+        } else {
+            rows.iter()
+                .zip(k)
+                .map(|(r, kv)| kv * r.get(x).copied().unwrap_or(0.0))
+                .sum()
+        };
     }
 }
 
-/// `dst[x] = Σ_i k[i] · src[x + i] / divisor` (`src` padded by the kernel's radius).
+/// `dst[x] = Σ_i k[i] · src[x + i] / divisor` (`src` padded by the
+/// kernel's radius; symmetric taps paired, [`sym_dot`]).
 pub(crate) fn horizontal(src: &[f32], k: &[f32], divisor: f32, dst: &mut [f32]) {
+    let sym = symmetric(k) && k.len() % 2 == 1;
     #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
     let done = 0;
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
     let done = if let Ok(k5) = <&[f32; 5]>::try_from(k) {
-        horizontal_n(src, k5, divisor, dst)
+        if sym {
+            horizontal_sym(src, k5, divisor, dst)
+        } else {
+            horizontal_n(src, k5, divisor, dst)
+        }
     } else if let Ok(k3) = <&[f32; 3]>::try_from(k) {
-        horizontal_n(src, k3, divisor, dst)
+        if sym {
+            horizontal_sym(src, k3, divisor, dst)
+        } else {
+            horizontal_n(src, k3, divisor, dst)
+        }
+    } else if sym {
+        0
     } else {
         let w = dst.len();
         if src.len() + 1 >= w + k.len() {
@@ -251,13 +302,79 @@ pub(crate) fn horizontal(src: &[f32], k: &[f32], divisor: f32, dst: &mut [f32]) 
         }
     };
     for (x, d) in dst.iter_mut().enumerate().skip(done) {
-        let s: f32 = k
-            .iter()
-            .enumerate()
-            .map(|(i, kv)| kv * src.get(x + i).copied().unwrap_or(0.0))
-            .sum();
+        let s: f32 = if sym {
+            sym_dot(k, |i| src.get(x + i).copied().unwrap_or(0.0))
+        } else {
+            k.iter()
+                .enumerate()
+                .map(|(i, kv)| kv * src.get(x + i).copied().unwrap_or(0.0))
+                .sum()
+        };
         *d = s / divisor;
     }
+}
+
+/// [`vertical`] for a symmetric `N`-tap kernel ([`sym_dot`]'s order,
+/// unrolled); returns the number of outputs written (a multiple of 4; 0 if
+/// a row is short).
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+fn vertical_sym<const N: usize>(rows: &[&[f32]; N], k: &[f32; N], dst: &mut [f32]) -> usize {
+    let w = dst.len();
+    if rows.iter().any(|r| r.len() < w) {
+        return 0;
+    }
+    let (n, m) = (w / 4 * 4, N / 2);
+    let ks = k.map(|v| f32x4_splat(v));
+    let ps = rows.map(|r| r.as_ptr());
+    let mut x = 0;
+    while x < n {
+        // SAFETY: j < N and x + 4 ≤ w ≤ every row's length (checked above).
+        let ld = |j: usize| unsafe { v128_load(ps[j].add(x) as *const v128) };
+        let mut acc = f32x4_mul(ks[m], ld(m));
+        for (j, kj) in ks.iter().enumerate().take(m) {
+            acc = f32x4_add(acc, f32x4_mul(*kj, f32x4_add(ld(j), ld(N - 1 - j))));
+        }
+        // SAFETY: x + 4 ≤ w = dst.len().
+        unsafe { v128_store(dst.as_mut_ptr().add(x) as *mut v128, acc) };
+        x += 4;
+    }
+    n
+}
+
+/// [`horizontal`] for a symmetric `N`-tap kernel ([`sym_dot`]'s order,
+/// unrolled; no division when `divisor` is 1); returns the number of
+/// outputs written.
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+fn horizontal_sym<const N: usize>(
+    src: &[f32],
+    k: &[f32; N],
+    divisor: f32,
+    dst: &mut [f32],
+) -> usize {
+    let w = dst.len();
+    if src.len() + 1 < w + N {
+        return 0;
+    }
+    let (n, m) = (w / 4 * 4, N / 2);
+    let ks = k.map(|v| f32x4_splat(v));
+    let dv = f32x4_splat(divisor);
+    let p = src.as_ptr();
+    let mut x = 0;
+    while x < n {
+        // SAFETY: x + i + 4 ≤ w − 4 + N + 3 < src.len() + 1 for i < N.
+        let ld = |i: usize| unsafe { v128_load(p.add(x + i) as *const v128) };
+        let mut acc = f32x4_mul(ks[m], ld(m));
+        for (j, kj) in ks.iter().enumerate().take(m) {
+            acc = f32x4_add(acc, f32x4_mul(*kj, f32x4_add(ld(j), ld(N - 1 - j))));
+        }
+        if divisor != 1.0 {
+            acc = f32x4_div(acc, dv);
+        }
+        // SAFETY: x + 4 ≤ w = dst.len().
+        unsafe { v128_store(dst.as_mut_ptr().add(x) as *mut v128, acc) };
+        x += 4;
+    }
+    n
 }
 
 /// [`vertical`] for `N` taps known at compile time (unrolled); returns the
@@ -540,8 +657,8 @@ fn hsum3_div9(src: &[u16], dst: &mut [f32]) {
                     ),
                     v128_load(p.add(2) as *const v128),
                 );
-                let lo = f32x4_convert_u32x4(u32x4_extend_low_u16x8(s));
-                let hi = f32x4_convert_u32x4(u32x4_extend_high_u16x8(s));
+                let lo = f32x4_convert_i32x4(u32x4_extend_low_u16x8(s));
+                let hi = f32x4_convert_i32x4(u32x4_extend_high_u16x8(s));
                 let d = dst.as_mut_ptr().add(x) as *mut v128;
                 v128_store(d, f32x4_div(lo, nine));
                 v128_store(d.add(1), f32x4_div(hi, nine));
@@ -631,166 +748,5 @@ fn magnitude(x: &[f32], y: &[f32], m: &mut [f32]) {
     };
     for ((a, b), o) in x.iter().zip(y).zip(m.iter_mut()).skip(done) {
         *o = (a * a + b * b).sqrt();
-    }
-}
-
-/// The 3×3 median of an 8-bit image: each column of three sorted once
-/// (`lo ≤ mid ≤ hi`), then per pixel the median of
-/// `max(lo)`, `med(mid)`, `min(hi)` over the three columns — exactly the
-/// middle of the nine values, with 16 pixels per SIMD step.
-pub fn median3(img: Gray, border: Border, out: &mut [u8]) -> Result<()> {
-    let (w, h) = (img.width(), img.height());
-    check_len("output", out, w * h)?;
-    let zeros = vec![0u8; w];
-    let mut lo = vec![0u8; w + 2];
-    let mut mid = vec![0u8; w + 2];
-    let mut hi = vec![0u8; w + 2];
-    for (r, o) in out.chunks_exact_mut(w).enumerate() {
-        let r = r as isize;
-        let a = row_at(&img, r - 1, border).unwrap_or(&zeros);
-        let b = row_at(&img, r, border).unwrap_or(&zeros);
-        let c = row_at(&img, r + 1, border).unwrap_or(&zeros);
-        sort_columns(a, b, c, &mut lo[1..=w], &mut mid[1..=w], &mut hi[1..=w]);
-        pad_row(&mut lo, w, 1, border, 0);
-        pad_row(&mut mid, w, 1, border, 0);
-        pad_row(&mut hi, w, 1, border, 0);
-        combine_median(&lo, &mid, &hi, o);
-    }
-    Ok(())
-}
-
-/// [`median3`] of an `f32` image (its values, none NaN): the same sorted
-/// columns and the same selection, scalar — every output is one of the
-/// nine inputs, as the reference's median is.
-pub fn median3_f32(img: GrayF32, border: Border, out: &mut [f32]) -> Result<()> {
-    let (w, h) = (img.width(), img.height());
-    check_len("output", out, w * h)?;
-    let zeros = vec![0.0f32; w];
-    let mut lo = vec![0.0f32; w + 2];
-    let mut mid = vec![0.0f32; w + 2];
-    let mut hi = vec![0.0f32; w + 2];
-    let (mn, mx) = (
-        |a: f32, b: f32| if b < a { b } else { a },
-        |a: f32, b: f32| if b > a { b } else { a },
-    );
-    let m3 = |a: f32, b: f32, c: f32| mx(mn(a, b), mn(mx(a, b), c));
-    for (r, o) in out.chunks_exact_mut(w).enumerate() {
-        let r = r as isize;
-        let at = |d: isize| {
-            fold(r + d, h, effective(border))
-                .and_then(|i| img.row(i))
-                .unwrap_or(&zeros)
-        };
-        let (a, b, c) = (at(-1), at(0), at(1));
-        for x in 0..w {
-            let (va, vb, vc) = (a[x], b[x], c[x]);
-            let (l1, h1) = (mn(va, vb), mx(va, vb));
-            let m1 = mx(l1, vc);
-            lo[x + 1] = mn(l1, vc);
-            mid[x + 1] = mn(m1, h1);
-            hi[x + 1] = mx(m1, h1);
-        }
-        pad_row(&mut lo, w, 1, border, 0.0);
-        pad_row(&mut mid, w, 1, border, 0.0);
-        pad_row(&mut hi, w, 1, border, 0.0);
-        for (x, o) in o.iter_mut().enumerate() {
-            let l = mx(mx(lo[x], lo[x + 1]), lo[x + 2]);
-            let m = m3(mid[x], mid[x + 1], mid[x + 2]);
-            let hh = mn(mn(hi[x], hi[x + 1]), hi[x + 2]);
-            *o = m3(l, m, hh);
-        }
-    }
-    Ok(())
-}
-
-fn med3(a: u8, b: u8, c: u8) -> u8 {
-    a.min(b).max(a.max(b).min(c))
-}
-
-/// Sorts each column `(a[x], b[x], c[x])` into `lo[x] ≤ mid[x] ≤ hi[x]`.
-fn sort_columns(a: &[u8], b: &[u8], c: &[u8], lo: &mut [u8], mid: &mut [u8], hi: &mut [u8]) {
-    let w = lo.len();
-    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-    let done = 0;
-    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-    let done = {
-        if a.len() >= w && b.len() >= w && c.len() >= w && mid.len() >= w && hi.len() >= w {
-            let n = w / 16 * 16;
-            let mut x = 0;
-            while x < n {
-                // SAFETY: x + 16 ≤ w ≤ every length (checked above).
-                unsafe {
-                    let va = v128_load(a.as_ptr().add(x) as *const v128);
-                    let vb = v128_load(b.as_ptr().add(x) as *const v128);
-                    let vc = v128_load(c.as_ptr().add(x) as *const v128);
-                    let (l1, h1) = (u8x16_min(va, vb), u8x16_max(va, vb));
-                    let l = u8x16_min(l1, vc);
-                    let m1 = u8x16_max(l1, vc);
-                    let m = u8x16_min(m1, h1);
-                    let hh = u8x16_max(m1, h1);
-                    v128_store(lo.as_mut_ptr().add(x) as *mut v128, l);
-                    v128_store(mid.as_mut_ptr().add(x) as *mut v128, m);
-                    v128_store(hi.as_mut_ptr().add(x) as *mut v128, hh);
-                }
-                x += 16;
-            }
-            n
-        } else {
-            0
-        }
-    };
-    for x in done..w {
-        let (va, vb, vc) = (
-            a.get(x).copied().unwrap_or(0),
-            b.get(x).copied().unwrap_or(0),
-            c.get(x).copied().unwrap_or(0),
-        );
-        let (l1, h1) = (va.min(vb), va.max(vb));
-        let m1 = l1.max(vc);
-        if let (Some(l), Some(m), Some(hh)) = (lo.get_mut(x), mid.get_mut(x), hi.get_mut(x)) {
-            *l = l1.min(vc);
-            *m = m1.min(h1);
-            *hh = m1.max(h1);
-        }
-    }
-}
-
-/// `out[x] = med(max(lo[x..x+3]), med(mid[x..x+3]), min(hi[x..x+3]))`
-/// (the sorted columns padded by one on each side).
-fn combine_median(lo: &[u8], mid: &[u8], hi: &[u8], out: &mut [u8]) {
-    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-    let done = 0;
-    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-    let done = {
-        let w = out.len();
-        if lo.len() >= w + 2 && mid.len() >= w + 2 && hi.len() >= w + 2 {
-            let n = w / 16 * 16;
-            let mut x = 0;
-            let ld = |s: &[u8], i: usize| {
-                // SAFETY: callers keep i + 16 ≤ x + 2 + 16 ≤ w + 2 ≤ s.len().
-                unsafe { v128_load(s.as_ptr().add(i) as *const v128) }
-            };
-            let m3 = |a: v128, b: v128, c: v128| {
-                u8x16_max(u8x16_min(a, b), u8x16_min(u8x16_max(a, b), c))
-            };
-            while x < n {
-                let l = u8x16_max(u8x16_max(ld(lo, x), ld(lo, x + 1)), ld(lo, x + 2));
-                let m = m3(ld(mid, x), ld(mid, x + 1), ld(mid, x + 2));
-                let hh = u8x16_min(u8x16_min(ld(hi, x), ld(hi, x + 1)), ld(hi, x + 2));
-                // SAFETY: x + 16 ≤ w = out.len().
-                unsafe { v128_store(out.as_mut_ptr().add(x) as *mut v128, m3(l, m, hh)) };
-                x += 16;
-            }
-            n
-        } else {
-            0
-        }
-    };
-    for (x, o) in out.iter_mut().enumerate().skip(done) {
-        let g = |s: &[u8], i: usize| s.get(i).copied().unwrap_or(0);
-        let l = g(lo, x).max(g(lo, x + 1)).max(g(lo, x + 2));
-        let m = med3(g(mid, x), g(mid, x + 1), g(mid, x + 2));
-        let hh = g(hi, x).min(g(hi, x + 1)).min(g(hi, x + 2));
-        *o = med3(l, m, hh);
     }
 }
