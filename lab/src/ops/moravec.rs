@@ -49,13 +49,8 @@ pub fn moravec<'a>(
     let mut sup = Suppressor::<()>::new(w, h, size / 2);
     let mut keep = |c: usize, r: usize, s: f64, _: ()| points.push(point(c, r, s));
     let mut row = vec![(f64::NAN, ()); w];
-    let mut next = 0;
-    let empty = |w: usize| std::iter::repeat_n((f64::NAN, ()), w);
     stream::moravec_rows(g, size, |r, sums| {
-        while next < r {
-            sup.push(empty(w), &mut keep);
-            next += 1;
-        }
+        sup.skip_to(r, &mut keep);
         let out = &mut data[r * w + a..r * w + a + sums.len()];
         for (&s, o) in sums.iter().zip(out.iter_mut()) {
             *o = (f64::from(s) / n) as f32;
@@ -72,12 +67,8 @@ pub fn moravec<'a>(
             };
         }
         sup.push(row.iter().copied(), &mut keep);
-        next = r + 1;
     })?;
-    while next < h {
-        sup.push(empty(w), &mut keep);
-        next += 1;
-    }
+    // (the rows below the last window have no scores)
     sup.finish(&mut keep);
     Ok((Layer::new("moravec", whole(w, h), data, false), points))
 }
@@ -113,13 +104,8 @@ fn moravec_levels(
     let mut sup = Suppressor::<(usize, usize)>::new(w, h, size / 2).refined(4.0 * slack, exact);
     let mut keep = |c: usize, r: usize, _: f64, p: (usize, usize)| kept.push((c, r, p));
     let mut row = vec![(f64::NAN, (0, 0)); w];
-    let mut next = 0;
-    let empty = |w: usize| std::iter::repeat_n((f64::NAN, (0, 0)), w);
     stream::moravec_rows_levels(view, size, |r, sums| {
-        while next < r {
-            sup.push(empty(w), &mut keep);
-            next += 1;
-        }
+        sup.skip_to(r, &mut keep);
         let out = &mut data[r * w + a..r * w + a + sums.len()];
         for ((&s, o), (j, cell)) in sums
             .iter()
@@ -137,12 +123,7 @@ fn moravec_levels(
             *cell = (if v > threshold { v } else { f64::NAN }, (a + j, r));
         }
         sup.push(row.iter().copied(), &mut keep);
-        next = r + 1;
     })?;
-    while next < h {
-        sup.push(empty(w), &mut keep);
-        next += 1;
-    }
     sup.finish(&mut keep);
     drop(sup);
     let points = kept

@@ -330,6 +330,30 @@ pub fn forstner_rows(
     )
 }
 
+/// One row of Moravec's per-pixel sums: for image column `i + 1` of the
+/// rows `[up, mid, down]`, the four squared differences across it (row,
+/// column, both diagonals) in `s[i + 1]`, each level widened by `whole`
+/// first (bytes in `i32`, which the compiler vectorises; levels in `i64`).
+fn moravec_row<L: Copy, T: Whole + std::ops::Mul<Output = T>>(
+    [up, mid, down]: [&[L]; 3],
+    s: &mut [T],
+    whole: impl Fn(L) -> T,
+) {
+    let n = mid.len().saturating_sub(2);
+    let s = &mut s[1..=n];
+    let sq = |a: L, b: L| {
+        let d = whole(a) - whole(b);
+        d * d
+    };
+    // image column i + 1: its neighbours i, i + 1, i + 2
+    let (ml, mr) = (&mid[..n], &mid[2..2 + n]);
+    let (ul, uc, ur) = (&up[..n], &up[1..=n], &up[2..2 + n]);
+    let (dl, dc, dr) = (&down[..n], &down[1..=n], &down[2..2 + n]);
+    for i in 0..n {
+        s[i] = sq(mr[i], ml[i]) + sq(dc[i], uc[i]) + sq(dr[i], ul[i]) + sq(dl[i], ur[i]);
+    }
+}
+
 /// Moravec's window sums for every `size × size` window that fits: per
 /// interior pixel `Σ` of the four squared differences across it (row,
 /// column, both diagonals, as [`crate::interest::moravec`]), summed over
@@ -342,21 +366,8 @@ pub fn moravec_rows(img: Gray, size: usize, mut emit: impl FnMut(usize, &[i32]))
         1,
         |y, rows| {
             let (up, mid, down) = three_rows(&img, y);
-            let n = mid.len().saturating_sub(2);
             if let [s] = rows {
-                let s = &mut s[1..=n];
-                let sq = |a: u8, b: u8| {
-                    let d = i32::from(a) - i32::from(b);
-                    d * d
-                };
-                // image column i + 1: its neighbours i, i + 1, i + 2
-                let (ml, mr) = (&mid[..n], &mid[2..2 + n]);
-                let (ul, uc, ur) = (&up[..n], &up[1..=n], &up[2..2 + n]);
-                let (dl, dc, dr) = (&down[..n], &down[1..=n], &down[2..2 + n]);
-                for i in 0..n {
-                    s[i] =
-                        sq(mr[i], ml[i]) + sq(dc[i], uc[i]) + sq(dr[i], ul[i]) + sq(dl[i], ur[i]);
-                }
+                moravec_row([up, mid, down], s, i32::from);
             }
         },
         |r, s| {
@@ -428,17 +439,8 @@ pub fn moravec_rows_levels(
         |y, rows| {
             three_levels(&img, y, &mut three);
             let [up, mid, down] = &three;
-            let n = mid.len().saturating_sub(2);
             if let [s] = rows {
-                let s = &mut s[1..=n];
-                let sq = |a: i64, b: i64| (a - b) * (a - b);
-                let (ml, mr) = (&mid[..n], &mid[2..2 + n]);
-                let (ul, uc, ur) = (&up[..n], &up[1..=n], &up[2..2 + n]);
-                let (dl, dc, dr) = (&down[..n], &down[1..=n], &down[2..2 + n]);
-                for i in 0..n {
-                    s[i] =
-                        sq(mr[i], ml[i]) + sq(dc[i], uc[i]) + sq(dr[i], ul[i]) + sq(dl[i], ur[i]);
-                }
+                moravec_row([up, mid, down], s, |v| v);
             }
         },
         |r, s| {
@@ -555,6 +557,14 @@ impl<'e, P: Copy + Default> Suppressor<'e, P> {
         self.pushed += 1;
         while self.decided + self.radius < self.pushed {
             self.decide(kept);
+        }
+    }
+
+    /// Rows of no scores up to row `r` (the rows before a map's first
+    /// window; none when `r` is already pushed).
+    pub fn skip_to(&mut self, r: usize, kept: &mut impl FnMut(usize, usize, f64, P)) {
+        while self.pushed < r.min(self.height) {
+            self.push_empty(kept);
         }
     }
 

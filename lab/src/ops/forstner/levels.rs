@@ -242,7 +242,8 @@ pub(super) fn build(
 /// recomputed by the reference's window; the value of the rank among them
 /// when it lies in that range (then it is the reference's). Else the same
 /// with each window's own bound from its sums (a pass over the levels),
-/// and else every window's reference `w` (neither met in the tests).
+/// and else every window's reference `w` (`lab/tests/auto_threshold.rs`
+/// reaches both: a periodic photo, a layer that is not the photo's).
 pub fn levels_w_min(
     lv: &Levels,
     width: usize,
