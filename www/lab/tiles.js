@@ -29,6 +29,8 @@ const PAINT_SPLIT = 1 << 21;
 const SPARE = 8;
 /** Whole layers the page has released (replaced results), kept to carry the next result's (2 results × 2 layers). */
 const FREE = 4;
+/** Bands a pool worker has sent to it at once (Tiles.lanes). */
+const LANES = 2;
 /** Images with fewer pixels run on the main worker whole (bands would cost more than they save). */
 export const MIN_PIXELS = 1 << 19;
 
@@ -274,13 +276,16 @@ export class Tiles {
         const k = next++;
         w.band = job;
         parts[k] = await one(w, k, bands[k]);
-        w.band = null;
+        // (the worker's other lane may still run a band of the job: a cancel stops it then)
+        if (!w.busy) w.band = null;
         rowsDone += bands[k][1] - bands[k][0];
         if (!job.cancelled) onProgress?.({ progress: rowsDone / of, rows: rowsDone, of });
       }
     };
     try {
-      await Promise.all(Array.from({ length: Math.min(this.n, bands.length) }, (_, i) => lane(this.worker(i))));
+      // two lanes a worker: its next band is sent before the page has put the last one's rows
+      // together (Whole.add), so that the worker computes while the page copies
+      await Promise.all(Array.from({ length: Math.min(LANES * this.n, bands.length) }, (_, i) => lane(this.worker(i % this.n))));
     } catch (e) {
       throw job.cancelled ? cancelled() : e;
     } finally {
@@ -314,10 +319,12 @@ export class Tiles {
     const whole = new Whole(args.height, (T, n) => this.alloc(T, n));
     const parts = await this.lanes(bands, args.height, onProgress, async (w, k, [row0, row1]) => {
       if (w.image !== img) {
+        // (once a worker: its two lanes wait for the same photo)
         const [data, transfer] = this.rows(0, img.height);
-        await w.ask(img.bytes ? "raw" : "grey", { width: img.width, height: img.height, ...data }, transfer);
         w.image = img;
+        w.imageSent = w.ask(img.bytes ? "raw" : "grey", { width: img.width, height: img.height, ...data }, transfer);
       }
+      await w.imageSent;
       const spare = this.spare.splice(0, 4);
       const part = await w.ask("resample", { ...args, row0, row1, spare }, spare);
       this.recycle([...part.spare, ...whole.add(part)]);
