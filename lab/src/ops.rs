@@ -141,6 +141,37 @@ pub struct Levels {
 const LEVEL_SCALES: [f64; 5] = [1.0, 1000.0, 4000.0, 9000.0, 16000.0];
 
 impl Levels {
+    /// Levels given as they are (a band of a colour photo the page found
+    /// once, `n` each a whole number 0 … 2²⁴ − 1 over `scale`); an error
+    /// names what is wrong.
+    pub fn new(data: Vec<f32>, scale: f64) -> Result<Levels> {
+        if !(scale.is_finite() && scale > 0.0) {
+            return Err(Error::input("scale", "must be a finite number above 0"));
+        }
+        if let Some(i) = data
+            .iter()
+            .position(|&n| !(n >= 0.0 && n < 16_777_216.0 && n.fract() == 0.0))
+        {
+            return Err(Error::input(
+                "levels",
+                format!("value {} is not a whole number 0 … 16777215", i + 1),
+            ));
+        }
+        let max = data.iter().fold(0.0f32, |m, &n| if n > m { n } else { m });
+        Ok(Levels { data, scale, max })
+    }
+
+    /// The grey values `n / scale` as a `width × height` grid (the
+    /// reference paths' input), bit for bit the photo's greys.
+    pub fn grid(&self, width: usize, height: usize) -> Result<Grid> {
+        let data = self
+            .data
+            .iter()
+            .map(|&n| f64::from(n) / self.scale)
+            .collect();
+        Grid::new("levels", width, height, data)
+    }
+
     /// The levels as an image of `width × height` for the fast passes.
     pub fn view(&self, width: usize, height: usize) -> Option<GrayF32<'_>> {
         GrayF32::new("image", &self.data, width, height).ok()
@@ -272,15 +303,45 @@ impl<'a> Image<'a> {
         })
     }
 
+    /// An image of `width × height` given by its [`Levels`] alone, kept in
+    /// the caller's cell (a band of a colour photo sent as levels), without
+    /// its `f64` grid (built by [`Image::grid`] only if a reference path
+    /// needs it).
+    pub fn from_levels(
+        width: usize,
+        height: usize,
+        keep: &'a std::cell::OnceCell<Option<Levels>>,
+    ) -> Result<Self> {
+        match keep.get() {
+            Some(Some(l)) => GrayF32::new("levels", &l.data, width, height)?,
+            _ => return Err(Error::input("levels", "are missing")),
+        };
+        Ok(Image {
+            width,
+            height,
+            given: None,
+            built: std::cell::OnceCell::new(),
+            bytes: None,
+            keep: Some(keep),
+            found: std::cell::OnceCell::new(),
+        })
+    }
+
     /// The grey values as a grid (the reference paths' input): the caller's,
-    /// or built from the bytes the first time it is asked for.
+    /// or built from the bytes or the levels the first time it is asked for.
     pub fn grid(&self) -> &Grid {
         if let Some(g) = self.given {
             return g;
         }
-        self.built.get_or_init(|| match self.gray() {
-            Some(g) => g.to_grid(),
-            None => Grid::filled(self.width, self.height, 0.0),
+        self.built.get_or_init(|| {
+            let kept = self.keep.and_then(|k| k.get()).and_then(|l| l.as_ref());
+            match (self.gray(), kept) {
+                (Some(g), _) => g.to_grid(),
+                (None, Some(l)) => l
+                    .grid(self.width, self.height)
+                    .unwrap_or_else(|_| Grid::filled(self.width, self.height, 0.0)),
+                (None, None) => Grid::filled(self.width, self.height, 0.0),
+            }
         })
     }
 

@@ -58,10 +58,16 @@ pub struct LabImage {
 }
 
 impl LabImage {
-    /// The grey values as a grid: built from the bytes the first time it is
-    /// needed when the image was made from bytes.
+    /// The grey values as a grid: built from the bytes (or the levels) the
+    /// first time it is needed when the image was made from them.
     fn grid(&self) -> &Grid {
         self.grid.get_or_init(|| {
+            // a band sent as levels (`image_from_levels`): n / scale
+            if let Some(Some(l)) = self.levels.get() {
+                if let Ok(g) = l.grid(self.width, self.height) {
+                    return g;
+                }
+            }
             let b = self.bytes.get().and_then(|b| b.as_deref()).unwrap_or(&[]);
             match photogrammetry_playground::raster::Gray::new("image", b, self.width, self.height)
             {

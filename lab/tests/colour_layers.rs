@@ -752,3 +752,44 @@ fn colour_photos_take_the_fast_resampling() {
         worst.get()
     );
 }
+
+/// A band sent as levels (`Levels::new`, `Image::from_levels`: what the
+/// pool's workers get of a colour photo) runs as the photo made from its
+/// greys: the same layers bit for bit, its grid the greys bit for bit; and
+/// levels that are not whole numbers are refused, naming the value.
+#[test]
+fn an_image_from_levels_is_the_photo() {
+    let img = colour(33, 29, 8);
+    let found = ops::levels_of(img.data()).unwrap();
+    let keep = std::cell::OnceCell::new();
+    keep.set(Some(
+        ops::Levels::new(found.data.clone(), found.scale).unwrap(),
+    ))
+    .unwrap();
+    let from = Image::from_levels(33, 29, &keep).unwrap();
+    assert_eq!(from.levels(), Some(&found));
+    let border = ops::border("reflect").unwrap();
+    for kernel in ["mean", "gaussian-5", "median"] {
+        let a = ops::filter_image(&from, kernel, border, None).unwrap();
+        let b = ops::filter_image(&img, kernel, border, None).unwrap();
+        assert_eq!(a, b, "{kernel}");
+    }
+    let warp = ops::Warp::new((33, 29), "rotate", &[11.0, 1.1], 30, 30).unwrap();
+    assert_eq!(
+        ops::resample(&from, &warp, 0..30).unwrap(),
+        ops::resample(&img, &warp, 0..30).unwrap()
+    );
+    let bits = |g: &Grid| g.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(from.grid()), bits(&img));
+    for (bad, at) in [(0.5, 2), (-1.0, 2), (f32::NAN, 2), (16_777_216.0, 2)] {
+        let e = ops::Levels::new(vec![1.0, bad, 3.0], 1000.0)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains(&format!("value {at} is not a whole number")),
+            "{e}"
+        );
+    }
+    assert!(ops::Levels::new(vec![1.0], 0.0).is_err());
+    assert!(Image::from_levels(33, 28, &keep).is_err());
+}

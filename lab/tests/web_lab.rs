@@ -643,3 +643,77 @@ fn photos_upright_and_probed_across_the_boundary() {
     // a name of the wrong type is an error, not a trap
     assert!(probe_image(JsValue::from_f64(1.0), six).is_err());
 }
+
+/// A colour photo's band sent as its levels: `image_levels` gives the
+/// photo's `n` and scale once, `image_from_levels` of them runs the filters
+/// as the photo made from its greys (bit for bit), and levels that are not
+/// whole numbers or not `width × height` are refused, naming the field.
+#[wasm_bindgen_test]
+fn a_colour_band_as_levels_across_the_boundary() {
+    let greys: Vec<f64> = (0..35)
+        .map(|i| {
+            let (r, g, b) = (
+                (i * 37 % 256) as f64,
+                (i * 91 % 256) as f64,
+                (i * 13 % 256) as f64,
+            );
+            photogrammetry_lab::decode::luma(r, g, b)
+        })
+        .collect();
+    let img = image_from_grey(7, 5, &greys, 8, 255.0).unwrap();
+    let lv = image_levels(&img).unwrap();
+    let scale = get(&lv, "scale").as_f64().unwrap();
+    assert_eq!(scale, 1000.0);
+    let levels = Float32Array::from(get(&lv, "levels")).to_vec();
+    assert_eq!(levels.len(), 35);
+    for (n, g) in levels.iter().zip(&greys) {
+        assert_eq!((f64::from(*n) / scale).to_bits(), g.to_bits());
+    }
+    let band = image_from_levels(7, 5, &levels, scale, 8, 255.0).unwrap();
+    for kernel in ["mean", "median"] {
+        let a = run_filter(
+            &band,
+            kernel.into(),
+            "reflect".into(),
+            JsValue::UNDEFINED,
+            None,
+        )
+        .unwrap();
+        let b = run_filter(
+            &img,
+            kernel.into(),
+            "reflect".into(),
+            JsValue::UNDEFINED,
+            None,
+        )
+        .unwrap();
+        assert_eq!(
+            data(&layer(&get(&a, "layers"), 0)),
+            data(&layer(&get(&b, "layers"), 0))
+        );
+    }
+    // an 8-bit photo has no levels to send (its bytes are)
+    let eight = image_from_u8(2, 1, &[3, 4]).unwrap();
+    assert!(image_levels(&eight).unwrap().is_undefined());
+    let e = message(
+        image_from_levels(2, 1, &[1.0, 0.5], 1000.0, 8, 255.0)
+            .err()
+            .unwrap(),
+    );
+    assert!(
+        e.contains("levels") && e.contains("value 2 is not a whole number"),
+        "{e}"
+    );
+    let e = message(
+        image_from_levels(3, 1, &[1.0, 2.0], 1000.0, 8, 255.0)
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("levels"), "{e}");
+    let e = message(
+        image_from_levels(2, 1, &[1.0, 2.0], f64::NAN, 8, 255.0)
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("scale"), "{e}");
+}

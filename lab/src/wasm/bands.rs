@@ -104,6 +104,55 @@ pub fn image_from_grey(
     Ok(wrap(g, "raw", "grey", bits, max_value))
 }
 
+/// A band of a colour photo as its levels (`levels`: `width × height`
+/// whole numbers `n`, each grey `n / scale`; what [`image_levels`] gives
+/// the page once per photo), with the photo's sample depth: the pool's
+/// workers run it as the main worker runs the whole photo, without an
+/// `f64` grid (one is built from the levels only if a reference path asks)
+/// and without finding the levels again. Half the bytes of the greys.
+#[wasm_bindgen]
+pub fn image_from_levels(
+    width: usize,
+    height: usize,
+    levels: &[f32],
+    scale: f64,
+    bits: u32,
+    max_value: f64,
+) -> Result<LabImage, JsError> {
+    if !(max_value.is_finite() && max_value > 0.0 && (1..=32).contains(&bits)) {
+        return Err(JsError::new(
+            "bits: must be 1 to 32, and max_value a number above 0",
+        ));
+    }
+    let l = ops::Levels::new(levels.to_vec(), scale).map_err(js_error)?;
+    photogrammetry_playground::raster::GrayF32::new("levels", &l.data, width, height)
+        .map_err(js_error)?;
+    let img = bare(width, height, "raw", "grey", bits, max_value);
+    let _ = img.levels.set(Some(l));
+    let _ = img.bytes.set(None);
+    Ok(img)
+}
+
+/// The photo's grey values as levels, found once (and kept with it):
+/// `{ levels: Float32Array, scale }` when they are whole numbers over one
+/// scale and not 8-bit (a colour photo's BT.601 greys, 16-bit values),
+/// else `undefined` — what the page cuts into bands for
+/// [`image_from_levels`].
+#[wasm_bindgen]
+pub fn image_levels(img: &LabImage) -> Result<JsValue, JsError> {
+    if img.bytes().is_some() {
+        return Ok(JsValue::UNDEFINED);
+    }
+    let image = ops::Image::with_bytes(img.grid(), None).with_levels(&img.levels);
+    match image.levels() {
+        Some(l) => obj(&[
+            ("levels", js_sys::Float32Array::from(&l.data[..]).into()),
+            ("scale", num(l.scale)),
+        ]),
+        None => Ok(JsValue::UNDEFINED),
+    }
+}
+
 /// The `w × h` box of `img` from `(c, r)` as an image of its own (a
 /// preview's part with its halo), its bytes with it when it is 8-bit. With
 /// `eight_bit`, a photo that is not 8-bit (a colour photo's BT.601 greys,

@@ -17,7 +17,8 @@ fn image(img: &LabImage) -> ops::Image<'_> {
         (Some(grid), bytes) => ops::Image::with_bytes(grid, bytes),
         (None, Some(bytes)) => ops::Image::from_bytes(img.width, img.height, bytes)
             .unwrap_or_else(|_| ops::Image::from(img.grid())),
-        (None, None) => ops::Image::from(img.grid()),
+        (None, None) => ops::Image::from_levels(img.width, img.height, &img.levels)
+            .unwrap_or_else(|_| ops::Image::from(img.grid())),
     }
 }
 
@@ -64,9 +65,10 @@ fn f32_array(data: &[f32]) -> Float32Array {
 
 /// [`image`] with its grid (built once and kept with the image when it was
 /// made from bytes): for the operators that read grey values from the grid
-/// (correlation's windows, the boundary's region, the fiducials).
+/// (correlation's windows, the boundary's region, the fiducials), and the
+/// levels kept with it (a colour photo's: found once, not per call).
 fn whole_image(img: &LabImage) -> ops::Image<'_> {
-    ops::Image::with_bytes(img.grid(), img.bytes())
+    ops::Image::with_bytes(img.grid(), img.bytes()).with_levels(&img.levels)
 }
 
 fn layer_js(l: &Layer) -> Result<JsValue, JsError> {
