@@ -198,6 +198,9 @@ test("a colour photo (its BT.601 greys are not 8-bit) runs by bands of its grey 
     const bytes = await (await cv.convertToBlob({ type: "image/png" })).arrayBuffer();
     const r = await window.client.call("load", { name: "colour.png", bytes }, [bytes]);
     if (r.colour !== "colour" || r.bytes) throw new Error(`not a colour photo of fractional greys: ${r.colour}, ${Boolean(r.bytes)}`);
+    // its levels (n = 299R+587G+114B over 1000) found once, what the bands are cut from
+    if (!(r.levels instanceof Float32Array) || r.scale !== 1000 || r.levels.length !== w * h) throw new Error(`no levels: ${r.scale}`);
+    if (r.levels.some((n, i) => n / 1000 !== r.grey[i])) throw new Error("levels that do not give the greys back");
   });
   const some = REQUESTS.filter(([type, a]) => (type === "filter" && ["custom", "median", "gaussian-5", "laplacian-8"].includes(a.kernel)) || type === "edges" || (type === "forstner" && a.size !== 9) || (type === "moravec" && a.size === 4));
   const r = await compare(some);

@@ -90,7 +90,7 @@ export class LabClient {
     entry.done = p;
     if (!opens) return p;
     return p.then((r) => {
-      this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes, grey: r.grey, bits: r.bits ?? 8, maxValue: r.maxValue ?? 255 });
+      this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes, grey: r.grey, levels: r.levels, scale: r.scale, bits: r.bits ?? 8, maxValue: r.maxValue ?? 255 });
       return r;
     });
   }

@@ -81,7 +81,8 @@ export class Tiles {
 
   /**
    * The open photo: { width, height, bytes } when it is 8-bit, else
-   * { width, height, grey, bits, maxValue } (its grey values); null: none
+   * { width, height, grey, levels?, scale?, bits, maxValue } (its grey values, and their levels over
+   * `scale` when they are whole numbers over one: a colour photo's, sent to the bands); null: none
    * (the main worker runs everything).
    */
   setImage(img) {
@@ -133,10 +134,14 @@ export class Tiles {
    * buffer is transferred: `bytes`, or `values` with the sample depth.
    */
   rows(r0, r1) {
-    const { width, bytes, grey, bits, maxValue } = this.image;
+    const { width, bytes, grey, levels, scale, bits, maxValue } = this.image;
     if (bytes) {
       const b = bytes.slice(r0 * width, r1 * width);
       return [{ bytes: b.buffer }, [b.buffer]];
+    }
+    if (levels) {
+      const l = levels.slice(r0 * width, r1 * width);
+      return [{ levels: l.buffer, scale, bits, maxValue }, [l.buffer]];
     }
     const v = grey.slice(r0 * width, r1 * width);
     return [{ values: v.buffer, bits, maxValue }, [v.buffer]];

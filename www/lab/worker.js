@@ -81,8 +81,11 @@ function layersOut(layers, transfer) {
 async function imageInfo(img, transfer) {
   const grey = img.grey();
   const bytes = eightBit(img, grey);
+  // not 8-bit: its levels (a colour photo's n = 299R+587G+114B over 1000), found once here, cut into the pool's bands (tiles.js)
+  const lv = bytes ? undefined : lab.image_levels(img);
   const base = await painted(grey, img.width(), false);
   transfer.push(grey.buffer, base.bitmap);
+  if (lv) transfer.push(lv.levels.buffer);
   return {
     width: img.width(),
     height: img.height(),
@@ -92,8 +95,16 @@ async function imageInfo(img, transfer) {
     maxValue: img.max_value(),
     grey,
     bytes: bytes && bytes.slice(),
+    levels: lv?.levels,
+    scale: lv?.scale,
     bitmap: base.bitmap,
   };
+}
+
+/** A band of a photo that is not 8-bit: its levels over `scale` (tiles.js cuts them from the photo's, found once), else its grey values. */
+function band(width, height, { values, levels, scale, bits, maxValue }) {
+  if (levels) return lab.image_from_levels(width, height, new Float32Array(levels), scale, bits, maxValue);
+  return lab.image_from_grey(width, height, new Float64Array(values), bits, maxValue);
 }
 
 /** Keeps the image's values as bytes with it when they are 8-bit (`grey`: its values); returns them or null. */
@@ -288,8 +299,8 @@ const handlers = {
    * image. Answers as `type` does for the whole image, cut to `own` and
    * placed in the image.
    */
-  region({ op, args, width, height, bytes, values, bits, maxValue, own, at, keep = null }, transfer) {
-    const img = bytes ? lab.image_from_u8(width, height, new Uint8Array(bytes)) : lab.image_from_grey(width, height, new Float64Array(values), bits, maxValue);
+  region({ op, args, width, height, bytes, values, levels, scale, bits, maxValue, own, at, keep = null }, transfer) {
+    const img = bytes ? lab.image_from_u8(width, height, new Uint8Array(bytes)) : band(width, height, { values, levels, scale, bits, maxValue });
     try {
       if (op === "forstnerMaps" && keep) {
         // the band's map kept for the live threshold (keptPoints), the older jobs' dropped
@@ -434,8 +445,8 @@ const handlers = {
     return lab.fit_fiducial_marks(Float64Array.from(measured));
   },
   /** A photo that is not 8-bit as image "a" of a pool worker (its resampling bands: tiles.js). */
-  grey({ width, height, values, bits, maxValue }) {
-    put("a", lab.image_from_grey(width, height, new Float64Array(values), bits, maxValue));
+  grey({ width, height, values, levels, scale, bits, maxValue }) {
+    put("a", band(width, height, { values, levels, scale, bits, maxValue }));
     return { width, height };
   },
   raw({ slot = "a", width, height, bytes }) {
