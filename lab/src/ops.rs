@@ -150,7 +150,7 @@ impl Levels {
         }
         if let Some(i) = data
             .iter()
-            .position(|&n| !(n >= 0.0 && n < 16_777_216.0 && n.fract() == 0.0))
+            .position(|&n| !((0.0..16_777_216.0).contains(&n) && n.fract() == 0.0))
         {
             return Err(Error::input(
                 "levels",

@@ -294,6 +294,7 @@ mod paint;
 
 // The pool's bands (www/lab/tiles.js): Förstner's threshold over the whole photo.
 mod bands;
+pub use bands::{image_from_grey, image_from_levels, image_levels};
 
 // The page's SIMD build decodes JPEG only; the others come decoded from the scalar build.
 mod formats;
