@@ -9,7 +9,6 @@ import { buildHash, parseHash } from "../url.js";
 import { loadCatalog } from "../core.js";
 import { LabClient } from "./client.js";
 import { useCatalog } from "./explain.js";
-import { watchMotion } from "./motion.js";
 
 // for the tests and for pages that drive the lab: its worker client and its links,
 // reached through the lab module (the build bundles them into it)
@@ -27,6 +26,32 @@ import boundaries from "./families/boundaries.js";
 import fiducials from "./families/fiducials.js";
 
 /** The operator families (www/lab/families/<family>.js), in the menu's order. */
+/**
+ * The lab's motion (motion.js `watchMotion`), loaded with the first
+ * explanation that links an example: a lab visit that explains no pixel does
+ * not fetch it. Returns { close(), destroy() } as watchMotion does.
+ */
+function lazyMotion(lab) {
+  let motion = null;
+  let gone = false;
+  const observer = new MutationObserver(() => {
+    if (lab.explain.hidden || !lab.explain.querySelector('a[href^="index.html#/"]')) return;
+    observer.disconnect();
+    import("./motion.js").then(({ watchMotion }) => {
+      if (!gone) motion = watchMotion(lab);
+    });
+  });
+  observer.observe(lab.explain, { childList: true, subtree: true, attributes: true, attributeFilter: ["hidden", "href"] });
+  return {
+    close: () => motion?.close(),
+    destroy() {
+      gone = true;
+      observer.disconnect();
+      motion?.destroy();
+    },
+  };
+}
+
 const FAMILIES = [filters, edges, interest, correlation, resampling, boundaries, fiducials];
 
 /**
@@ -500,7 +525,7 @@ class Lab {
       this.explorer.bar, stage, this.inspector, this.explorer.panel, this.explain, this.extra);
     this.root.replaceChildren(section);
     this.section = section;
-    this.motion = watchMotion(this); // "Watch it move" under an explanation (motion.js)
+    this.motion = lazyMotion(this); // "Watch it move" under an explanation (motion.js, loaded with the first one)
     this.viewer = new Viewer(stage, {
       label: "The photo and the result layer (drag to pan, wheel to zoom)",
       onPick: (c, r, ev, pos) => this.pick(c, r, pos),

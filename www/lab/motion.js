@@ -198,6 +198,7 @@ export function watchMotion(lab) {
   });
   const observer = new MutationObserver(() => follow());
   observer.observe(lab.explain, { childList: true, subtree: true, attributes: true, attributeFilter: ["hidden", "href"] });
+  follow(); // the explanation that loaded this module (lab.js lazyMotion)
 
   return {
     close: () => hide(),

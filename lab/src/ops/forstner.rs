@@ -334,7 +334,10 @@ impl ForstnerKept {
             let mut w: Vec<f64> = map.cells.iter().flatten().map(|m| m.w).collect();
             let w_min = (!w.is_empty()).then(|| {
                 let k = top_rank(w.len());
-                *w.select_nth_unstable_by(k, f64::total_cmp).1
+                // sorted as the groups are (one sort in the wasm, not a second
+                // selection: a lab visit's download); this route is the rare one
+                w.sort_by(f64::total_cmp);
+                w[k]
             });
             let mut kept = ForstnerKept {
                 size,

@@ -340,7 +340,9 @@ pub fn levels_w_min(
                 .filter_map(|(c, r)| exact_measures(lv, width, size, c, r).map(|m| m.w))
                 .collect();
             every.get(k)?;
-            Some(*every.select_nth_unstable_by(k, f64::total_cmp).1)
+            // sorted as `exact` is (one sort in the wasm, not a second selection)
+            every.sort_by(f64::total_cmp);
+            Some(every[k])
         }
     }
 }
