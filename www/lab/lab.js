@@ -9,6 +9,7 @@ import { buildHash, parseHash } from "../url.js";
 import { loadCatalog } from "../core.js";
 import { LabClient } from "./client.js";
 import { useCatalog } from "./explain.js";
+import { lazyMotion } from "./lazy-motion.js";
 
 // for the tests and for pages that drive the lab: its worker client and its links,
 // reached through the lab module (the build bundles them into it)
@@ -26,32 +27,6 @@ import boundaries from "./families/boundaries.js";
 import fiducials from "./families/fiducials.js";
 
 /** The operator families (www/lab/families/<family>.js), in the menu's order. */
-/**
- * The lab's motion (motion.js `watchMotion`), loaded with the first
- * explanation that links an example: a lab visit that explains no pixel does
- * not fetch it. Returns { close(), destroy() } as watchMotion does.
- */
-function lazyMotion(lab) {
-  let motion = null;
-  let gone = false;
-  const observer = new MutationObserver(() => {
-    if (lab.explain.hidden || !lab.explain.querySelector('a[href^="index.html#/"]')) return;
-    observer.disconnect();
-    import("./motion.js").then(({ watchMotion }) => {
-      if (!gone) motion = watchMotion(lab);
-    });
-  });
-  observer.observe(lab.explain, { childList: true, subtree: true, attributes: true, attributeFilter: ["hidden", "href"] });
-  return {
-    close: () => motion?.close(),
-    destroy() {
-      gone = true;
-      observer.disconnect();
-      motion?.destroy();
-    },
-  };
-}
-
 const FAMILIES = [filters, edges, interest, correlation, resampling, boundaries, fiducials];
 
 /**
