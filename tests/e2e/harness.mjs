@@ -68,8 +68,14 @@ export async function open(browser, options = {}) {
     globalThis.__playgroundTest = true;
   });
   const page = await context.newPage();
-  const log = { requests: [], pageErrors: [], consoleErrors: [], dialogs: [] };
-  context.on("request", (r) => log.requests.push(r.url()));
+  // (open: the requests not yet finished, for pageState's failure messages)
+  const log = { requests: [], pageErrors: [], consoleErrors: [], dialogs: [], open: new Set() };
+  context.on("request", (r) => {
+    log.requests.push(r.url());
+    log.open.add(r);
+  });
+  context.on("requestfinished", (r) => log.open.delete(r));
+  context.on("requestfailed", (r) => log.open.delete(r));
   page.on("pageerror", (e) => log.pageErrors.push(e.message));
   page.on("console", (m) => {
     if (m.type() === "error") log.consoleErrors.push(m.text());
@@ -91,6 +97,47 @@ export async function settled(page) {
     { timeout: WAIT },
   );
   return page.evaluate(() => document.body.dataset.status);
+}
+
+/**
+ * What the page is doing, for a failure message: its status, busy panels,
+ * formulas, fonts, visibility and the requests still open (`log` from open()).
+ * Bounded: a page whose main thread does not answer within 5 s says so.
+ */
+export async function pageState(page, log = null) {
+  const state = page
+    .evaluate(() => ({
+      status: document.body.dataset.status,
+      busy: document.querySelectorAll(".panel[aria-busy]").length,
+      math: document.documentElement.dataset.math ?? null,
+      fonts: document.fonts.status,
+      visibility: document.visibilityState,
+      hash: location.hash.slice(0, 120),
+    }))
+    .catch((e) => ({ evaluate: e.message.split("\n")[0] }));
+  const timer = new Promise((r) => setTimeout(() => r({ evaluate: "no answer within 5 s (main thread busy or hung)" }), 5000).unref());
+  const s = await Promise.race([state, timer]);
+  if (log?.open) s.openRequests = [...log.open].slice(0, 5).map((r) => r.url().slice(-60));
+  return JSON.stringify(s);
+}
+
+/**
+ * `promise` (a step of a test on `page`), or an error after `ms` that names
+ * the step and the page's state (pageState): a wait that hangs says where,
+ * instead of the test's timeout saying only that it ran out.
+ */
+export async function within(page, ms, what, promise, log = null) {
+  let timer;
+  const late = new Promise((_, reject) => {
+    timer = setTimeout(() => {
+      pageState(page, log).then((s) => reject(new Error(`${what}: not done after ${ms} ms; the page: ${s}`)));
+    }, ms);
+  });
+  try {
+    return await Promise.race([promise, late]);
+  } finally {
+    clearTimeout(timer);
+  }
 }
 
 /**

@@ -6,7 +6,10 @@
 // waiting solution whole; an embed host hears "solved" only with the steps in.
 import { after, before, describe, test } from "node:test";
 import assert from "node:assert/strict";
-import { TEST_TIMEOUT, open, start, stepsHtml, visit } from "./harness.mjs";
+import { TEST_TIMEOUT, open, start, stepsHtml, visit, within } from "./harness.mjs";
+
+/** A step's bound: a hang says which step and what the page was doing (within). */
+const STEP = 25_000;
 
 let env;
 before(async () => {
@@ -59,13 +62,13 @@ async function install(page) {
 
 for (const id of ["ncc-1d", "lsm-affine"]) {
   describe(`${id}: the figure first, the steps right after`, () => {
-    test("the figure is new in the change's frame, the steps busy until they are in, then those of a cold load", { timeout: TEST_TIMEOUT }, async () => {
+    test("the figure is new in the change's frame, the steps busy until they are in, then those of a cold load", { timeout: 2 * TEST_TIMEOUT }, async () => {
       const a = await open(env.browser);
       const b = await open(env.browser);
       try {
         assert.equal(await visit(a.page, env.url, "index.html", `#/${id}`), "ok");
         await install(a.page);
-        const seen = await a.page.evaluate(async () => {
+        const seen = await within(a.page, STEP, `${id}: a change and its frame`, a.page.evaluate(async () => {
           const { input, texts, hashes } = await window.__find();
           const canvas = document.querySelector(".figure-section canvas");
           const panels = [".steps-panel", ".result-section", ".notes-section"].map((s) => document.querySelector(s));
@@ -83,14 +86,14 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
             requestAnimationFrame(() => r({ pixels: canvas.toDataURL() !== before.pixels, busy: panels.map((p) => p.getAttribute("aria-busy") === "true"), status: document.body.dataset.status })),
           );
           return { now, frame, hash: hashes[0] };
-        });
+        }), a.log);
         assert.deepEqual(seen.now, { pixels: true, stepsOld: true, busy: [true, true, true], status: "updating" });
         assert.deepEqual(seen.frame, { pixels: true, busy: [true, true, true], status: "updating" });
-        const changed = await stepsHtml(a.page);
+        const changed = await within(a.page, STEP, `${id}: the change's steps`, stepsHtml(a.page), a.log);
         assert.deepEqual(await a.page.evaluate(() => [...document.querySelectorAll(".panel[aria-busy], .panel.updating")].length), 0);
         assert.equal(await a.page.evaluate(() => location.hash), seen.hash, "the address follows the change once its steps are in");
-        assert.equal(await visit(b.page, env.url, "index.html", seen.hash), "ok");
-        assert.equal(changed, await stepsHtml(b.page), `${id}: the steps after the change differ from a cold load of ${seen.hash}`);
+        assert.equal(await within(b.page, STEP, `${id}: a cold load of ${seen.hash}`, visit(b.page, env.url, "index.html", seen.hash), b.log), "ok");
+        assert.equal(changed, await within(b.page, STEP, `${id}: the cold load's steps`, stepsHtml(b.page), b.log), `${id}: the steps after the change differ from a cold load of ${seen.hash}`);
         assert.deepEqual(a.log.pageErrors, []);
       } finally {
         await a.context.close();
@@ -98,13 +101,13 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
       }
     });
 
-    test("a fast series of changes ends with the last one's steps, rendered once", { timeout: TEST_TIMEOUT }, async () => {
+    test("a fast series of changes ends with the last one's steps, rendered once", { timeout: 2 * TEST_TIMEOUT }, async () => {
       const a = await open(env.browser);
       const b = await open(env.browser);
       try {
         assert.equal(await visit(a.page, env.url, "index.html", `#/${id}`), "ok");
         await install(a.page);
-        await a.page.evaluate(async () => {
+        const found = await within(a.page, STEP, `${id}: finding four inputs that solve`, a.page.evaluate(async () => {
           const { input, texts } = await window.__find();
           window.__settled = 0;
           new PerformanceObserver((list) => (window.__settled += list.getEntriesByName("settled").length)).observe({ type: "measure" });
@@ -112,15 +115,17 @@ for (const id of ["ncc-1d", "lsm-affine"]) {
             input.value = t;
             input.dispatchEvent(new Event("input", { bubbles: true }));
           }
-        });
-        const changed = await stepsHtml(a.page);
+          return texts.length;
+        }), a.log);
+        assert.ok(found >= 2, `${id}: only ${found} nearby inputs solve`);
+        const changed = await within(a.page, STEP, `${id}: the series' steps`, stepsHtml(a.page), a.log);
         // the settled measure comes a frame after the steps
-        await a.page.waitForFunction(() => window.__settled > 0);
+        await within(a.page, STEP, `${id}: the "settled" measure`, a.page.waitForFunction(() => window.__settled > 0, null, { timeout: 0 }), a.log);
         // the address, written with the steps: the last change's
         const hash = await a.page.evaluate(() => location.hash);
         assert.equal(await a.page.evaluate(() => window.__settled), 1, "the steps were rendered once, for the last change");
-        assert.equal(await visit(b.page, env.url, "index.html", hash), "ok");
-        assert.equal(changed, await stepsHtml(b.page), `${id}: the steps after the series differ from a cold load of ${hash}`);
+        assert.equal(await within(b.page, STEP, `${id}: a cold load of ${hash}`, visit(b.page, env.url, "index.html", hash), b.log), "ok");
+        assert.equal(changed, await within(b.page, STEP, `${id}: the cold load's steps`, stepsHtml(b.page), b.log), `${id}: the steps after the series differ from a cold load of ${hash}`);
         assert.deepEqual(a.log.pageErrors, []);
       } finally {
         await a.context.close();
