@@ -242,6 +242,8 @@ test("axe-core at 390 and 1280 px, light and dark, with a layer shown and the Da
   await page.setViewportSize({ width: 390, height: 844 });
   for (const family of await page.$$eval("#lab-family option", (os) => os.map((o) => o.value))) {
     await page.selectOption("#lab-family", family);
+    // (a family loaded when chosen, fiducials: its controls once its module is in)
+    await page.waitForFunction(() => document.querySelector("#lab-family-box").childElementCount > 0);
     const small = await page.$$eval("#lab button, #lab select, #lab input, #lab textarea, #lab canvas, #lab [tabindex]", (els) => els
       .filter((e) => e.getClientRects().length && !e.closest("[hidden]"))
       .map((e) => [e.id || e.textContent.trim().slice(0, 20) || e.tagName, e.getBoundingClientRect()])

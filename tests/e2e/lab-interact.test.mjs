@@ -193,6 +193,7 @@ test("fiducials: the student clicks the four marks, refines them, redoes one, an
   const { page, log, context } = await openLab();
   await sample(page, "frame");
   await page.selectOption("#lab-family", "fiducials");
+  await page.waitForSelector("#lab-fid-start"); // (the family's module is loaded when chosen)
   const truth = await page.evaluate(async () => (await import("./lab/lab.js")).truthForTests());
   assert.equal(await page.evaluate(() => document.body.dataset.fidNext), "1");
   assert.match(await page.textContent("#lab-fid-prompt"), /Click fiducial 1 \(left/);
@@ -254,6 +255,7 @@ test("fiducials: the student clicks the four marks, refines them, redoes one, an
   await page.waitForSelector("#lab-sample");
   await sample(page, "frame");
   await page.selectOption("#lab-family", "fiducials");
+  await page.waitForSelector("#lab-fid-start"); // (the family's module is loaded when chosen)
   await page.uncheck("#lab-fid-refine");
   const typed = [0, 1, 2, 3].map((k) => `${truth.marks[2 * k]}, ${truth.marks[2 * k + 1]}`).join("; ");
   await page.fill("#lab-fid-typed", typed);

@@ -503,7 +503,12 @@ test("resampling side by side, boundaries with chain code, and the fiducial work
   await page.goto(`${env.url}index.html#/lab`);
   await page.waitForSelector("#lab-sample");
   await sample(page, "frame");
+  // the fiducials family's module comes when the family is chosen, not with the lab
+  const fiducialsModule = () => log.requests.filter((u) => /\/fiducials(-\w{8})?\.js$/.test(u)).length;
+  assert.equal(fiducialsModule(), 0, "the fiducials family was fetched before it was chosen");
   await page.selectOption("#lab-family", "fiducials");
+  await page.waitForSelector("#lab-fid-start");
+  assert.equal(fiducialsModule(), 1);
   // the lab measures the four marks itself (the student's own clicks: lab-interact.test.mjs)
   await page.click("#lab-run");
   await page.waitForSelector("#lab-fid-fit");

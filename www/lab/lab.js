@@ -24,10 +24,15 @@ import interest from "./families/interest.js";
 import correlation from "./families/correlation.js";
 import resampling from "./families/resampling.js";
 import boundaries from "./families/boundaries.js";
-import fiducials from "./families/fiducials.js";
 
-/** The operator families (www/lab/families/<family>.js), in the menu's order. */
-const FAMILIES = [filters, edges, interest, correlation, resampling, boundaries, fiducials];
+/**
+ * The operator families (www/lab/families/<family>.js), in the menu's order.
+ * The fiducials family is loaded when chosen (`load`: its module's default
+ * export has `create`): few visits use it, and the lab's first download
+ * stays within its budget (lab_tiles.test.mjs).
+ */
+const FAMILIES = [filters, edges, interest, correlation, resampling, boundaries,
+  { id: "fiducials", title: "Fiducials (Example 4 on the scanned frame)", load: () => import("./families/fiducials.js") }];
 
 /**
  * Bundled samples (www/lab/samples/SOURCE.md says where each comes from);
@@ -379,6 +384,7 @@ class Lab {
       await this.openSample(named?.id ?? startSample(family));
       if (p.has("sample") && !named) this.showError(`sample: there is no sample called “${p.get("sample").slice(0, 40)}”; the lab shows another.`);
     }
+    await this.familyReady;
     if (this.closed || !this.image) return;
     // the controls: set, then "change" so that each family shows and hides its own
     for (const [k, v] of p) {
@@ -533,8 +539,10 @@ class Lab {
     this.chooseFamily(FAMILIES.some((f) => f.id === this.startFamily) ? this.startFamily : FAMILIES[0].id);
   }
 
+  /** Shows family `id`'s controls; `familyReady` resolves once they are there (a lazily loaded family: after its module). */
   chooseFamily(id) {
     this.family?.destroy?.();
+    this.family = null;
     this.clearResult();
     this.ran = false;
     this.picked = null;
@@ -542,8 +550,14 @@ class Lab {
     this.familySelect.value = def.id;
     this.familyBox.replaceChildren();
     this.extra.replaceChildren();
-    this.family = def.create(this, this.familyBox);
-    this.saveState();
+    const chosen = (this.familyChosen = (this.familyChosen ?? 0) + 1);
+    const create = (made) => {
+      if (chosen !== this.familyChosen || this.closed) return;
+      this.family = made.create(this, this.familyBox);
+      this.saveState();
+    };
+    const failed = (e) => chosen === this.familyChosen && this.showError(`The ${def.title} controls could not be loaded (${e.message}): reload the page to try again.`);
+    this.familyReady = def.load ? def.load().then((m) => create(m.default), failed) : Promise.resolve(create(def));
   }
 
   /**

@@ -44,9 +44,8 @@ function um(mm) {
   return fmt(mm * 1000, 3);
 }
 
+/** (its id and title are in lab.js's FAMILIES: this module is loaded when the family is chosen) */
 const fiducials = {
-  id: "fiducials",
-  title: "Fiducials (Example 4 on the scanned frame)",
   create(lab, box) {
     const start = el("button", { type: "button", class: "lab-run", id: "lab-fid-start" }, "Measure the four marks yourself");
     const refine = el("input", { type: "checkbox", id: "lab-fid-refine", checked: true });
