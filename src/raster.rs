@@ -178,29 +178,67 @@ impl Grid {
     }
 }
 
-/// An 8-bit grey image borrowed from a byte buffer (row-major, no
-/// padding): the input of the fast whole-image paths (`filter::fast`,
-/// `interest::fast`, `correlation::fast`, `resample::fast`, `chain::fast`).
+/// A grey image borrowed from a buffer of `T` (row-major, no padding):
+/// [`Gray`] (bytes) and [`GrayF32`] (`f32` values) are its two kinds.
 #[derive(Debug, Clone, Copy)]
-pub struct Gray<'a> {
-    data: &'a [u8],
+pub struct Plane<'a, T> {
+    data: &'a [T],
     width: usize,
     height: usize,
 }
 
-impl<'a> Gray<'a> {
-    /// A view of `data` as `width × height`; `field` names it in errors.
-    pub fn new(field: &str, data: &'a [u8], width: usize, height: usize) -> Result<Self> {
+/// What a [`Plane`] may hold: the word its errors count the buffer in, and
+/// whether a value is one (an `f32` must be finite).
+pub trait PlaneValue: Copy {
+    /// "bytes", "values".
+    const UNIT: &'static str;
+    fn valid(self) -> bool;
+}
+
+impl PlaneValue for u8 {
+    const UNIT: &'static str = "bytes";
+    fn valid(self) -> bool {
+        true
+    }
+}
+
+impl PlaneValue for f32 {
+    const UNIT: &'static str = "values";
+    fn valid(self) -> bool {
+        self.is_finite()
+    }
+}
+
+/// An 8-bit grey image borrowed from a byte buffer: the input of the fast
+/// whole-image paths (`filter::fast`, `interest::fast`, `correlation::fast`,
+/// `resample::fast`, `chain::fast`).
+pub type Gray<'a> = Plane<'a, u8>;
+
+/// A grey image of `f32` values borrowed from a buffer: the input of the
+/// fast filter passes when the grey values are not bytes
+/// (`filter::fast::{separable, correlate, sobel, median3_f32}` read it as
+/// they read a [`Gray`]'s converted rows). The image lab gives a colour
+/// photo's greys as the whole numbers `n = s · grey` (its BT.601 sums),
+/// exact in `f32`, so that the passes' sums are exact integers.
+pub type GrayF32<'a> = Plane<'a, f32>;
+
+impl<'a, T: PlaneValue> Plane<'a, T> {
+    /// A view of `data` as `width × height`; `field` names it in errors
+    /// (an `f32` value must be finite).
+    pub fn new(field: &str, data: &'a [T], width: usize, height: usize) -> Result<Self> {
         if width == 0 || height == 0 {
             return Err(Error::input(field, "is empty"));
         }
         if width.checked_mul(height) != Some(data.len()) {
             return Err(Error::input(
                 field,
-                format!("has {} bytes for {width}×{height}", data.len()),
+                format!("has {} {} for {width}×{height}", data.len(), T::UNIT),
             ));
         }
-        Ok(Gray {
+        if !data.iter().all(|v| v.valid()) {
+            return Err(Error::input(field, "must hold finite numbers"));
+        }
+        Ok(Plane {
             data,
             width,
             height,
@@ -212,13 +250,16 @@ impl<'a> Gray<'a> {
     pub fn height(&self) -> usize {
         self.height
     }
-    pub fn data(&self) -> &'a [u8] {
+    pub fn data(&self) -> &'a [T] {
         self.data
     }
     /// Row `r` (`None` past the last row).
-    pub fn row(&self, r: usize) -> Option<&'a [u8]> {
+    pub fn row(&self, r: usize) -> Option<&'a [T]> {
         self.data.get(r * self.width..(r + 1) * self.width)
     }
+}
+
+impl Gray<'_> {
     /// The same values as a [`Grid`] (what the reference functions take).
     pub fn to_grid(&self) -> Grid {
         Grid {
@@ -226,56 +267,6 @@ impl<'a> Gray<'a> {
             height: self.height,
             data: self.data.iter().map(|&v| f64::from(v)).collect(),
         }
-    }
-}
-
-/// A grey image of `f32` values borrowed from a buffer (row-major, no
-/// padding): the input of the fast filter passes when the grey values are
-/// not bytes (`filter::fast::{separable, correlate, sobel, median3_f32}`
-/// read it as they read a [`Gray`]'s converted rows). The image lab gives
-/// a colour photo's greys as the whole numbers `n = s · grey` (its BT.601
-/// sums), exact in `f32`, so that the passes' sums are exact integers.
-#[derive(Debug, Clone, Copy)]
-pub struct GrayF32<'a> {
-    data: &'a [f32],
-    width: usize,
-    height: usize,
-}
-
-impl<'a> GrayF32<'a> {
-    /// A view of `data` as `width × height`; `field` names it in errors
-    /// (every value must be finite).
-    pub fn new(field: &str, data: &'a [f32], width: usize, height: usize) -> Result<Self> {
-        if width == 0 || height == 0 {
-            return Err(Error::input(field, "is empty"));
-        }
-        if width.checked_mul(height) != Some(data.len()) {
-            return Err(Error::input(
-                field,
-                format!("has {} values for {width}×{height}", data.len()),
-            ));
-        }
-        if data.iter().any(|v| !v.is_finite()) {
-            return Err(Error::input(field, "must hold finite numbers"));
-        }
-        Ok(GrayF32 {
-            data,
-            width,
-            height,
-        })
-    }
-    pub fn width(&self) -> usize {
-        self.width
-    }
-    pub fn height(&self) -> usize {
-        self.height
-    }
-    pub fn data(&self) -> &'a [f32] {
-        self.data
-    }
-    /// Row `r` (`None` past the last row).
-    pub fn row(&self, r: usize) -> Option<&'a [f32]> {
-        self.data.get(r * self.width..(r + 1) * self.width)
     }
 }
 
