@@ -179,6 +179,22 @@ pub fn high_pass() -> Kernel {
     Kernel::literal([[-1, -1, -1], [-1, 8, -1], [-1, -1, -1]], 9.0)
 }
 
+/// The names [`by_name`] knows, in the order of the filter example's menu
+/// (the lab's tests run every one).
+pub const NAMES: [&str; 11] = [
+    "mean",
+    "weighted-mean",
+    "gaussian-3",
+    "gaussian-5",
+    "laplacian-4",
+    "laplacian-8",
+    "laplacian-004",
+    "log",
+    "sharpen",
+    "high-pass",
+    "median",
+];
+
 /// A kernel of the course by its name in the filter example and the lab
 /// (`mean`, `weighted-mean`, `gaussian-3`, `gaussian-5`, `laplacian-4`,
 /// `laplacian-8`, `laplacian-004`, `log`, `sharpen`, `high-pass`):
@@ -557,6 +573,18 @@ mod tests {
         assert_eq!(rows[0], vec![0.0, 1.0, 2.0, 1.0, 0.0]);
         assert_eq!(rows[2], vec![2.0, -2.0, -8.0, -2.0, 2.0]);
         assert_eq!(rows[1], vec![1.0, 0.0, -2.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn every_name_is_a_kernel_or_the_median() {
+        for name in NAMES {
+            assert_eq!(
+                by_name(name).map(|k| k.is_none()),
+                Some(name == "median"),
+                "{name}"
+            );
+        }
+        assert!(by_name("custom").is_none());
     }
 
     #[test]

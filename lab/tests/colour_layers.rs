@@ -129,19 +129,7 @@ fn near(abs: f64) -> impl Fn(f32, f64) -> bool {
 
 #[test]
 fn colour_photos_take_the_fast_filters() {
-    let named = [
-        "mean",
-        "weighted-mean",
-        "gaussian-3",
-        "gaussian-5",
-        "laplacian-4",
-        "laplacian-8",
-        "laplacian-004",
-        "log",
-        "sharpen",
-        "high-pass",
-        "median",
-    ];
+    let named = photogrammetry_playground::filter::NAMES;
     let customs: [(&str, Option<f64>); 3] = [
         ("1 0 2\n-1 3 1\n0 1 1\n2 0 -1\n1 0 0", None),
         ("0.1 0.25 -0.3;0.7 1.5 0.2;-0.05 0.4 0.33", Some(0.3)),

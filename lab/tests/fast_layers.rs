@@ -119,19 +119,7 @@ fn within(tol: f64) -> impl Fn(f32, f64) -> bool {
 
 #[test]
 fn filters_equal_the_reference_rounded_to_f32() {
-    let named = [
-        "mean",
-        "weighted-mean",
-        "gaussian-3",
-        "gaussian-5",
-        "laplacian-4",
-        "laplacian-8",
-        "laplacian-004",
-        "log",
-        "sharpen",
-        "high-pass",
-        "median",
-    ];
+    let named = photogrammetry_playground::filter::NAMES;
     let customs: [(&str, Option<f64>); 4] = [
         ("1 1 1 1 1\n1 1 1 1 1\n1 1 1 1 1", None),
         ("1 0 2\n-1 3 1\n0 1 1\n2 0 -1\n1 0 0", None),
