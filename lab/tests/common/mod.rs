@@ -1,8 +1,11 @@
 //! Helpers the lab's integration tests share (each test file: `mod common;`).
 
+use photogrammetry_lab::ops::Traced;
+use photogrammetry_playground::chain::{self, Connectivity};
 use photogrammetry_playground::raster::Grid;
 
 /// A random image, SplitMix64 grey values 0 … 255.
+#[allow(dead_code)]
 pub fn random(w: usize, h: usize, seed: u64) -> Grid {
     let mut s = seed;
     let data = (0..w * h)
@@ -15,4 +18,29 @@ pub fn random(w: usize, h: usize, seed: u64) -> Grid {
         })
         .collect();
     Grid::new("image", w, h, data).unwrap()
+}
+
+/// Checks a traced boundary `t` (the lab's `ops::boundary` at `(c, r)` for
+/// `threshold` on `img`) against the reference (`chain::region_at`,
+/// `chain::trace`, `chain::length`, 8-connected): its boundary and length
+/// equal. Returns the reference's region (for the caller's layer check)
+/// and the boundary's pixel count.
+#[allow(dead_code)] // (each test file compiles this module; not every one traces)
+pub fn boundary_is_the_reference(
+    t: &Traced,
+    img: &Grid,
+    threshold: f64,
+    c: usize,
+    r: usize,
+    what: &str,
+) -> (Grid, usize) {
+    let mask = chain::region_at(img, threshold, c, r, Connectivity::Eight).unwrap();
+    let want = chain::trace(&mask, Connectivity::Eight).remove(0);
+    assert_eq!(t.boundary, want, "{what}");
+    assert_eq!(
+        t.length,
+        chain::length(&want.code, Connectivity::Eight),
+        "{what}"
+    );
+    (mask, want.pixels.len())
 }
