@@ -11,6 +11,10 @@
 //  - a slider or parameter change → its preview painted (the k × k mean's
 //    size, the LoG's Run, the Förstner window), the Förstner threshold →
 //    its points drawn (no preview: the kept map re-thresholded);
+//  - where an operator's call spends its time: the page's main thread busy
+//    (its CPU profile over the calls) and the ms inside the workers (each
+//    answer's `ms`, main worker and pool summed: the pool's bands are CPU
+//    time that 2 cores share with the page), for each pool size;
 //  - peak wasm memory of the main worker and of a pool worker;
 //  - what a lab visit downloads (lab JS + wasm, gzip -9), against 350 KB.
 // BENCH_LAB_COLOUR=1: the operators on the colour JPEG of the texture (its
@@ -161,10 +165,21 @@ try {
       return new Uint8Array(await (await cv.convertToBlob({ type: "image/jpeg", quality: 0.9 })).arrayBuffer());
     };
   }, { W, H, bytes: Buffer.from(bytes).toString("base64") });
+  // the page's main thread: its busy time (CPU profile samples not idle) over an operator's calls
+  const cdp = await context.newCDPSession(page);
+  await cdp.send("Profiler.enable");
+  await cdp.send("Profiler.setSamplingInterval", { interval: 250 });
+  let profiled = null;
+  cdp.on("Profiler.consoleProfileFinished", (ev) => (profiled = ev));
+  const busy = ({ profile }) => {
+    const idle = new Set(profile.nodes.filter((nd) => nd.callFrame.functionName === "(idle)").map((nd) => nd.id));
+    return profile.samples.reduce((s, id, i) => s + (idle.has(id) ? 0 : profile.timeDeltas[i] ?? 0), 0) / 1000;
+  };
   for (const n of chrome.counts) {
     console.error(`bench lab: ${n} worker${n > 1 ? "s" : ""} …`);
     chrome.ops[n] = {};
     for (const [name, type, a] of OPS) {
+      profiled = null;
       const r = await page.evaluate(async ({ n, name, type, a, RULES, timedSrc, colour, reuse }) => {
         const timed = new Function(`return ${timedSrc}`)();
         if (!window.benchClient || window.benchClient.threads !== n) {
@@ -192,20 +207,30 @@ try {
         try {
           // the kept map first, for the points from it
           if (type === "forstnerPoints") await client.call("forstnerMaps", { size: 5, sigmaN: 8 });
+          // ms inside the workers (main + pool) a call, from their answers (client.workerMs, tiles.workerMs)
+          const inWorkers = [];
+          // (the page's main thread profiled over the calls alone: console.profile, Profiler.consoleProfileFinished)
+          console.profile("bench");
           const t = await timed(async () => {
+            const w0 = client.workerMs + client.tiles.workerMs;
             const t0 = performance.now();
             const res = await client.call(type, args);
             const ms = performance.now() - t0;
+            inWorkers.push(client.workerMs + client.tiles.workerMs - w0);
             // the page shows it in place of the one before (lab.js setLayers)
             if (reuse) client.release(window.benchLast?.layers);
             window.benchLast = res;
             return ms;
-          }, RULES);
-          return t;
+          }, RULES).finally(() => console.profileEnd("bench"));
+          inWorkers.sort((x, y) => x - y);
+          return { ...t, workers: inWorkers[inWorkers.length >> 1], calls: inWorkers.length };
         } catch (e) {
           return { error: e.message };
         }
       }, { n, name, type, a, RULES, timedSrc: timed.toString(), colour: COLOUR, reuse: REUSE });
+      // (the event comes after the evaluate's answer at the latest a moment later)
+      for (let i = 0; i < 50 && r.calls && !profiled; i++) await new Promise((res) => setTimeout(res, 20));
+      if (r.calls && profiled) r.page = busy(profiled) / r.calls;
       chrome.ops[n][name] = r;
       console.error(`  ${name}: ${r.error ?? `${r.median.toFixed(0)} ms (n = ${r.n})`}`);
     }
@@ -339,6 +364,14 @@ for (const n of chrome.counts) {
   const m = chrome.memory[n];
   if (!m) continue;
   console.log(`  peak wasm memory, pool of ${n}: main worker ${mib(m.main)}, a pool worker ${mib(m.pool)} (${m.instances} instances)`);
+}
+// where the time of a call goes: the page's main thread busy (its CPU profile) and inside the workers (their answers' ms)
+if (chrome.ops && Object.values(chrome.ops[one] ?? {}).some((t) => Number.isFinite(t?.workers))) {
+  console.log(`  where a call's time goes, ms a call (median; the page's: mean), 1 worker and ${many}: the page's main thread busy (its CPU profile) / inside the workers (main + pool, summed)`);
+  for (const [name] of OPS) {
+    const part = (t) => (t?.calls ? `${num(t.page, 1)} / ${num(t.workers, 1)}` : "—");
+    console.log(`  ${name.padEnd(58)} ${"".padStart(10)} ${part(chrome.ops[one]?.[name]).padStart(21)} ${part(chrome.ops[many]?.[name]).padStart(21)}`);
+  }
 }
 if (chrome.visit) {
   const gz = (f) => zlib.gzipSync(fs.readFileSync(path.join(DIST, f)), { level: 9 }).length;

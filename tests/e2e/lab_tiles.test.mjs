@@ -96,6 +96,8 @@ async function compare(requests) {
       }
     }
     out.poolWorkers = client.tiles.workers.filter(Boolean).length;
+    // bands' inputs cut into buffers the workers gave back (tiles.js rows)
+    out.inputsReused = client.tiles.inputsReused;
     return out;
   }, requests);
 }
@@ -110,6 +112,45 @@ test("without isolation headers, every banded operator over 3 workers equals the
   assert.ok(r.steps.every(Boolean), "a progress message after each band, rows growing");
   assert.equal(r.poolWorkers, 3);
   assert.ok(r.points > 20, `${r.points} interest points compared`);
+  // most bands' inputs were cut into a buffer a worker gave back (one of their size), with the same numbers
+  const bands = r.bands.reduce((a, b) => a + b, 0);
+  assert.ok(r.inputsReused > bands / 2, `${r.inputsReused} of ${bands} bands' inputs in a given-back buffer`);
+  assert.deepEqual(errors, []);
+});
+
+test("a boundary's layer is carried by the released layer of the one before (no fresh pages): the same pixels as a fresh one", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  await client(2, [301, 257]);
+  const r = await page.evaluate(async () => {
+    const client = window.client;
+    const tiles = client.tiles;
+    const out = { diffs: [], free: [] };
+    const args = [{ threshold: 100, c: 150, r: 85 }, { threshold: 60, c: 20, r: 20 }, { threshold: 100, c: 150, r: 85 }];
+    // fresh answers first (nothing released: no spare), kept as copies
+    const fresh = [];
+    for (const a of args) {
+      const res = await client.call("boundary", a);
+      fresh.push({ data: res.layers[0].data.slice(), pixels: Array.from(res.pixels), code: res.code });
+    }
+    let last = await client.call("boundary", args[0]);
+    for (const [i, a] of args.entries()) {
+      // the page shows the next result in place of the last (lab.js setLayers)
+      client.release(last.layers);
+      out.free.push(tiles.free.length);
+      const res = await client.call("boundary", a);
+      out.free.push(tiles.free.length);
+      if ("spare" in res) out.diffs.push(`${i}: the answer kept its spare buffers`);
+      const [l, f] = [res.layers[0].data, fresh[i].data];
+      let n = 0;
+      for (let j = 0; j < f.length; j++) if (!Object.is(l[j], f[j])) n++;
+      if (n || l.length !== f.length) out.diffs.push(`${i}: ${n} pixels differ (${l.length} of ${f.length})`);
+      if (JSON.stringify(Array.from(res.pixels)) !== JSON.stringify(fresh[i].pixels) || res.code !== fresh[i].code) out.diffs.push(`${i}: the boundary differs`);
+      last = res;
+    }
+    return out;
+  });
+  assert.deepEqual(r.diffs, []);
+  // the released layer went to the main worker with the request (1 → 0 free) and its answer's is released in turn
+  assert.deepEqual(r.free, [1, 0, 1, 0, 1, 0]);
   assert.deepEqual(errors, []);
 });
 
@@ -206,6 +247,8 @@ test("a colour photo (its BT.601 greys are not 8-bit) runs by bands of its grey 
   const r = await compare(some);
   assert.deepEqual(r.diffs, []);
   assert.ok(r.points > 5, `${r.points} points`);
+  // bands of levels (4 bytes a pixel) cut into buffers the workers gave back too
+  assert.ok(r.inputsReused > 0, `${r.inputsReused} bands' inputs in a given-back buffer`);
   const rs = await page.evaluate(async () => {
     const args = { kind: "rotate", params: [11, 0.9], width: 180, height: 140 };
     const [b, one] = [await window.client.call("resample", args), await window.client.call("resample", { ...args, untiled: true })];

@@ -8,7 +8,7 @@
 // `restore()` (given by the lab) then puts the student's image back into
 // the new one. A cancel of banded work stops only the pool's bands.
 
-import { Tiles } from "./tiles.js";
+import { SPARED, Tiles } from "./tiles.js";
 
 /** Requests that open the photo (slot "a"): the pool's bands are cut from its bytes. */
 const OPENS = new Set(["load", "frame", "raw"]);
@@ -30,6 +30,7 @@ export class LabClient {
     this.sent = {};
     this.tiling = 0;
     this.cancels = 0;
+    this.workerMs = 0;
     this.start();
   }
 
@@ -42,10 +43,12 @@ export class LabClient {
     };
   }
 
-  answer({ id, ok, result, error, trapped }) {
+  answer({ id, ok, result, error, trapped, ms }) {
     const p = this.pending.get(id);
     if (!p || ok === undefined) return;
     this.pending.delete(id);
+    // ms inside the main worker (npm run bench -- --lab)
+    this.workerMs += ms ?? 0;
     if (ok) {
       p.resolve(result);
       return;
@@ -81,13 +84,16 @@ export class LabClient {
     // a map the main worker keeps: its points are the main worker's too
     if (type === "forstnerMaps") this.tiles.kept = null;
     const id = this.nextId++;
+    // a released whole layer to carry this request's layer (tiles.js SPARED: no fresh pages), its answer's released in turn
+    const spare = this.tiles.spareFor(type);
     let entry;
     const p = new Promise((resolve, reject) => {
       entry = { resolve, reject, type };
       this.pending.set(id, entry);
-      this.worker.postMessage({ id, type, ...args }, transfer);
+      this.worker.postMessage(spare ? { id, type, ...args, spare } : { id, type, ...args }, spare ? [...transfer, ...spare] : transfer);
     });
     entry.done = p;
+    if (SPARED.has(type)) return p.then((r) => this.tiles.adopt(r));
     if (!opens) return p;
     return p.then((r) => {
       this.tiles.setImage({ width: r.width, height: r.height, bytes: r.bytes, grey: r.grey, levels: r.levels, scale: r.scale, bits: r.bits ?? 8, maxValue: r.maxValue ?? 255 });

@@ -19,7 +19,11 @@
 // (progress after each; a cancel drops the bands not yet started and stops
 // the running ones at once, without touching the lab's main worker and its
 // photo). The pool paints layers too, and previews run on the main worker
-// meanwhile.
+// meanwhile. No band takes fresh memory once the first have run: a band's
+// input is cut into a buffer a worker gave back, its layers are copied out
+// of wasm into spare buffers that fit them, and the whole layers (and the
+// boundary's, on the main worker: SPARED) reuse the released ones — a fresh
+// buffer costs its pages on first write, ~10 µs a 4 KiB page here.
 
 /** A band has about this many pixels (several bands a worker: progress, balance, a quick cancel). */
 const BAND_PIXELS = 1 << 21;
@@ -31,6 +35,12 @@ const SPARE = 8;
 const FREE = 4;
 /** Bands a pool worker has sent to it at once (Tiles.lanes). */
 const LANES = 2;
+/**
+ * Requests of the main worker whose whole-image layers are carried by a
+ * released whole layer (sent as its spare buffer: no fresh pages) and are
+ * released in turn (Tiles.spareFor, Tiles.adopt).
+ */
+export const SPARED = new Set(["boundary"]);
 /** Images with fewer pixels run on the main worker whole (bands would cost more than they save). */
 export const MIN_PIXELS = 1 << 19;
 
@@ -69,6 +79,9 @@ export class Tiles {
     this.nextId = 1;
     this.image = null; // { width, height, bytes: Uint8Array }
     this.spare = []; // ArrayBuffers of bands' layers, to be filled again (recycle)
+    this.inputs = []; // ArrayBuffers of bands' inputs the workers gave back, to carry the next bands' rows (rows)
+    this.inputSizes = new Set(); // their byte lengths (a band's input of this photo)
+    this.inputsReused = 0; // bands' inputs cut into a given-back buffer (the tests count them)
     this.free = []; // ArrayBuffers of whole layers the page released, to carry the next result's (release)
     this.owned = new WeakSet(); // the whole layers' buffers this pool made (only those come back)
     this.reused = 0; // whole layers made in a released buffer (the tests count them)
@@ -77,6 +90,7 @@ export class Tiles {
     this.kept = null; // the bands' Förstner maps: { job, size, holders: Map(band → slot), bands }
     this.jobs = 0;
     this.mapRuns = 0;
+    this.workerMs = 0;
   }
 
   /**
@@ -90,6 +104,8 @@ export class Tiles {
     this.kept = null;
     this.spare = [];
     this.free = [];
+    this.inputs = [];
+    this.inputSizes = new Set();
   }
 
   /**
@@ -117,9 +133,51 @@ export class Tiles {
     return out;
   }
 
-  /** Keeps `buffers` (bands' layers already copied into the whole ones) for the next bands, at most SPARE of them. */
+  /**
+   * Keeps `buffers` (bands' layers already copied into the whole ones, and
+   * the bands' inputs the workers gave back) for the next bands: those of a
+   * band input's size for the next inputs (at most LANES a worker), the
+   * others for the next layers (at most SPARE).
+   */
   recycle(buffers) {
-    for (const b of buffers) if (b.byteLength && this.spare.length < SPARE) this.spare.push(b);
+    for (const b of buffers) {
+      if (!b.byteLength) continue;
+      if (this.inputSizes.has(b.byteLength) && this.inputs.length < LANES * this.n) this.inputs.push(b);
+      else this.spare.push(b);
+    }
+    // the largest kept: a band's layers fit in them (bands differ by a row or two)
+    this.spare.sort((a, b) => b.byteLength - a.byteLength).splice(SPARE);
+  }
+
+  /**
+   * Up to `k` kept buffers of at least `bytes` each, for a band's layers (a
+   * layer of a band fills a spare buffer only where it fits: spare_buffers;
+   * one that does not fit would leave that layer a fresh one).
+   */
+  spares(bytes, k = 4) {
+    const fit = this.spare.filter((b) => b.byteLength >= bytes).slice(-k);
+    this.spare = this.spare.filter((b) => !fit.includes(b));
+    return fit;
+  }
+
+  /**
+   * A released whole layer of the open photo's size (4 bytes a pixel) for
+   * the main worker's request `type` to write its layer into (SPARED), as
+   * the `spare` list of the request; null: none.
+   */
+  spareFor(type) {
+    const img = this.image;
+    if (!img || !SPARED.has(type)) return null;
+    const i = this.free.findIndex((b) => b.byteLength === img.width * img.height * 4);
+    return i >= 0 ? this.free.splice(i, 1) : null;
+  }
+
+  /** A SPARED request's answer: its layers' buffers released with the pool's (release), its unused spare buffers kept (FREE). */
+  adopt(result) {
+    for (const l of result?.layers ?? []) if (l?.data?.buffer?.byteLength) this.owned.add(l.data.buffer);
+    for (const b of result?.spare ?? []) if (b.byteLength && this.free.length < FREE) this.free.push(b);
+    if (result) delete result.spare;
+    return result;
   }
 
   handles(type, args) {
@@ -131,20 +189,28 @@ export class Tiles {
 
   /**
    * Rows [r0, r1) of the photo as a band request's fields, a copy whose
-   * buffer is transferred: `bytes`, or `values` with the sample depth.
+   * buffer is transferred: `bytes`, or `values` with the sample depth. The
+   * copy is made in a buffer of its size that a worker gave back (recycle)
+   * when there is one: a fresh one costs its pages first, more than the copy
+   * (2 MB of bytes, 8 MB of a colour photo's levels a band at 12 MP).
    */
   rows(r0, r1) {
     const { width, bytes, grey, levels, scale, bits, maxValue } = this.image;
-    if (bytes) {
-      const b = bytes.slice(r0 * width, r1 * width);
-      return [{ bytes: b.buffer }, [b.buffer]];
-    }
-    if (levels) {
-      const l = levels.slice(r0 * width, r1 * width);
-      return [{ levels: l.buffer, scale, bits, maxValue }, [l.buffer]];
-    }
-    const v = grey.slice(r0 * width, r1 * width);
-    return [{ values: v.buffer, bits, maxValue }, [v.buffer]];
+    const src = bytes ?? levels ?? grey;
+    const [from, to] = [r0 * width, r1 * width];
+    const size = (to - from) * src.BYTES_PER_ELEMENT;
+    // (the whole photo, sent once to a worker for resampling, does not come back)
+    if (r1 - r0 < this.image.height) this.inputSizes.add(size);
+    const i = this.inputSizes.has(size) ? this.inputs.findIndex((b) => b.byteLength === size) : -1;
+    let a;
+    if (i >= 0) {
+      a = new src.constructor(this.inputs.splice(i, 1)[0]);
+      a.set(src.subarray(from, to));
+      this.inputsReused++;
+    } else a = src.slice(from, to);
+    if (bytes) return [{ bytes: a.buffer }, [a.buffer]];
+    if (levels) return [{ levels: a.buffer, scale, bits, maxValue }, [a.buffer]];
+    return [{ values: a.buffer, bits, maxValue }, [a.buffer]];
   }
 
   /** Pool worker `i`, started when first needed. */
@@ -175,6 +241,8 @@ export class Tiles {
         if (!p || data.ok === undefined) return;
         pending.delete(data.id);
         slot.busy--;
+        // ms inside the pool's workers (npm run bench -- --lab)
+        this.workerMs += data.ms ?? 0;
         if (data.ok) p.resolve(data.result);
         else {
           const err = new Error(data.error);
@@ -250,9 +318,10 @@ export class Tiles {
       const [r0, r1] = [Math.max(0, start - halo), Math.min(height, end + halo)];
       const [data, transfer] = this.rows(r0, r1);
       const own = [0, start - r0, width, end - start];
-      // buffers of earlier bands' layers to copy this band's into (no fresh pages: spare_buffers)
-      const spare = this.spare.splice(0, 4);
-      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, ...data, own, at: [0, r0], keep: keep ? { job, band: k } : null, spare }, [...transfer, ...spare]);
+      // buffers of earlier bands' layers to copy this band's into (no fresh pages: spare_buffers), and
+      // its input's own buffer: the worker gives back the spare buffers it did not fill, so the input's comes back
+      const spare = [...this.spares((r1 - r0) * width * 4), ...transfer];
+      const part = await w.ask("region", { op: type, args, width, height: r1 - r0, ...data, own, at: [0, r0], keep: keep ? { job, band: k } : null, spare }, spare);
       holders.set(k, w);
       // its rows into the whole layers at once; its buffers are then the next bands'
       this.recycle([...part.spare, ...whole.add(part)]);
@@ -330,7 +399,7 @@ export class Tiles {
         w.imageSent = w.ask(img.bytes ? "raw" : "grey", { width: img.width, height: img.height, ...data }, transfer);
       }
       await w.imageSent;
-      const spare = this.spare.splice(0, 4);
+      const spare = this.spares((row1 - row0) * args.width * 4);
       const part = await w.ask("resample", { ...args, row0, row1, spare }, spare);
       this.recycle([...part.spare, ...whole.add(part)]);
       return part;
