@@ -9,12 +9,15 @@
 //    of `npm run bench -- ops`, in Node, one call) where there is one;
 //  - a 12 MP JPEG picked → photo on screen (decoded, painted, drawn);
 //  - a slider or parameter change → its preview painted (the k × k mean's
-//    size, the LoG's Run, the Förstner window), the Förstner threshold →
+//    size, the LoG's Run, the Förstner window, the edge operator, the
+//    rotation's angle: the part of the output in view), the Förstner threshold →
 //    its points drawn (no preview: the kept map re-thresholded);
 //  - where an operator's call spends its time: the page's main thread busy
 //    (its CPU profile over the calls) and the ms inside the workers (each
 //    answer's `ms`, main worker and pool summed: the pool's bands are CPU
-//    time that 2 cores share with the page), for each pool size;
+//    time that 2 cores share with the page) and Chromium's CPU time a call
+//    (its processes' user + system time from /proc: what load does not
+//    inflate as it does wall time), for each pool size;
 //  - peak wasm memory of the main worker and of a pool worker;
 //  - what a lab visit downloads (lab JS + wasm, gzip -9), against 350 KB.
 // BENCH_LAB_COLOUR=1: the operators on the colour JPEG of the texture (its
@@ -130,6 +133,29 @@ const fastMs = {};
 }
 
 // ------------------------------------------------------------------ Chromium
+/** CPU ms (user + system) of this process's descendants (Chromium's processes), from /proc; NaN elsewhere. */
+function chromiumCpuMs() {
+  try {
+    const stats = fs.readdirSync("/proc").filter((d) => /^\d+$/.test(d)).map((d) => {
+      try {
+        // fields after the command's closing parenthesis: state ppid … utime (14) stime (15)
+        const f = fs.readFileSync(`/proc/${d}/stat`, "utf8").split(") ")[1].split(" ");
+        return { pid: Number(d), ppid: Number(f[1]), ticks: Number(f[11]) + Number(f[12]) };
+      } catch {
+        return null;
+      }
+    }).filter(Boolean);
+    const mine = new Set([process.pid]);
+    for (let grew = true; grew;) {
+      grew = false;
+      for (const p of stats) if (!mine.has(p.pid) && mine.has(p.ppid)) grew = mine.add(p.pid) && true;
+    }
+    // (clock ticks of 10 ms: CLK_TCK 100)
+    return stats.filter((p) => p.pid !== process.pid && mine.has(p.pid)).reduce((s, p) => s + p.ticks, 0) * 10;
+  } catch {
+    return NaN;
+  }
+}
 const server = await startServer({ dir: DIST, port: 0 });
 const browser = await launchChromium();
 const chrome = {};
@@ -166,6 +192,8 @@ try {
     };
   }, { W, H, bytes: Buffer.from(bytes).toString("base64") });
   // the page's main thread: its busy time (CPU profile samples not idle) over an operator's calls
+  // and the CPU time of Chromium's processes (this process's descendants: /proc, Linux), read from the page around the calls
+  await page.exposeFunction("benchCpuMs", () => chromiumCpuMs());
   const cdp = await context.newCDPSession(page);
   await cdp.send("Profiler.enable");
   await cdp.send("Profiler.setSamplingInterval", { interval: 250 });
@@ -211,6 +239,7 @@ try {
           const inWorkers = [];
           // (the page's main thread profiled over the calls alone: console.profile, Profiler.consoleProfileFinished)
           console.profile("bench");
+          const cpu0 = await window.benchCpuMs();
           const t = await timed(async () => {
             const w0 = client.workerMs + client.tiles.workerMs;
             const t0 = performance.now();
@@ -222,8 +251,9 @@ try {
             window.benchLast = res;
             return ms;
           }, RULES).finally(() => console.profileEnd("bench"));
+          const cpu = (await window.benchCpuMs()) - cpu0;
           inWorkers.sort((x, y) => x - y);
-          return { ...t, workers: inWorkers[inWorkers.length >> 1], calls: inWorkers.length };
+          return { ...t, workers: inWorkers[inWorkers.length >> 1], calls: inWorkers.length, cpu: cpu / inWorkers.length };
         } catch (e) {
           return { error: e.message };
         }
@@ -261,6 +291,8 @@ try {
     ["mean", "slider change → preview painted: k × k mean size"],
     ["log", "Run → preview painted: filter LoG 5×5"],
     ["forstner", "slider change → preview painted: Förstner window"],
+    ["edges", "choice change → preview painted: edge operator"],
+    ["resample", "angle change → preview painted: rotation (3 methods)"],
     ["threshold", "slider change → points drawn: Förstner threshold (kept map)"],
   ];
   const previews = Object.fromEntries(PREVIEWS.map(([k]) => [k, []]));
@@ -284,7 +316,8 @@ try {
     // one frame more: the drawn canvas on screen
     shown.push(await lab.evaluate(() => new Promise((res) => requestAnimationFrame(() => res(window.benchShown - window.benchT0)))));
     // `mark`: the body's mark that says it is on screen (previewMs: the page's own ms from the change)
-    const previewOf = async (selector, value, mark = "previewMs") => lab.evaluate(async ({ selector, value, mark }) => {
+    // (`type`: the event the change fires, else "input" for a range, "change" for the others)
+    const previewOf = async (selector, value, mark = "previewMs", type = null) => lab.evaluate(async ({ selector, value, mark, type }) => {
       delete document.body.dataset[mark];
       const input = document.querySelector(selector);
       const t0 = performance.now();
@@ -300,13 +333,13 @@ try {
       if (value === null) input.click();
       else {
         input.value = String(value);
-        input.dispatchEvent(new Event(input.type === "range" ? "input" : "change", { bubbles: true }));
+        input.dispatchEvent(new Event(type ?? (input.type === "range" ? "input" : "change"), { bubbles: true }));
       }
       const ms = await seen;
       const { settledForTests } = await import("./lab/lab.js");
       await settledForTests();
       return ms;
-    }, { selector, value, mark });
+    }, { selector, value, mark, type });
     await lab.selectOption("#lab-family", "filters");
     await lab.selectOption("#lab-kernel", "mean-k");
     for (const k of [5, 7, 9]) previews.mean.push(await previewOf("#lab-size", k));
@@ -317,6 +350,16 @@ try {
     await lab.evaluate(async () => (await import("./lab/lab.js")).settledForTests());
     for (const s of [7, 5]) previews.forstner.push(await previewOf("#lab-window", s));
     for (const t of [0.3, 0.8]) previews.threshold.push(await previewOf("#lab-threshold", t, "threshold"));
+    // edges and resampling: a Run, then a new choice / angle (recomputed live, its preview first)
+    const settled = () => lab.evaluate(async () => (await import("./lab/lab.js")).settledForTests());
+    await lab.selectOption("#lab-family", "edges");
+    await lab.click("#lab-run");
+    await settled();
+    for (const o of ["prewitt", "sobel"]) previews.edges.push(await previewOf("#lab-operator", o));
+    await lab.selectOption("#lab-family", "resampling");
+    await lab.click("#lab-run");
+    await settled();
+    for (const a of [20, 30]) previews.resample.push(await previewOf("#lab-angle", a, "previewMs", "input"));
     await lab.close();
   }
   const med = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
@@ -366,11 +409,11 @@ for (const n of chrome.counts) {
   console.log(`  peak wasm memory, pool of ${n}: main worker ${mib(m.main)}, a pool worker ${mib(m.pool)} (${m.instances} instances)`);
 }
 // where the time of a call goes: the page's main thread busy (its CPU profile) and inside the workers (their answers' ms)
-if (chrome.ops && Object.values(chrome.ops[one] ?? {}).some((t) => Number.isFinite(t?.workers))) {
-  console.log(`  where a call's time goes, ms a call (median; the page's: mean), 1 worker and ${many}: the page's main thread busy (its CPU profile) / inside the workers (main + pool, summed)`);
+if (chrome.ops && Object.values(chrome.ops[one] ?? {}).some((t) => Number.isFinite(t?.cpu) || Number.isFinite(t?.workers))) {
+  console.log(`  where a call's time goes, ms a call (median; the page's: mean), 1 worker and ${many}: the page's main thread busy (its CPU profile) / inside the workers (main + pool, summed) / Chromium's CPU time (all its processes, /proc: a mean)`);
   for (const [name] of OPS) {
-    const part = (t) => (t?.calls ? `${num(t.page, 1)} / ${num(t.workers, 1)}` : "—");
-    console.log(`  ${name.padEnd(58)} ${"".padStart(10)} ${part(chrome.ops[one]?.[name]).padStart(21)} ${part(chrome.ops[many]?.[name]).padStart(21)}`);
+    const part = (t) => (t?.calls ? `${num(t.page, 1)} / ${num(t.workers, 1)} / ${num(t.cpu, 0)}` : "—");
+    console.log(`  ${name.padEnd(58)} ${"".padStart(10)} ${part(chrome.ops[one]?.[name]).padStart(24)} ${part(chrome.ops[many]?.[name]).padStart(24)}`);
   }
 }
 if (chrome.visit) {
