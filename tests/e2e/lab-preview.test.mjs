@@ -6,6 +6,9 @@
 // before each preview could be shown) — the whole result then equals the
 // operator's numbers at sample pixels (a JavaScript reference), and a newer
 // value still stops a running one, whose preview and result never show.
+// The same for a new edge operator or border, and for a new rotation angle
+// (the preview: the part of the OUTPUT in the three methods' views): the
+// preview's numbers are the whole result's at the same pixels.
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
@@ -30,13 +33,31 @@ const mean = (c, r, k) => {
   return s / (k * k);
 };
 
+/**
+ * The checkerboard `grey` opened as the photo, once the lab's start sample is
+ * open (else that sample's load, still on its way, could land in the main
+ * worker after it: the page would show the checkerboard and the previews be
+ * made of the sample).
+ */
+async function openCheckerboard(page) {
+  await page.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+  await page.evaluate(async ([n, src]) => {
+    const g = new Function(`return ${src}`)();
+    const bytes = new Uint8Array(n * n);
+    for (let r = 0; r < n; r++) for (let c = 0; c < n; c++) bytes[r * n + c] = g(c, r);
+    await (await import("./lab/lab.js")).openRawForTests(n, n, bytes, "preview1024");
+  }, [N, grey.toString()]);
+  await page.waitForFunction(() => document.body.dataset.image === "preview1024");
+  await idle(page);
+}
+
 /** The body's marks of previews and shown results, in the order they were set, from now on. */
 async function watch(page) {
   await page.evaluate(() => {
     window.labEvents = [];
     if (window.labWatching) return;
     window.labWatching = true;
-    const keys = ["filterPreview", "filterShown", "forstnerPreview", "mapRuns", "forstnerCancels"];
+    const keys = ["filterPreview", "filterShown", "forstnerPreview", "mapRuns", "forstnerCancels", "edgesPreview", "edgesShown", "edgesCancels", "resamplePreview", "resampleShown", "resampleCancels"];
     new MutationObserver((list) => {
       for (const m of list) {
         const key = m.attributeName.slice(5).replace(/-([a-z])/g, (_, ch) => ch.toUpperCase());
@@ -50,14 +71,7 @@ const layerAt = (page, name, pixels) => page.evaluate(async ([name, pixels]) => 
 
 test("a slider change paints its preview before the whole result (k × k mean, Förstner window); the result is the operator's; a newer value stops the running one", { timeout: TEST_TIMEOUT * 4 }, async () => {
   const { page, log, context } = await openLab(env);
-  await page.evaluate(async ([n, src]) => {
-    const g = new Function(`return ${src}`)();
-    const bytes = new Uint8Array(n * n);
-    for (let r = 0; r < n; r++) for (let c = 0; c < n; c++) bytes[r * n + c] = g(c, r);
-    await (await import("./lab/lab.js")).openRawForTests(n, n, bytes, "preview1024");
-  }, [N, grey.toString()]);
-  await page.waitForFunction(() => document.body.dataset.image === "preview1024");
-  await idle(page);
+  await openCheckerboard(page);
 
   // the k × k mean: 5 then 9, each a preview first, then the whole layer
   await page.selectOption("#lab-family", "filters");
@@ -139,6 +153,129 @@ test("a slider change paints its preview before the whole result (k × k mean, F
     assert.ok(Math.abs(w5.values[i] - want) <= 1e-5 * Math.max(1, Math.abs(want)), `w (5×5) at (${c}, ${r}): ${w5.values[i]} vs ${want}`);
   });
   assert.equal(await page.inputValue("#lab-window"), "5");
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+/** The previews drawn into the views of `selector` from now on (each view's setPreview recorded: { name, rect, values }). */
+async function recordPreviews(page, selector) {
+  await page.evaluate((selector) => {
+    window.labPreviews = [];
+    for (const canvas of document.querySelectorAll(selector)) {
+      const v = canvas.labViewer;
+      v.setPreview = (p) => {
+        if (p) window.labPreviews.push({ view: v.name ?? null, name: p.name, rect: p.rect, values: Array.from(p.values) });
+        Object.getPrototypeOf(v).setPreview.call(v, p);
+      };
+    }
+  }, selector);
+}
+const previews = (page) => page.evaluate(() => window.labPreviews);
+/** Pixels of box [c, r, w, h]: its corners and middle. */
+const inside = ([c, r, w, h]) => [[c, r], [c + w - 1, r], [c, r + h - 1], [c + w - 1, r + h - 1], [c + (w >> 1), r + (h >> 1)]];
+/** Prewitt's and Sobel's magnitude at (c, r), replicated border (the course's kernels: gx top minus bottom, gy right minus left). */
+const magnitude = (op, c, r) => {
+  const m = op === "sobel" ? 2 : 1;
+  const gx = at(c - 1, r - 1) + m * at(c, r - 1) + at(c + 1, r - 1) - at(c - 1, r + 1) - m * at(c, r + 1) - at(c + 1, r + 1);
+  const gy = at(c + 1, r - 1) + m * at(c + 1, r) + at(c + 1, r + 1) - at(c - 1, r - 1) - m * at(c - 1, r) - at(c - 1, r + 1);
+  return Math.hypot(gx, gy);
+};
+
+/** Changes the values of `changes` [[selector, value, event]] in turn, each after the one before has shown its first band's progress. */
+async function changeWhileRunning(page, changes) {
+  await page.evaluate(async (changes) => {
+    const lab = await import("./lab/lab.js");
+    for (const [i, [selector, value, type]] of changes.entries()) {
+      const running = i === changes.length - 1 ? null : lab.progressForTests();
+      const input = document.querySelector(selector);
+      input.value = value;
+      input.dispatchEvent(new Event(type, { bubbles: true }));
+      await running;
+    }
+  }, changes);
+}
+
+test("a new edge operator or border, and a new rotation, paint their preview before the whole result, with its numbers; a newer choice stops the running one", { timeout: TEST_TIMEOUT * 4 }, async () => {
+  const { page, log, context } = await openLab(env);
+  await openCheckerboard(page);
+
+  // edges: Run (Sobel), then Prewitt chosen: its preview (the magnitude shown) first, then the whole layers
+  await page.selectOption("#lab-family", "edges");
+  await page.selectOption("#lab-border", "replicate");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.edgesShown === "sobel replicate", null, { timeout: 60_000 });
+  await idle(page);
+  await watch(page);
+  await recordPreviews(page, ".lab-canvas");
+  await page.selectOption("#lab-operator", "prewitt");
+  await page.waitForFunction(() => document.body.dataset.edgesShown === "prewitt replicate" && document.body.dataset.edgesLive === "idle", null, { timeout: 60_000 });
+  await idle(page);
+  let ev = await events(page);
+  let p = ev.findIndex((e) => e.startsWith("edgesPreview="));
+  assert.ok(p >= 0 && p < ev.indexOf("edgesShown=prewitt replicate"), `Prewitt: preview before the whole result: ${ev}`);
+  let [pv] = await previews(page);
+  assert.equal(pv.name, "magnitude");
+  assert.equal(ev[p], `edgesPreview=${pv.rect.join(",")}`);
+  let pixels = inside(pv.rect);
+  let got = await layerAt(page, "magnitude", pixels);
+  pixels.forEach(([c, r], i) => {
+    const [pc, pr] = [c - pv.rect[0], r - pv.rect[1]];
+    assert.equal(pv.values[pr * pv.rect[2] + pc], got.values[i], `Prewitt magnitude at (${c}, ${r}): the preview's is the result's`);
+    assert.ok(Math.abs(got.values[i] - magnitude("prewitt", c, r)) <= 1e-4, `Prewitt magnitude at (${c}, ${r}): ${got.values[i]} vs ${magnitude("prewitt", c, r)}`);
+  });
+
+  // Sobel while Prewitt's reflect border is being computed: that one is stopped, only Sobel's shows
+  const cancels0 = Number(await page.evaluate(() => document.body.dataset.edgesCancels ?? 0));
+  await watch(page);
+  await changeWhileRunning(page, [["#lab-border", "reflect", "change"], ["#lab-operator", "sobel", "change"]]);
+  await page.waitForFunction(() => document.body.dataset.edgesShown === "sobel reflect" && document.body.dataset.edgesLive === "idle", null, { timeout: 60_000 });
+  await idle(page);
+  ev = await events(page);
+  assert.equal(Number(await page.evaluate(() => document.body.dataset.edgesCancels)) - cancels0, 1, `${ev}`);
+  assert.deepEqual(ev.filter((e) => e.startsWith("edgesShown=")), ["edgesShown=sobel reflect"], `${ev}`);
+  assert.ok(ev.findLastIndex((e) => e.startsWith("edgesPreview=")) < ev.indexOf("edgesShown=sobel reflect"), `${ev}`);
+  got = await layerAt(page, "magnitude", [[511, 512], [700, 300]]);
+  [[511, 512], [700, 300]].forEach(([c, r], i) => assert.ok(Math.abs(got.values[i] - magnitude("sobel", c, r)) <= 1e-4, `Sobel at (${c}, ${r})`));
+
+  // resampling: Run (10°, scale 2), then 20°: a preview of the part of the output in the three views, then the whole
+  await page.selectOption("#lab-family", "resampling");
+  await page.fill("#lab-angle", "10");
+  await page.fill("#lab-scale", "2");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.resampleShown === "10,2" && document.body.dataset.resampleLive === "idle", null, { timeout: 60_000 });
+  await idle(page);
+  await watch(page);
+  await recordPreviews(page, "#lab-methods canvas");
+  await page.fill("#lab-angle", "20");
+  await page.waitForFunction(() => document.body.dataset.resampleShown === "20,2" && document.body.dataset.resampleLive === "idle", null, { timeout: 60_000 });
+  await idle(page);
+  ev = await events(page);
+  p = ev.findIndex((e) => e.startsWith("resamplePreview="));
+  assert.ok(p >= 0 && p < ev.indexOf("resampleShown=20,2"), `20°: preview before the whole result: ${ev}`);
+  const pvs = await previews(page);
+  assert.deepEqual(pvs.map((v) => v.view), ["nearest", "bilinear", "bicubic"]);
+  const views = await page.$$eval("#lab-methods canvas", (cs) => cs.map((c) => ({ name: c.labViewer.name, box: c.labViewer.visible() })));
+  for (const pv of pvs) {
+    assert.equal(pv.name, pv.view);
+    // the preview covers the part of the output in the view (the views keep their place)
+    const box = views.find((v) => v.name === pv.view).box;
+    assert.deepEqual(pv.rect, box, `${pv.view}: the preview is the part of the output in view`);
+    const values = await page.$eval(`#lab-methods figure:nth-child(${pvs.indexOf(pv) + 1}) canvas`, (c, px) => px.map(([x, y]) => c.labViewer.image.grey[y * c.labViewer.image.width + x]), inside(pv.rect));
+    inside(pv.rect).forEach(([c, r], i) => {
+      const [pc, pr] = [c - pv.rect[0], r - pv.rect[1]];
+      assert.equal(pv.values[pr * pv.rect[2] + pc], values[i], `${pv.view} at output (${c}, ${r}): the preview's is the result's`);
+    });
+  }
+
+  // 30° while 40° is computed: 40° stopped, only 30° shown
+  const rc0 = Number(await page.evaluate(() => document.body.dataset.resampleCancels ?? 0));
+  await watch(page);
+  await changeWhileRunning(page, [["#lab-angle", "40", "input"], ["#lab-angle", "30", "input"]]);
+  await page.waitForFunction(() => document.body.dataset.resampleShown === "30,2" && document.body.dataset.resampleLive === "idle", null, { timeout: 60_000 });
+  await idle(page);
+  ev = await events(page);
+  assert.equal(Number(await page.evaluate(() => document.body.dataset.resampleCancels)) - rc0, 1, `${ev}`);
+  assert.deepEqual(ev.filter((e) => e.startsWith("resampleShown=")), ["resampleShown=30,2"], `${ev}`);
   assert.deepEqual(log.pageErrors, []);
   await context.close();
 });

@@ -11,6 +11,17 @@
 // not.) Only on photos big enough for the whole result to take longer than
 // a frame or so (PREVIEW_FROM).
 //
+// Resampling's output is another image (views of their own, `target`): its
+// preview is the part of the OUTPUT in those views (their union), each of
+// its pixels computed from the whole photo the main worker holds, exactly
+// as the pool's bands compute it (run_resample over output rows): whole
+// output rows are what the wasm resamples, so the box keeps at most
+// PREVIEW_PIXELS / (output width) rows (the middle ones of those in view)
+// and is then cut to the columns in view. Its greys are painted on the
+// photo's own range (the whole result is painted on its own, nearly the
+// same: resampling does not leave the photo's range but by the cubic's
+// overshoot). Before the first result there are no views: no preview.
+//
 // A running computation that is no longer wanted is stopped: by bands on
 // the pool (tiles.js), no band starts after the cancel and the running ones
 // are stopped, and the photo stays in the main worker; a request of the main
@@ -51,10 +62,15 @@ export class Live {
   /**
    * Runs `type` with `args`; `apply(result)` draws it if no newer result is
    * on screen. `cancel`: a running request is stopped (else the new one
-   * waits for it, replacing any older waiting one).
+   * waits for it, replacing any older waiting one). `target`: where the
+   * preview is drawn ({ visible(), setPreview(p) }: the photo's viewer when
+   * not given); `layer`: the layer to preview when the one shown is not
+   * one of the result's; `rowWidth`: the request computes whole output
+   * rows this wide (resampling): its preview is of output rows (worker.js
+   * `preview` with `rows`).
    */
-  request({ type, args, label, cancel = false, apply }) {
-    const req = { type, args, label, apply, gen: ++this.gen, t0: performance.now() };
+  request({ type, args, label, cancel = false, apply, target = null, layer = null, rowWidth = 0 }) {
+    const req = { type, args, label, apply, target: target ?? this.lab.viewer, layer, rowWidth, gen: ++this.gen, t0: performance.now() };
     if (this.running) {
       if (!cancel) {
         this.queued = req;
@@ -77,7 +93,7 @@ export class Live {
     const r = await this.lab.run(req.type, req.args, req.label, [], { quietCancel: true });
     if (this.running === req) this.running = null;
     // a failed run leaves no preview behind (a newer one draws its own)
-    if (!r && !this.running && !this.queued) this.lab.viewer.setPreview(null);
+    if (!r && !this.running && !this.queued) req.target.setPreview(null);
     if (this.lab.client.lastRestartMs !== undefined) testHook("restartMs", this.lab.client.lastRestartMs.toFixed(0));
     if (r && req.gen > this.shown) {
       this.shown = req.gen;
@@ -102,15 +118,17 @@ export class Live {
   preview(req) {
     const lab = this.lab;
     const img = lab.image;
-    const view = lab.viewer.visible();
+    const view = req.target.visible();
     const from = lab.previewFrom ?? PREVIEW_FROM;
-    if (!PREVIEWS.has(req.type) || !img || !view || img.width * img.height < from) return;
-    const rect = previewRect(view, PREVIEW_PIXELS);
+    if (!(PREVIEWS.has(req.type) || req.rowWidth) || !img || !view || img.width * img.height < from) return;
+    let rect = previewRect(view, PREVIEW_PIXELS);
+    const rows = req.rowWidth > 0;
+    if (rows) rect = rowsRect(rect, Math.floor(PREVIEW_PIXELS / req.rowWidth));
     const name = lab.layers[Number(lab.layerSelect.value)]?.name ?? null;
-    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, rect }))
+    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, fallback: req.layer, rect, rows }))
       .then((p) => {
         if (!p || this.running !== req || req.gen <= this.shown) return;
-        lab.viewer.setPreview(p);
+        req.target.setPreview(p);
         // ms from the new value to its preview on screen (npm run bench -- --lab)
         testHook("previewMs", (performance.now() - req.t0).toFixed(1));
         testHook(`${this.name}Preview`, rect.join(","));
@@ -129,4 +147,11 @@ export function previewRect(view, most) {
   const pw = Math.max(1, Math.min(w, Math.round(Math.sqrt((most * w) / h))));
   const ph = Math.max(1, Math.min(h, Math.floor(most / pw)));
   return [c + ((w - pw) >> 1), r + ((h - ph) >> 1), pw, ph];
+}
+
+/** `rect` [c, r, w, h] with at most `rows` rows (its middle ones; at least one). */
+export function rowsRect(rect, rows) {
+  const [c, r, w, h] = rect;
+  const n = Math.max(1, Math.min(h, rows));
+  return [c, r + ((h - n) >> 1), w, n];
 }

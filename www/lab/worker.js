@@ -187,6 +187,39 @@ function cut(r, own, at) {
   return { ...r, layers, points: points.slice(0, n) };
 }
 
+/** The grey range [min, max] of image `img` (kept with it: the resampling previews paint on it). */
+function rangeOf(img) {
+  if (!img.range) {
+    const u8 = img.u8;
+    if (u8) {
+      let [lo, hi] = [255, 0];
+      for (let i = 0; i < u8.length; i++) {
+        const v = u8[i];
+        if (v < lo) lo = v;
+        if (v > hi) hi = v;
+      }
+      img.range = Float64Array.from([lo, hi]);
+    } else img.range = lab.layer_range(img.grey());
+  }
+  return img.range;
+}
+
+/** The preview of output rows of request `op` (worker `preview` with `rows`): output box `rect`, each layer painted. */
+async function rowsPreview(op, args, rect, transfer) {
+  const [c, r, w, h] = rect;
+  const handler = handlers[op];
+  if (!handler) throw new Error(`op: "${String(op).slice(0, 40)}" has no preview`);
+  const range = rangeOf(need("a"));
+  const whole = handler({ ...args, row0: r, row1: r + h }, []);
+  const layers = [];
+  for (const l of cut(whole, [c, r, w, h], [0, 0]).layers) {
+    const p = await painted(l.data, l.width, false, range);
+    transfer.push(p.bitmap, l.data.buffer);
+    layers.push({ ...p, name: l.name, rect: [l.c0, l.r0, l.width, l.height], values: l.data });
+  }
+  return { layers, rect };
+}
+
 /** The signed scale's end colours as paint_layer takes them (colour-scales.js). */
 const ENDS = Uint8Array.from([...SIGNED_NEGATIVE, ...SIGNED_POSITIVE]);
 /** Rows a painting puts into its canvas at a time (the RGBA of one part in wasm memory). */
@@ -376,10 +409,15 @@ const handlers = {
    * neighbours around it (op_halo), so its pixels are the whole result's
    * (an 8-bit photo's bytes, a colour photo's greys as they are: every
    * operator here has its fast path on both).
-   * Answers the layer named `name` (else the first) painted: `{ bitmap,
-   * scale, name, rect }`, `rect` the image pixels it covers.
+   * Answers the layer named `name` (else `fallback`, else the first)
+   * painted: `{ bitmap, scale, name, rect, values }`, `rect` the image
+   * pixels it covers, `values` its numbers. `rows` (resampling): `op` is
+   * a request of output rows (`row0`, `row1`: its handler here, as the
+   * pool's bands ask it), `rect` a box of its output, every layer painted on
+   * the photo's range: `{ layers: [{ bitmap, scale, name, rect, values }] }`.
    */
-  async preview({ op, args, rect, name = null }, transfer) {
+  async preview({ op, args, rect, name = null, fallback = null, rows = false }, transfer) {
+    if (rows) return rowsPreview(op, args, rect, transfer);
     const run = OPS[op];
     if (!run) throw new Error(`op: "${String(op).slice(0, 40)}" has no preview`);
     const a = need("a");
@@ -391,11 +429,11 @@ const handlers = {
     const img = lab.crop_image(a, c0, r0, c1 - c0, r1 - r0, false);
     try {
       const r = cut(run(img, args), [rect[0] - c0, rect[1] - r0, rect[2], rect[3]], [c0, r0]);
-      const layer = r.layers.find((l) => l.name === name) ?? r.layers[0];
+      const layer = r.layers.find((l) => l.name === name) ?? r.layers.find((l) => l.name === fallback) ?? r.layers[0];
       if (!layer || !layer.width || !layer.height) return null;
       const p = await painted(layer.data, layer.width, layer.signed);
-      transfer.push(p.bitmap);
-      return { ...p, name: layer.name, rect: [layer.c0, layer.r0, layer.width, layer.height] };
+      transfer.push(p.bitmap, layer.data.buffer);
+      return { ...p, name: layer.name, rect: [layer.c0, layer.r0, layer.width, layer.height], values: layer.data };
     } finally {
       img.free();
     }

@@ -1,12 +1,18 @@
 // The resampling family: rotate and scale (nearest, bilinear, bicubic side
 // by side) or a projective warp from four clicked points; a result pixel is
-// explained by the resample example with its 4×4 patch.
+// explained by the resample example with its 4×4 patch. A new angle or
+// scale recomputes it live (live.js: a preview of the part of the output in
+// the views first; they keep their zoom and place).
 
 import { el } from "../../dom.js";
-import { Viewer, fmt } from "../view.js";
+import { Viewer, fmt, paintOf } from "../view.js";
+import { Live } from "../live.js";
 import * as X from "../explain.js";
 import { testHook } from "../../test-hooks.js";
 import { needImage, number, runButton, select, showPixel } from "./common.js";
+
+/** A preview target that has none. */
+const NONE = { visible: () => null, setPreview() {} };
 
 const resampling = {
   id: "resampling",
@@ -35,24 +41,67 @@ const resampling = {
     };
     kind.addEventListener("change", sync);
     sync();
-    const show = async (args) => {
-      const r = await lab.run("resample", args, "Resampling");
-      if (!r) return;
+    // the result's layers by name (a view's pick explains the one it shows now)
+    const shownLayers = new Map();
+    const same = (r) => views.length === r.layers.length && r.layers.every((l, i) => views[i].name === l.name && views[i].image?.width === l.width && views[i].image?.height === l.height);
+    let drawn = 0;
+    const draw = async (args, r) => {
+      // painted before they replace the views' images (no blank frame between the preview and the result)
+      const gen = ++drawn;
+      const bitmaps = await Promise.all(r.layers.map((l) => paintOf({ data: l.data, width: l.width, signed: false })));
+      if (gen !== drawn) return; // a newer result came meanwhile
       used = args;
-      holder.replaceChildren();
-      views.splice(0).forEach((v) => v.destroy());
-      const cc = Math.round(args.width / 2);
-      const rr = Math.round(args.height / 2);
-      r.layers.forEach((layer) => {
+      const keep = same(r);
+      if (!keep) {
+        holder.replaceChildren();
+        views.splice(0).forEach((v) => v.destroy());
+      }
+      r.layers.forEach((layer, i) => {
+        shownLayers.set(layer.name, layer);
+        const img = { width: layer.width, height: layer.height, grey: layer.data, bitmap: bitmaps[i]?.bitmap };
+        if (keep) {
+          // the same output size: each view keeps its zoom and place
+          const v = views[i];
+          const { zoom, ox, oy } = v;
+          v.setImage(img);
+          Object.assign(v, { zoom, ox, oy, fitted: true, atFit: false });
+          v.draw();
+          return;
+        }
         const fig = el("figure", {}, el("figcaption", {}, layer.name));
         holder.append(fig);
-        const v = new Viewer(fig, { label: `Resampled by ${layer.name}`, onPick: (c, rw) => explain(layer, c, rw) });
-        v.setImage({ width: layer.width, height: layer.height, grey: layer.data });
-        v.zoomTo(12, cc, rr);
+        const v = new Viewer(fig, { label: `Resampled by ${layer.name}`, onPick: (c, rw) => explain(shownLayers.get(layer.name), c, rw) });
+        v.name = layer.name;
+        v.setImage(img);
+        // a preview is drawn as it will be (not see-through: the views show no photo under it)
+        v.setOpacity(1);
+        v.zoomTo(12, Math.round(args.width / 2), Math.round(args.height / 2));
         views.push(v);
       });
       lab.setLayers([]);
       testHook("resampled", r.layers.map((l) => l.name).join(","));
+      testHook("resampleShown", args.params.join(","));
+    };
+    // where a preview goes: the part of the output in the views (their union), each method's into its view
+    const target = {
+      visible() {
+        const boxes = views.map((v) => v.visible()).filter(Boolean);
+        if (!boxes.length) return null;
+        const c0 = Math.min(...boxes.map((b) => b[0]));
+        const r0 = Math.min(...boxes.map((b) => b[1]));
+        const c1 = Math.max(...boxes.map((b) => b[0] + b[2]));
+        const r1 = Math.max(...boxes.map((b) => b[1] + b[3]));
+        return [c0, r0, c1 - c0, r1 - r0];
+      },
+      setPreview(p) {
+        for (const v of views) v.setPreview(p?.layers.find((l) => l.name === v.name) ?? null);
+      },
+    };
+    const live = new Live(lab, "resample");
+    const show = (args) => {
+      // a preview only into views of the same output size (a projective warp's 256 × 256 has none: it is quick)
+      const fits = views.length > 0 && views.every((v) => v.image?.width === args.width && v.image?.height === args.height);
+      live.request({ type: "resample", args, label: "Resampling", cancel: true, target: fits ? target : NONE, rowWidth: args.width, apply: (r) => draw(args, r) });
     };
     const explain = async (layer, c, r) => {
       const v = layer.data[r * layer.width + c];
@@ -65,10 +114,20 @@ const resampling = {
       await showPixel(lab, `${layer.name} at output column ${c}, row ${r} (input position ${fmt(x, 7)}, ${fmt(y, 7)}):`, v,
         { op: "resample", args: used, layer: layer.name, c, r }, patch ? X.resampleLink(patch, fc, fr, x, y, layer.name) : null);
     };
-    run.addEventListener("click", () => {
+    const rotate = () => {
       if (!needImage(lab)) return;
       show({ kind: "rotate", params: [Number(angle.value), Number(scale.value)], width: lab.image.width, height: lab.image.height });
-    });
+    };
+    run.addEventListener("click", rotate);
+    // a new angle or scale, once a rotation is shown (or being computed): recomputed live
+    for (const input of [angle, scale]) {
+      input.addEventListener("input", () => {
+        const n = Number(input.value);
+        // (not while a number is half typed: "", "-", a scale of "0" before "0.5")
+        if (input.value.trim() === "" || !Number.isFinite(n) || (input === scale && n <= 0)) return;
+        if (kind.value === "rotate" && lab.image && (used?.kind === "rotate" || live.busy)) rotate();
+      });
+    }
     return {
       destroy() {
         views.forEach((v) => v.destroy());
