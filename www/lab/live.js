@@ -18,9 +18,9 @@
 // output rows are what the wasm resamples, so the box keeps at most
 // PREVIEW_PIXELS / (output width) rows (the middle ones of those in view)
 // and is then cut to the columns in view. Its greys are painted on the
-// photo's own range (the whole result is painted on its own, nearly the
-// same: resampling does not leave the photo's range but by the cubic's
-// overshoot). Before the first result there are no views: no preview.
+// grey stretch of the result shown in each view (`target.ranges()`: the
+// new one's is nearly the same, the photo's range with the rotation's
+// empty corners). Before the first result there are no views: no preview.
 //
 // A running computation that is no longer wanted is stopped: by bands on
 // the pool (tiles.js), no band starts after the cancel and the running ones
@@ -63,8 +63,8 @@ export class Live {
    * Runs `type` with `args`; `apply(result)` draws it if no newer result is
    * on screen. `cancel`: a running request is stopped (else the new one
    * waits for it, replacing any older waiting one). `target`: where the
-   * preview is drawn ({ visible(), setPreview(p) }: the photo's viewer when
-   * not given); `layer`: the layer to preview when the one shown is not
+   * preview is drawn ({ visible(), setPreview(p), ranges()? }: the photo's
+   * viewer when not given; ranges: the layers' grey stretch by name); `layer`: the layer to preview when the one shown is not
    * one of the result's; `rowWidth`: the request computes whole output
    * rows this wide (resampling): its preview is of output rows (worker.js
    * `preview` with `rows`).
@@ -125,7 +125,8 @@ export class Live {
     const rows = req.rowWidth > 0;
     if (rows) rect = rowsRect(rect, Math.floor(PREVIEW_PIXELS / req.rowWidth));
     const name = lab.layers[Number(lab.layerSelect.value)]?.name ?? null;
-    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, fallback: req.layer, rect, rows }))
+    const ranges = req.target.ranges?.() ?? null;
+    lab.busyWhile(lab.client.call("preview", { op: req.type, args: req.args, name, fallback: req.layer, rect, rows, ranges }))
       .then((p) => {
         if (!p || this.running !== req || req.gen <= this.shown) return;
         req.target.setPreview(p);

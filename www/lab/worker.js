@@ -187,33 +187,16 @@ function cut(r, own, at) {
   return { ...r, layers, points: points.slice(0, n) };
 }
 
-/** The grey range [min, max] of image `img` (kept with it: the resampling previews paint on it). */
-function rangeOf(img) {
-  if (!img.range) {
-    const u8 = img.u8;
-    if (u8) {
-      let [lo, hi] = [255, 0];
-      for (let i = 0; i < u8.length; i++) {
-        const v = u8[i];
-        if (v < lo) lo = v;
-        if (v > hi) hi = v;
-      }
-      img.range = Float64Array.from([lo, hi]);
-    } else img.range = lab.layer_range(img.grey());
-  }
-  return img.range;
-}
-
 /** The preview of output rows of request `op` (worker `preview` with `rows`): output box `rect`, each layer painted. */
-async function rowsPreview(op, args, rect, transfer) {
+async function rowsPreview(op, args, rect, ranges, transfer) {
   const [c, r, w, h] = rect;
   const handler = handlers[op];
   if (!handler) throw new Error(`op: "${String(op).slice(0, 40)}" has no preview`);
-  const range = rangeOf(need("a"));
   const whole = handler({ ...args, row0: r, row1: r + h }, []);
   const layers = [];
   for (const l of cut(whole, [c, r, w, h], [0, 0]).layers) {
-    const p = await painted(l.data, l.width, false, range);
+    const range = ranges?.[l.name];
+    const p = await painted(l.data, l.width, false, range ? Float64Array.from(range) : null);
     transfer.push(p.bitmap, l.data.buffer);
     layers.push({ ...p, name: l.name, rect: [l.c0, l.r0, l.width, l.height], values: l.data });
   }
@@ -413,11 +396,12 @@ const handlers = {
    * painted: `{ bitmap, scale, name, rect, values }`, `rect` the image
    * pixels it covers, `values` its numbers. `rows` (resampling): `op` is
    * a request of output rows (`row0`, `row1`: its handler here, as the
-   * pool's bands ask it), `rect` a box of its output, every layer painted on
-   * the photo's range: `{ layers: [{ bitmap, scale, name, rect, values }] }`.
+   * pool's bands ask it), `rect` a box of its output, each layer painted on
+   * `ranges[its name]` ([lo, hi]: the shown result's, else its own):
+   * `{ layers: [{ bitmap, scale, name, rect, values }] }`.
    */
-  async preview({ op, args, rect, name = null, fallback = null, rows = false }, transfer) {
-    if (rows) return rowsPreview(op, args, rect, transfer);
+  async preview({ op, args, rect, name = null, fallback = null, rows = false, ranges = null }, transfer) {
+    if (rows) return rowsPreview(op, args, rect, ranges, transfer);
     const run = OPS[op];
     if (!run) throw new Error(`op: "${String(op).slice(0, 40)}" has no preview`);
     const a = need("a");

@@ -43,6 +43,8 @@ const resampling = {
     sync();
     // the result's layers by name (a view's pick explains the one it shows now)
     const shownLayers = new Map();
+    // their grey stretch as painted (a preview is painted on it)
+    const stretch = {};
     const same = (r) => views.length === r.layers.length && r.layers.every((l, i) => views[i].name === l.name && views[i].image?.width === l.width && views[i].image?.height === l.height);
     let drawn = 0;
     const draw = async (args, r) => {
@@ -58,6 +60,7 @@ const resampling = {
       }
       r.layers.forEach((layer, i) => {
         shownLayers.set(layer.name, layer);
+        if (bitmaps[i]?.scale) stretch[layer.name] = [bitmaps[i].scale.lo, bitmaps[i].scale.hi];
         const img = { width: layer.width, height: layer.height, grey: layer.data, bitmap: bitmaps[i]?.bitmap };
         if (keep) {
           // the same output size: each view keeps its zoom and place
@@ -96,6 +99,7 @@ const resampling = {
       setPreview(p) {
         for (const v of views) v.setPreview(p?.layers.find((l) => l.name === v.name) ?? null);
       },
+      ranges: () => stretch,
     };
     const live = new Live(lab, "resample");
     const show = (args) => {
