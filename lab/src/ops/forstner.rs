@@ -509,7 +509,14 @@ impl ForstnerKept {
         let fresh = matches!(&self.suppressed,
             Some(s) if s.sigma_n == sigma_n && s.q_min == q_min && s.limit >= t2);
         if !fresh {
-            self.suppress(sigma_n, q_min, 4.0 * t2);
+            // a colour photo's suppression for every `T` at once (its
+            // maxima carry their approximate λ; the shown ones' exact λ and
+            // measures are found below): a new `T` never redoes it
+            let limit = match self.source {
+                Source::Levels { .. } => f64::MAX,
+                _ => 4.0 * t2,
+            };
+            self.suppress(sigma_n, q_min, limit);
         }
         let Some(s) = &self.suppressed else {
             return Ok(Vec::new());
@@ -518,16 +525,18 @@ impl ForstnerKept {
         let var = sigma_n * sigma_n;
         Ok(s.maxima
             .iter()
-            // (a fast maximum's λ is within 10⁻¹⁴ of the exact one)
-            .filter(|x| x.lambda <= t2 * (1.0 + REFINE))
+            // (a fast maximum's λ is within 10⁻¹⁴ of the exact one, a
+            // colour photo's within 10⁻⁶ / 8: the exact one decides below)
+            .filter(|x| x.lambda <= t2 * (1.0 + 1e-6))
             .filter_map(|x| {
                 let (ms, lambda) = match (&self.source, x.sums) {
                     (_, Some(sums)) => (sums.measures(m), var / sums.lambda_min()),
                     (Source::Reference(map), None) => (map.get(x.c, x.r)?, x.lambda),
-                    (Source::Levels { levels, width, .. }, None) => (
-                        exact_measures(levels, *width, self.size, x.c, x.r)?,
-                        x.lambda,
-                    ),
+                    (Source::Levels { levels, width, .. }, None) => {
+                        let ms = exact_measures(levels, *width, self.size, x.c, x.r)?;
+                        // (the reference route's λmax(Σuv), as `levels::score_of`)
+                        (ms, var / ms.lambda_min)
+                    }
                     _ => return None,
                 };
                 (lambda <= t2).then_some(())?;

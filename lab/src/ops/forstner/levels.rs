@@ -159,7 +159,7 @@ const TOL: f64 = 1e-6;
 
 /// `w` and `q` layers of the levels `lv` (`width × height`) and, with
 /// `detect = (σn, q_min, limit)`, the local maxima of seed 003's candidates
-/// (the reference's, with their exact `λmax(Σuv)`).
+/// (the reference's; their `λmax(Σuv)` within `TOL` / 8 of the exact one).
 pub(super) fn build(
     lv: &Levels,
     width: usize,
@@ -183,7 +183,7 @@ pub(super) fn build(
     };
     let mut sup = detect.map(|_| Suppressor::new(width, height, size / 2).refined(TOL, exact));
     let mut maxima = Vec::new();
-    let mut keep = |c: usize, r: usize, _: f64, p: (usize, usize)| maxima.push((c, r, p));
+    let mut keep = |c: usize, r: usize, s: f64, _: (usize, usize)| maxima.push((c, r, s));
     let mut row = vec![(f64::NAN, (0usize, 0usize)); width];
     let mut next = 0;
     let fit = stream::forstner_rows_levels(view, size, |r, xx, yy, xy| {
@@ -219,10 +219,10 @@ pub(super) fn build(
     let maxima = detect.map(|_| {
         maxima
             .into_iter()
-            .map(|(c, r, p)| Maximum {
+            .map(|(c, r, s)| Maximum {
                 c,
                 r,
-                lambda: -exact(&p),
+                lambda: -s,
                 sums: None,
             })
             .collect()
