@@ -12,25 +12,14 @@ use photogrammetry_playground::interest;
 use photogrammetry_playground::raster::Grid;
 
 const BORDERS: [&str; 4] = ["replicate", "reflect", "zero", "crop"];
-const KERNELS: [&str; 10] = [
-    "mean",
-    "weighted-mean",
-    "gaussian-3",
-    "gaussian-5",
-    "laplacian-4",
-    "laplacian-8",
-    "log",
-    "sharpen",
-    "high-pass",
-    "laplacian-004",
-];
 
 #[test]
 fn every_filter_equals_its_window_sum_at_every_pixel_under_every_border() {
     let img = random(11, 9, 1);
     for b in BORDERS {
         let border = ops::border(b).unwrap();
-        for k in KERNELS {
+        // every named kernel (the median has none)
+        for k in filter::NAMES.into_iter().filter(|&k| k != "median") {
             let kernel = ops::kernel(k, None).unwrap().unwrap();
             let layer = ops::filter_image(&img, k, border, None).unwrap();
             let mut covered = 0;

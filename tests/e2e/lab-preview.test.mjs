@@ -69,6 +69,24 @@ async function watch(page) {
 const events = (page) => page.evaluate(() => window.labEvents);
 const layerAt = (page, name, pixels) => page.evaluate(async ([name, pixels]) => (await import("./lab/lab.js")).layerForTests(name, pixels), [name, pixels]);
 
+/**
+ * `changes` made while the first is computed (changeWhileRunning) on live
+ * controller `name` (its test hooks: <name>Cancels, <name>Shown, <name>Live):
+ * exactly one cancel, and only the newest, `shown`, drawn. The events seen.
+ */
+async function newestWins(page, name, changes, shown) {
+  const hook = (k) => `${name}${k}`;
+  const cancels0 = Number(await page.evaluate((k) => document.body.dataset[k] ?? 0, hook("Cancels")));
+  await watch(page);
+  await changeWhileRunning(page, changes);
+  await page.waitForFunction(([s, l, want]) => document.body.dataset[s] === want && document.body.dataset[l] === "idle", [hook("Shown"), hook("Live"), shown], { timeout: 60_000 });
+  await idle(page);
+  const ev = await events(page);
+  assert.equal(Number(await page.evaluate((k) => document.body.dataset[k], hook("Cancels"))) - cancels0, 1, `${ev}`);
+  assert.deepEqual(ev.filter((e) => e.startsWith(`${hook("Shown")}=`)), [`${hook("Shown")}=${shown}`], `${ev}`);
+  return ev;
+}
+
 test("a slider change paints its preview before the whole result (k × k mean, Förstner window); the result is the operator's; a newer value stops the running one", { timeout: TEST_TIMEOUT * 4 }, async () => {
   const { page, log, context } = await openLab(env);
   await openCheckerboard(page);
@@ -225,14 +243,7 @@ test("a new edge operator or border, and a new rotation, paint their preview bef
   });
 
   // Sobel while Prewitt's reflect border is being computed: that one is stopped, only Sobel's shows
-  const cancels0 = Number(await page.evaluate(() => document.body.dataset.edgesCancels ?? 0));
-  await watch(page);
-  await changeWhileRunning(page, [["#lab-border", "reflect", "change"], ["#lab-operator", "sobel", "change"]]);
-  await page.waitForFunction(() => document.body.dataset.edgesShown === "sobel reflect" && document.body.dataset.edgesLive === "idle", null, { timeout: 60_000 });
-  await idle(page);
-  ev = await events(page);
-  assert.equal(Number(await page.evaluate(() => document.body.dataset.edgesCancels)) - cancels0, 1, `${ev}`);
-  assert.deepEqual(ev.filter((e) => e.startsWith("edgesShown=")), ["edgesShown=sobel reflect"], `${ev}`);
+  ev = await newestWins(page, "edges", [["#lab-border", "reflect", "change"], ["#lab-operator", "sobel", "change"]], "sobel reflect");
   assert.ok(ev.findLastIndex((e) => e.startsWith("edgesPreview=")) < ev.indexOf("edgesShown=sobel reflect"), `${ev}`);
   got = await layerAt(page, "magnitude", [[511, 512], [700, 300]]);
   [[511, 512], [700, 300]].forEach(([c, r], i) => assert.ok(Math.abs(got.values[i] - magnitude("sobel", c, r)) <= 1e-4, `Sobel at (${c}, ${r})`));
@@ -268,14 +279,7 @@ test("a new edge operator or border, and a new rotation, paint their preview bef
   }
 
   // 30° while 40° is computed: 40° stopped, only 30° shown
-  const rc0 = Number(await page.evaluate(() => document.body.dataset.resampleCancels ?? 0));
-  await watch(page);
-  await changeWhileRunning(page, [["#lab-angle", "40", "input"], ["#lab-angle", "30", "input"]]);
-  await page.waitForFunction(() => document.body.dataset.resampleShown === "30,2" && document.body.dataset.resampleLive === "idle", null, { timeout: 60_000 });
-  await idle(page);
-  ev = await events(page);
-  assert.equal(Number(await page.evaluate(() => document.body.dataset.resampleCancels)) - rc0, 1, `${ev}`);
-  assert.deepEqual(ev.filter((e) => e.startsWith("resampleShown=")), ["resampleShown=30,2"], `${ev}`);
+  await newestWins(page, "resample", [["#lab-angle", "40", "input"], ["#lab-angle", "30", "input"]], "30,2");
   assert.deepEqual(log.pageErrors, []);
   await context.close();
 });
