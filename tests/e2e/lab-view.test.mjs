@@ -252,6 +252,74 @@ test("the opacity slider blends the result over the photo; Sobel gx gets the div
   await context.close();
 });
 
+test("many points: the small ones stamped, the ones out of view left out, the view as when every shape is stroked", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab();
+  await page.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+  // a 3000 × 2000 board of 40-pixel squares: a few thousand corners, far enough apart on screen that their rings do not touch
+  await page.evaluate(async () => {
+    const [w, h] = [3000, 2000];
+    const bytes = new Uint8Array(w * h);
+    for (let r = 0; r < h; r++) for (let c = 0; c < w; c++) bytes[r * w + c] = ((Math.floor(c / 40) + Math.floor(r / 40)) & 1 ? 200 : 40) + ((c * 7 + r * 13) % 5);
+    await (await import("./lab/lab.js")).openRawForTests(w, h, bytes, "board");
+  });
+  await page.waitForFunction(() => document.body.dataset.image === "board");
+  await idle(page);
+  await page.selectOption("#lab-family", "interest");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => Number(document.body.dataset.points) > 0);
+  await idle(page);
+  // the view's shapes as drawn (the panel's cached canvas) against all of them stroked on a canvas of their own
+  const compare = () => page.evaluate(async () => {
+    const v = (await import("./lab/lab.js")).viewerForTests();
+    v.draw();
+    const cache = v.shapeCache.get(0).canvas;
+    const [w, h] = [cache.width, cache.height];
+    const drawn = cache.getContext("2d").getImageData(0, 0, w, h).data;
+    const ref = new OffscreenCanvas(w, h).getContext("2d");
+    ref.setTransform(v.zoom, 0, 0, v.zoom, v.ox, v.oy);
+    v.drawShapes(ref);
+    const stroked = ref.getImageData(0, 0, w, h).data;
+    const near = (d, x, y) => {
+      for (let j = Math.max(0, y - 1); j <= Math.min(h - 1, y + 1); j++) for (let i = Math.max(0, x - 1); i <= Math.min(w - 1, x + 1); i++) if (d[4 * (j * w + i) + 3] > 0) return true;
+      return false;
+    };
+    // pixels at least half covered in one with nothing within a pixel in the other, and the colour of the covered ones
+    const out = { shapes: v.shapes.length, stamped: v.shapes.filter((s) => Math.max(s.a, s.b) * v.zoom <= 2).length, zoom: v.zoom, drawn: 0, stroked: 0, onlyDrawn: 0, onlyStroked: 0, colours: new Set() };
+    for (let y = 0; y < h; y++) {
+      for (let x = 0; x < w; x++) {
+        const k = 4 * (y * w + x);
+        if (drawn[k + 3] >= 128) {
+          out.drawn++;
+          if (!near(stroked, x, y)) out.onlyDrawn++;
+          if (drawn[k + 3] === 255) out.colours.add(Array.from(drawn.slice(k, k + 3)).join(","));
+        }
+        if (stroked[k + 3] >= 128) {
+          out.stroked++;
+          if (!near(drawn, x, y)) out.onlyStroked++;
+        }
+      }
+    }
+    return { ...out, colours: [...out.colours] };
+  });
+  const fit = await compare();
+  assert.ok(fit.shapes >= 1000 && fit.stamped === fit.shapes, `at the fit (zoom ${fit.zoom}), ${fit.stamped} of ${fit.shapes} points small enough to stamp`);
+  for (const [what, c] of [["the fit", fit]]) {
+    assert.ok(c.drawn > 0 && Math.abs(c.drawn - c.stroked) <= 0.1 * c.stroked, `${what}: ${c.drawn} pixels drawn, ${c.stroked} stroked`);
+    assert.equal(c.onlyDrawn + c.onlyStroked, 0, `${what}: ${c.onlyDrawn} drawn pixels with none stroked within a pixel, ${c.onlyStroked} the other way`);
+    assert.deepEqual(c.colours, ["255,140,0"]);
+  }
+  // zoomed in about a corner (1520, 1000): most points out of view, the ones in view stroked (larger than the least size)
+  await page.evaluate(async () => {
+    const v = (await import("./lab/lab.js")).viewerForTests();
+    v.zoomAt(100, 1520 * v.zoom + v.ox, 1000 * v.zoom + v.oy);
+  });
+  const zoomed = await compare();
+  assert.ok(zoomed.stamped < zoomed.shapes && zoomed.drawn > 0, `zoomed in (zoom ${zoomed.zoom}): ${zoomed.stamped} of ${zoomed.shapes} points small enough to stamp, ${zoomed.drawn} pixels drawn`);
+  assert.ok(Math.abs(zoomed.drawn - zoomed.stroked) <= 0.02 * zoomed.stroked && zoomed.onlyDrawn + zoomed.onlyStroked === 0, `zoomed in: ${JSON.stringify(zoomed)}`);
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
 test("the engine line: the SIMD128 build on as many threads as cores (at most 8), with or without cross-origin isolation", { timeout: TEST_TIMEOUT * 2 }, async () => {
   const { page, log, context } = await openLab();
   await page.waitForFunction(() => !/starting/.test(document.getElementById("lab-engine").textContent));
