@@ -442,8 +442,12 @@ test("a clicked pixel of each family opens its worked example with the same numb
 test("correlation: NCC surface, subpixel and LSM on the aerial pair, each explained by its example", { timeout: TEST_TIMEOUT * 2 }, async () => {
   const { page, log, context } = await openLab();
   await sample(page, "aero1.jpg");
+  // the correlation family's module comes when the family is chosen, not with the lab
+  const correlationModule = () => log.requests.filter((u) => /\/correlation(-\w{8})?\.js$/.test(u)).length;
+  assert.equal(correlationModule(), 0, "the correlation family was fetched before it was chosen");
   await page.selectOption("#lab-family", "correlation");
   await page.selectOption("#lab-second", "same");
+  assert.equal(correlationModule(), 1);
   await page.selectOption("#lab-template", "11");
   await page.fill("#lab-reach", "12");
   await clickPixel(page, 300, 200);

@@ -21,17 +21,16 @@ import { testHook, testing } from "../test-hooks.js";
 import filters from "./families/filters.js";
 import edges from "./families/edges.js";
 import interest from "./families/interest.js";
-import correlation from "./families/correlation.js";
 import resampling from "./families/resampling.js";
 import boundaries from "./families/boundaries.js";
 
 /**
  * The operator families (www/lab/families/<family>.js), in the menu's order.
- * The fiducials family is loaded when chosen (`load`: its module's default
- * export has `create`): few visits use it, and the lab's first download
- * stays within its budget (lab_tiles.test.mjs).
+ * The correlation and fiducials families (4 KB each) are loaded when chosen (`load`: the module's
+ * default export has `create`): the lab's first download stays within its budget (lab_tiles.test.mjs).
  */
-const FAMILIES = [filters, edges, interest, correlation, resampling, boundaries,
+const FAMILIES = [filters, edges, interest,
+  { id: "correlation", title: "Correlation and least-squares matching", load: () => import("./families/correlation.js") }, resampling, boundaries,
   { id: "fiducials", title: "Fiducials (Example 4 on the scanned frame)", load: () => import("./families/fiducials.js") }];
 
 /**

@@ -705,11 +705,11 @@ export class Viewer {
 
   /**
    * Into the panel canvas `ctx` (`cw` × `ch` canvas pixels, identity
-   * transform): the small round shapes stamped — one stroked circle of
-   * their size drawn once (`stampOf`), its pixels laid over the panel's at
-   * each shape's pixel (source-over, the centre within half a pixel) and
-   * put in one `putImageData`. Returns the shapes left to stroke, without
-   * those wholly outside the panel.
+   * transform): the small round shapes of one colour stamped — one stroked
+   * circle of their size drawn once (`stampOf`), its alpha laid over the
+   * panel's at each shape's pixel (source over, the centre within half a
+   * pixel), coloured and put in one `putImageData`. Returns the shapes left
+   * to stroke, without those wholly outside the panel.
    */
   stamps(ctx, cw, ch) {
     const [z, dpr] = [this.zoom, this.dpr || 1];
@@ -718,68 +718,39 @@ export class Viewer {
     const [at, used] = [[], []];
     let st = null;
     for (const s of this.shapes) {
-      // canvas pixels from the centre to the outside of the stroke (null: not round)
+      // canvas pixels from the centre to the stroke (null: not round)
       const stroke = (s.width || 2) * dpr;
       const radius = s.kind === "dot" ? (s.size || 3) * dpr : s.kind === "ellipse" ? Math.max(s.a * z, s.b * z, 2) : null;
-      if (radius === null || s.fill) {
-        rest.push(s);
-        continue;
-      }
       const [x, y] = [(s.c + 0.5) * z + this.ox, (s.r + 0.5) * z + this.oy];
       const reach = radius + stroke;
-      if (x < -reach || y < -reach || x > cw + reach || y > ch + reach) continue;
-      // an ellipse at its least size (a circle of 2 canvas pixels) or a dot: stamped
-      if (radius > 2 && s.kind === "ellipse") {
+      if (radius !== null && (x < -reach || y < -reach || x > cw + reach || y > ch + reach)) continue;
+      const colour = s.colour || "#ff8c00";
+      // an ellipse at its least size (a circle of 2 canvas pixels) or a dot, of the first one's colour: stamped
+      if (radius === null || s.fill || (radius > 2 && s.kind === "ellipse") || (st && st.colour !== colour)) {
         rest.push(s);
         continue;
       }
-      const colour = s.colour || "#ff8c00";
-      if (!st || st.radius !== radius || st.width !== stroke || st.colour !== colour) st = this.stampOf(radius, stroke, colour);
+      if (!st || st.radius !== radius || st.width !== stroke) st = this.stampOf(radius, stroke, colour);
       at.push(Math.floor(x), Math.floor(y));
       used.push(st);
     }
     if (!used.length) return rest;
-    // (the panel canvas was just cleared: its pixels are transparent)
-    const px = new ImageData(cw, ch);
-    const one = used.every((t) => t.colour === used[0].colour);
-    // one colour (the points): the alphas combined alone, source over (a = sa + da (1 − sa)), then coloured
-    const alpha = one ? new Uint8ClampedArray(cw * ch) : null;
-    const d = px.data;
+    const alpha = new Uint8ClampedArray(cw * ch);
     used.forEach((t, m) => {
-      const [x0, y0] = [at[2 * m], at[2 * m + 1]];
-      const [r, g, b] = t.rgb;
       for (let n = 0; n < t.alpha.length; n++) {
-        const i = x0 + t.dx[n];
-        const j = y0 + t.dy[n];
+        const i = at[2 * m] + t.dx[n];
+        const j = at[2 * m + 1] + t.dy[n];
         if (i < 0 || j < 0 || i >= cw || j >= ch) continue;
-        const sa = t.alpha[n];
-        if (alpha) {
-          const k = j * cw + i;
-          alpha[k] = sa + (alpha[k] * (255 - sa)) / 255;
-          continue;
-        }
-        // colours over colours: source over, the colour the alpha-weighted mean
-        const k = 4 * (j * cw + i);
-        const da = d[k + 3];
-        const a = sa + (da * (255 - sa)) / 255;
-        const ws = sa / a;
-        const wd = (da * (255 - sa)) / 255 / a;
-        d[k] = r * ws + d[k] * wd;
-        d[k + 1] = g * ws + d[k + 1] * wd;
-        d[k + 2] = b * ws + d[k + 2] * wd;
-        d[k + 3] = a;
+        const k = j * cw + i;
+        alpha[k] = t.alpha[n] + (alpha[k] * (255 - t.alpha[n])) / 255;
       }
     });
-    if (alpha) {
-      const [r, g, b] = used[0].rgb;
-      const words = new Uint32Array(d.buffer);
-      const rgb = r | (g << 8) | (b << 16);
-      const le = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
-      for (let k = 0; k < alpha.length; k++) {
-        if (alpha[k] === 0) continue;
-        if (le) words[k] = (rgb | (alpha[k] << 24)) >>> 0;
-        else d.set([r, g, b, alpha[k]], 4 * k);
-      }
+    // (the panel canvas was just cleared: its pixels are transparent; one colour, so the alphas alone combine)
+    const px = new ImageData(cw, ch);
+    const [d, [r, g, b]] = [px.data, used[0].rgb];
+    for (let k = 0; k < alpha.length; k++) {
+      if (!alpha[k]) continue;
+      [d[4 * k], d[4 * k + 1], d[4 * k + 2], d[4 * k + 3]] = [r, g, b, alpha[k]];
     }
     ctx.putImageData(px, 0, 0);
     return rest;
