@@ -11,7 +11,8 @@
 //  - a slider or parameter change → its preview painted (the k × k mean's
 //    size, the LoG's Run, the Förstner window, the edge operator, the
 //    rotation's angle: the part of the output in view), the Förstner threshold →
-//    its points drawn (no preview: the kept map re-thresholded);
+//    its points drawn (raised: the kept map re-thresholded; lowered: the points
+//    on screen that pass it, drawn at once);
 //  - where an operator's call spends its time: the page's main thread busy
 //    (its CPU profile over the calls) and the ms inside the workers (each
 //    answer's `ms`, main worker and pool summed: the pool's bands are CPU
@@ -285,8 +286,8 @@ try {
   }), "base64");
   chrome.jpegBytes = jpeg.length;
   const shown = [];
-  // slider or parameter change → its preview painted (live.js: previewMs), or, where there is no
-  // preview (the Förstner threshold re-thresholds the kept map), → its points drawn
+  // slider or parameter change → its preview painted (live.js: previewMs), or, for the Förstner
+  // threshold, → its points drawn (raised: the kept map's answer; lowered: the points on screen filtered)
   const PREVIEWS = [
     ["mean", "slider change → preview painted: k × k mean size"],
     ["log", "Run → preview painted: filter LoG 5×5"],
@@ -294,6 +295,7 @@ try {
     ["edges", "choice change → preview painted: edge operator"],
     ["resample", "angle change → preview painted: rotation (3 methods)"],
     ["threshold", "slider change → points drawn: Förstner threshold (kept map)"],
+    ["thresholdDown", "slider lowered → points drawn: Förstner threshold (on screen)"],
   ];
   const previews = Object.fromEntries(PREVIEWS.map(([k]) => [k, []]));
   for (let run = 0; run < 3; run++) {
@@ -350,6 +352,7 @@ try {
     await lab.evaluate(async () => (await import("./lab/lab.js")).settledForTests());
     for (const s of [7, 5]) previews.forstner.push(await previewOf("#lab-window", s));
     for (const t of [0.3, 0.8]) previews.threshold.push(await previewOf("#lab-threshold", t, "threshold"));
+    for (const t of [0.6, 0.4]) previews.thresholdDown.push(await previewOf("#lab-threshold", t, "thresholdPreview"));
     // edges and resampling: a Run, then a new choice / angle (recomputed live, its preview first)
     const settled = () => lab.evaluate(async () => (await import("./lab/lab.js")).settledForTests());
     await lab.selectOption("#lab-family", "edges");

@@ -8,12 +8,14 @@
 // value still stops a running one, whose preview and result never show.
 // The same for a new edge operator or border, and for a new rotation angle
 // (the preview: the part of the OUTPUT in the three methods' views): the
-// preview's numbers are the whole result's at the same pixels.
+// preview's numbers are the whole result's at the same pixels. A lower
+// Förstner threshold draws the points on screen that pass it at once, and
+// the kept map's answer is the same points; a higher one waits for it.
 
 import { test, before, after } from "node:test";
 import assert from "node:assert/strict";
 import { start, TEST_TIMEOUT } from "./harness.mjs";
-import { idle, openLab, forstner } from "./lab-harness.mjs";
+import { idle, openLab, forstner, sample } from "./lab-harness.mjs";
 
 let env;
 before(async () => {
@@ -57,7 +59,7 @@ async function watch(page) {
     window.labEvents = [];
     if (window.labWatching) return;
     window.labWatching = true;
-    const keys = ["filterPreview", "filterShown", "forstnerPreview", "mapRuns", "forstnerCancels", "edgesPreview", "edgesShown", "edgesCancels", "resamplePreview", "resampleShown", "resampleCancels"];
+    const keys = ["filterPreview", "filterShown", "forstnerPreview", "mapRuns", "forstnerCancels", "edgesPreview", "edgesShown", "edgesCancels", "resamplePreview", "resampleShown", "resampleCancels", "thresholdPreview", "threshold", "thresholdSame", "points"];
     new MutationObserver((list) => {
       for (const m of list) {
         const key = m.attributeName.slice(5).replace(/-([a-z])/g, (_, ch) => ch.toUpperCase());
@@ -280,6 +282,63 @@ test("a new edge operator or border, and a new rotation, paint their preview bef
 
   // 30° while 40° is computed: 40° stopped, only 30° shown
   await newestWins(page, "resample", [["#lab-angle", "40", "input"], ["#lab-angle", "30", "input"]], "30,2");
+  assert.deepEqual(log.pageErrors, []);
+  await context.close();
+});
+
+test("a lower Förstner threshold draws the passing points on screen at once, the kept map's answer the same; a higher one waits for it; the newest T is shown", { timeout: TEST_TIMEOUT * 2 }, async () => {
+  const { page, log, context } = await openLab(env);
+  // a photo (its corners of every strength: a lower T keeps fewer)
+  await page.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60_000 });
+  await sample(page, "camera.png");
+  await page.selectOption("#lab-family", "interest");
+  await page.selectOption("#lab-interest", "forstner");
+  await page.click("#lab-run");
+  await page.waitForFunction(() => document.body.dataset.threshold && document.body.dataset.forstnerLive === "idle", null, { timeout: 90_000 });
+  await idle(page);
+  const t0 = Number(await page.evaluate(() => document.body.dataset.threshold));
+  const n0 = Number(await page.evaluate(() => document.body.dataset.points));
+  const setT = (ts) => page.evaluate((ts) => {
+    const input = document.querySelector("#lab-threshold");
+    for (const t of ts) {
+      input.value = String(t);
+      input.dispatchEvent(new Event("input", { bubbles: true }));
+    }
+  }, ts);
+  const settle = async (t) => {
+    await page.waitForFunction((t) => document.body.dataset.threshold === t && document.body.dataset.forstnerLive === "idle", String(t), { timeout: 60_000 });
+    await idle(page);
+  };
+  // lowered: drawn at once (before the kept map's answer), then the answer, the same points
+  const low = Math.round(t0 * 70) / 100;
+  await watch(page);
+  await setT([low]);
+  await settle(low);
+  let ev = await events(page);
+  const pre = ev.indexOf(`thresholdPreview=${low}`);
+  assert.ok(pre >= 0 && pre < ev.indexOf(`threshold=${low}`), `T ${t0} -> ${low}: the points drawn before the kept map answers: ${ev}`);
+  assert.ok(ev.includes("thresholdSame=true"), `the kept map's points are the ones drawn: ${ev}`);
+  const n1 = Number(await page.evaluate(() => document.body.dataset.points));
+  assert.ok(n1 > 0 && n1 < n0, `${n0} points at T ${t0}, ${n1} at ${low}`);
+  // raised: no points to filter, the kept map's answer drawn
+  const high = Math.round(t0 * 130) / 100;
+  await watch(page);
+  await setT([high]);
+  await settle(high);
+  ev = await events(page);
+  assert.ok(!ev.some((e) => e.startsWith("thresholdPreview=")) && ev.includes("thresholdSame=false"), `T raised to ${high}: ${ev}`);
+  const n2 = Number(await page.evaluate(() => document.body.dataset.points));
+  assert.ok(n2 > n0, `${n0} points at T ${t0}, ${n2} at ${high}`);
+  // lowered twice, the second while the first's answer is on its way: each drawn at once, the newest stays, and is the kept map's
+  const [a, b] = [Math.round(t0 * 110) / 100, Math.round(t0 * 80) / 100];
+  await watch(page);
+  await setT([a]);
+  await setT([b]);
+  await settle(b);
+  ev = await events(page);
+  assert.deepEqual(ev.filter((e) => e.startsWith("thresholdPreview=")), [`thresholdPreview=${a}`, `thresholdPreview=${b}`], `T ${t0}, ${high} -> ${a}, ${b}: ${ev}`);
+  assert.equal(ev.filter((e) => e.startsWith("threshold=")).at(-1), `threshold=${b}`, `${ev}`);
+  assert.equal(ev.filter((e) => e.startsWith("thresholdSame=")).at(-1), "thresholdSame=true", `${ev}`);
   assert.deepEqual(log.pageErrors, []);
   await context.close();
 });

@@ -69,15 +69,39 @@ const interest = {
     const live = new Live(lab, "forstner");
     let mapSize = null;
     const params = () => ({ size: Number(size.value), sigmaN: Number(sigma.value), thresholdPx: autoT ?? Number(thr.value), qMin: Number(qmin.value), threshold: Number(mthr.value) });
+    // the kept map's points on screen ({ sigmaN, qMin, thresholdPx, points }) and the newest request's arguments
+    let onScreen = null;
+    let newest = null;
     const points = () => {
       const args = params();
+      newest = args;
+      // T lowered, σn and q as they were: the points on screen with λmax(Σuv) ≤ T² are exactly the new ones,
+      // drawn at once (seed 003's suppression keeps a candidate that beats every other in its window by a fixed
+      // order; the dropped candidates beat no kept one); the kept map's answer follows and is the same
+      const was = onScreen;
+      if (was && was.sigmaN === args.sigmaN && was.qMin === args.qMin && args.thresholdPx <= was.thresholdPx) {
+        const t2 = args.thresholdPx * args.thresholdPx;
+        const [q, p] = [was.points, new Float64Array(was.points.length)];
+        let n = 0;
+        for (let i = 0; i < q.length; i += 6) if (q[i + 2] <= t2) for (let k = 0; k < 6; k++) p[n++] = q[i + k];
+        onScreen = { ...args, points: p.subarray(0, n) };
+        used = { op: "forstner", ...args, size: used?.size ?? Number(size.value) };
+        drawPoints(onScreen.points);
+        testHook("thresholdPreview", String(args.thresholdPx));
+      }
       live.request({
         type: "forstnerPoints",
         args: { sigmaN: args.sigmaN, thresholdPx: args.thresholdPx, qMin: args.qMin },
         label: "Thresholding the kept map",
         apply(r) {
+          // (an older T's answer while a newer one is on its way: the newer draws)
+          if (args !== newest) return;
+          const same = onScreen?.thresholdPx === args.thresholdPx && onScreen.sigmaN === args.sigmaN && onScreen.qMin === args.qMin
+            && onScreen.points.length === r.points.length && onScreen.points.every((v, i) => Object.is(v, r.points[i]));
+          testHook("thresholdSame", String(same));
           used = { op: "forstner", ...args, size: r.size };
-          drawPoints(r.points);
+          onScreen = { ...args, points: r.points };
+          if (!same) drawPoints(r.points);
           testHook("threshold", String(r.thresholdPx));
           testHook("mapRuns", String(r.mapRuns));
           testHook("pointsMs", r.pointsMs.toFixed(1));
@@ -87,6 +111,7 @@ const interest = {
     const maps = () => {
       const n = Number(size.value);
       mapSize = null;
+      onScreen = null;
       live.request({
         type: "forstnerMaps",
         args: { size: n, sigmaN: Number(sigma.value) },
@@ -139,12 +164,14 @@ const interest = {
       const r = await lab.run(op.value, args, "Moravec operator");
       if (!r) return;
       used = { op: op.value, ...args };
+      onScreen = null;
       lab.setLayers(r.layers);
       drawPoints(r.points);
     });
     return {
       imageChanged() {
         mapSize = null;
+        onScreen = null;
         thrSet = false;
         autoT = null;
         rule.textContent = "";
