@@ -181,11 +181,20 @@ test("a slider change paints its preview before the whole result (k × k mean, F
 async function recordPreviews(page, selector) {
   await page.evaluate((selector) => {
     window.labPreviews = [];
+    window.labDrawn = (canvas, [c, r, w, h]) => {
+      const v = canvas.labViewer;
+      const [x, y] = [Math.round((c + w / 2) * v.zoom + v.ox) - 8, Math.round((r + h / 2) * v.zoom + v.oy) - 8];
+      const d = canvas.getContext("2d").getImageData(x, y, 16, 16).data;
+      const sum = [0, 0, 0];
+      for (let i = 0; i < d.length; i += 4) for (let k = 0; k < 3; k++) sum[k] += d[i + k];
+      return sum.map((t) => t / 256);
+    };
     for (const canvas of document.querySelectorAll(selector)) {
       const v = canvas.labViewer;
       v.setPreview = (p) => {
-        if (p) window.labPreviews.push({ view: v.name ?? null, name: p.name, rect: p.rect, values: Array.from(p.values) });
         Object.getPrototypeOf(v).setPreview.call(v, p);
+        // and the view's mean colour over the preview box's middle (16 × 16 canvas pixels) as drawn with it
+        if (p) window.labPreviews.push({ view: v.name ?? null, name: p.name, rect: p.rect, values: Array.from(p.values), drawn: window.labDrawn(canvas, p.rect) });
       };
     }
   }, selector);
@@ -236,6 +245,9 @@ test("a new edge operator or border, and a new rotation, paint their preview bef
   let [pv] = await previews(page);
   assert.equal(pv.name, "magnitude");
   assert.equal(ev[p], `edgesPreview=${pv.rect.join(",")}`);
+  // drawn as the result then is (over the photo, not over the old layer: that drew it 14 grey levels darker here)
+  const now = await page.evaluate((rect) => window.labDrawn(document.querySelector("#lab-stage .lab-canvas"), rect), pv.rect);
+  assert.ok(now.every((x, k) => Math.abs(x - pv.drawn[k]) <= 4), `the preview drawn ${pv.drawn.map(Math.round)}, the result ${now.map(Math.round)}`);
   let pixels = inside(pv.rect);
   let got = await layerAt(page, "magnitude", pixels);
   pixels.forEach(([c, r], i) => {

@@ -554,6 +554,8 @@ export class Viewer {
       }
       if (this.preview && (onlyLayer || panels === 1)) {
         const [c, r, pw, ph] = this.preview.rect;
+        // over the photo, as the result will be (not over the old layer: that drew it darker)
+        if (!onlyLayer) ctx.drawImage(this.base, c, r, pw, ph, c, r, pw, ph);
         ctx.globalAlpha = onlyLayer ? 1 : this.opacity;
         ctx.drawImage(this.preview.bitmap, c, r, pw, ph);
         ctx.globalAlpha = 1;
