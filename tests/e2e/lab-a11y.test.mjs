@@ -192,7 +192,10 @@ test("interest points: the description counts them and names the most precise wi
   const desc = await page.textContent("#lab-view-desc");
   assert.match(desc, new RegExp(`${n} interest points found; the most precise \\(smallest error ellipse\\): `));
   // each point named is one drawn (an ellipse at its c, r), at most five of them
-  const drawn = new Set(await page.$eval("#lab-stage .lab-canvas", (cv) => cv.labViewer.shapes.map((s) => `${s.c},${s.r}`)));
+  // (the points are one batch of [c, r, score, σmax, σmin, angle] each: view.js pointShape)
+  const drawn = new Set(await page.$eval("#lab-stage .lab-canvas", (cv) => cv.labViewer.shapes.flatMap((s) => (s.kind === "points"
+    ? Array.from({ length: s.p.length / 6 }, (_, i) => `${s.p[6 * i]},${s.p[6 * i + 1]}`)
+    : [`${s.c},${s.r}`]))));
   const named = [...desc.matchAll(/column ([\d.]+), row ([\d.]+) \(σmax ([\d.]+) px\)/g)];
   assert.equal(named.length, Math.min(5, n));
   for (const [, c, r] of named) assert.ok(drawn.has(`${c},${r}`), `${c},${r} is a point drawn`);

@@ -284,7 +284,11 @@ test("many points: the small ones stamped, the ones out of view left out, the vi
       return false;
     };
     // pixels at least half covered in one with nothing within a pixel in the other, and the colour of the covered ones
-    const out = { shapes: v.shapes.length, stamped: v.shapes.filter((s) => Math.max(s.a, s.b) * v.zoom <= 2).length, zoom: v.zoom, drawn: 0, stroked: 0, onlyDrawn: 0, onlyStroked: 0, colours: new Set() };
+    // the points: one batch (interest.js), its ellipses' semi-axes σ × magnify
+    const [batch] = v.shapes;
+    const n = batch.p.length / 6;
+    const stamped = Array.from({ length: n }, (_, i) => Math.max(batch.p[6 * i + 3], batch.p[6 * i + 4]) * batch.magnify * v.zoom <= 2).filter(Boolean).length;
+    const out = { shapes: n, stamped, batches: v.shapes.length, kind: batch.kind, zoom: v.zoom, drawn: 0, stroked: 0, onlyDrawn: 0, onlyStroked: 0, colours: new Set() };
     for (let y = 0; y < h; y++) {
       for (let x = 0; x < w; x++) {
         const k = 4 * (y * w + x);
@@ -302,6 +306,7 @@ test("many points: the small ones stamped, the ones out of view left out, the vi
     return { ...out, colours: [...out.colours] };
   });
   const fit = await compare();
+  assert.ok(fit.kind === "points" && fit.batches === 1, `the points drawn as one batch: ${fit.batches} shapes, ${fit.kind}`);
   assert.ok(fit.shapes >= 1000 && fit.stamped === fit.shapes, `at the fit (zoom ${fit.zoom}), ${fit.stamped} of ${fit.shapes} points small enough to stamp`);
   for (const [what, c] of [["the fit", fit]]) {
     assert.ok(c.drawn > 0 && Math.abs(c.drawn - c.stroked) <= 0.1 * c.stroked, `${what}: ${c.drawn} pixels drawn, ${c.stroked} stroked`);

@@ -102,6 +102,14 @@ export function paintOf(layer) {
   return p;
 }
 
+/** Point `i` (its first number's index) of batch `s` ({ p: [c, r, score, σmax, σmin, angle]…, ellipse, magnify, colour }) as a shape. */
+export function pointShape(s, i) {
+  const p = s.p;
+  return s.ellipse
+    ? { kind: "ellipse", c: p[i], r: p[i + 1], a: p[i + 3] * s.magnify, b: p[i + 4] * s.magnify, angle: p[i + 5] + Math.PI / 2, colour: s.colour }
+    : { kind: "dot", c: p[i], r: p[i + 1], size: 3, colour: s.colour };
+}
+
 export class Viewer {
   /**
    * @param {HTMLElement} host
@@ -133,6 +141,7 @@ export class Viewer {
     this.opacity = 0.7;
     this.mode = "over";
     this.shapes = [];
+    this.shapeCount = 0;
     this.mark = null;
     this.zoom = 1;
     this.ox = 0;
@@ -202,6 +211,7 @@ export class Viewer {
     this.layerCanvas = null;
     this.preview = null;
     this.shapes = [];
+    this.shapeCount = 0;
     this.fitted = false;
     this.resize();
     if (this.base) return Promise.resolve();
@@ -264,8 +274,10 @@ export class Viewer {
     this.fit();
   }
 
+  /** `shapes`: single shapes, or batches of points (`{ kind: "points", p, ellipse, magnify, colour }`: `pointShape`). */
   setShapes(shapes) {
     this.shapes = shapes;
+    this.shapeCount = shapes.reduce((n, s) => n + (s.kind === "points" ? s.p.length / 6 : 1), 0);
     this.draw();
   }
 
@@ -680,7 +692,7 @@ export class Viewer {
    * stroking 100 000 ellipses took Chromium a second, stamping them 20 ms.
    */
   drawShapesCached(ctx, x0, w) {
-    if (this.shapes.length < SHAPES_CACHED || typeof OffscreenCanvas === "undefined") {
+    if (this.shapeCount < SHAPES_CACHED || typeof OffscreenCanvas === "undefined") {
       this.drawShapes(ctx);
       return;
     }
@@ -719,22 +731,33 @@ export class Viewer {
     // the stamped shapes: their pixels (x, y pairs) and stamps
     const [at, used] = [[], []];
     let st = null;
-    for (const s of this.shapes) {
-      // canvas pixels from the centre to the stroke (null: not round)
-      const stroke = (s.width || 2) * dpr;
-      const radius = s.kind === "dot" ? (s.size || 3) * dpr : s.kind === "ellipse" ? Math.max(s.a * z, s.b * z, 2) : null;
-      const [x, y] = [(s.c + 0.5) * z + this.ox, (s.r + 0.5) * z + this.oy];
+    // a shape at image (c, r), `radius` canvas pixels from its centre to its stroke (null: not round), stamped
+    // when it can be (of the first stamp's colour), else stroked (`s`, or point `i` of batch `s`); none out of view
+    const take = (c, r, radius, stroke, colour, stamp, s, i) => {
+      const [x, y] = [(c + 0.5) * z + this.ox, (r + 0.5) * z + this.oy];
       const reach = radius + stroke;
-      if (radius !== null && (x < -reach || y < -reach || x > cw + reach || y > ch + reach)) continue;
-      const colour = s.colour || "#ff8c00";
-      // an ellipse at its least size (a circle of 2 canvas pixels) or a dot, of the first one's colour: stamped
-      if (radius === null || s.fill || (radius > 2 && s.kind === "ellipse") || (st && st.colour !== colour)) {
-        rest.push(s);
-        continue;
+      if (radius !== null && (x < -reach || y < -reach || x > cw + reach || y > ch + reach)) return;
+      if (!stamp || (st && st.colour !== colour)) {
+        rest.push(i < 0 ? s : pointShape(s, i));
+        return;
       }
       if (!st || st.radius !== radius || st.width !== stroke) st = this.stampOf(radius, stroke, colour);
       at.push(Math.floor(x), Math.floor(y));
       used.push(st);
+    };
+    for (const s of this.shapes) {
+      if (s.kind === "points") {
+        // an ellipse at its least size (a circle of 2 canvas pixels) or a dot: stamped
+        const [p, m] = [s.p, s.magnify * z];
+        for (let i = 0; i < p.length; i += 6) {
+          const radius = s.ellipse ? Math.max(p[i + 3] * m, p[i + 4] * m, 2) : 3 * dpr;
+          take(p[i], p[i + 1], radius, 2 * dpr, s.colour, radius <= 2 || !s.ellipse, s, i);
+        }
+        continue;
+      }
+      const radius = s.kind === "dot" ? (s.size || 3) * dpr : s.kind === "ellipse" ? Math.max(s.a * z, s.b * z, 2) : null;
+      const stamp = radius !== null && !s.fill && !(radius > 2 && s.kind === "ellipse");
+      take(s.c, s.r, radius, (s.width || 2) * dpr, s.colour || "#ff8c00", stamp, s, -1);
     }
     if (!used.length) return rest;
     const alpha = new Uint8ClampedArray(cw * ch);
@@ -744,6 +767,7 @@ export class Viewer {
         const j = at[2 * m + 1] + t.dy[n];
         if (i < 0 || j < 0 || i >= cw || j >= ch) continue;
         const k = j * cw + i;
+        // source over: sa + da (1 − sa)
         alpha[k] = t.alpha[n] + (alpha[k] * (255 - t.alpha[n])) / 255;
       }
     });
@@ -794,6 +818,7 @@ export class Viewer {
    * width one after another go into one path, stroked once.
    */
   drawShapes(ctx, shapes = this.shapes) {
+    shapes = shapes.flatMap((s) => (s.kind === "points" ? Array.from({ length: s.p.length / 6 }, (_, k) => pointShape(s, 6 * k)) : [s]));
     const px = 1 / this.zoom;
     // the style of the path being built (stroked when the style changes)
     let open = null;

@@ -51,14 +51,8 @@ const interest = {
     box.append(opLabel, " ", sizeLabel, " ", sigmaLabel, " ", thrLabel, " ", qLabel, " ", mthrLabel, " ", run, note, rule);
     let used = null;
     const drawPoints = (p) => {
-      const shapes = [];
-      for (let i = 0; i < p.length; i += 6) {
-        if (used.op === "forstner") {
-          shapes.push({ kind: "ellipse", c: p[i], r: p[i + 1], a: p[i + 3] * ELLIPSE_MAGNIFY, b: p[i + 4] * ELLIPSE_MAGNIFY, angle: p[i + 5] + Math.PI / 2, colour: "#ff8c00" });
-        } else {
-          shapes.push({ kind: "dot", c: p[i], r: p[i + 1], size: 3, colour: "#ff8c00" });
-        }
-      }
+      // one batch (view.js pointShape: Förstner's error ellipses enlarged, Moravec's dots)
+      const shapes = [{ kind: "points", p, ellipse: used.op === "forstner", magnify: ELLIPSE_MAGNIFY, colour: "#ff8c00" }];
       lab.viewer.setShapes(shapes);
       lab.explorer.setPoints(p, used.op);
       lab.say(`${p.length / 6} interest points found${used.op === "forstner" ? ` with T = ${fmt(used.thresholdPx, 3)} px` : ""}.`);
