@@ -68,6 +68,12 @@ async function watch(page) {
     }).observe(document.body, { attributes: true, attributeOldValue: true });
   });
 }
+/** Moves slider `selector` to `value` as a drag does (an "input" event). */
+const slide = (page, selector, value) => page.evaluate(([selector, value]) => {
+  const input = document.querySelector(selector);
+  input.value = String(value);
+  input.dispatchEvent(new Event("input", { bubbles: true }));
+}, [selector, value]);
 const events = (page) => page.evaluate(() => window.labEvents);
 const layerAt = (page, name, pixels) => page.evaluate(async ([name, pixels]) => (await import("./lab/lab.js")).layerForTests(name, pixels), [name, pixels]);
 
@@ -99,11 +105,7 @@ test("a slider change paints its preview before the whole result (k × k mean, F
   await page.selectOption("#lab-border", "replicate");
   for (const k of [5, 9]) {
     await watch(page);
-    await page.evaluate((k) => {
-      const input = document.querySelector("#lab-size");
-      input.value = String(k);
-      input.dispatchEvent(new Event("input", { bubbles: true }));
-    }, k);
+    await slide(page, "#lab-size", k);
     await page.waitForFunction((k) => document.body.dataset.filterShown === `mean ${k}×${k}`, k, { timeout: 60_000 });
     await idle(page);
     const ev = await events(page);
@@ -309,14 +311,8 @@ test("a lower Förstner threshold draws the passing points on screen at once, th
   await page.waitForFunction(() => document.body.dataset.threshold && document.body.dataset.forstnerLive === "idle", null, { timeout: 90_000 });
   await idle(page);
   const t0 = Number(await page.evaluate(() => document.body.dataset.threshold));
+  assert.match(await page.textContent("#lab-threshold-rule"), /^T = [\d.]+ px, chosen for this photo/);
   const n0 = Number(await page.evaluate(() => document.body.dataset.points));
-  const setT = (ts) => page.evaluate((ts) => {
-    const input = document.querySelector("#lab-threshold");
-    for (const t of ts) {
-      input.value = String(t);
-      input.dispatchEvent(new Event("input", { bubbles: true }));
-    }
-  }, ts);
   const settle = async (t) => {
     await page.waitForFunction((t) => document.body.dataset.threshold === t && document.body.dataset.forstnerLive === "idle", String(t), { timeout: 60_000 });
     await idle(page);
@@ -324,18 +320,20 @@ test("a lower Förstner threshold draws the passing points on screen at once, th
   // lowered: drawn at once (before the kept map's answer), then the answer, the same points
   const low = Math.round(t0 * 70) / 100;
   await watch(page);
-  await setT([low]);
+  await slide(page, "#lab-threshold", low);
   await settle(low);
   let ev = await events(page);
   const pre = ev.indexOf(`thresholdPreview=${low}`);
   assert.ok(pre >= 0 && pre < ev.indexOf(`threshold=${low}`), `T ${t0} -> ${low}: the points drawn before the kept map answers: ${ev}`);
   assert.ok(ev.includes("thresholdSame=true"), `the kept map's points are the ones drawn: ${ev}`);
   const n1 = Number(await page.evaluate(() => document.body.dataset.points));
+  // the words under the slider follow it: the student's T, the photo's own beside it
+  assert.match(await page.textContent("#lab-threshold-rule"), new RegExp(`^T = ${low} px as you set it\\. For this photo the lab would choose `));
   assert.ok(n1 > 0 && n1 < n0, `${n0} points at T ${t0}, ${n1} at ${low}`);
   // raised: no points to filter, the kept map's answer drawn
   const high = Math.round(t0 * 130) / 100;
   await watch(page);
-  await setT([high]);
+  await slide(page, "#lab-threshold", high);
   await settle(high);
   ev = await events(page);
   assert.ok(!ev.some((e) => e.startsWith("thresholdPreview=")) && ev.includes("thresholdSame=false"), `T raised to ${high}: ${ev}`);
@@ -344,8 +342,8 @@ test("a lower Förstner threshold draws the passing points on screen at once, th
   // lowered twice, the second while the first's answer is on its way: each drawn at once, the newest stays, and is the kept map's
   const [a, b] = [Math.round(t0 * 110) / 100, Math.round(t0 * 80) / 100];
   await watch(page);
-  await setT([a]);
-  await setT([b]);
+  await slide(page, "#lab-threshold", a);
+  await slide(page, "#lab-threshold", b);
   await settle(b);
   ev = await events(page);
   assert.deepEqual(ev.filter((e) => e.startsWith("thresholdPreview=")), [`thresholdPreview=${a}`, `thresholdPreview=${b}`], `T ${t0}, ${high} -> ${a}, ${b}: ${ev}`);

@@ -252,7 +252,7 @@ test("the opacity slider blends the result over the photo; Sobel gx gets the div
   await context.close();
 });
 
-test("many points: the small ones stamped, the ones out of view left out, the view as when every shape is stroked", { timeout: TEST_TIMEOUT * 2 }, async () => {
+test("many points: the small ones stamped (Förstner's ellipses, Moravec's dots), the ones out of view left out, the view as when every shape is stroked", { timeout: TEST_TIMEOUT * 2 }, async () => {
   const { page, log, context } = await openLab();
   await page.waitForFunction(() => document.body.dataset.labRestored === "1" && document.body.dataset.lab === "idle", null, { timeout: 60_000 });
   // a 3000 × 2000 board of 40-pixel squares: a few thousand corners, far enough apart on screen that their rings do not touch
@@ -321,6 +321,16 @@ test("many points: the small ones stamped, the ones out of view left out, the vi
   const zoomed = await compare();
   assert.ok(zoomed.stamped < zoomed.shapes && zoomed.drawn > 0, `zoomed in (zoom ${zoomed.zoom}): ${zoomed.stamped} of ${zoomed.shapes} points small enough to stamp, ${zoomed.drawn} pixels drawn`);
   assert.ok(Math.abs(zoomed.drawn - zoomed.stroked) <= 0.02 * zoomed.stroked && zoomed.onlyDrawn + zoomed.onlyStroked === 0, `zoomed in: ${JSON.stringify(zoomed)}`);
+  // Moravec's dots, at the fit: stamped, as they are stroked
+  await page.evaluate(async () => (await import("./lab/lab.js")).viewerForTests().fit());
+  await page.selectOption("#lab-interest", "moravec");
+  await page.evaluate(() => delete document.body.dataset.points);
+  await page.click("#lab-run");
+  await page.waitForFunction(() => Number(document.body.dataset.points) > 0);
+  await idle(page);
+  const dots = await compare();
+  assert.ok(dots.shapes >= 1000 && dots.drawn > 0 && Math.abs(dots.drawn - dots.stroked) <= 0.1 * dots.stroked, `Moravec's ${dots.shapes} dots: ${dots.drawn} pixels drawn, ${dots.stroked} stroked`);
+  assert.equal(dots.onlyDrawn + dots.onlyStroked, 0, `Moravec's dots: ${JSON.stringify(dots)}`);
   assert.deepEqual(log.pageErrors, []);
   await context.close();
 });

@@ -102,12 +102,22 @@ export function paintOf(layer) {
   return p;
 }
 
+/**
+ * Shapes' sizes, shared by their strokes (drawShapes) and their stamps
+ * (stamps), so that the two draw the same: a line's width and a dot's radius
+ * in screen pixels (times the device pixel ratio), an ellipse's least
+ * semi-axis in canvas pixels.
+ */
+const LINE_WIDTH = 2;
+const DOT_SIZE = 3;
+const LEAST_AXIS = 2;
+
 /** Point `i` (its first number's index) of batch `s` ({ p: [c, r, score, σmax, σmin, angle]…, ellipse, magnify, colour }) as a shape. */
 export function pointShape(s, i) {
   const p = s.p;
   return s.ellipse
     ? { kind: "ellipse", c: p[i], r: p[i + 1], a: p[i + 3] * s.magnify, b: p[i + 4] * s.magnify, angle: p[i + 5] + Math.PI / 2, colour: s.colour }
-    : { kind: "dot", c: p[i], r: p[i + 1], size: 3, colour: s.colour };
+    : { kind: "dot", c: p[i], r: p[i + 1], size: DOT_SIZE, colour: s.colour };
 }
 
 export class Viewer {
@@ -750,14 +760,14 @@ export class Viewer {
         // an ellipse at its least size (a circle of 2 canvas pixels) or a dot: stamped
         const [p, m] = [s.p, s.magnify * z];
         for (let i = 0; i < p.length; i += 6) {
-          const radius = s.ellipse ? Math.max(p[i + 3] * m, p[i + 4] * m, 2) : 3 * dpr;
-          take(p[i], p[i + 1], radius, 2 * dpr, s.colour, radius <= 2 || !s.ellipse, s, i);
+          const radius = s.ellipse ? Math.max(p[i + 3] * m, p[i + 4] * m, LEAST_AXIS) : DOT_SIZE * dpr;
+          take(p[i], p[i + 1], radius, LINE_WIDTH * dpr, s.colour, radius <= LEAST_AXIS || !s.ellipse, s, i);
         }
         continue;
       }
-      const radius = s.kind === "dot" ? (s.size || 3) * dpr : s.kind === "ellipse" ? Math.max(s.a * z, s.b * z, 2) : null;
-      const stamp = radius !== null && !s.fill && !(radius > 2 && s.kind === "ellipse");
-      take(s.c, s.r, radius, (s.width || 2) * dpr, s.colour || "#ff8c00", stamp, s, -1);
+      const radius = s.kind === "dot" ? (s.size || DOT_SIZE) * dpr : s.kind === "ellipse" ? Math.max(s.a * z, s.b * z, LEAST_AXIS) : null;
+      const stamp = radius !== null && !s.fill && !(radius > LEAST_AXIS && s.kind === "ellipse");
+      take(s.c, s.r, radius, (s.width || LINE_WIDTH) * dpr, s.colour || "#ff8c00", stamp, s, -1);
     }
     if (!used.length) return rest;
     const alpha = new Uint8ClampedArray(cw * ch);
@@ -830,7 +840,7 @@ export class Viewer {
       count = 0;
     };
     for (const s of shapes) {
-      const lineWidth = (s.width || 2) * px * (this.dpr || 1);
+      const lineWidth = (s.width || LINE_WIDTH) * px * (this.dpr || 1);
       const style = s.fill || s.kind === "text" ? null : `${s.colour || "#ff8c00"} ${lineWidth}`;
       if (style === null || style !== open || count >= PATH_SHAPES) {
         flush();
@@ -843,12 +853,12 @@ export class Viewer {
         ctx.rect(s.c0, s.r0, s.w, s.h);
       } else if (s.kind === "ellipse") {
         // centre at pixel centre (c + 0.5); semi-axes scaled to be visible
-        const [a, b, t] = [Math.max(s.a, 2 * px), Math.max(s.b, 2 * px), s.angle || 0];
+        const [a, b, t] = [Math.max(s.a, LEAST_AXIS * px), Math.max(s.b, LEAST_AXIS * px), s.angle || 0];
         // (a path of its own within the shared one: from the point the ellipse starts at)
         ctx.moveTo(s.c + 0.5 + a * Math.cos(t), s.r + 0.5 + a * Math.sin(t));
         ctx.ellipse(s.c + 0.5, s.r + 0.5, a, b, t, 0, 2 * Math.PI);
       } else if (s.kind === "dot") {
-        const radius = (s.size || 3) * px * (this.dpr || 1);
+        const radius = (s.size || DOT_SIZE) * px * (this.dpr || 1);
         ctx.moveTo(s.c + 0.5 + radius, s.r + 0.5);
         ctx.arc(s.c + 0.5, s.r + 0.5, radius, 0, 2 * Math.PI);
       } else if (s.kind === "poly") {

@@ -120,11 +120,8 @@ const interest = {
             thr.dataset.auto = "1";
             thrOut.textContent = `${fmt(autoT, 3)} px`;
           }
-          rule.textContent = !a
-            ? "This photo has no textured pixel (every w is 0): no threshold can be chosen from it."
-            : thrSet
-              ? `T = ${thr.value} px as you set it. For this photo the lab would choose ${fmt(a.thresholdPx, 3)} px: w at least ${fmt(a.wMin, 4)}, the w of its strongest ${a.share * 100} % of pixels.`
-              : `T = ${fmt(a.thresholdPx, 3)} px, chosen for this photo: its strongest ${a.share * 100} % of pixels have w ≥ ${fmt(a.wMin, 4)}, and T = σn/√w_min = ${fmt(Number(sigma.value), 4)}/√${fmt(a.wMin, 4)} keeps the pixels whose λmin(N) ≥ w_min (w ≤ λmin(N) ≤ 2w). A fixed T would keep the photo's texture as well; move the slider to choose your own.`;
+          auto = a;
+          sayRule();
           used = { op: "forstner", ...params(), size: r.size };
           lab.setLayers(r.layers);
           testHook("mapRuns", String(r.mapRuns));
@@ -132,12 +129,23 @@ const interest = {
         },
       });
     };
+    // the photo's own threshold (the map's `auto`), and the words on the T used
+    let auto = null;
+    const sayRule = () => {
+      const a = auto;
+      rule.textContent = !a
+        ? "This photo has no textured pixel (every w is 0): no threshold can be chosen from it."
+        : thrSet
+          ? `T = ${thr.value} px as you set it. For this photo the lab would choose ${fmt(a.thresholdPx, 3)} px: w at least ${fmt(a.wMin, 4)}, the w of its strongest ${a.share * 100} % of pixels.`
+          : `T = ${fmt(a.thresholdPx, 3)} px, chosen for this photo: its strongest ${a.share * 100} % of pixels have w ≥ ${fmt(a.wMin, 4)}, and T = σn/√w_min = ${fmt(Number(sigma.value), 4)}/√${fmt(a.wMin, 4)} keeps the pixels whose λmin(N) ≥ w_min (w ≤ λmin(N) ≤ 2w). A fixed T would keep the photo's texture as well; move the slider to choose your own.`;
+    };
     const retune = (ev) => {
       if (ev?.target === thr) {
         // the student's T (moved, not yet let go) stays theirs: a new map keeps it
         thrSet = true;
         autoT = null;
         delete thr.dataset.auto;
+        if (mapSize !== null) sayRule();
       }
       thrOut.textContent = autoT === null ? `${thr.value} px` : `${fmt(autoT, 3)} px`;
       if (op.value !== "forstner" || !lab.image) return;
@@ -166,6 +174,7 @@ const interest = {
       imageChanged() {
         mapSize = null;
         onScreen = null;
+        auto = null;
         thrSet = false;
         autoT = null;
         rule.textContent = "";
