@@ -203,7 +203,7 @@ describe("at 390 px and 320 px", { timeout: TEST_TIMEOUT * 4 }, () => {
     assert.deepEqual(problems, []);
   });
 
-  test("the chain-code drawing grid: every cell a 24 × 24 px target at 390 px, the grid scrolling in its own named region", async () => {
+  test("the chain-code drawing grid: every cell a 24 × 24 px target at 390 px, the grid scrolling in its own named region, its text wrapped to what is seen", async () => {
     await look(390, "light");
     assert.equal(await go("index.html#/chain-code"), "ok");
     const presets = await page.locator(".figure-actions button").allInnerTexts();
@@ -211,6 +211,7 @@ describe("at 390 px and 320 px", { timeout: TEST_TIMEOUT * 4 }, () => {
     for (const name of presets) {
       await page.locator(".figure-actions button", { hasText: name }).first().click();
       assert.equal(await settled(page), "ok", name);
+      await idle(page); // the figure's paint of the new inputs (its resize observer's frame included)
       const grid = await page.evaluate(async () => {
         // the cells where the figure's own layout puts them for the inputs on the page (chains.js cellPoint)
         const { loadCore } = await import("./core.js");
@@ -221,6 +222,15 @@ describe("at 390 px and 320 px", { timeout: TEST_TIMEOUT * 4 }, () => {
         const solution = core.solve("chain-code", core.parseInputs("chain-code", texts).inputs);
         const canvas = document.querySelector(".figure-canvas");
         const [p, q] = [fig.cellPoint(canvas.clientWidth, solution, [1, 1]), fig.cellPoint(canvas.clientWidth, solution, [2, 2])];
+        // the text under the grid wraps to the panel's visible width: right of it, nothing but paper
+        const room = canvas.closest(".figure-panel").clientWidth;
+        const dpr = canvas.width / canvas.clientWidth;
+        const [x0, y0] = [Math.ceil(room * dpr), Math.ceil(fig.infoTop(canvas.clientWidth, solution) * dpr)];
+        let inked = 0;
+        if (x0 < canvas.width && y0 < canvas.height) {
+          const px = canvas.getContext("2d").getImageData(x0, y0, canvas.width - x0, canvas.height - y0).data;
+          for (let i = 0; i < px.length; i += 4) if (px[i] !== px[0] || px[i + 1] !== px[1] || px[i + 2] !== px[2]) inked++;
+        }
         // the box that scrolls when the canvas is wider than the page allows
         let box = canvas.parentElement;
         while (box && !/auto|scroll/.test(getComputedStyle(box).overflowX)) box = box.parentElement;
@@ -231,14 +241,18 @@ describe("at 390 px and 320 px", { timeout: TEST_TIMEOUT * 4 }, () => {
           wide: canvas.getBoundingClientRect().width > canvas.closest(".figure-panel").clientWidth + 1,
           page: document.documentElement.scrollWidth - document.documentElement.clientWidth,
           focusable: canvas.tabIndex === 0,
+          inked,
           scroller: box ? { label: label(box), wider: box.scrollWidth > box.clientWidth + 1, inside: box.contains(canvas) } : null,
+          // for a failure's message: the panel as it was
+          panel: (({ className, clientWidth }) => ({ className, clientWidth, overflowX: getComputedStyle(canvas.closest(".figure-panel")).overflowX }))(canvas.closest(".figure-panel")),
         };
       });
       assert.ok(grid.cell[0] >= 24 && grid.cell[1] >= 24, `${name}: cells ${grid.cell.map((x) => x.toFixed(1)).join(" × ")} px`);
       assert.equal(grid.page, 0, `${name}: the page itself scrolls sideways`);
       assert.ok(grid.focusable, `${name}: the grid takes the keyboard's focus`);
+      assert.equal(grid.inked, 0, `${name}: the text under a ${grid.canvas} px grid reaches past the panel's visible width`);
       if (grid.wide) {
-        assert.ok(grid.scroller?.wider && grid.scroller.inside && grid.scroller.label.length > 10, `${name}: a grid ${grid.canvas} px wide needs a named scrolling region: ${JSON.stringify(grid.scroller)}`);
+        assert.ok(grid.scroller?.wider && grid.scroller.inside && grid.scroller.label.length > 10, `${name}: a grid ${grid.canvas} px wide needs a named scrolling region: ${JSON.stringify(grid.scroller)}; its panel ${JSON.stringify(grid.panel)}`);
         // the cell cursor's cell is scrolled into view as the keys move it (index.js keepInView)
         await page.focus(".figure-canvas");
         const scrolled = async (key) => {

@@ -191,8 +191,9 @@ function wrap(lines, width) {
   return out;
 }
 
-function infoBlock(width, solution, m) {
-  return wrap(infoLines(solution, m), width - 2 * LAYOUT.margin);
+/** The lines under the grid, wrapped to the part of the canvas seen without scrolling (`room`, a phone's panel). */
+function infoBlock(width, solution, m, room = width) {
+  return wrap(infoLines(solution, m), Math.min(width, room) - 2 * LAYOUT.margin);
 }
 
 /** The pixel lattice of the chain figures: cell lines and the column/row numbers (no values: drawGrid draws grids of numbers). */
@@ -394,10 +395,10 @@ function drawShape(ctx, L, res, labels) {
   return axisLabels;
 }
 
-function figureHeight(width, solution) {
+function figureHeight(width, solution, room = width) {
   const m = model(solution);
   const L = layout(width, m);
-  const lines = infoBlock(width, solution, m);
+  const lines = infoBlock(width, solution, m, room);
   const lh = FONT_SIZE * LINE_HEIGHT;
   return L.gridBottom + LAYOUT.infoGap + 14 + lines.length * lh + LAYOUT.margin;
 }
@@ -455,7 +456,7 @@ function drawFigure(ctx, width, height, solution, state) {
   labels.draw();
   const lh = FONT_SIZE * LINE_HEIGHT;
   let y = L.gridBottom + LAYOUT.infoGap + 14 + lh / 2;
-  for (const l of infoBlock(width, solution, m)) {
+  for (const l of infoBlock(width, solution, m, state?.room ?? width)) {
     text(ctx, l.text, LAYOUT.margin, y, { color: l.color ?? COLORS.ink, weight: l.weight ?? "normal", size: l.size ?? FONT_SIZE });
     y += lh;
   }
@@ -492,6 +493,11 @@ function cellAt(x, y, width, m) {
 /** The centre of grid cell `pixel` [c, r] in CSS px on a canvas `width` wide (the inverse of a click; for tests). */
 export function cellPoint(width, solution, pixel) {
   return centre(layout(width, model(solution)), pixel);
+}
+
+/** Where the lines of text under the grid begin, in CSS px on a canvas `width` wide (for tests). */
+export function infoTop(width, solution) {
+  return layout(width, model(solution)).gridBottom + LAYOUT.infoGap;
 }
 
 /** A click: extend or take back the path, close it, or toggle a region pixel. */

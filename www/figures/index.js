@@ -60,7 +60,9 @@
 //
 // Optional: `minWidth(solution)`, the least canvas width (CSS px) the figure
 // needs, e.g. for cells of at least 24 × 24 px to click (WCAG 2.5.8): on a
-// narrower panel the canvas keeps that width and the panel scrolls sideways.
+// narrower panel the canvas keeps that width and the panel scrolls sideways;
+// `height(width, solution, room)` and `state.room` then give the panel's
+// visible width, for text that should read without scrolling (chains.js).
 //
 // Optional: `tables(solution, state)`, the figure's numbers for readers who
 // cannot see the canvas (issue 32; docs/figures.md), read from the same
@@ -210,7 +212,8 @@ function paint(panel, solution, shared = { selected: null }, light = false) {
     }
     figure.classList.toggle("figure-wide", width > room);
     try {
-      height = Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, spec.height(width, solution))));
+      // `room`: the panel's visible width (a wide canvas's text wraps to what is seen without scrolling)
+      height = Math.round(Math.min(MAX_HEIGHT, Math.max(MIN_HEIGHT, spec.height(width, solution, room))));
     } catch {
       height = MIN_HEIGHT;
     }
@@ -229,7 +232,7 @@ function paint(panel, solution, shared = { selected: null }, light = false) {
   ctx.fillStyle = COLORS.background;
   ctx.fillRect(0, 0, width, height);
   const frame = frameOf(panel);
-  const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null, frame, frameIndex: frame ? panel.motion.index : null };
+  const state = { ...(panel.state ?? {}), selected: shared.selected, slider: panel.sliderValue ?? null, frame, frameIndex: frame ? panel.motion.index : null, room };
   clearLabelBoxes(canvas);
   try {
     spec.draw(ctx, width, height, solution, state);
