@@ -192,7 +192,7 @@ test("interest points: the description counts them and names the most precise wi
   const desc = await page.textContent("#lab-view-desc");
   assert.match(desc, new RegExp(`${n} interest points found; the most precise \\(smallest error ellipse\\): `));
   // each point named is one drawn (an ellipse at its c, r), at most five of them
-  // (the points are one batch of [c, r, score, σmax, σmin, angle] each: view.js pointShape)
+  // (the points are one batch of [c, r, score, σmax, σmin, angle] each: shapes.js pointShape)
   const drawn = new Set(await page.$eval("#lab-stage .lab-canvas", (cv) => cv.labViewer.shapes.flatMap((s) => (s.kind === "points"
     ? Array.from({ length: s.p.length / 6 }, (_, i) => `${s.p[6 * i]},${s.p[6 * i + 1]}`)
     : [`${s.c},${s.r}`]))));

@@ -243,7 +243,7 @@ export function viewForTests() {
   return { zoom: v.zoom, ox: v.ox, oy: v.oy, cw: v.canvas.width, ch: v.canvas.height, left: b.left, top: b.top, w: b.width, h: b.height };
 }
 
-/** Test hook: the main view itself (its shapes, and their drawing: view.js drawShapesCached). */
+/** Test hook: the main view itself (its shapes, and their drawing: shapes.js drawShapesCached). */
 export const viewerForTests = () => current?.viewer ?? null;
 
 /** Test hook: the generated frame's truth as plain arrays. */

@@ -51,7 +51,7 @@ const interest = {
     box.append(opLabel, " ", sizeLabel, " ", sigmaLabel, " ", thrLabel, " ", qLabel, " ", mthrLabel, " ", run, note, rule);
     let used = null;
     const drawPoints = (p) => {
-      // one batch (view.js pointShape: Förstner's error ellipses enlarged, Moravec's dots)
+      // one batch (shapes.js pointShape: Förstner's error ellipses enlarged, Moravec's dots)
       const shapes = [{ kind: "points", p, ellipse: used.op === "forstner", magnify: ELLIPSE_MAGNIFY, colour: "#ff8c00" }];
       lab.viewer.setShapes(shapes);
       lab.explorer.setPoints(p, used.op);
